@@ -1,0 +1,1 @@
+//! Closed-form solutions: oracles for tests, `compare` and `accuracy`.

@@ -1,0 +1,1 @@
+//! Integration methods and the streaming driver.
