@@ -10,5 +10,16 @@
 //! - [`exact`]: closed-form solutions used as oracles and by `compare`.
 //! - [`output`]: CSV rows, the atomic file writer, the metadata sidecar.
 
+pub mod body;
+pub mod cli;
+pub mod effects;
 pub mod exact;
 pub mod integrate;
+pub mod kinetics;
+pub mod model;
+pub mod motion;
+pub mod output;
+pub mod report;
+pub mod scene;
+pub mod simulate;
+pub mod source_map;

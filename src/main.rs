@@ -1,3 +1,5 @@
-fn main() {
-    println!("Hello, world!");
+//! The `eulerdyn` command: a thin shell over the library's [`eulerdyn::cli`].
+
+fn main() -> std::process::ExitCode {
+    eulerdyn::cli::main()
 }

@@ -1,0 +1,266 @@
+//! Rigid bodies: mass, the central inertia tensor I_C in body axes, its principal decomposition,
+//! the inertia of common shapes and the parallel-axis theorem.
+
+use nalgebra::{Matrix3, Rotation3, SymmetricEigen, Vector3};
+
+/// A body property that failed validation: the scene key it came from (relative to `[body]`) and what is wrong.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{problem}")]
+pub struct InvalidBody {
+    /// The key under `[body]`, e.g. `mass`, `inertia`, `shape.radius`.
+    pub key: &'static str,
+    /// What is wrong and what would be valid.
+    pub problem: String,
+}
+
+impl InvalidBody {
+    fn new(key: &'static str, problem: impl Into<String>) -> Self {
+        Self {
+            key,
+            problem: problem.into(),
+        }
+    }
+}
+
+/// Homogeneous shapes whose central inertia has a closed form.
+///
+/// As in the reference notes, disks and cylinders have their symmetry axis along body z and the thin rod lies
+/// along body x.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// Thin disk of radius R: I = mR²·diag(1/4, 1/4, 1/2).
+    ThinDisk { radius: f64 },
+    /// Solid disk of radius R and thickness h: I_xx = I_yy = m(3R² + h²)/12, I_zz = mR²/2.
+    Disk { radius: f64, thickness: f64 },
+    /// Thin rod of length l along body x: I = (ml²/12)·diag(0, 1, 1).
+    ThinRod { length: f64 },
+    /// Solid sphere of radius R: I = (2/5)mR²·E.
+    Sphere { radius: f64 },
+    /// Box with edges (a, b, c) along body x, y, z: I_xx = m(b² + c²)/12, and cyclically.
+    Box { size: [f64; 3] },
+    /// Solid cylinder of radius R and height h along body z: I_xx = I_yy = m(3R² + h²)/12, I_zz = mR²/2.
+    Cylinder { radius: f64, height: f64 },
+}
+
+impl Shape {
+    /// Checks the dimensions (finite and > 0, or ≥ 0 for a disk's thickness) and returns the central
+    /// inertia tensor of the shape with mass `mass`, in body axes (formulas on each variant; e.g.
+    /// Meriam & Kraige, Engineering Mechanics: Dynamics, Appendix B).
+    pub fn inertia_c(&self, mass: f64) -> Result<Matrix3<f64>, InvalidBody> {
+        let positive = |key: &'static str, v: f64| {
+            if v.is_finite() && v > 0.0 {
+                Ok(v)
+            } else {
+                Err(InvalidBody::new(
+                    key,
+                    format!("must be a finite number > 0 (m), got {v}"),
+                ))
+            }
+        };
+        let diag = |x: f64, y: f64, z: f64| Matrix3::from_diagonal(&Vector3::new(x, y, z));
+        Ok(match *self {
+            Shape::ThinDisk { radius } => {
+                let r = positive("shape.radius", radius)?;
+                let i = mass * r * r;
+                diag(i / 4.0, i / 4.0, i / 2.0)
+            }
+            Shape::Disk { radius, thickness } => {
+                let r = positive("shape.radius", radius)?;
+                if !(thickness.is_finite() && thickness >= 0.0) {
+                    return Err(InvalidBody::new(
+                        "shape.thickness",
+                        format!("must be a finite number >= 0 (m), got {thickness}"),
+                    ));
+                }
+                let t = mass * (3.0 * r * r + thickness * thickness) / 12.0;
+                diag(t, t, mass * r * r / 2.0)
+            }
+            Shape::Cylinder { radius, height } => {
+                let r = positive("shape.radius", radius)?;
+                let h = positive("shape.height", height)?;
+                let t = mass * (3.0 * r * r + h * h) / 12.0;
+                diag(t, t, mass * r * r / 2.0)
+            }
+            Shape::ThinRod { length } => {
+                let l = positive("shape.length", length)?;
+                let t = mass * l * l / 12.0;
+                diag(0.0, t, t)
+            }
+            Shape::Sphere { radius } => {
+                let r = positive("shape.radius", radius)?;
+                let i = 0.4 * mass * r * r;
+                diag(i, i, i)
+            }
+            Shape::Box { size } => {
+                for v in size {
+                    positive("shape.size", v)?;
+                }
+                let [a, b, c] = size.map(|v| v * v);
+                diag(
+                    mass * (b + c) / 12.0,
+                    mass * (a + c) / 12.0,
+                    mass * (a + b) / 12.0,
+                )
+            }
+        })
+    }
+}
+
+/// Principal moments and axes of an inertia tensor: I = P·diag(moments)·Pᵀ, the columns of P being the principal
+/// axes in body axes, P a proper rotation (det P = +1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Principal {
+    /// Principal moments (kg·m²): in body-axis order when the tensor is diagonal, else ascending.
+    pub moments: Vector3<f64>,
+    /// Rotation whose columns are the principal axes expressed in body axes.
+    pub axes_b: Rotation3<f64>,
+}
+
+impl Principal {
+    /// Eigen-decomposition of a symmetric tensor. A diagonal tensor is returned exactly (axes = identity), so that
+    /// bodies given by principal moments carry no round-off from the decomposition.
+    pub fn of(inertia: &Matrix3<f64>) -> Self {
+        let off_diagonal_zero = inertia[(0, 1)] == 0.0
+            && inertia[(0, 2)] == 0.0
+            && inertia[(1, 2)] == 0.0
+            && inertia[(1, 0)] == 0.0
+            && inertia[(2, 0)] == 0.0
+            && inertia[(2, 1)] == 0.0;
+        if off_diagonal_zero {
+            return Self {
+                moments: inertia.diagonal(),
+                axes_b: Rotation3::identity(),
+            };
+        }
+        let eigen = SymmetricEigen::new(*inertia);
+        let mut order = [0usize, 1, 2];
+        order.sort_by(|&a, &b| eigen.eigenvalues[a].total_cmp(&eigen.eigenvalues[b]));
+        let moments = Vector3::from_fn(|i, _| eigen.eigenvalues[order[i]]);
+        let mut axes = Matrix3::from_fn(|r, c| eigen.eigenvectors[(r, order[c])]);
+        if axes.determinant() < 0.0 {
+            axes.set_column(2, &(-axes.column(2)));
+        }
+        Self {
+            moments,
+            axes_b: Rotation3::from_matrix_unchecked(axes),
+        }
+    }
+}
+
+/// A rigid body: mass m and central inertia tensor I_C in body axes (origin at the mass center C).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidBody {
+    mass: f64,
+    inertia_c: Matrix3<f64>,
+    principal: Principal,
+}
+
+impl RigidBody {
+    /// Validates and builds a body: mass finite and > 0; tensor entries finite, symmetric (to 1e-12 of its largest
+    /// entry), positive semi-definite, not zero, with principal moments satisfying the triangle inequality
+    /// I_a + I_b ≥ I_c (to 1e-12 of the trace; equality is a planar body such as the thin disk).
+    pub fn new(mass: f64, inertia_c: Matrix3<f64>) -> Result<Self, InvalidBody> {
+        if !(mass.is_finite() && mass > 0.0) {
+            return Err(InvalidBody::new(
+                "mass",
+                format!("must be a finite number > 0 (kg), got {mass}"),
+            ));
+        }
+        if inertia_c.iter().any(|v| !v.is_finite()) {
+            return Err(InvalidBody::new(
+                "inertia",
+                "every entry must be a finite number (kg*m^2)",
+            ));
+        }
+        let scale = inertia_c.amax();
+        if scale == 0.0 {
+            return Err(InvalidBody::new(
+                "inertia",
+                "the inertia tensor is zero: a body needs a nonzero moment of inertia",
+            ));
+        }
+        let tol = 1e-12 * scale;
+        for (r, c) in [(0, 1), (0, 2), (1, 2)] {
+            if (inertia_c[(r, c)] - inertia_c[(c, r)]).abs() > tol {
+                return Err(InvalidBody::new(
+                    "inertia",
+                    format!(
+                        "the tensor must be symmetric: entry [{r}][{c}] = {} but [{c}][{r}] = {}",
+                        inertia_c[(r, c)],
+                        inertia_c[(c, r)]
+                    ),
+                ));
+            }
+        }
+        let symmetric = (inertia_c + inertia_c.transpose()) * 0.5;
+        let principal = Principal::of(&symmetric);
+        let m = principal.moments;
+        let trace_tol = 1e-12 * m.iter().map(|v| v.abs()).sum::<f64>();
+        if m.iter().any(|&v| v < -trace_tol) {
+            return Err(InvalidBody::new(
+                "inertia",
+                format!(
+                    "the tensor must be positive semi-definite; its principal moments are ({}, {}, {})",
+                    m[0], m[1], m[2]
+                ),
+            ));
+        }
+        for i in 0..3 {
+            let (a, b, c) = (m[i], m[(i + 1) % 3], m[(i + 2) % 3]);
+            if a + b < c - trace_tol {
+                return Err(InvalidBody::new(
+                    "inertia",
+                    format!(
+                        "principal moments ({}, {}, {}) violate the triangle inequality {a} + {b} >= {c}: no mass distribution has them",
+                        m[0], m[1], m[2]
+                    ),
+                ));
+            }
+        }
+        Ok(Self {
+            mass,
+            inertia_c: symmetric,
+            principal,
+        })
+    }
+
+    /// A body from a shape ([`Shape::inertia_c`]).
+    pub fn from_shape(mass: f64, shape: Shape) -> Result<Self, InvalidBody> {
+        if !(mass.is_finite() && mass > 0.0) {
+            return Err(InvalidBody::new(
+                "mass",
+                format!("must be a finite number > 0 (kg), got {mass}"),
+            ));
+        }
+        Self::new(mass, shape.inertia_c(mass)?)
+    }
+
+    /// A body whose body axes are principal, I_C = diag(i1, i2, i3).
+    pub fn from_principal(mass: f64, moments: [f64; 3]) -> Result<Self, InvalidBody> {
+        Self::new(mass, Matrix3::from_diagonal(&Vector3::from(moments)))
+    }
+
+    /// Mass m (kg).
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+
+    /// Central inertia tensor I_C in body axes (kg·m²).
+    pub fn inertia_c(&self) -> &Matrix3<f64> {
+        &self.inertia_c
+    }
+
+    /// Principal moments and axes of I_C.
+    pub fn principal(&self) -> &Principal {
+        &self.principal
+    }
+
+    /// Inertia tensor about the body point A, by the parallel-axis theorem:
+    /// I_A = I_C + m (|ρ|² E − ρ ρᵀ), ρ = r_C − r_A (Steiner; the notes' eq. 7.x, used in 8.4).
+    /// `rho_c_b` is the position of C relative to A, in body axes.
+    pub fn inertia_about(&self, rho_c_b: &Vector3<f64>) -> Matrix3<f64> {
+        self.inertia_c
+            + (Matrix3::identity() * rho_c_b.norm_squared() - rho_c_b * rho_c_b.transpose())
+                * self.mass
+    }
+}

@@ -1,0 +1,197 @@
+//! One row of a run: the kinetic state and moment at a time, and which optional columns a run writes.
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+/// The state of the body at one output time. Vectors carry their frame in the name: `_b` body axes, `_s` space
+/// axes. H and M are about the moment center (C, the fixed pivot, or the fixed-axis point).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    /// Time (s).
+    pub t: f64,
+    /// Attitude, body → space.
+    pub q: UnitQuaternion<f64>,
+    /// Angular velocity (rad/s).
+    pub omega_b: Vector3<f64>,
+    pub omega_s: Vector3<f64>,
+    /// Moment of momentum about the moment center (kg·m²/s).
+    pub h_b: Vector3<f64>,
+    pub h_s: Vector3<f64>,
+    /// Resultant external moment about the moment center (N·m).
+    pub m_b: Vector3<f64>,
+    pub m_s: Vector3<f64>,
+    /// Kinetic energy ½ ω·H (J).
+    pub energy: f64,
+    /// Prescribed motion: angle turned about the fixed axis (rad).
+    pub theta: Option<f64>,
+    /// Prescribed motion with C off the axis: the required force F = m a_C (N, space axes).
+    pub f_s: Option<Vector3<f64>>,
+    /// Prescribed motion: H_s obtained by integrating Ḣ_s = M_s numerically (kg·m²/s, space axes).
+    pub h_s_integrated: Option<Vector3<f64>>,
+}
+
+/// Which optional columns a run writes (fixed for the whole run).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ColumnSet {
+    /// `theta`.
+    pub theta: bool,
+    /// `F_s_x,F_s_y,F_s_z`.
+    pub force: bool,
+    /// `H_s_int_x,H_s_int_y,H_s_int_z`.
+    pub h_s_integrated: bool,
+}
+
+/// A column's name, unit and meaning.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Column {
+    pub name: &'static str,
+    pub unit: &'static str,
+    pub meaning: &'static str,
+}
+
+const fn col(name: &'static str, unit: &'static str, meaning: &'static str) -> Column {
+    Column {
+        name,
+        unit,
+        meaning,
+    }
+}
+
+/// The columns every run writes, in the contract's order.
+pub const BASE_COLUMNS: [Column; 25] = [
+    col("t", "s", "time"),
+    col("q_w", "1", "attitude quaternion body->space, scalar part"),
+    col("q_x", "1", "attitude quaternion, x"),
+    col("q_y", "1", "attitude quaternion, y"),
+    col("q_z", "1", "attitude quaternion, z"),
+    col("omega_b_x", "rad/s", "angular velocity, body axes"),
+    col("omega_b_y", "rad/s", "angular velocity, body axes"),
+    col("omega_b_z", "rad/s", "angular velocity, body axes"),
+    col("omega_s_x", "rad/s", "angular velocity, space axes"),
+    col("omega_s_y", "rad/s", "angular velocity, space axes"),
+    col("omega_s_z", "rad/s", "angular velocity, space axes"),
+    col(
+        "H_b_x",
+        "kg*m^2/s",
+        "moment of momentum about the moment center, body axes",
+    ),
+    col(
+        "H_b_y",
+        "kg*m^2/s",
+        "moment of momentum about the moment center, body axes",
+    ),
+    col(
+        "H_b_z",
+        "kg*m^2/s",
+        "moment of momentum about the moment center, body axes",
+    ),
+    col(
+        "H_s_x",
+        "kg*m^2/s",
+        "moment of momentum about the moment center, space axes",
+    ),
+    col(
+        "H_s_y",
+        "kg*m^2/s",
+        "moment of momentum about the moment center, space axes",
+    ),
+    col(
+        "H_s_z",
+        "kg*m^2/s",
+        "moment of momentum about the moment center, space axes",
+    ),
+    col(
+        "M_b_x",
+        "N*m",
+        "external moment about the moment center, body axes",
+    ),
+    col(
+        "M_b_y",
+        "N*m",
+        "external moment about the moment center, body axes",
+    ),
+    col(
+        "M_b_z",
+        "N*m",
+        "external moment about the moment center, body axes",
+    ),
+    col(
+        "M_s_x",
+        "N*m",
+        "external moment about the moment center, space axes",
+    ),
+    col(
+        "M_s_y",
+        "N*m",
+        "external moment about the moment center, space axes",
+    ),
+    col(
+        "M_s_z",
+        "N*m",
+        "external moment about the moment center, space axes",
+    ),
+    col("energy", "J", "kinetic energy 1/2 omega.H"),
+    col("H_norm", "kg*m^2/s", "|H|"),
+];
+
+const THETA_COLUMN: Column = col("theta", "rad", "angle turned about the fixed axis");
+const FORCE_COLUMNS: [Column; 3] = [
+    col("F_s_x", "N", "required force m a_C, space axes"),
+    col("F_s_y", "N", "required force m a_C, space axes"),
+    col("F_s_z", "N", "required force m a_C, space axes"),
+];
+const H_INT_COLUMNS: [Column; 3] = [
+    col(
+        "H_s_int_x",
+        "kg*m^2/s",
+        "H_s integrated from dH_s/dt = M_s, space axes",
+    ),
+    col(
+        "H_s_int_y",
+        "kg*m^2/s",
+        "H_s integrated from dH_s/dt = M_s, space axes",
+    ),
+    col(
+        "H_s_int_z",
+        "kg*m^2/s",
+        "H_s integrated from dH_s/dt = M_s, space axes",
+    ),
+];
+
+impl ColumnSet {
+    /// All columns of a run, in order.
+    pub fn columns(&self) -> Vec<Column> {
+        let mut cols = BASE_COLUMNS.to_vec();
+        if self.theta {
+            cols.push(THETA_COLUMN);
+        }
+        if self.force {
+            cols.extend(FORCE_COLUMNS);
+        }
+        if self.h_s_integrated {
+            cols.extend(H_INT_COLUMNS);
+        }
+        cols
+    }
+
+    /// The values of one row, in column order. A sample lacking a value its column set asks for writes NaN there
+    /// (the simulation never produces such a sample; the writer refuses rows with non-finite values).
+    pub fn values(&self, s: &Sample, out: &mut Vec<f64>) {
+        out.clear();
+        out.push(s.t);
+        out.extend([s.q.w, s.q.i, s.q.j, s.q.k]);
+        for v in [&s.omega_b, &s.omega_s, &s.h_b, &s.h_s, &s.m_b, &s.m_s] {
+            out.extend(v.iter());
+        }
+        out.push(s.energy);
+        out.push(s.h_s.norm());
+        if self.theta {
+            out.push(s.theta.unwrap_or(f64::NAN));
+        }
+        if self.force {
+            out.extend(s.f_s.unwrap_or(Vector3::repeat(f64::NAN)).iter());
+        }
+        if self.h_s_integrated {
+            out.extend(s.h_s_integrated.unwrap_or(Vector3::repeat(f64::NAN)).iter());
+        }
+    }
+}

@@ -1,0 +1,725 @@
+//! Scene files: the TOML schema (unknown keys are errors) and its validation into a [`Scene`].
+//!
+//! Every error names the file, the key (with line and column where the parser knows them) and what is wrong.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use serde::Deserialize;
+
+use crate::body::{InvalidBody, RigidBody, Shape};
+use crate::effects::{Effect, TorqueProfile};
+use crate::integrate::Schedule;
+use crate::model::{BackendName, Frame, MethodName, MotionSpec, Scene, SolverConfig};
+use crate::motion::fixed_axis::FixedAxis;
+use crate::motion::free::FreeBody;
+use crate::source_map::{KeyPath, SourceMap};
+
+/// Most rows a run may write (a CSV of about 10 GB).
+pub const MAX_ROWS: f64 = 5e7;
+/// Most fixed steps a run may take (minutes of computing at ~100 ns per step).
+pub const MAX_FIXED_STEPS: f64 = 1e10;
+
+/// A scene that could not be read or is not valid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneError {
+    /// The scene file.
+    pub file: PathBuf,
+    /// The key at fault, e.g. `body.mass` or `effect[1].c`.
+    pub key: Option<String>,
+    /// Line and column (1-based) where the parser knows them.
+    pub location: Option<(usize, usize)>,
+    /// What is wrong and what would be valid.
+    pub problem: String,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.file.display())?;
+        if let Some((line, col)) = self.location {
+            write!(f, ":{line}:{col}")?;
+        }
+        if let Some(key) = &self.key {
+            write!(f, ": key `{key}`")?;
+        }
+        write!(f, ": {}", self.problem)
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+/// Values from the command line that replace the scene's `[solver]` and `[output]` values.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Overrides {
+    pub method: Option<String>,
+    pub frame: Option<String>,
+    pub backend: Option<String>,
+    pub rtol: Option<f64>,
+    pub atol: Option<f64>,
+    pub dt: Option<f64>,
+    pub t_end: Option<f64>,
+    pub every: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneDoc {
+    name: Option<String>,
+    description: Option<String>,
+    body: BodyDoc,
+    motion: Option<MotionDoc>,
+    initial: Option<InitialDoc>,
+    #[serde(default)]
+    effect: Vec<EffectDoc>,
+    solver: SolverDoc,
+    output: OutputDoc,
+    compare: Option<CompareDoc>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BodyDoc {
+    mass: f64,
+    shape: Option<ShapeDoc>,
+    inertia: Option<InertiaDoc>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+enum ShapeDoc {
+    ThinDisk { radius: f64 },
+    Disk { radius: f64, thickness: f64 },
+    ThinRod { length: f64 },
+    Sphere { radius: f64 },
+    Box { size: [f64; 3] },
+    Cylinder { radius: f64, height: f64 },
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "principal moments [I1, I2, I3] or a full tensor [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (kg*m^2)"
+)]
+enum InertiaDoc {
+    Principal([f64; 3]),
+    Full([[f64; 3]; 3]),
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+enum MotionDoc {
+    Free,
+    FixedAxis {
+        axis: Option<[f64; 3]>,
+        tilt_deg: Option<f64>,
+        #[serde(default)]
+        rate: f64,
+        #[serde(default)]
+        accel: f64,
+        point: Option<[f64; 3]>,
+    },
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct InitialDoc {
+    omega: Option<[f64; 3]>,
+    attitude: Option<[f64; 4]>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum FrameDoc {
+    Body,
+    Space,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum ProfileDoc {
+    Constant,
+    Sine,
+    Step,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+enum EffectDoc {
+    Torque {
+        frame: Option<FrameDoc>,
+        value: [f64; 3],
+        profile: Option<ProfileDoc>,
+        freq_hz: Option<f64>,
+        phase_deg: Option<f64>,
+        t_on: Option<f64>,
+        t_off: Option<f64>,
+    },
+    Gravity {
+        g: Option<[f64; 3]>,
+        pivot: [f64; 3],
+    },
+    Damping {
+        c: f64,
+    },
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SolverDoc {
+    method: Option<String>,
+    frame: Option<String>,
+    backend: Option<String>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    dt: Option<f64>,
+    t_end: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct OutputDoc {
+    every: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CompareDoc {
+    tolerance: f64,
+}
+
+/// A validation failure before it is given a file and a location.
+struct Invalid {
+    key: KeyPath,
+    problem: String,
+}
+
+type Checked<T> = Result<T, Invalid>;
+
+fn invalid<T>(key: KeyPath, problem: impl Into<String>) -> Checked<T> {
+    Err(Invalid {
+        key,
+        problem: problem.into(),
+    })
+}
+
+/// Reads and validates a scene file, applying command-line overrides.
+pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+    let error = |problem: String| SceneError {
+        file: path.to_path_buf(),
+        key: None,
+        location: None,
+        problem,
+    };
+    if path.is_dir() {
+        return Err(error(
+            "is a directory; give the path of a scene file (.toml)".into(),
+        ));
+    }
+    let bytes = std::fs::read(path).map_err(|e| error(format!("cannot read the file: {e}")))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let offset = e.utf8_error().valid_up_to();
+        let before = String::from_utf8_lossy(&e.as_bytes()[..offset]).into_owned();
+        let map = SourceMap::new(&before);
+        SceneError {
+            location: Some(map.line_col(offset.min(before.len()))),
+            ..error("the file is not valid UTF-8 text; a scene file is TOML".into())
+        }
+    })?;
+    parse(path, &text, overrides)
+}
+
+/// Parses and validates scene text; `path` is used in messages only.
+pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, SceneError> {
+    let map = SourceMap::new(text);
+    if text.trim().is_empty() {
+        return Err(SceneError {
+            file: path.to_path_buf(),
+            key: None,
+            location: None,
+            problem:
+                "the file is empty; a scene needs at least [body], solver.t_end and output.every"
+                    .into(),
+        });
+    }
+    let doc: SceneDoc = toml::from_str(text).map_err(|e| {
+        let span = e.span();
+        let problem = e.message().trim().to_string();
+        SceneError {
+            file: path.to_path_buf(),
+            key: span.as_ref().and_then(|s| map.key_at(s.start)).map(|k| {
+                // serde names a missing key in its message; the span is then its table.
+                k.to_string()
+            }),
+            location: span.map(|s| map.line_col(s.start)),
+            problem,
+        }
+    })?;
+    validate(doc, overrides).map_err(|inv| SceneError {
+        file: path.to_path_buf(),
+        location: map.locate(&inv.key),
+        key: Some(inv.key.to_string()),
+        problem: inv.problem,
+    })
+}
+
+fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        invalid(key, format!("must be a finite number ({unit}), got {v}"))
+    }
+}
+
+fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        invalid(
+            key,
+            format!("must be a finite number > 0 ({unit}), got {v}"),
+        )
+    }
+}
+
+fn vector(key: KeyPath, v: [f64; 3], unit: &str) -> Checked<Vector3<f64>> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(Vector3::from(v))
+    } else {
+        invalid(
+            key,
+            format!("every component must be a finite number ({unit}), got {v:?}"),
+        )
+    }
+}
+
+/// The key of an overridable value: `solver.dt`, or `solver.dt (from --dt)` when the command line set it.
+fn key_of(section: &str, name: &str, overridden: bool) -> KeyPath {
+    let key = KeyPath::root().key(section).key(name);
+    if overridden {
+        key.from_flag(&format!("--{}", name.replace('_', "-")))
+    } else {
+        key
+    }
+}
+
+fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
+    let body = validate_body(&doc.body)?;
+    let attitude0 = match doc.initial.as_ref().and_then(|i| i.attitude) {
+        None => UnitQuaternion::identity(),
+        Some(q) => {
+            let key = KeyPath::root().key("initial").key("attitude");
+            if !q.iter().all(|x| x.is_finite()) {
+                return invalid(key, format!("every component must be finite, got {q:?}"));
+            }
+            let quat = Quaternion::new(q[0], q[1], q[2], q[3]);
+            if quat.norm() < 1e-12 {
+                return invalid(
+                    key,
+                    "the zero quaternion is not an attitude; give [w, x, y, z] with a nonzero norm (identity: [1, 0, 0, 0])",
+                );
+            }
+            UnitQuaternion::from_quaternion(quat)
+        }
+    };
+    let effects = doc
+        .effect
+        .iter()
+        .enumerate()
+        .map(|(i, e)| validate_effect(i, e))
+        .collect::<Checked<Vec<_>>>()?;
+    if matches!(doc.motion, Some(MotionDoc::FixedAxis { .. })) && !effects.is_empty() {
+        return invalid(
+            KeyPath::root().key("effect").index(0),
+            "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no effects; remove the [[effect]] tables or use free motion",
+        );
+    }
+    let gravity_count = effects
+        .iter()
+        .filter(|e| matches!(e, Effect::Gravity { .. }))
+        .count();
+    if gravity_count > 1 {
+        let second = doc
+            .effect
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| matches!(e, EffectDoc::Gravity { .. }))
+            .nth(1)
+            .map_or(0, |(i, _)| i);
+        return invalid(
+            KeyPath::root().key("effect").index(second),
+            "only one gravity effect is allowed: its pivot is the single fixed point of the body",
+        );
+    }
+    let motion = validate_motion(&doc, &body, &attitude0, &effects)?;
+    let solver = validate_solver(&doc.solver, overrides)?;
+    let every_key = key_of("output", "every", overrides.every.is_some());
+    let every = positive(
+        every_key.clone(),
+        overrides.every.unwrap_or(doc.output.every),
+        "s",
+    )?;
+    if solver.t_end > 0.0 && every > solver.t_end {
+        return invalid(
+            every_key,
+            format!(
+                "every = {every} s is longer than t_end = {} s: the run would have no rows between its ends; use every <= t_end",
+                solver.t_end
+            ),
+        );
+    }
+    let schedule = Schedule::new(every, solver.t_end).map_err(|e| Invalid {
+        key: every_key.clone(),
+        problem: e.to_string(),
+    })?;
+    let rows = schedule.len() as f64;
+    if rows > MAX_ROWS {
+        return invalid(
+            every_key,
+            format!(
+                "t_end / every would write {rows:.3e} rows, more than the limit of {MAX_ROWS:.0e}; use a larger every"
+            ),
+        );
+    }
+    if solver.method.is_fixed_step() {
+        let steps = (solver.t_end / solver.dt).ceil();
+        if steps > MAX_FIXED_STEPS {
+            return invalid(
+                key_of("solver", "dt", overrides.dt.is_some()),
+                format!(
+                    "t_end / dt would take {steps:.3e} steps, more than the limit of {MAX_FIXED_STEPS:.0e}; use a larger dt or an adaptive method"
+                ),
+            );
+        }
+    }
+    let compare_tolerance = match &doc.compare {
+        None => 1e-8,
+        Some(c) => positive(
+            KeyPath::root().key("compare").key("tolerance"),
+            c.tolerance,
+            "largest allowed difference",
+        )?,
+    };
+    Ok(Scene {
+        name: doc.name.clone().unwrap_or_default(),
+        description: doc.description.clone().unwrap_or_default(),
+        body,
+        motion,
+        attitude0,
+        effects,
+        solver,
+        schedule,
+        compare_tolerance,
+    })
+}
+
+fn validate_body(doc: &BodyDoc) -> Checked<RigidBody> {
+    let body_key = || KeyPath::root().key("body");
+    let located = |e: InvalidBody| {
+        let mut key = body_key();
+        for part in e.key.split('.') {
+            key = key.key(part);
+        }
+        Invalid {
+            key,
+            problem: e.problem,
+        }
+    };
+    match (&doc.shape, &doc.inertia) {
+        (Some(_), Some(_)) => invalid(
+            body_key().key("inertia"),
+            "give either `shape` or `inertia`, not both",
+        ),
+        (None, None) => invalid(
+            body_key(),
+            "the body needs `shape` (e.g. { type = \"thin_disk\", radius = 0.3 }) or `inertia` ([I1, I2, I3] or a 3x3 tensor)",
+        ),
+        (Some(shape), None) => {
+            let shape = match *shape {
+                ShapeDoc::ThinDisk { radius } => Shape::ThinDisk { radius },
+                ShapeDoc::Disk { radius, thickness } => Shape::Disk { radius, thickness },
+                ShapeDoc::ThinRod { length } => Shape::ThinRod { length },
+                ShapeDoc::Sphere { radius } => Shape::Sphere { radius },
+                ShapeDoc::Box { size } => Shape::Box { size },
+                ShapeDoc::Cylinder { radius, height } => Shape::Cylinder { radius, height },
+            };
+            RigidBody::from_shape(doc.mass, shape).map_err(located)
+        }
+        (None, Some(inertia)) => {
+            let tensor = match inertia {
+                InertiaDoc::Principal(m) => Matrix3::from_diagonal(&Vector3::from(*m)),
+                InertiaDoc::Full(rows) => Matrix3::from_fn(|r, c| rows[r][c]),
+            };
+            RigidBody::new(doc.mass, tensor).map_err(located)
+        }
+    }
+}
+
+fn validate_motion(
+    doc: &SceneDoc,
+    body: &RigidBody,
+    attitude0: &UnitQuaternion<f64>,
+    effects: &[Effect],
+) -> Checked<MotionSpec> {
+    let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
+    match &doc.motion {
+        None | Some(MotionDoc::Free) => {
+            let omega0_b = match initial_omega {
+                None => Vector3::zeros(),
+                Some(w) => vector(KeyPath::root().key("initial").key("omega"), w, "rad/s")?,
+            };
+            let center_b = effects
+                .iter()
+                .find_map(|e| match e {
+                    Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
+                    _ => None,
+                })
+                .unwrap_or_else(Vector3::zeros);
+            let body_key = if doc.body.shape.is_some() {
+                "shape"
+            } else {
+                "inertia"
+            };
+            let free_body = FreeBody::new(body, &center_b).map_err(|e| Invalid {
+                key: KeyPath::root().key("body").key(body_key),
+                problem: e.to_string(),
+            })?;
+            Ok(MotionSpec::Free {
+                omega0_b,
+                body: free_body,
+            })
+        }
+        Some(MotionDoc::FixedAxis {
+            axis,
+            tilt_deg,
+            rate,
+            accel,
+            point,
+        }) => {
+            let motion = || KeyPath::root().key("motion");
+            if initial_omega.is_some() {
+                return invalid(
+                    KeyPath::root().key("initial").key("omega"),
+                    "a fixed-axis motion sets ω from `motion.rate`; remove initial.omega",
+                );
+            }
+            let axis_b = match (axis, tilt_deg) {
+                (Some(_), Some(_)) => {
+                    return invalid(
+                        motion().key("tilt_deg"),
+                        "give either `axis` or `tilt_deg`, not both",
+                    );
+                }
+                (None, None) => {
+                    return invalid(
+                        motion(),
+                        "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
+                    );
+                }
+                (Some(a), None) => {
+                    let a = vector(motion().key("axis"), *a, "direction")?;
+                    let norm = a.norm();
+                    if !(norm > 1e-300 && norm.is_finite()) {
+                        return invalid(
+                            motion().key("axis"),
+                            "the axis is the zero vector; give a nonzero direction in body axes",
+                        );
+                    }
+                    a / norm
+                }
+                (None, Some(tilt)) => {
+                    let tilt = finite(motion().key("tilt_deg"), *tilt, "degrees")?.to_radians();
+                    Vector3::new(0.0, -tilt.sin(), tilt.cos())
+                }
+            };
+            Ok(MotionSpec::FixedAxis(FixedAxis::new(
+                body,
+                axis_b,
+                finite(motion().key("rate"), *rate, "rad/s")?,
+                finite(motion().key("accel"), *accel, "rad/s^2")?,
+                match point {
+                    None => Vector3::zeros(),
+                    Some(p) => vector(motion().key("point"), *p, "m")?,
+                },
+                *attitude0,
+            )))
+        }
+    }
+}
+
+fn validate_effect(index: usize, doc: &EffectDoc) -> Checked<Effect> {
+    let key = |name: &str| KeyPath::root().key("effect").index(index).key(name);
+    Ok(match doc {
+        EffectDoc::Torque {
+            frame,
+            value,
+            profile,
+            freq_hz,
+            phase_deg,
+            t_on,
+            t_off,
+        } => {
+            let profile = profile.as_ref().unwrap_or(&ProfileDoc::Constant);
+            let misplaced = |name: &str, present: bool, kind: &str| -> Checked<()> {
+                if present {
+                    invalid(
+                        key(name),
+                        format!("`{name}` applies to profile = \"{kind}\" only"),
+                    )
+                } else {
+                    Ok(())
+                }
+            };
+            let profile = match profile {
+                ProfileDoc::Constant => {
+                    misplaced("freq_hz", freq_hz.is_some(), "sine")?;
+                    misplaced("phase_deg", phase_deg.is_some(), "sine")?;
+                    misplaced("t_on", t_on.is_some(), "step")?;
+                    misplaced("t_off", t_off.is_some(), "step")?;
+                    TorqueProfile::Constant
+                }
+                ProfileDoc::Sine => {
+                    misplaced("t_on", t_on.is_some(), "step")?;
+                    misplaced("t_off", t_off.is_some(), "step")?;
+                    let Some(f) = freq_hz else {
+                        return invalid(
+                            key("freq_hz"),
+                            "a sine torque needs `freq_hz` (Hz, finite, >= 0)",
+                        );
+                    };
+                    let f = finite(key("freq_hz"), *f, "Hz")?;
+                    if f < 0.0 {
+                        return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f}"));
+                    }
+                    TorqueProfile::Sine {
+                        freq_hz: f,
+                        phase_rad: finite(key("phase_deg"), phase_deg.unwrap_or(0.0), "degrees")?
+                            .to_radians(),
+                    }
+                }
+                ProfileDoc::Step => {
+                    misplaced("freq_hz", freq_hz.is_some(), "sine")?;
+                    misplaced("phase_deg", phase_deg.is_some(), "sine")?;
+                    let t_on = finite(key("t_on"), t_on.unwrap_or(0.0), "s")?;
+                    let t_off = t_off.unwrap_or(f64::INFINITY);
+                    if t_off.is_nan() || t_off <= t_on {
+                        return invalid(
+                            key("t_off"),
+                            format!("must be later than t_on = {t_on} s, got {t_off}"),
+                        );
+                    }
+                    TorqueProfile::Step { t_on, t_off }
+                }
+            };
+            Effect::Torque {
+                frame: match frame {
+                    None | Some(FrameDoc::Body) => Frame::Body,
+                    Some(FrameDoc::Space) => Frame::Space,
+                },
+                value: vector(key("value"), *value, "N*m")?,
+                profile,
+            }
+        }
+        EffectDoc::Gravity { g, pivot } => Effect::Gravity {
+            g_s: vector(key("g"), g.unwrap_or([0.0, 0.0, -9.81]), "m/s^2")?,
+            pivot_b: vector(key("pivot"), *pivot, "m")?,
+        },
+        EffectDoc::Damping { c } => {
+            let c = finite(key("c"), *c, "N*m*s")?;
+            if c < 0.0 {
+                return invalid(
+                    key("c"),
+                    format!("must be >= 0 (N*m*s): a negative damping adds energy, got {c}"),
+                );
+            }
+            Effect::Damping { c }
+        }
+    })
+}
+
+fn choice<T: Copy>(key: KeyPath, given: &str, options: &[(&str, T)]) -> Checked<T> {
+    options
+        .iter()
+        .find(|(name, _)| *name == given)
+        .map(|(_, v)| *v)
+        .map_or_else(
+            || {
+                let names: Vec<&str> = options.iter().map(|(n, _)| *n).collect();
+                invalid(
+                    key,
+                    format!(
+                        "unknown value \"{given}\"; expected one of: {}",
+                        names.join(", ")
+                    ),
+                )
+            },
+            Ok,
+        )
+}
+
+fn validate_solver(doc: &SolverDoc, o: &Overrides) -> Checked<SolverConfig> {
+    let methods: Vec<(&str, MethodName)> = MethodName::ALL.iter().map(|m| (m.name(), *m)).collect();
+    let method = choice(
+        key_of("solver", "method", o.method.is_some()),
+        o.method
+            .as_deref()
+            .or(doc.method.as_deref())
+            .unwrap_or("dop853"),
+        &methods,
+    )?;
+    let frame = choice(
+        key_of("solver", "frame", o.frame.is_some()),
+        o.frame
+            .as_deref()
+            .or(doc.frame.as_deref())
+            .unwrap_or("body"),
+        &[("body", Frame::Body), ("space", Frame::Space)],
+    )?;
+    let backend = choice(
+        key_of("solver", "backend", o.backend.is_some()),
+        o.backend
+            .as_deref()
+            .or(doc.backend.as_deref())
+            .unwrap_or("own"),
+        &[
+            ("own", BackendName::Own),
+            ("ode_solvers", BackendName::OdeSolvers),
+        ],
+    )?;
+    let rtol = o.rtol.or(doc.rtol).unwrap_or(1e-10);
+    let rtol_key = key_of("solver", "rtol", o.rtol.is_some());
+    if !(rtol.is_finite() && (1e-14..1.0).contains(&rtol)) {
+        return invalid(
+            rtol_key,
+            format!(
+                "must be a finite number in [1e-14, 1) (relative tolerance; 1e-14 is the limit of double precision), got {rtol}"
+            ),
+        );
+    }
+    let atol = o.atol.or(doc.atol).unwrap_or(1e-12);
+    if !(atol.is_finite() && atol > 0.0) {
+        return invalid(
+            key_of("solver", "atol", o.atol.is_some()),
+            format!("must be a finite number > 0 (absolute tolerance), got {atol}"),
+        );
+    }
+    let dt = positive(
+        key_of("solver", "dt", o.dt.is_some()),
+        o.dt.or(doc.dt).unwrap_or(1e-3),
+        "s",
+    )?;
+    let t_end_key = key_of("solver", "t_end", o.t_end.is_some());
+    let t_end = finite(t_end_key.clone(), o.t_end.unwrap_or(doc.t_end), "s")?;
+    if t_end < 0.0 {
+        return invalid(t_end_key, format!("must be >= 0 (s), got {t_end}"));
+    }
+    Ok(SolverConfig {
+        method,
+        frame,
+        backend,
+        rtol,
+        atol,
+        dt,
+        t_end,
+    })
+}

@@ -1,0 +1,160 @@
+//! Where keys are in a scene file's text: key paths, byte offset → line and column, and key path ↔ span.
+
+use std::fmt;
+use std::ops::Range;
+
+use toml::de::{DeTable, DeValue};
+
+/// One step of a key path.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Segment {
+    Key(String),
+    Index(usize),
+}
+
+/// The path of a key in a scene, e.g. `body.mass` or `effect[1].c`; optionally set from a command-line flag.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct KeyPath {
+    segments: Vec<Segment>,
+    flag: Option<String>,
+}
+
+impl KeyPath {
+    /// The document root (an empty path).
+    pub fn root() -> Self {
+        Self::default()
+    }
+
+    /// This path extended by a table key.
+    pub fn key(mut self, name: &str) -> Self {
+        self.segments.push(Segment::Key(name.to_string()));
+        self
+    }
+
+    /// This path extended by an array index.
+    pub fn index(mut self, i: usize) -> Self {
+        self.segments.push(Segment::Index(i));
+        self
+    }
+
+    /// Marks the value as given by a command-line flag instead of the file.
+    pub fn from_flag(mut self, flag: &str) -> Self {
+        self.flag = Some(flag.to_string());
+        self
+    }
+}
+
+impl fmt::Display for KeyPath {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, s) in self.segments.iter().enumerate() {
+            match s {
+                Segment::Key(k) if i == 0 => write!(f, "{k}")?,
+                Segment::Key(k) => write!(f, ".{k}")?,
+                Segment::Index(n) => write!(f, "[{n}]")?,
+            }
+        }
+        if let Some(flag) = &self.flag {
+            write!(f, " (from {flag})")?;
+        }
+        Ok(())
+    }
+}
+
+/// A scene file's text, for turning offsets and key paths into line and column.
+pub struct SourceMap<'a> {
+    text: &'a str,
+}
+
+/// A key found in the text: its path, the span of the key and the span of its value.
+struct Entry {
+    path: KeyPath,
+    key_span: Range<usize>,
+    value_span: Range<usize>,
+}
+
+impl<'a> SourceMap<'a> {
+    pub fn new(text: &'a str) -> Self {
+        Self { text }
+    }
+
+    /// 1-based line and column (in characters) of a byte offset.
+    pub fn line_col(&self, offset: usize) -> (usize, usize) {
+        let offset = offset.min(self.text.len());
+        let before = self.text.get(..offset).unwrap_or(self.text);
+        let line = before.matches('\n').count() + 1;
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let col = before[line_start..].chars().count() + 1;
+        (line, col)
+    }
+
+    /// The innermost key whose key or value contains the byte offset.
+    pub fn key_at(&self, offset: usize) -> Option<KeyPath> {
+        self.entries()
+            .into_iter()
+            .filter(|e| e.key_span.contains(&offset) || e.value_span.contains(&offset))
+            .min_by_key(|e| {
+                let k = e.key_span.len();
+                if e.key_span.contains(&offset) {
+                    k
+                } else {
+                    e.value_span.len()
+                }
+            })
+            .map(|e| e.path)
+    }
+
+    /// Line and column of a key (of its value where the key is written, else of the key), or of the nearest
+    /// enclosing key that is written in the file. `None` for values from the command line.
+    pub fn locate(&self, path: &KeyPath) -> Option<(usize, usize)> {
+        if path.flag.is_some() {
+            return None;
+        }
+        let entries = self.entries();
+        let mut prefix = path.segments.clone();
+        while !prefix.is_empty() {
+            if let Some(e) = entries.iter().find(|e| e.path.segments == prefix) {
+                return Some(self.line_col(e.key_span.start));
+            }
+            prefix.pop();
+        }
+        None
+    }
+
+    fn entries(&self) -> Vec<Entry> {
+        let mut out = Vec::new();
+        if let Ok(table) = DeTable::parse(self.text) {
+            collect_table(table.get_ref(), &KeyPath::root(), &mut out);
+        }
+        out
+    }
+}
+
+fn collect_table(table: &DeTable<'_>, path: &KeyPath, out: &mut Vec<Entry>) {
+    for (key, value) in table.iter() {
+        let child = path.clone().key(key.get_ref());
+        out.push(Entry {
+            path: child.clone(),
+            key_span: key.span(),
+            value_span: value.span(),
+        });
+        collect_value(value.get_ref(), &child, out);
+    }
+}
+
+fn collect_value(value: &DeValue<'_>, path: &KeyPath, out: &mut Vec<Entry>) {
+    match value {
+        DeValue::Table(t) => collect_table(t, path, out),
+        DeValue::Array(items) => {
+            for (i, item) in items.iter().enumerate() {
+                let child = path.clone().index(i);
+                out.push(Entry {
+                    path: child.clone(),
+                    key_span: item.span(),
+                    value_span: item.span(),
+                });
+                collect_value(item.get_ref(), &child, out);
+            }
+        }
+        _ => {}
+    }
+}
