@@ -29,6 +29,13 @@ pub enum Command {
         after_help = "Example:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn run scenarios/tilted_disk.toml --t-end 1 --every 0.1"
     )]
     Run(RunArgs),
+    /// Run a scene in both forms of Euler's equation and against its closed form; exit 1 if they differ by more
+    /// than the scene's [compare] tolerance.
+    #[command(after_help = "Example:\n  eulerdyn compare scenarios/asymmetric_free.toml")]
+    Compare {
+        /// Scene file (TOML).
+        scene: PathBuf,
+    },
     /// Validate a scene and print what it will simulate.
     #[command(after_help = "Example:\n  eulerdyn check scenarios/tilted_disk.toml")]
     Check {
@@ -90,6 +97,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Command::Run(args) => run(&args),
         Command::Check { scene } => check(&scene),
+        Command::Compare { scene } => compare(&scene),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -109,6 +117,22 @@ fn check(path: &Path) -> Result<(), Failure> {
     let text = report::describe(&scene);
     print!("{text}");
     Ok(())
+}
+
+fn compare(path: &Path) -> Result<(), Failure> {
+    let scene = scene::load(path, &Overrides::default())?;
+    let comparison = crate::compare::compare(&scene)
+        .map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
+    print!("{}", comparison.report());
+    if comparison.passes() {
+        Ok(())
+    } else {
+        Err(Failure::Run(format!(
+            "{}: the differences exceed the tolerance {:e}",
+            path.display(),
+            comparison.tolerance
+        )))
+    }
 }
 
 fn run(args: &RunArgs) -> Result<(), Failure> {

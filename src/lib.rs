@@ -23,3 +23,4 @@ pub mod report;
 pub mod scene;
 pub mod simulate;
 pub mod source_map;
+pub mod compare;

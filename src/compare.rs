@@ -1,0 +1,310 @@
+//! `eulerdyn compare`: the scene run in both forms of Euler's equation, side by side, and against the closed form
+//! where one applies. The two runs stream in lockstep (the space form on a second thread), so memory does not grow
+//! with the number of rows.
+
+use std::sync::mpsc;
+use std::thread;
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+use crate::effects::{Effect, TorqueProfile};
+use crate::exact::{AxialTorqueSymmetric, TorqueFreeBody};
+use crate::integrate::IntegrateError;
+use crate::model::{Frame, MotionSpec, Scene};
+use crate::output::Sample;
+use crate::simulate::{self, RunError};
+
+/// A closed-form solution that applies to a scene.
+pub enum Oracle {
+    /// Torque-free body: ω and attitude (Landau & Lifshitz §37).
+    TorqueFree {
+        exact: Box<TorqueFreeBody>,
+        /// Body → principal: the attitude of the principal axes in the body.
+        principal_b: UnitQuaternion<f64>,
+    },
+    /// Symmetric body (I1 = I2, body axes principal) under a constant torque along its symmetry axis: ω only.
+    AxialTorque(AxialTorqueSymmetric),
+    /// Prescribed fixed-axis motion: the closed-form H_s = I_s(θ)·ω_s against Ḣ_s = M_s integrated.
+    FixedAxis,
+}
+
+impl Oracle {
+    /// The closed form that applies to the scene, if any.
+    pub fn for_scene(scene: &Scene) -> Option<Oracle> {
+        let omega0_b = match &scene.motion {
+            MotionSpec::FixedAxis(_) => return Some(Oracle::FixedAxis),
+            MotionSpec::Free { omega0_b, .. } => *omega0_b,
+        };
+        let principal = scene.body.principal();
+        let principal_b = UnitQuaternion::from_rotation_matrix(&principal.axes_b);
+        match scene.effects.as_slice() {
+            [] => {
+                let omega0_p = principal_b.inverse_transform_vector(&omega0_b);
+                TorqueFreeBody::new(
+                    principal.moments,
+                    omega0_p,
+                    scene.attitude0 * principal_b,
+                )
+                .ok()
+                .map(|exact| Oracle::TorqueFree {
+                    exact: Box::new(exact),
+                    principal_b,
+                })
+            }
+            [
+                Effect::Torque {
+                    frame: Frame::Body,
+                    value,
+                    profile: TorqueProfile::Constant,
+                },
+            ] => {
+                let m = principal.moments;
+                let axial = value[0] == 0.0 && value[1] == 0.0;
+                let body_axes_principal = principal_b == UnitQuaternion::identity();
+                (axial && body_axes_principal && m[0] == m[1])
+                    .then(|| AxialTorqueSymmetric::new(m[0], m[2], value[2], omega0_b).ok())
+                    .flatten()
+                    .map(Oracle::AxialTorque)
+            }
+            _ => None,
+        }
+    }
+
+    /// A short name for reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Oracle::TorqueFree { .. } => "torque-free body, Jacobi elliptic functions (Landau & Lifshitz §37)",
+            Oracle::AxialTorque(_) => "symmetric body under a constant axial torque (ω only)",
+            Oracle::FixedAxis => "prescribed fixed-axis motion, H_s = I_s(θ)·ω_s",
+        }
+    }
+
+    /// The closed-form values at time t: ω_b, attitude (if known), H_s (if known), energy (if known).
+    fn at(&self, t: f64) -> Exact {
+        match self {
+            Oracle::TorqueFree { exact, principal_b } => {
+                let omega_b = principal_b * exact.omega_p(t);
+                Exact {
+                    omega_b: Some(omega_b),
+                    q: Some(exact.attitude(t) * principal_b.inverse()),
+                    h_s: Some(exact.h_s()),
+                    energy: Some(exact.energy()),
+                }
+            }
+            Oracle::AxialTorque(exact) => Exact {
+                omega_b: Some(exact.omega_p(t)),
+                q: None,
+                h_s: None,
+                energy: None,
+            },
+            Oracle::FixedAxis => Exact::default(),
+        }
+    }
+}
+
+#[derive(Debug, Default)]
+struct Exact {
+    omega_b: Option<Vector3<f64>>,
+    q: Option<UnitQuaternion<f64>>,
+    h_s: Option<Vector3<f64>>,
+    energy: Option<f64>,
+}
+
+/// The largest difference of one quantity over the rows: absolute, with the largest magnitude seen, so that the
+/// relative difference is `abs / scale`.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Largest {
+    pub abs: f64,
+    pub scale: f64,
+}
+
+impl Largest {
+    fn add(&mut self, diff: f64, magnitude: f64) {
+        self.abs = self.abs.max(diff);
+        self.scale = self.scale.max(magnitude);
+    }
+
+    /// The difference relative to the largest magnitude (absolute when the quantity is zero throughout).
+    pub fn relative(&self) -> f64 {
+        if self.scale > 0.0 {
+            self.abs / self.scale
+        } else {
+            self.abs
+        }
+    }
+}
+
+/// Differences between two sources, per quantity.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Differences {
+    pub omega: Largest,
+    pub h_s: Largest,
+    /// Angle of the rotation between the two attitudes (rad; absolute).
+    pub attitude: Largest,
+    pub energy: Largest,
+    pub h_norm: Largest,
+    pub moment: Largest,
+}
+
+/// Angle of the rotation taking attitude a to b (rad): 2·atan2(|v|, |w|) of q = a⁻¹b, accurate for tiny angles
+/// (unlike 2·acos w) and insensitive to the sign of q.
+pub fn attitude_angle(a: &UnitQuaternion<f64>, b: &UnitQuaternion<f64>) -> f64 {
+    let q = a.rotation_to(b);
+    2.0 * q.imag().norm().atan2(q.scalar().abs())
+}
+
+impl Differences {
+    fn add_samples(&mut self, a: &Sample, b: &Sample) {
+        self.omega.add((a.omega_b - b.omega_b).norm(), a.omega_b.norm());
+        self.h_s.add((a.h_s - b.h_s).norm(), a.h_s.norm());
+        self.attitude.add(attitude_angle(&a.q, &b.q), 0.0);
+        self.energy.add((a.energy - b.energy).abs(), a.energy.abs());
+        self.h_norm.add((a.h_s.norm() - b.h_s.norm()).abs(), a.h_s.norm());
+        self.moment.add((a.m_s - b.m_s).norm(), a.m_s.norm());
+    }
+
+    fn add_exact(&mut self, s: &Sample, e: &Exact) {
+        if let Some(omega_b) = e.omega_b {
+            self.omega.add((s.omega_b - omega_b).norm(), omega_b.norm());
+        }
+        if let Some(q) = e.q {
+            self.attitude.add(attitude_angle(&s.q, &q), 0.0);
+        }
+        if let Some(h_s) = e.h_s {
+            self.h_s.add((s.h_s - h_s).norm(), h_s.norm());
+            self.h_norm.add((s.h_s.norm() - h_s.norm()).abs(), h_s.norm());
+        }
+        if let Some(energy) = e.energy {
+            self.energy.add((s.energy - energy).abs(), energy.abs());
+        }
+        if let Some(h_int) = s.h_s_integrated {
+            self.h_s.add((h_int - s.h_s).norm(), s.h_s.norm());
+        }
+    }
+
+    /// The quantities that were compared, as (name, relative difference).
+    pub fn rows(&self) -> Vec<(&'static str, f64)> {
+        [
+            ("omega", self.omega),
+            ("H_s", self.h_s),
+            ("attitude angle (rad)", self.attitude),
+            ("energy", self.energy),
+            ("|H|", self.h_norm),
+            ("M", self.moment),
+        ]
+        .into_iter()
+        .filter(|(_, d)| *d != Largest::default())
+        .map(|(n, d)| (n, d.relative()))
+        .collect()
+    }
+
+    /// The largest relative difference of any quantity.
+    pub fn worst(&self) -> f64 {
+        self.rows().iter().map(|r| r.1).fold(0.0, f64::max)
+    }
+}
+
+/// The outcome of `compare`.
+pub struct Comparison {
+    pub body_vs_space: Differences,
+    /// Against the closed form, for the body and the space form, when one applies.
+    pub exact: Option<(&'static str, Differences, Differences)>,
+    pub tolerance: f64,
+    pub rows: u64,
+}
+
+impl Comparison {
+    /// Whether every difference is within the scene's tolerance.
+    pub fn passes(&self) -> bool {
+        let exact_worst = self
+            .exact
+            .as_ref()
+            .map_or(0.0, |(_, b, s)| b.worst().max(s.worst()));
+        self.body_vs_space.worst().max(exact_worst) <= self.tolerance
+    }
+
+    /// A table for people: one line per quantity.
+    pub fn report(&self) -> String {
+        let mut out = String::new();
+        out.push_str(&format!(
+            "largest differences over {} rows (relative to the largest magnitude; attitude in rad)\n",
+            self.rows
+        ));
+        match &self.exact {
+            Some((name, _, _)) => out.push_str(&format!("closed form: {name}\n")),
+            None => out.push_str("closed form: none applies to this scene\n"),
+        }
+        out.push_str(&format!(
+            "{:<22} {:>14} {:>14} {:>14}\n",
+            "quantity", "body vs space", "body vs exact", "space vs exact"
+        ));
+        let exact_rows = self.exact.as_ref().map(|(_, b, s)| (b.rows(), s.rows()));
+        for (name, diff) in self.body_vs_space.rows() {
+            let lookup = |rows: &Vec<(&str, f64)>| {
+                rows.iter()
+                    .find(|r| r.0 == name)
+                    .map_or("-".to_string(), |r| format!("{:.3e}", r.1))
+            };
+            let (b, s) = exact_rows
+                .as_ref()
+                .map_or(("-".into(), "-".into()), |(b, s)| (lookup(b), lookup(s)));
+            out.push_str(&format!("{name:<22} {diff:>14.3e} {b:>14} {s:>14}\n"));
+        }
+        out.push_str(&format!(
+            "tolerance {:e}: {}\n",
+            self.tolerance,
+            if self.passes() { "within" } else { "EXCEEDED" }
+        ));
+        out
+    }
+}
+
+/// Runs the scene in both frames (in lockstep) and against its closed form.
+pub fn compare(scene: &Scene) -> Result<Comparison, RunError<mpsc::SendError<Sample>>> {
+    let mut body_scene = scene.clone();
+    body_scene.solver.frame = Frame::Body;
+    let mut space_scene = scene.clone();
+    space_scene.solver.frame = Frame::Space;
+    let oracle = Oracle::for_scene(scene);
+    let (sender, receiver) = mpsc::sync_channel::<Sample>(1024);
+    let space_run = thread::spawn(move || simulate::run(&space_scene, |s| sender.send(*s)));
+    let mut body_vs_space = Differences::default();
+    let mut body_vs_exact = Differences::default();
+    let mut space_vs_exact = Differences::default();
+    let mut rows = 0;
+    let body_result = simulate::run(&body_scene, |b: &Sample| {
+        let Ok(s) = receiver.recv() else {
+            // The space run stopped early; its own result says why.
+            return Err(mpsc::SendError(*b));
+        };
+        rows += 1;
+        body_vs_space.add_samples(b, &s);
+        if let Some(oracle) = &oracle {
+            let exact = oracle.at(b.t);
+            body_vs_exact.add_exact(b, &exact);
+            space_vs_exact.add_exact(&s, &exact);
+        }
+        Ok(())
+    });
+    drop(receiver);
+    let space_result = space_run.join().unwrap_or_else(|_| {
+        Err(RunError::Integrate(IntegrateError::Backend {
+            t: f64::NAN,
+            message: "the space-form run panicked".into(),
+        }))
+    });
+    // An integration failure in either run is the cause; a failed hand-over is only its consequence.
+    match (body_result, space_result) {
+        (Ok(_), Ok(_)) => {}
+        (Err(RunError::Integrate(e)), _) | (_, Err(RunError::Integrate(e))) => {
+            return Err(RunError::Integrate(e));
+        }
+        (Err(e), _) | (_, Err(e)) => return Err(e),
+    }
+    Ok(Comparison {
+        body_vs_space,
+        exact: oracle.map(|o| (o.name(), body_vs_exact, space_vs_exact)),
+        tolerance: scene.compare_tolerance,
+        rows,
+    })
+}
