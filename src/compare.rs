@@ -24,6 +24,14 @@ pub enum Oracle {
     },
     /// Symmetric body (I1 = I2, body axes principal) under a constant torque along its symmetry axis: ω only.
     AxialTorque(AxialTorqueSymmetric),
+    /// Spin about a principal axis under viscous damping M = −cω: ω(t) = ω(0)·exp(−c t / I) about the fixed axis,
+    /// turned angle ω(0)·I/c·(1 − exp(−c t / I)).
+    DampedSpin {
+        omega0_b: Vector3<f64>,
+        inertia: f64,
+        c: f64,
+        q0: UnitQuaternion<f64>,
+    },
     /// Prescribed fixed-axis motion: the closed-form H_s = I_s(θ)·ω_s against Ḣ_s = M_s integrated.
     FixedAxis,
 }
@@ -66,6 +74,18 @@ impl Oracle {
                     .flatten()
                     .map(Oracle::AxialTorque)
             }
+            [Effect::Damping { c }] => {
+                // ω(0) along a principal axis: I·ω = I_k·ω, with no transverse part (to round-off).
+                let h0_b = scene.body.inertia_c() * omega0_b;
+                let inertia = h0_b.dot(&omega0_b) / omega0_b.norm_squared();
+                let along = (h0_b - omega0_b * inertia).norm() <= 1e-14 * h0_b.norm();
+                (omega0_b.norm() > 0.0 && along && *c > 0.0).then_some(Oracle::DampedSpin {
+                    omega0_b,
+                    inertia,
+                    c: *c,
+                    q0: scene.attitude0,
+                })
+            }
             _ => None,
         }
     }
@@ -75,6 +95,7 @@ impl Oracle {
         match self {
             Oracle::TorqueFree { .. } => "torque-free body, Jacobi elliptic functions (Landau & Lifshitz §37)",
             Oracle::AxialTorque(_) => "symmetric body under a constant axial torque (ω only)",
+            Oracle::DampedSpin { .. } => "damped principal-axis spin, ω(0)·exp(−c t / I)",
             Oracle::FixedAxis => "prescribed fixed-axis motion, H_s = I_s(θ)·ω_s",
         }
     }
@@ -97,6 +118,24 @@ impl Oracle {
                 h_s: None,
                 energy: None,
             },
+            Oracle::DampedSpin {
+                omega0_b,
+                inertia,
+                c,
+                q0,
+            } => {
+                let decay = (-c * t / inertia).exp();
+                let w0 = omega0_b.norm();
+                let turned = w0 * inertia / c * (-(-c * t / inertia).exp_m1());
+                let axis = nalgebra::Unit::new_normalize(*omega0_b);
+                let q = q0 * UnitQuaternion::from_axis_angle(&axis, turned);
+                Exact {
+                    omega_b: Some(omega0_b * decay),
+                    q: Some(q),
+                    h_s: Some(q * (omega0_b * (inertia * decay))),
+                    energy: Some(0.5 * inertia * w0 * w0 * decay * decay),
+                }
+            }
             Oracle::FixedAxis => Exact::default(),
         }
     }
