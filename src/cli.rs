@@ -114,16 +114,25 @@ pub fn main() -> ExitCode {
 
 fn check(path: &Path) -> Result<(), Failure> {
     let scene = scene::load(path, &Overrides::default())?;
-    let text = report::describe(&scene);
-    print!("{text}");
-    Ok(())
+    print_stdout(&report::describe(&scene))
+}
+
+/// Writes `text` to stdout. A closed pipe (`| head`) is not an error; any other failure (a full disk) is a failed
+/// run, reported as such instead of a panic.
+fn print_stdout(text: &str) -> Result<(), Failure> {
+    let mut out = io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(Failure::Run(format!("stdout: cannot write: {e}"))),
+    }
 }
 
 fn compare(path: &Path) -> Result<(), Failure> {
     let scene = scene::load(path, &Overrides::default())?;
     let comparison = crate::compare::compare(&scene)
         .map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
-    print!("{}", comparison.report());
+    print_stdout(&comparison.report())?;
     if comparison.passes() {
         Ok(())
     } else {
@@ -157,6 +166,12 @@ fn run(args: &RunArgs) -> Result<(), Failure> {
         };
     };
     let file_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", out_path.display());
+    if same_file(&args.scene, out_path) {
+        return Err(Failure::Input(format!(
+            "{}: the output would overwrite the scene file; give another -o path",
+            out_path.display()
+        )));
+    }
     // A destination that exists and is not a regular file (/dev/null, a pipe) is written directly.
     if out_path.exists() && !out_path.is_file() && !out_path.is_dir() {
         let file = File::options()
@@ -215,6 +230,14 @@ fn write_csv<W: Write>(
     let report = simulate::run(scene, |s| writer.write(s))?;
     let out = writer.finish().map_err(RunError::Sink)?;
     Ok((report, out))
+}
+
+/// Whether two paths name the same existing file.
+fn same_file(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
 }
 
 fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {

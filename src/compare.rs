@@ -48,16 +48,12 @@ impl Oracle {
         match scene.effects.as_slice() {
             [] => {
                 let omega0_p = principal_b.inverse_transform_vector(&omega0_b);
-                TorqueFreeBody::new(
-                    principal.moments,
-                    omega0_p,
-                    scene.attitude0 * principal_b,
-                )
-                .ok()
-                .map(|exact| Oracle::TorqueFree {
-                    exact: Box::new(exact),
-                    principal_b,
-                })
+                TorqueFreeBody::new(principal.moments, omega0_p, scene.attitude0 * principal_b)
+                    .ok()
+                    .map(|exact| Oracle::TorqueFree {
+                        exact: Box::new(exact),
+                        principal_b,
+                    })
             }
             [
                 Effect::Torque {
@@ -93,7 +89,9 @@ impl Oracle {
     /// A short name for reports.
     pub fn name(&self) -> &'static str {
         match self {
-            Oracle::TorqueFree { .. } => "torque-free body, Jacobi elliptic functions (Landau & Lifshitz §37)",
+            Oracle::TorqueFree { .. } => {
+                "torque-free body, Jacobi elliptic functions (Landau & Lifshitz §37)"
+            }
             Oracle::AxialTorque(_) => "symmetric body under a constant axial torque (ω only)",
             Oracle::DampedSpin { .. } => "damped principal-axis spin, ω(0)·exp(−c t / I)",
             Oracle::FixedAxis => "prescribed fixed-axis motion, H_s = I_s(θ)·ω_s",
@@ -194,11 +192,13 @@ pub fn attitude_angle(a: &UnitQuaternion<f64>, b: &UnitQuaternion<f64>) -> f64 {
 
 impl Differences {
     fn add_samples(&mut self, a: &Sample, b: &Sample) {
-        self.omega.add((a.omega_b - b.omega_b).norm(), a.omega_b.norm());
+        self.omega
+            .add((a.omega_b - b.omega_b).norm(), a.omega_b.norm());
         self.h_s.add((a.h_s - b.h_s).norm(), a.h_s.norm());
         self.attitude.add(attitude_angle(&a.q, &b.q), 0.0);
         self.energy.add((a.energy - b.energy).abs(), a.energy.abs());
-        self.h_norm.add((a.h_s.norm() - b.h_s.norm()).abs(), a.h_s.norm());
+        self.h_norm
+            .add((a.h_s.norm() - b.h_s.norm()).abs(), a.h_s.norm());
         self.moment.add((a.m_s - b.m_s).norm(), a.m_s.norm());
     }
 
@@ -211,7 +211,8 @@ impl Differences {
         }
         if let Some(h_s) = e.h_s {
             self.h_s.add((s.h_s - h_s).norm(), h_s.norm());
-            self.h_norm.add((s.h_s.norm() - h_s.norm()).abs(), h_s.norm());
+            self.h_norm
+                .add((s.h_s.norm() - h_s.norm()).abs(), h_s.norm());
         }
         if let Some(energy) = e.energy {
             self.energy.add((s.energy - energy).abs(), energy.abs());
@@ -298,15 +299,22 @@ impl Comparison {
     }
 }
 
+/// The two runs of `compare` could not exchange a row: the other run stopped early (its own error says why).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("the other form's run stopped early")]
+pub struct HandOver;
+
 /// Runs the scene in both frames (in lockstep) and against its closed form.
-pub fn compare(scene: &Scene) -> Result<Comparison, RunError<mpsc::SendError<Sample>>> {
+pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
     let mut body_scene = scene.clone();
     body_scene.solver.frame = Frame::Body;
     let mut space_scene = scene.clone();
     space_scene.solver.frame = Frame::Space;
     let oracle = Oracle::for_scene(scene);
     let (sender, receiver) = mpsc::sync_channel::<Sample>(1024);
-    let space_run = thread::spawn(move || simulate::run(&space_scene, |s| sender.send(*s)));
+    let space_run = thread::spawn(move || {
+        simulate::run(&space_scene, |s| sender.send(*s).map_err(|_| HandOver))
+    });
     let mut body_vs_space = Differences::default();
     let mut body_vs_exact = Differences::default();
     let mut space_vs_exact = Differences::default();
@@ -314,7 +322,7 @@ pub fn compare(scene: &Scene) -> Result<Comparison, RunError<mpsc::SendError<Sam
     let body_result = simulate::run(&body_scene, |b: &Sample| {
         let Ok(s) = receiver.recv() else {
             // The space run stopped early; its own result says why.
-            return Err(mpsc::SendError(*b));
+            return Err(HandOver);
         };
         rows += 1;
         body_vs_space.add_samples(b, &s);

@@ -12,6 +12,7 @@
 
 pub mod body;
 pub mod cli;
+pub mod compare;
 pub mod effects;
 pub mod exact;
 pub mod integrate;
@@ -23,4 +24,3 @@ pub mod report;
 pub mod scene;
 pub mod simulate;
 pub mod source_map;
-pub mod compare;

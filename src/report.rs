@@ -54,7 +54,7 @@ pub fn describe(scene: &Scene) -> String {
             let _ = writeln!(
                 w,
                 "motion     free rotation, omega(0) = {} rad/s (body axes)",
-                vec3(&omega0_b)
+                vec3(omega0_b)
             );
             let center = scene.effects.iter().find_map(|e| match e {
                 Effect::Gravity { pivot_b, .. } => Some(*pivot_b),

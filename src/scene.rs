@@ -6,7 +6,8 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
-use serde::Deserialize;
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer};
 
 use crate::body::{InvalidBody, RigidBody, Shape};
 use crate::effects::{Effect, TorqueProfile};
@@ -85,15 +86,47 @@ struct BodyDoc {
     inertia: Option<InertiaDoc>,
 }
 
+/// An array of exactly `N` numbers. (serde's `[f64; N]` ignores extra elements when TOML drives it, so
+/// `omega = [1, 2, 3, 4]` would pass silently.)
+#[derive(Debug, Clone, Copy)]
+struct Numbers<const N: usize>([f64; N]);
+
+impl<'de, const N: usize> Deserialize<'de> for Numbers<N> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let items = Vec::<f64>::deserialize(deserializer)?;
+        <[f64; N]>::try_from(items.as_slice())
+            .map(Numbers)
+            .map_err(|_| {
+                D::Error::invalid_length(items.len(), &format!("an array of {N} numbers").as_str())
+            })
+    }
+}
+
+/// The `type` of a shape.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum ShapeKind {
+    ThinDisk,
+    Disk,
+    ThinRod,
+    Sphere,
+    Box,
+    Cylinder,
+}
+
+/// `body.shape`: one flat table for every shape type, so that the TOML parser can point at the exact key of an
+/// error (an internally tagged enum buffers the table and loses the positions); which keys a type takes is
+/// checked in [`validate_shape`].
 #[derive(Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-enum ShapeDoc {
-    ThinDisk { radius: f64 },
-    Disk { radius: f64, thickness: f64 },
-    ThinRod { length: f64 },
-    Sphere { radius: f64 },
-    Box { size: [f64; 3] },
-    Cylinder { radius: f64, height: f64 },
+#[serde(deny_unknown_fields)]
+struct ShapeDoc {
+    #[serde(rename = "type")]
+    kind: Option<ShapeKind>,
+    radius: Option<f64>,
+    thickness: Option<f64>,
+    length: Option<f64>,
+    size: Option<Numbers<3>>,
+    height: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -106,26 +139,32 @@ enum InertiaDoc {
     Full([[f64; 3]; 3]),
 }
 
-#[derive(Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-enum MotionDoc {
+/// The `type` of a motion.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum MotionKind {
     Free,
-    FixedAxis {
-        axis: Option<[f64; 3]>,
-        tilt_deg: Option<f64>,
-        #[serde(default)]
-        rate: f64,
-        #[serde(default)]
-        accel: f64,
-        point: Option<[f64; 3]>,
-    },
+    FixedAxis,
+}
+
+/// `[motion]`: one flat table for every motion type (see [`ShapeDoc`]); checked in [`validate_motion`].
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MotionDoc {
+    #[serde(rename = "type")]
+    kind: Option<MotionKind>,
+    axis: Option<Numbers<3>>,
+    tilt_deg: Option<f64>,
+    rate: Option<f64>,
+    accel: Option<f64>,
+    point: Option<Numbers<3>>,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct InitialDoc {
-    omega: Option<[f64; 3]>,
-    attitude: Option<[f64; 4]>,
+    omega: Option<Numbers<3>>,
+    attitude: Option<Numbers<4>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -143,25 +182,31 @@ enum ProfileDoc {
     Step,
 }
 
+/// The `type` of an effect.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum EffectKind {
+    Torque,
+    Gravity,
+    Damping,
+}
+
+/// One `[[effect]]`: one flat table for every effect type (see [`ShapeDoc`]); checked in [`validate_effect`].
 #[derive(Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-enum EffectDoc {
-    Torque {
-        frame: Option<FrameDoc>,
-        value: [f64; 3],
-        profile: Option<ProfileDoc>,
-        freq_hz: Option<f64>,
-        phase_deg: Option<f64>,
-        t_on: Option<f64>,
-        t_off: Option<f64>,
-    },
-    Gravity {
-        g: Option<[f64; 3]>,
-        pivot: [f64; 3],
-    },
-    Damping {
-        c: f64,
-    },
+#[serde(deny_unknown_fields)]
+struct EffectDoc {
+    #[serde(rename = "type")]
+    kind: Option<EffectKind>,
+    frame: Option<FrameDoc>,
+    value: Option<Numbers<3>>,
+    profile: Option<ProfileDoc>,
+    freq_hz: Option<f64>,
+    phase_deg: Option<f64>,
+    t_on: Option<f64>,
+    t_off: Option<f64>,
+    g: Option<Numbers<3>>,
+    pivot: Option<Numbers<3>>,
+    c: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -245,12 +290,44 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
     let doc: SceneDoc = toml::from_str(text).map_err(|e| {
         let span = e.span();
         let problem = e.message().trim().to_string();
+        let file = path.to_path_buf();
+        // serde names a missing key in its message; the span is then that of its table (empty for the root).
+        let missing = problem
+            .strip_prefix("missing field `")
+            .and_then(|rest| rest.split('`').next());
+        if let Some(name) = missing {
+            let table = span
+                .as_ref()
+                .map_or_else(KeyPath::root, |s| map.table_at(s));
+            return SceneError {
+                file,
+                location: if table.is_root() {
+                    None
+                } else {
+                    span.map(|s| map.line_col(s.start))
+                },
+                key: Some(table.key(name).to_string()),
+                problem: format!("missing: this key is required ({problem})"),
+            };
+        }
+        // The parser's "duplicate key" does not say which; its span does.
+        let duplicate = span
+            .as_ref()
+            .and_then(|s| text.get(s.clone()))
+            .map(str::trim)
+            .filter(|name| problem == "duplicate key" && !name.is_empty() && !name.contains('\n'));
+        let problem = match duplicate {
+            Some(name) => {
+                format!("duplicate key `{name}`: each key and table may be given only once")
+            }
+            None => problem,
+        };
         SceneError {
-            file: path.to_path_buf(),
-            key: span.as_ref().and_then(|s| map.key_at(s.start)).map(|k| {
-                // serde names a missing key in its message; the span is then its table.
-                k.to_string()
-            }),
+            file,
+            key: span
+                .as_ref()
+                .and_then(|s| map.key_at(s.start))
+                .map(|k| k.to_string()),
             location: span.map(|s| map.line_col(s.start)),
             problem,
         }
@@ -261,6 +338,36 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
         key: Some(inv.key.to_string()),
         problem: inv.problem,
     })
+}
+
+/// The value of a key that `kind` requires.
+fn required<T>(key: KeyPath, value: Option<T>, kind: &str) -> Checked<T> {
+    value.ok_or_else(|| Invalid {
+        problem: format!("missing: {kind} needs `{}`", key.last_key()),
+        key,
+    })
+}
+
+/// Refuses the keys of `table` that are given (`given`: every optional key and whether it is present) but that
+/// `kind` does not take (`takes`).
+fn only_keys(table: &KeyPath, kind: &str, takes: &[&str], given: &[(&str, bool)]) -> Checked<()> {
+    match given
+        .iter()
+        .find(|(name, present)| *present && !takes.contains(name))
+    {
+        None => Ok(()),
+        Some((name, _)) => invalid(
+            table.clone().key(name),
+            if takes.is_empty() {
+                format!("{kind} takes no `{name}`")
+            } else {
+                format!(
+                    "{kind} takes no `{name}`; its keys are: {}",
+                    takes.join(", ")
+                )
+            },
+        ),
+    }
 }
 
 fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
@@ -307,7 +414,7 @@ fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
     let body = validate_body(&doc.body)?;
     let attitude0 = match doc.initial.as_ref().and_then(|i| i.attitude) {
         None => UnitQuaternion::identity(),
-        Some(q) => {
+        Some(Numbers(q)) => {
             let key = KeyPath::root().key("initial").key("attitude");
             if !q.iter().all(|x| x.is_finite()) {
                 return invalid(key, format!("every component must be finite, got {q:?}"));
@@ -328,7 +435,11 @@ fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
         .enumerate()
         .map(|(i, e)| validate_effect(i, e))
         .collect::<Checked<Vec<_>>>()?;
-    if matches!(doc.motion, Some(MotionDoc::FixedAxis { .. })) && !effects.is_empty() {
+    let fixed_axis = doc
+        .motion
+        .as_ref()
+        .is_some_and(|m| m.kind == Some(MotionKind::FixedAxis));
+    if fixed_axis && !effects.is_empty() {
         return invalid(
             KeyPath::root().key("effect").index(0),
             "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no effects; remove the [[effect]] tables or use free motion",
@@ -343,7 +454,7 @@ fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
             .effect
             .iter()
             .enumerate()
-            .filter(|(_, e)| matches!(e, EffectDoc::Gravity { .. }))
+            .filter(|(_, e)| e.kind == Some(EffectKind::Gravity))
             .nth(1)
             .map_or(0, |(i, _)| i);
         return invalid(
@@ -435,15 +546,7 @@ fn validate_body(doc: &BodyDoc) -> Checked<RigidBody> {
             "the body needs `shape` (e.g. { type = \"thin_disk\", radius = 0.3 }) or `inertia` ([I1, I2, I3] or a 3x3 tensor)",
         ),
         (Some(shape), None) => {
-            let shape = match *shape {
-                ShapeDoc::ThinDisk { radius } => Shape::ThinDisk { radius },
-                ShapeDoc::Disk { radius, thickness } => Shape::Disk { radius, thickness },
-                ShapeDoc::ThinRod { length } => Shape::ThinRod { length },
-                ShapeDoc::Sphere { radius } => Shape::Sphere { radius },
-                ShapeDoc::Box { size } => Shape::Box { size },
-                ShapeDoc::Cylinder { radius, height } => Shape::Cylinder { radius, height },
-            };
-            RigidBody::from_shape(doc.mass, shape).map_err(located)
+            RigidBody::from_shape(doc.mass, validate_shape(shape)?).map_err(located)
         }
         (None, Some(inertia)) => {
             let tensor = match inertia {
@@ -455,6 +558,61 @@ fn validate_body(doc: &BodyDoc) -> Checked<RigidBody> {
     }
 }
 
+/// The shape a `body.shape` table describes: its `type` and the keys that type takes.
+fn validate_shape(doc: &ShapeDoc) -> Checked<Shape> {
+    let table = KeyPath::root().key("body").key("shape");
+    let Some(kind) = doc.kind else {
+        return invalid(
+            table.key("type"),
+            "missing: the shape needs `type` = \"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"",
+        );
+    };
+    let (name, takes): (&str, &[&str]) = match kind {
+        ShapeKind::ThinDisk => ("thin_disk", &["radius"]),
+        ShapeKind::Disk => ("disk", &["radius", "thickness"]),
+        ShapeKind::ThinRod => ("thin_rod", &["length"]),
+        ShapeKind::Sphere => ("sphere", &["radius"]),
+        ShapeKind::Box => ("box", &["size"]),
+        ShapeKind::Cylinder => ("cylinder", &["radius", "height"]),
+    };
+    let kind_text = format!("shape type = \"{name}\"");
+    only_keys(
+        &table,
+        &kind_text,
+        takes,
+        &[
+            ("radius", doc.radius.is_some()),
+            ("thickness", doc.thickness.is_some()),
+            ("length", doc.length.is_some()),
+            ("size", doc.size.is_some()),
+            ("height", doc.height.is_some()),
+        ],
+    )?;
+    let need = |name: &str, v: Option<f64>| required(table.clone().key(name), v, &kind_text);
+    Ok(match kind {
+        ShapeKind::ThinDisk => Shape::ThinDisk {
+            radius: need("radius", doc.radius)?,
+        },
+        ShapeKind::Disk => Shape::Disk {
+            radius: need("radius", doc.radius)?,
+            thickness: need("thickness", doc.thickness)?,
+        },
+        ShapeKind::ThinRod => Shape::ThinRod {
+            length: need("length", doc.length)?,
+        },
+        ShapeKind::Sphere => Shape::Sphere {
+            radius: need("radius", doc.radius)?,
+        },
+        ShapeKind::Box => Shape::Box {
+            size: required(table.clone().key("size"), doc.size, &kind_text)?.0,
+        },
+        ShapeKind::Cylinder => Shape::Cylinder {
+            radius: need("radius", doc.radius)?,
+            height: need("height", doc.height)?,
+        },
+    })
+}
+
 fn validate_motion(
     doc: &SceneDoc,
     body: &RigidBody,
@@ -462,11 +620,42 @@ fn validate_motion(
     effects: &[Effect],
 ) -> Checked<MotionSpec> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
-    match &doc.motion {
-        None | Some(MotionDoc::Free) => {
+    let motion = || KeyPath::root().key("motion");
+    // The fixed-axis table, or `None` for free motion (no [motion] table, or type = "free").
+    let fixed_axis = match &doc.motion {
+        None => None,
+        Some(m) => match m.kind {
+            None => {
+                return invalid(
+                    motion().key("type"),
+                    "missing: the motion needs `type` = \"free\" or \"fixed_axis\"",
+                );
+            }
+            Some(MotionKind::Free) => {
+                only_keys(
+                    &motion(),
+                    "motion type = \"free\"",
+                    &[],
+                    &[
+                        ("axis", m.axis.is_some()),
+                        ("tilt_deg", m.tilt_deg.is_some()),
+                        ("rate", m.rate.is_some()),
+                        ("accel", m.accel.is_some()),
+                        ("point", m.point.is_some()),
+                    ],
+                )?;
+                None
+            }
+            Some(MotionKind::FixedAxis) => Some(m),
+        },
+    };
+    match fixed_axis {
+        None => {
             let omega0_b = match initial_omega {
                 None => Vector3::zeros(),
-                Some(w) => vector(KeyPath::root().key("initial").key("omega"), w, "rad/s")?,
+                Some(Numbers(w)) => {
+                    vector(KeyPath::root().key("initial").key("omega"), w, "rad/s")?
+                }
             };
             let center_b = effects
                 .iter()
@@ -489,21 +678,14 @@ fn validate_motion(
                 body: free_body,
             })
         }
-        Some(MotionDoc::FixedAxis {
-            axis,
-            tilt_deg,
-            rate,
-            accel,
-            point,
-        }) => {
-            let motion = || KeyPath::root().key("motion");
+        Some(m) => {
             if initial_omega.is_some() {
                 return invalid(
                     KeyPath::root().key("initial").key("omega"),
                     "a fixed-axis motion sets ω from `motion.rate`; remove initial.omega",
                 );
             }
-            let axis_b = match (axis, tilt_deg) {
+            let axis_b = match (m.axis, m.tilt_deg) {
                 (Some(_), Some(_)) => {
                     return invalid(
                         motion().key("tilt_deg"),
@@ -516,8 +698,8 @@ fn validate_motion(
                         "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
                     );
                 }
-                (Some(a), None) => {
-                    let a = vector(motion().key("axis"), *a, "direction")?;
+                (Some(Numbers(a)), None) => {
+                    let a = vector(motion().key("axis"), a, "direction")?;
                     let norm = a.norm();
                     if !(norm > 1e-300 && norm.is_finite()) {
                         return invalid(
@@ -528,18 +710,18 @@ fn validate_motion(
                     a / norm
                 }
                 (None, Some(tilt)) => {
-                    let tilt = finite(motion().key("tilt_deg"), *tilt, "degrees")?.to_radians();
+                    let tilt = finite(motion().key("tilt_deg"), tilt, "degrees")?.to_radians();
                     Vector3::new(0.0, -tilt.sin(), tilt.cos())
                 }
             };
             Ok(MotionSpec::FixedAxis(FixedAxis::new(
                 body,
                 axis_b,
-                finite(motion().key("rate"), *rate, "rad/s")?,
-                finite(motion().key("accel"), *accel, "rad/s^2")?,
-                match point {
+                finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?,
+                finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?,
+                match m.point {
                     None => Vector3::zeros(),
-                    Some(p) => vector(motion().key("point"), *p, "m")?,
+                    Some(Numbers(p)) => vector(motion().key("point"), p, "m")?,
                 },
                 *attitude0,
             )))
@@ -548,18 +730,50 @@ fn validate_motion(
 }
 
 fn validate_effect(index: usize, doc: &EffectDoc) -> Checked<Effect> {
-    let key = |name: &str| KeyPath::root().key("effect").index(index).key(name);
-    Ok(match doc {
-        EffectDoc::Torque {
-            frame,
-            value,
-            profile,
-            freq_hz,
-            phase_deg,
-            t_on,
-            t_off,
-        } => {
-            let profile = profile.as_ref().unwrap_or(&ProfileDoc::Constant);
+    let table = KeyPath::root().key("effect").index(index);
+    let key = |name: &str| table.clone().key(name);
+    let Some(kind) = doc.kind else {
+        return invalid(
+            key("type"),
+            "missing: an effect needs `type` = \"torque\", \"gravity\" or \"damping\"",
+        );
+    };
+    let (name, takes): (&str, &[&str]) = match kind {
+        EffectKind::Torque => (
+            "torque",
+            &[
+                "frame",
+                "value",
+                "profile",
+                "freq_hz",
+                "phase_deg",
+                "t_on",
+                "t_off",
+            ],
+        ),
+        EffectKind::Gravity => ("gravity", &["g", "pivot"]),
+        EffectKind::Damping => ("damping", &["c"]),
+    };
+    let kind_text = format!("effect type = \"{name}\"");
+    only_keys(
+        &table,
+        &kind_text,
+        takes,
+        &[
+            ("frame", doc.frame.is_some()),
+            ("value", doc.value.is_some()),
+            ("profile", doc.profile.is_some()),
+            ("freq_hz", doc.freq_hz.is_some()),
+            ("phase_deg", doc.phase_deg.is_some()),
+            ("t_on", doc.t_on.is_some()),
+            ("t_off", doc.t_off.is_some()),
+            ("g", doc.g.is_some()),
+            ("pivot", doc.pivot.is_some()),
+            ("c", doc.c.is_some()),
+        ],
+    )?;
+    Ok(match kind {
+        EffectKind::Torque => {
             let misplaced = |name: &str, present: bool, kind: &str| -> Checked<()> {
                 if present {
                     invalid(
@@ -570,38 +784,42 @@ fn validate_effect(index: usize, doc: &EffectDoc) -> Checked<Effect> {
                     Ok(())
                 }
             };
-            let profile = match profile {
+            let profile = match doc.profile.as_ref().unwrap_or(&ProfileDoc::Constant) {
                 ProfileDoc::Constant => {
-                    misplaced("freq_hz", freq_hz.is_some(), "sine")?;
-                    misplaced("phase_deg", phase_deg.is_some(), "sine")?;
-                    misplaced("t_on", t_on.is_some(), "step")?;
-                    misplaced("t_off", t_off.is_some(), "step")?;
+                    misplaced("freq_hz", doc.freq_hz.is_some(), "sine")?;
+                    misplaced("phase_deg", doc.phase_deg.is_some(), "sine")?;
+                    misplaced("t_on", doc.t_on.is_some(), "step")?;
+                    misplaced("t_off", doc.t_off.is_some(), "step")?;
                     TorqueProfile::Constant
                 }
                 ProfileDoc::Sine => {
-                    misplaced("t_on", t_on.is_some(), "step")?;
-                    misplaced("t_off", t_off.is_some(), "step")?;
-                    let Some(f) = freq_hz else {
+                    misplaced("t_on", doc.t_on.is_some(), "step")?;
+                    misplaced("t_off", doc.t_off.is_some(), "step")?;
+                    let Some(f) = doc.freq_hz else {
                         return invalid(
                             key("freq_hz"),
                             "a sine torque needs `freq_hz` (Hz, finite, >= 0)",
                         );
                     };
-                    let f = finite(key("freq_hz"), *f, "Hz")?;
+                    let f = finite(key("freq_hz"), f, "Hz")?;
                     if f < 0.0 {
                         return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f}"));
                     }
                     TorqueProfile::Sine {
                         freq_hz: f,
-                        phase_rad: finite(key("phase_deg"), phase_deg.unwrap_or(0.0), "degrees")?
-                            .to_radians(),
+                        phase_rad: finite(
+                            key("phase_deg"),
+                            doc.phase_deg.unwrap_or(0.0),
+                            "degrees",
+                        )?
+                        .to_radians(),
                     }
                 }
                 ProfileDoc::Step => {
-                    misplaced("freq_hz", freq_hz.is_some(), "sine")?;
-                    misplaced("phase_deg", phase_deg.is_some(), "sine")?;
-                    let t_on = finite(key("t_on"), t_on.unwrap_or(0.0), "s")?;
-                    let t_off = t_off.unwrap_or(f64::INFINITY);
+                    misplaced("freq_hz", doc.freq_hz.is_some(), "sine")?;
+                    misplaced("phase_deg", doc.phase_deg.is_some(), "sine")?;
+                    let t_on = finite(key("t_on"), doc.t_on.unwrap_or(0.0), "s")?;
+                    let t_off = doc.t_off.unwrap_or(f64::INFINITY);
                     if t_off.is_nan() || t_off <= t_on {
                         return invalid(
                             key("t_off"),
@@ -612,20 +830,28 @@ fn validate_effect(index: usize, doc: &EffectDoc) -> Checked<Effect> {
                 }
             };
             Effect::Torque {
-                frame: match frame {
+                frame: match doc.frame {
                     None | Some(FrameDoc::Body) => Frame::Body,
                     Some(FrameDoc::Space) => Frame::Space,
                 },
-                value: vector(key("value"), *value, "N*m")?,
+                value: vector(
+                    key("value"),
+                    required(key("value"), doc.value, &kind_text)?.0,
+                    "N*m",
+                )?,
                 profile,
             }
         }
-        EffectDoc::Gravity { g, pivot } => Effect::Gravity {
-            g_s: vector(key("g"), g.unwrap_or([0.0, 0.0, -9.81]), "m/s^2")?,
-            pivot_b: vector(key("pivot"), *pivot, "m")?,
+        EffectKind::Gravity => Effect::Gravity {
+            g_s: vector(key("g"), doc.g.map_or([0.0, 0.0, -9.81], |g| g.0), "m/s^2")?,
+            pivot_b: vector(
+                key("pivot"),
+                required(key("pivot"), doc.pivot, &kind_text)?.0,
+                "m",
+            )?,
         },
-        EffectDoc::Damping { c } => {
-            let c = finite(key("c"), *c, "N*m*s")?;
+        EffectKind::Damping => {
+            let c = finite(key("c"), required(key("c"), doc.c, &kind_text)?, "N*m*s")?;
             if c < 0.0 {
                 return invalid(
                     key("c"),

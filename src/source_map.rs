@@ -37,6 +37,23 @@ impl KeyPath {
         self
     }
 
+    /// The last table key of the path (`c` for `effect[1].c`); empty for the root.
+    pub fn last_key(&self) -> &str {
+        self.segments
+            .iter()
+            .rev()
+            .find_map(|s| match s {
+                Segment::Key(k) => Some(k.as_str()),
+                Segment::Index(_) => None,
+            })
+            .unwrap_or("")
+    }
+
+    /// Whether this is the document root.
+    pub fn is_root(&self) -> bool {
+        self.segments.is_empty()
+    }
+
     /// Marks the value as given by a command-line flag instead of the file.
     pub fn from_flag(mut self, flag: &str) -> Self {
         self.flag = Some(flag.to_string());
@@ -101,6 +118,16 @@ impl<'a> SourceMap<'a> {
                 }
             })
             .map(|e| e.path)
+    }
+
+    /// The table whose value spans exactly `span` (the innermost one), or the root when no table does: where the
+    /// parser reports a missing key.
+    pub fn table_at(&self, span: &Range<usize>) -> KeyPath {
+        self.entries()
+            .into_iter()
+            .filter(|e| e.value_span == *span)
+            .max_by_key(|e| e.path.segments.len())
+            .map_or_else(KeyPath::root, |e| e.path)
     }
 
     /// Line and column of a key (of its value where the key is written, else of the key), or of the nearest

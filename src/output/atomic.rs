@@ -27,6 +27,13 @@ impl AtomicFile {
                 "the output path is a directory",
             ));
         }
+        if !dir.is_dir() {
+            // Said plainly: the error from creating the temporary file would name the temporary file instead.
+            return Err(io::Error::new(
+                io::ErrorKind::NotFound,
+                format!("the directory {} does not exist", dir.display()),
+            ));
+        }
         let name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())

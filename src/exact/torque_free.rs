@@ -1,0 +1,524 @@
+//! The torque-free rigid body (Euler–Poinsot motion) in closed form.
+//!
+//! Landau & Lifshitz, *Mechanics* (3rd ed.), §37; the attitude construction follows the same
+//! section and Celledoni, Fassò, Säfström & Zanna (2008), "The exact computation of the free
+//! rigid body motion and its use in splitting methods", SIAM J. Sci. Comput. 30(4), 2084–2112.
+//!
+//! # Conventions
+//!
+//! `moments_p` are the principal moments in the user's principal axes, in any order. The
+//! solver works in a *canonical* principal frame, obtained from the user's by a signed
+//! permutation with determinant +1 (so it is a proper rotation and Euler's equations keep
+//! their form), in which
+//!
+//! * axis 3 is the axis that ω circulates around (the largest moment if `M² > 2E·I₂`, the
+//!   smallest if `M² < 2E·I₂`; the largest on the separatrix), axis 2 the intermediate one;
+//! * `ω₃(0) > 0` and `ω₁(0) ≥ 0` (a half-turn about a principal axis fixes these signs).
+//!
+//! Results are mapped back to the user's axes. With `a, b, c > 0`, `ε = sign(I₃ − I₁)` and
+//! `τ = λt + τ₀` the solution is (L&L §37, with the signs fixed by substitution into Euler's
+//! equations)
+//!
+//! ```text
+//!   ω₁ = a cn(τ|m),   ω₂ = ε b sn(τ|m),   ω₃ = c dn(τ|m)
+//!   a² = ω₁² + I₂(I₃−I₂)/(I₁(I₃−I₁)) ω₂²        [= (2E I₃ − M²)/(I₁(I₃ − I₁))]
+//!   b² = I₁(I₃−I₁)/(I₂(I₃−I₂)) ω₁² + ω₂²        [= (2E I₃ − M²)/(I₂(I₃ − I₂))]
+//!   c² = I₂(I₂−I₁)/(I₃(I₃−I₁)) ω₂² + ω₃²        [= (M² − 2E I₁)/(I₃(I₃ − I₁))]
+//!   λ  = c √((I₃−I₁)(I₃−I₂)/(I₁I₂)),   m = I₁(I₂−I₁)a² / (I₃(I₃−I₂)c²)
+//!   1 − m = (I₃(I₃−I₂)ω₃² − I₁(I₂−I₁)ω₁²) / (I₃(I₃−I₂)c²)   [∝ M² − 2E I₂]
+//! ```
+//!
+//! every quantity formed from the initial ω without cancellation except `1 − m`, whose
+//! cancellation is the physical sensitivity near the separatrix. The initial phase is
+//! `τ₀ = F(φ₀|m)` with `(cos φ₀, sin φ₀) ∝ (ω₁/a, ε ω₂/b)`, `|φ₀| ≤ π/2`, so `omega_p(0)`
+//! reproduces `omega0_p` to rounding, signs included.
+//!
+//! On the separatrix (`m = 1`) the same formulas hold with `sn = tanh`, `cn = dn = sech`
+//! (L&L §37, the limiting case `M² = 2E I₂`). The symmetric cases `I₁ = I₂` and `I₂ = I₃`
+//! come out with `m = 0` (uniform precession of ω about the symmetry axis at
+//! `(I₃ − I₁)ω₃/I₁` in the body); the near-symmetric case uses the elliptic formulas with
+//! small `m` (no switch to the symmetric formula unless the moments are exactly equal), which
+//! stay accurate because [`crate::exact::jacobi`] is accurate as `m → 0`.
+//!
+//! The attitude uses the closed-form third-kind integral (Carlson `R_J`), not quadrature; see
+//! [`TorqueFreeBody::attitude`].
+//!
+//! Stationary rotations (ω = 0, ω along a principal axis or in a degenerate principal plane,
+//! a spherical body) have constant `ω_p` and `q(t) = q₀ ⊗ exp(½ ω_p t)`.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use ellip::elliprj;
+use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
+
+use super::jacobi::JacobiElliptic;
+use super::{ExactError, axis_angle_quat, check_moments};
+
+/// Which kind of Euler–Poinsot motion a [`TorqueFreeBody`] performs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TorqueFreeCase {
+    /// ω is constant in the body (and in space): ω = 0, ω along a principal axis (including
+    /// the intermediate one, an unstable equilibrium), ω in a degenerate principal plane of a
+    /// symmetric body, or a spherical body.
+    Stationary,
+    /// ω circulates around the user principal axis with index `axis` (0, 1 or 2): the largest
+    /// moment if `M² > 2E·I₂`, the smallest if `M² < 2E·I₂`. Includes the symmetric cases
+    /// (elliptic parameter m = 0).
+    Circulating {
+        /// Index of the user principal axis whose ω component never changes sign.
+        axis: usize,
+    },
+    /// `M² = 2E·I₂` (up to rounding) with ω not along the intermediate axis: the motion
+    /// approaches the intermediate axis asymptotically (tanh/sech, not periodic).
+    Separatrix,
+}
+
+/// A torque-free rigid body with given principal moments and initial state, solved in closed
+/// form (Landau & Lifshitz, *Mechanics*, §37). See the module documentation for the formulas.
+#[derive(Debug, Clone)]
+pub struct TorqueFreeBody {
+    moments_p: Vector3<f64>,
+    omega0_p: Vector3<f64>,
+    q0: UnitQuaternion<f64>,
+    h_s: Vector3<f64>,
+    energy: f64,
+    motion: Motion,
+}
+
+#[derive(Debug, Clone)]
+enum Motion {
+    Stationary,
+    Elliptic(Box<Elliptic>),
+}
+
+/// The non-stationary solution in the canonical frame (see the module docs).
+#[derive(Debug, Clone)]
+struct Elliptic {
+    /// User → canonical: `v_c = perm · v_u` (signed permutation, det +1).
+    perm: Matrix3<f64>,
+    /// Canonical user-axis index of canonical axis 3 (for [`TorqueFreeCase`]).
+    axis3_user: usize,
+    inertia: [f64; 3],
+    a: f64,
+    b: f64,
+    c: f64,
+    eps: f64,
+    lambda: f64,
+    tau0: f64,
+    separatrix: bool,
+    jac: JacobiElliptic,
+    /// `n = −I₃(I₂−I₁)/(I₁(I₃−I₂)) ≤ 0`, the characteristic of Π (A&S 17.2.15 sign
+    /// convention: `Π(φ, n|m) = ∫ dθ / ((1 − n sin²θ) √(1 − m sin²θ))`).
+    n: f64,
+    /// `M/I₁`: the mean-free part of dφ/dt.
+    rate_lin: f64,
+    /// Coefficient of `2j R_J(0, m′, 1, 1−n) + s³ R_J(c², d², 1, 1 − n s²)` in φ (elliptic).
+    kappa: f64,
+    /// `R_J(0, m′, 1, 1 − n)` (elliptic case).
+    rj_complete: f64,
+    /// The φ-integral's value at τ₀ (subtracted so that φ(0) = 0).
+    g0: f64,
+    /// Separatrix: `φ = sep_lin · t + sep_atan · (atan(√ν tanh τ) − atan(√ν tanh τ₀))`.
+    sep_lin: f64,
+    sep_atan: f64,
+    sqrt_nu: f64,
+    /// `q0 ⊗ perm⁻¹ ⊗ q_H(0)⁻¹`: maps the "H frame" (space frame rotated so that H ∥ z) to
+    /// space; `attitude(t) = q_fixed ⊗ q_H(t) ⊗ q_perm`.
+    q_fixed: UnitQuaternion<f64>,
+    q_perm: UnitQuaternion<f64>,
+}
+
+impl TorqueFreeBody {
+    /// Set up the motion of a torque-free body with principal moments `moments_p` (any order),
+    /// initial angular velocity `omega0_p` in those principal axes, and initial attitude `q0`
+    /// (principal → space, `v_s = q0 * v_p`).
+    ///
+    /// Classifies the motion by the sign of `M² − 2E·I₂ = I₁(I₁−I₂)ω₁² + I₃(I₃−I₂)ω₃²`
+    /// (moments sorted `I₁ ≤ I₂ ≤ I₃`; L&L §37): a value within 4ε of the magnitude of its two
+    /// terms is treated as the separatrix. Errors on non-finite input, non-positive moments or
+    /// moments violating the triangle inequality.
+    pub fn new(
+        moments_p: Vector3<f64>,
+        omega0_p: Vector3<f64>,
+        q0: UnitQuaternion<f64>,
+    ) -> Result<Self, ExactError> {
+        check_moments(&[moments_p.x, moments_p.y, moments_p.z])?;
+        if omega0_p.iter().any(|x| !x.is_finite()) {
+            return Err(ExactError::NonFinite("initial angular velocity omega0_p"));
+        }
+        if q0.coords.iter().any(|x| !x.is_finite()) {
+            return Err(ExactError::NonFinite("initial attitude q0"));
+        }
+        let h0_p = moments_p.component_mul(&omega0_p);
+        let h_s = q0 * h0_p;
+        let energy = 0.5 * omega0_p.dot(&h0_p);
+        // Work with ω scaled to max |ω_i| = 1 so that squares neither underflow nor
+        // overflow; every rate scales linearly with |ω|.
+        let scale = omega0_p.amax();
+        let motion = if scale == 0.0 {
+            Motion::Stationary
+        } else {
+            let unit = omega0_p / scale;
+            match classify(&moments_p, &unit) {
+                None => Motion::Stationary,
+                Some((perm, axis3_user, separatrix)) => Motion::Elliptic(Box::new(Elliptic::new(
+                    &moments_p, &unit, scale, &q0, perm, axis3_user, separatrix,
+                )?)),
+            }
+        };
+        Ok(Self {
+            moments_p,
+            omega0_p,
+            q0,
+            h_s,
+            energy,
+            motion,
+        })
+    }
+
+    /// The principal moments as given (user order).
+    pub fn moments_p(&self) -> Vector3<f64> {
+        self.moments_p
+    }
+
+    /// Which kind of motion this is.
+    pub fn case(&self) -> TorqueFreeCase {
+        match &self.motion {
+            Motion::Stationary => TorqueFreeCase::Stationary,
+            Motion::Elliptic(e) if e.separatrix => TorqueFreeCase::Separatrix,
+            Motion::Elliptic(e) => TorqueFreeCase::Circulating { axis: e.axis3_user },
+        }
+    }
+
+    /// The elliptic parameter `m = k²` of the Jacobi functions (L&L §37, `k²` for `M² > 2EI₂`,
+    /// indices 1 ↔ 3 exchanged otherwise): `Some(1.0)` on the separatrix, `None` when
+    /// stationary.
+    pub fn elliptic_parameter(&self) -> Option<f64> {
+        match &self.motion {
+            Motion::Stationary => None,
+            Motion::Elliptic(e) => Some(e.jac.m()),
+        }
+    }
+
+    /// Angular velocity in principal axes at time `t` (L&L §37, see the module
+    /// docs): `ω₁ = a cn τ`, `ω₂ = ε b sn τ`, `ω₃ = c dn τ` in the canonical frame, `τ = λt + τ₀`.
+    pub fn omega_p(&self, t: f64) -> Vector3<f64> {
+        match &self.motion {
+            Motion::Stationary => self.omega0_p,
+            Motion::Elliptic(e) => {
+                let (s, c, d, _) = e.functions(e.tau(t));
+                e.perm.transpose() * Vector3::new(e.a * c, e.eps * e.b * s, e.c * d)
+            }
+        }
+    }
+
+    /// Angular velocity in space axes, `ω_s(t) = q(t) * ω_p(t)`.
+    pub fn omega_s(&self, t: f64) -> Vector3<f64> {
+        self.attitude(t) * self.omega_p(t)
+    }
+
+    /// Moment of momentum in principal axes, `H_p(t) = I · ω_p(t)`.
+    pub fn h_p(&self, t: f64) -> Vector3<f64> {
+        self.moments_p.component_mul(&self.omega_p(t))
+    }
+
+    /// Moment of momentum in space axes, `H_s = q0 * (I · ω0_p)`; constant (no torque).
+    pub fn h_s(&self) -> Vector3<f64> {
+        self.h_s
+    }
+
+    /// Kinetic energy `E = ½ ω_p · I ω_p` (constant).
+    pub fn energy(&self) -> f64 {
+        self.energy
+    }
+
+    /// Period of `ω_p(t)`: `4K(m)/λ` (L&L §37: "the period of the functions sn, cn is 4K").
+    /// For the symmetric cases (`m = 0`) this is `2π/|Ω_b|`, `Ω_b = (I₃ − I₁)ω₃/I₁`.
+    /// `None` on the separatrix (not periodic) and for stationary motion (ω constant).
+    pub fn period_omega(&self) -> Option<f64> {
+        match &self.motion {
+            Motion::Elliptic(e) if !e.separatrix => Some(4.0 * e.jac.quarter_period() / e.lambda),
+            _ => None,
+        }
+    }
+
+    /// `2K(m)/λ`: the time between successive sign changes of each of the two components of
+    /// `ω_p` transverse to the axis ω circulates around (see [`TorqueFreeCase::Circulating`];
+    /// the circulation-axis component never changes sign). One of the two is always the
+    /// intermediate axis, whose component ∝ `sn τ` vanishes at `τ = 2jK`; the other ∝ `cn τ`
+    /// vanishes at `τ = (2j+1)K`. Near the separatrix (tennis-racket / Dzhanibekov regime)
+    /// the intermediate-axis component is nearly a square wave that flips sign every
+    /// `flip_interval`. `None` where [`Self::period_omega`] is `None`.
+    pub fn flip_interval(&self) -> Option<f64> {
+        self.period_omega().map(|p| 0.5 * p)
+    }
+
+    /// The attitude `q(t)` (principal → space), satisfying `q̇ = ½ q ⊗ (0, ω_p)`.
+    ///
+    /// Construction (L&L §37; Celledoni et al. 2008): `q(t) = Q ⊗ R_z(φ) R_x(θ) R_z(ψ) ⊗ P`
+    /// with `P` the user → canonical permutation, `Q` a constant rotation taking the space
+    /// direction of H to `Q e_z` (fixed by `q(0) = q0`), and z-x-z Euler angles of the canonical
+    /// body relative to the frame whose z axis is H:
+    ///
+    /// ```text
+    ///   M sinθ sinψ = I₁ω₁,   M sinθ cosψ = I₂ω₂,   M cosθ = I₃ω₃          (L&L §37)
+    ///   dφ/dt = M (I₁ω₁² + I₂ω₂²)/(I₁²ω₁² + I₂²ω₂²)
+    ///         = M/I₃ + M(I₃ − I₁)/(I₁I₃) · 1/(1 − n sn²τ),   n = −I₃(I₂−I₁)/(I₁(I₃−I₂)) ≤ 0
+    ///   φ(t)  = (M/I₁) t + M(I₃−I₁)/(I₁I₃λ) · [Π(am τ, n|m) − Π(am τ₀, n|m) − (τ − τ₀)]
+    /// ```
+    ///
+    /// `Π` is evaluated through Carlson's form (DLMF §19.25(i)–(ii))
+    /// `Π(am r, n|m) = r + (n/3) s³ R_J(c², d², 1, 1 − n s²)` with `(s, c, d)` = sn, cn, dn of the
+    /// reduced argument `r ∈ [−K, K]`, and continued across half periods by
+    /// `Π(jπ + x) = 2jΠ(n|m) + Π(x)` with `Π(n|m) = K + (n/3) R_J(0, m′, 1, 1 − n)`; with
+    /// `n ≤ 0` there is no pole. `ψ` is unwrapped the same way (it turns by `∓π` per half period
+    /// of τ), so `q(t)` is continuous in `t` (no sign flips). On the separatrix the Π-integral is
+    /// elementary: `∫₀^τ du/(1 + ν tanh²u) = (τ + √ν atan(√ν tanh τ))/(1 + ν)`, `ν = −n`.
+    ///
+    /// Accuracy: φ is exact up to rounding of `λ t` and of the rates, i.e. a relative error of
+    /// a few ε in the accumulated angle (≈ 1e-10 rad after 1e6 rad of rotation).
+    pub fn attitude(&self, t: f64) -> UnitQuaternion<f64> {
+        match &self.motion {
+            Motion::Stationary => {
+                let w = self.omega0_p.norm();
+                if w == 0.0 {
+                    self.q0
+                } else {
+                    self.q0 * axis_angle_quat(&(self.omega0_p / w), w * t)
+                }
+            }
+            Motion::Elliptic(e) => e.q_fixed * e.q_h(t) * e.q_perm,
+        }
+    }
+}
+
+/// Decide the motion type. Returns `None` for stationary motion, else the user → canonical
+/// signed permutation, the user index of canonical axis 3, and whether it is the separatrix.
+fn classify(moments: &Vector3<f64>, omega: &Vector3<f64>) -> Option<(Matrix3<f64>, usize, bool)> {
+    if omega.iter().all(|&w| w == 0.0) {
+        return None;
+    }
+    let mut idx = [0usize, 1, 2];
+    idx.sort_by(|&i, &j| moments[i].total_cmp(&moments[j]));
+    let mut perm = Matrix3::zeros();
+    for (row, &col) in idx.iter().enumerate() {
+        perm[(row, col)] = 1.0;
+    }
+    if perm.determinant() < 0.0 {
+        perm.row_mut(2).neg_mut();
+    }
+    let j = Vector3::new(moments[idx[0]], moments[idx[1]], moments[idx[2]]);
+    let w = perm * omega;
+    if j.x == j.z {
+        return None; // spherical
+    }
+    let t3 = j.z * (j.z - j.y) * w.z * w.z;
+    let t1 = j.x * (j.y - j.x) * w.x * w.x;
+    let delta = t3 - t1; // M² − 2E·I₂
+    let tol = 4.0 * f64::EPSILON * (t3 + t1);
+    let (mut perm, axis3_user, separatrix) = if delta > tol {
+        if w.x == 0.0 && w.y == 0.0 {
+            return None; // pure rotation about the largest axis
+        }
+        (perm, idx[2], false)
+    } else if delta < -tol {
+        if w.z == 0.0 && w.y == 0.0 {
+            return None; // pure rotation about the smallest axis
+        }
+        // (x, y, z) → (z, y, −x): a proper rotation putting the smallest axis third.
+        let swap = Matrix3::new(0.0, 0.0, 1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0);
+        (swap * perm, idx[0], false)
+    } else {
+        // |M² − 2E·I₂| at rounding level: ω in a degenerate plane of a symmetric body,
+        // along the intermediate axis, or on the separatrix.
+        if j.x == j.y || j.y == j.z || w.x == 0.0 || w.z == 0.0 {
+            return None;
+        }
+        (perm, idx[2], true)
+    };
+    // Half-turns about canonical axes 1 and 3 to make ω₃ > 0 and ω₁ ≥ 0.
+    let wc = perm * omega;
+    if wc.z < 0.0 {
+        perm = Matrix3::from_diagonal(&Vector3::new(1.0, -1.0, -1.0)) * perm;
+    }
+    let wc = perm * omega;
+    if wc.x < 0.0 {
+        perm = Matrix3::from_diagonal(&Vector3::new(-1.0, -1.0, 1.0)) * perm;
+    }
+    Some((perm, axis3_user, separatrix))
+}
+
+fn quat_z(angle: f64) -> Quaternion<f64> {
+    let (s, c) = (0.5 * angle).sin_cos();
+    Quaternion::new(c, 0.0, 0.0, s)
+}
+
+fn quat_x(angle: f64) -> Quaternion<f64> {
+    let (s, c) = (0.5 * angle).sin_cos();
+    Quaternion::new(c, s, 0.0, 0.0)
+}
+
+impl Elliptic {
+    /// `omega_unit` is the initial ω divided by `scale` (= max |ω_i|).
+    fn new(
+        moments: &Vector3<f64>,
+        omega_unit: &Vector3<f64>,
+        scale: f64,
+        q0: &UnitQuaternion<f64>,
+        perm: Matrix3<f64>,
+        axis3_user: usize,
+        separatrix: bool,
+    ) -> Result<Self, ExactError> {
+        let ic = perm.abs() * moments;
+        let (i1, i2, i3) = (ic.x, ic.y, ic.z);
+        let w = perm * omega_unit;
+        let (d21, d31, d32) = (i2 - i1, i3 - i1, i3 - i2);
+        let eps = d31.signum();
+        let a = (w.x * w.x + i2 * d32 / (i1 * d31) * w.y * w.y).sqrt();
+        let b = (i1 * d31 / (i2 * d32) * w.x * w.x + w.y * w.y).sqrt();
+        let c = (i2 * d21 / (i3 * d31) * w.y * w.y + w.z * w.z).sqrt();
+        let lambda = c * (d31 * d32 / (i1 * i2)).sqrt();
+        let denom = i3 * d32 * c * c;
+        let (m, mc) = if separatrix {
+            (1.0, 0.0)
+        } else {
+            let m = (i1 * d21 * a * a / denom).clamp(0.0, 1.0);
+            let mc = ((i3 * d32 * w.z * w.z - i1 * d21 * w.x * w.x) / denom).clamp(0.0, 1.0);
+            (m, mc)
+        };
+        let jac = JacobiElliptic::with_complement(m, mc)
+            .or_else(|| JacobiElliptic::new(m))
+            .ok_or(ExactError::Numerical("elliptic parameter out of [0, 1]"))?;
+        // Initial phase: (cn τ₀, sn τ₀) ∝ (ω₁/a, ε ω₂/b), cn τ₀ ≥ 0.
+        let (x, y) = (w.x / a, eps * w.y / b);
+        let r = x.hypot(y);
+        let (s0, c0) = (y / r, x / r);
+        let tau0 = if separatrix {
+            s0.atanh()
+        } else if s0 == 0.0 {
+            0.0
+        } else {
+            // F(φ₀|m) = sin φ₀ R_F(cos²φ₀, cos²φ₀ + m′ sin²φ₀, 1)  (DLMF 19.25.5 homogeneous form).
+            s0 * ellip::elliprf(c0 * c0, c0 * c0 + mc * s0 * s0, 1.0)
+                .map_err(ExactError::Numerical)?
+        };
+        // Back to physical units: amplitudes, λ and |H| scale with |ω|; m, τ₀ do not.
+        let (a, b, c, lambda) = (a * scale, b * scale, c * scale, lambda * scale);
+        let h_norm = (ic.component_mul(&w)).norm() * scale;
+        let n = if d21 == 0.0 {
+            0.0
+        } else {
+            -i3 * d21 / (i1 * d32)
+        };
+        let rate_lin = h_norm / i1;
+        let coef_pi = h_norm * d31 / (i1 * i3 * lambda); // multiplies ∫dτ/(1 − n sn²)
+        let mut e = Self {
+            perm,
+            axis3_user,
+            inertia: [i1, i2, i3],
+            a,
+            b,
+            c,
+            eps,
+            lambda,
+            tau0,
+            separatrix,
+            jac,
+            n,
+            rate_lin,
+            kappa: coef_pi * n / 3.0,
+            rj_complete: 0.0,
+            g0: 0.0,
+            sep_lin: 0.0,
+            sep_atan: 0.0,
+            sqrt_nu: 0.0,
+            q_fixed: UnitQuaternion::identity(),
+            q_perm: UnitQuaternion::identity(),
+        };
+        if separatrix {
+            let nu = -n;
+            e.sqrt_nu = nu.sqrt();
+            e.sep_lin = h_norm / i3 + coef_pi * lambda / (1.0 + nu);
+            e.sep_atan = coef_pi * e.sqrt_nu / (1.0 + nu);
+            e.g0 = (e.sqrt_nu * tau0.tanh()).atan();
+        } else if n != 0.0 {
+            // Π(n|m) − K = (n/3) R_J(0, m′, 1, 1 − n)  (DLMF §19.25(i)).
+            e.rj_complete = elliprj(0.0, mc, 1.0, 1.0 - n).map_err(ExactError::Numerical)?;
+            let (s, c, d, j) = e.reduced(tau0);
+            e.g0 = e.g_integral(s, c, d, j);
+        }
+        let q_perm = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(perm));
+        let q_h0 = e.q_h(0.0);
+        e.q_fixed = q0 * q_perm.inverse() * q_h0.inverse();
+        e.q_perm = q_perm;
+        Ok(e)
+    }
+
+    fn tau(&self, t: f64) -> f64 {
+        self.lambda.mul_add(t, self.tau0)
+    }
+
+    /// sn, cn, dn of τ (unreduced) and the half-period count j.
+    fn functions(&self, tau: f64) -> (f64, f64, f64, f64) {
+        if self.separatrix {
+            let sech = 1.0 / tau.cosh();
+            (tau.tanh(), sech, sech, 0.0)
+        } else {
+            let red = self.jac.reduce(tau);
+            let (s, c, d) = red.values();
+            (s, c, d, red.j)
+        }
+    }
+
+    /// sn, cn ≥ 0, dn of the reduced argument r (τ = 2jK + r) and j.
+    fn reduced(&self, tau: f64) -> (f64, f64, f64, f64) {
+        if self.separatrix {
+            let sech = 1.0 / tau.cosh();
+            (tau.tanh(), sech, sech, 0.0)
+        } else {
+            let red = self.jac.reduce(tau);
+            (red.sn, red.cn, red.dn, red.j)
+        }
+    }
+
+    /// `2j R_J(0, m′, 1, 1−n) + s³ R_J(c², d², 1, 1 − n s²)`, i.e. `(3/n)(Π(am τ, n|m) − τ)`.
+    fn g_integral(&self, s: f64, c: f64, d: f64, j: f64) -> f64 {
+        let partial = if s == 0.0 {
+            0.0
+        } else {
+            // Arguments are valid by construction (c², d² ≥ 0, d > 0 for m < 1, p ≥ 1).
+            s * s * s * elliprj(c * c, d * d, 1.0, 1.0 - self.n * s * s).unwrap_or(f64::NAN)
+        };
+        2.0 * j * self.rj_complete + partial
+    }
+
+    /// The precession angle φ(t) about H, with φ(0) = 0.
+    fn phi(&self, t: f64, tau: f64, s: f64, c: f64, d: f64, j: f64) -> f64 {
+        if self.separatrix {
+            let at = (self.sqrt_nu * tau.tanh()).atan();
+            self.sep_lin * t + self.sep_atan * (at - self.g0)
+        } else if self.n == 0.0 {
+            self.rate_lin * t
+        } else {
+            self.rate_lin * t + self.kappa * (self.g_integral(s, c, d, j) - self.g0)
+        }
+    }
+
+    /// `q_H(t) = R_z(φ) R_x(θ) R_z(ψ)`: canonical body → H frame.
+    fn q_h(&self, t: f64) -> UnitQuaternion<f64> {
+        let tau = self.tau(t);
+        let (s, c, d, j) = self.reduced(tau);
+        let [i1, i2, i3] = self.inertia;
+        // Unsigned-by-(−1)^j components of H_p: (I₁ a cn r, I₂ b sn r, I₃ c dn r).
+        let x = i1 * self.a * c;
+        let y = i2 * self.b * s;
+        let z = i3 * self.c * d;
+        let theta = x.hypot(y).atan2(z);
+        // ψ only matters modulo 4π (the quaternion of R_z(ψ) has period 4π): reduce the
+        // half-period count mod 4 so that ψ stays small and exact at large t.
+        let chi = j.rem_euclid(4.0) * PI + y.atan2(x);
+        let psi = FRAC_PI_2 - self.eps * chi;
+        let phi = self.phi(t, tau, s, c, d, j);
+        UnitQuaternion::new_normalize(quat_z(phi) * quat_x(theta) * quat_z(psi))
+    }
+}

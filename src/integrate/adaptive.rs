@@ -1,0 +1,320 @@
+//! Adaptive driver shared by the embedded Runge–Kutta pairs (DOPRI5, DOP853): Hairer's
+//! initial step `hinit`, the (PI-stabilised) step-size controller, exact landing on row times.
+//!
+//! References: HNW I §II.4 ("Automatic step size control", "Starting step size") and the
+//! Fortran codes `dopri5.f` / `dop853.f` (E. Hairer, G. Wanner), routines DOPCOR, DP86CO, HINIT.
+
+use nalgebra::SVector;
+
+use super::{IntegrateError, OdeSystem, Schedule, Settings, Stats, all_finite, report, start};
+
+/// Tolerances of the error norm sc_i = atol + rtol·max(|y_i|, |ŷ_i|) (HNW I eq. (4.10)).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tol {
+    pub rtol: f64,
+    pub atol: f64,
+}
+
+impl Tol {
+    /// Scale sc_i = atol + rtol·max(|y0|, |y1|).
+    #[inline]
+    pub fn scale(&self, y0: f64, y1: f64) -> f64 {
+        self.atol + self.rtol * y0.abs().max(y1.abs())
+    }
+}
+
+/// Result of one attempted step of an embedded pair.
+pub(crate) struct Trial<const N: usize> {
+    /// Higher-order solution at t + h (local extrapolation).
+    pub y_new: SVector<f64, N>,
+    /// Scaled error estimate; the step is accepted iff err ≤ 1.
+    pub err: f64,
+    /// f(t + h, y_new) if the pair computes it inside the step (FSAL, DOPRI5); `None` if the
+    /// driver must evaluate it after acceptance (DOP853, as in `dop853.f`).
+    pub f_new: Option<SVector<f64, N>>,
+}
+
+/// An explicit embedded Runge–Kutta pair with Hairer's controller parameters.
+pub(crate) trait EmbeddedPair {
+    /// Order used by `hinit` (IORD in Hairer's codes).
+    const HINIT_ORDER: f64;
+    /// Exponent of the error in the controller: EXPO1 = 1/(q+1) − β·(weight), Hairer's codes.
+    const EXPO1: f64;
+    /// PI (Lund) stabilisation exponent β (HNW II §IV.2, as cited in `dopri5.f`).
+    const BETA: f64;
+    /// Lower bound of h_new/h (FAC1).
+    const FAC_MIN: f64;
+    /// Upper bound of h_new/h (FAC2).
+    const FAC_MAX: f64;
+    /// Safety factor (SAFE).
+    const SAFE: f64 = 0.9;
+    /// RHS evaluations per attempted step (not counting the post-acceptance FSAL evaluation).
+    const STAGE_EVALS: u64;
+
+    /// Attempts one step of size h from (t, y) with k1 = f(t, y).
+    fn attempt<const N: usize, S: OdeSystem<N>>(
+        sys: &mut S,
+        t: f64,
+        y: &SVector<f64, N>,
+        k1: &SVector<f64, N>,
+        h: f64,
+        tol: Tol,
+    ) -> Trial<N>;
+}
+
+/// Hairer's starting step size (HNW I §II.4, "Starting step size"; function HINIT of
+/// `dopri5.f`/`dop853.f`, with its unnormalised sums): h0 = 0.01·‖y0‖/‖f0‖ (or 1e-6), one
+/// explicit Euler step to estimate ‖y''‖, then h = min(100·h0, (0.01/max(‖f0‖, ‖y''‖))^(1/p),
+/// hmax). Costs one RHS evaluation (f0 is given).
+pub(crate) fn hinit<const N: usize, S: OdeSystem<N>>(
+    sys: &mut S,
+    t: f64,
+    y: &SVector<f64, N>,
+    f0: &SVector<f64, N>,
+    order: f64,
+    h_max: f64,
+    tol: Tol,
+) -> f64 {
+    let mut dnf = 0.0;
+    let mut dny = 0.0;
+    for i in 0..N {
+        let sk = tol.atol + tol.rtol * y[i].abs();
+        dnf += (f0[i] / sk).powi(2);
+        dny += (y[i] / sk).powi(2);
+    }
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+        1e-6
+    } else {
+        (dny / dnf).sqrt() * 0.01
+    };
+    h = h.min(h_max);
+    let y1 = y + f0 * h;
+    let f1 = sys.rhs(t + h, &y1);
+    let mut der2 = 0.0;
+    for i in 0..N {
+        let sk = tol.atol + tol.rtol * y[i].abs();
+        der2 += ((f1[i] - f0[i]) / sk).powi(2);
+    }
+    let der2 = der2.sqrt() / h;
+    let der12 = der2.abs().max(dnf.sqrt());
+    let h1 = if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / order)
+    };
+    (100.0 * h).min(h1).min(h_max)
+}
+
+/// Hairer's step-size controller state (FACOLD, REJECT).
+struct Controller<P> {
+    fac_old: f64,
+    reject: bool,
+    _pair: std::marker::PhantomData<P>,
+}
+
+impl<P: EmbeddedPair> Controller<P> {
+    fn new() -> Self {
+        Self {
+            fac_old: 1e-4,
+            reject: false,
+            _pair: std::marker::PhantomData,
+        }
+    }
+
+    /// Accepted step of size `h` with error `err`; `h_prop` is the proposal the step was cut
+    /// from (h < h_prop if it was shortened to land on a row). Returns the next proposal.
+    ///
+    /// Hairer: fac = err^EXPO1 / facold^β / SAFE, h_new = h / clamp(fac, 1/FAC_MAX, 1/FAC_MIN);
+    /// after a rejection h_new ≤ h; h_new ≤ hmax. Landing on a row must not shrink the step
+    /// carried forward, so for a shortened step (h < h_prop) h_new = max(h_new, h_prop): the
+    /// unclamped proposal is remembered. (If the error of the shortened step says h_prop is too
+    /// large, the next attempt is simply rejected and shrunk as usual.)
+    fn accept(&mut self, err: f64, h: f64, h_prop: f64, h_max: f64) -> f64 {
+        let fac11 = err.powf(P::EXPO1);
+        let fac = fac11 / self.fac_old.powf(P::BETA) / P::SAFE;
+        let shrink_limit = 1.0 / P::FAC_MIN;
+        let grow_limit = 1.0 / P::FAC_MAX;
+        let mut h_new = h / fac.clamp(grow_limit, shrink_limit);
+        if h < h_prop {
+            h_new = h_new.max(h_prop);
+        }
+        self.fac_old = err.max(1e-4);
+        h_new = h_new.min(h_max);
+        if self.reject {
+            h_new = h_new.min(h.max(h_prop));
+        }
+        self.reject = false;
+        h_new
+    }
+
+    /// Rejected step: h_new = h / min(1/FAC_MIN, err^EXPO1/SAFE) (Hairer); a non-finite error
+    /// (non-finite trial state) shrinks by the maximal factor FAC_MIN.
+    fn reject(&mut self, err: f64, h: f64) -> f64 {
+        self.reject = true;
+        let shrink_limit = 1.0 / P::FAC_MIN;
+        if err.is_finite() {
+            h / shrink_limit.min(err.powf(P::EXPO1) / P::SAFE)
+        } else {
+            h * P::FAC_MIN
+        }
+    }
+}
+
+/// Smallest admissible step at time t: a step h ≤ 16·ε·|t| cannot advance t reliably.
+#[inline]
+fn too_small(h: f64, t: f64) -> bool {
+    // NaN compares false, so a NaN proposal is "too small" too.
+    let ok = h > 16.0 * f64::EPSILON * t.abs() && h > f64::MIN_POSITIVE;
+    !ok
+}
+
+/// Adaptive driver for the pair `P`.
+///
+/// Per step: if 1.01·h_prop ≥ (next row − t) the step is cut (or stretched by ≤ 1%, as in
+/// Hairer's codes) to land exactly on the row; the trial is accepted iff err ≤ 1 and the
+/// projected state and its derivative are finite; otherwise h shrinks (a rejection). The FSAL
+/// derivative is reused unless `project` changed the state. Errors: `TooManySteps` when
+/// accepted + rejected reaches `max_steps`, `StepSizeTooSmall` when h_prop ≤ 16·ε·|t|,
+/// `NonFinite { t: 0 }` if f(0, y0) is non-finite.
+pub(crate) fn run<P, const N: usize, S, E, F>(
+    sys: &mut S,
+    y0: SVector<f64, N>,
+    schedule: &Schedule,
+    settings: &Settings,
+    on_row: &mut F,
+) -> Result<Stats, IntegrateError<E>>
+where
+    P: EmbeddedPair,
+    S: OdeSystem<N>,
+    F: FnMut(f64, &SVector<f64, N>) -> Result<(), E>,
+{
+    let tol = Tol {
+        rtol: settings.rtol,
+        atol: settings.atol,
+    };
+    let mut stats = Stats::default();
+    let mut y = start(sys, y0, on_row)?;
+    if schedule.len() == 1 {
+        return Ok(stats);
+    }
+    let mut t = 0.0;
+    let mut k1 = sys.rhs(t, &y);
+    stats.evals += 1;
+    if !all_finite(&k1) {
+        return Err(IntegrateError::NonFinite { t });
+    }
+    let h_max = schedule.t_end();
+    let mut h_prop = hinit(sys, t, &y, &k1, P::HINIT_ORDER, h_max, tol);
+    stats.evals += 1;
+    let mut ctl = Controller::<P>::new();
+
+    for t_row in schedule.iter().skip(1) {
+        while t < t_row {
+            let attempts = stats.steps + stats.rejected;
+            if attempts >= settings.max_steps {
+                return Err(IntegrateError::TooManySteps { t, steps: attempts });
+            }
+            if too_small(h_prop, t) {
+                return Err(IntegrateError::StepSizeTooSmall { t, h: h_prop });
+            }
+            let remaining = t_row - t;
+            let (h, t_new) = if 1.01 * h_prop >= remaining {
+                (remaining, t_row)
+            } else {
+                (h_prop, t + h_prop)
+            };
+            let trial = P::attempt(sys, t, &y, &k1, h, tol);
+            stats.evals += P::STAGE_EVALS;
+
+            if trial.err <= 1.0 && all_finite(&trial.y_new) {
+                let mut y_new = trial.y_new;
+                sys.project(&mut y_new);
+                let k_new = match trial.f_new {
+                    Some(f) if y_new == trial.y_new => f,
+                    _ => {
+                        stats.evals += 1;
+                        sys.rhs(t_new, &y_new)
+                    }
+                };
+                if all_finite(&y_new) && all_finite(&k_new) {
+                    h_prop = ctl.accept(trial.err, h, h_prop, h_max);
+                    t = t_new;
+                    y = y_new;
+                    k1 = k_new;
+                    stats.steps += 1;
+                    continue;
+                }
+                h_prop = ctl.reject(f64::NAN, h);
+            } else {
+                h_prop = ctl.reject(trial.err, h);
+            }
+            stats.rejected += 1;
+        }
+        report(on_row, t, &y)?;
+    }
+    Ok(stats)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Pair;
+    impl EmbeddedPair for Pair {
+        const HINIT_ORDER: f64 = 5.0;
+        const EXPO1: f64 = 0.2;
+        const BETA: f64 = 0.0;
+        const FAC_MIN: f64 = 0.2;
+        const FAC_MAX: f64 = 10.0;
+        const STAGE_EVALS: u64 = 6;
+        fn attempt<const N: usize, S: OdeSystem<N>>(
+            _: &mut S,
+            _: f64,
+            y: &SVector<f64, N>,
+            _: &SVector<f64, N>,
+            _: f64,
+            _: Tol,
+        ) -> Trial<N> {
+            Trial {
+                y_new: *y,
+                err: 0.0,
+                f_new: None,
+            }
+        }
+    }
+
+    #[test]
+    fn shortened_step_keeps_proposal() {
+        // A tiny step cut to land on a row with a negligible error keeps the proposal.
+        let mut c = Controller::<Pair>::new();
+        assert_eq!(c.accept(1e-20, 1e-9, 0.5, 10.0), 0.5);
+        // An unshortened step with the same error grows by at most FAC_MAX.
+        let mut c = Controller::<Pair>::new();
+        assert_eq!(c.accept(1e-20, 0.5, 0.5, 10.0), 5.0);
+        // A moderately shortened step may still grow beyond the proposal.
+        let mut c = Controller::<Pair>::new();
+        assert!(c.accept(1e-8, 0.45, 0.5, 10.0) > 0.5);
+        // An unshortened step with a large error is reduced.
+        let mut c = Controller::<Pair>::new();
+        assert!(c.accept(0.99, 0.5, 0.5, 10.0) < 0.5);
+    }
+
+    #[test]
+    fn rejection_shrinks_and_blocks_growth() {
+        let mut c = Controller::<Pair>::new();
+        let h = c.reject(4.0, 1.0);
+        assert!((Pair::FAC_MIN..1.0).contains(&h));
+        assert_eq!(c.reject(f64::NAN, 1.0), Pair::FAC_MIN);
+        // After a rejection the next accepted step may not grow.
+        assert_eq!(c.accept(1e-10, 0.2, 0.2, 10.0), 0.2);
+    }
+
+    #[test]
+    fn too_small_threshold() {
+        assert!(too_small(1e-16, 1.0));
+        assert!(!too_small(1e-14, 1.0));
+        assert!(too_small(0.0, 0.0));
+        assert!(too_small(f64::NAN, 0.0));
+        assert!(!too_small(1e-300, 0.0));
+    }
+}
