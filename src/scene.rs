@@ -322,12 +322,17 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
             }
             None => problem,
         };
+        let key = span
+            .as_ref()
+            .and_then(|s| map.key_at(s.start).or_else(|| map.key_near(s.start)));
+        // Text that names no key at all: quote the line, so the message still says where.
+        let problem = match (&key, &span) {
+            (None, Some(s)) => format!("{problem}, in the line `{}`", map.line_text(s.start)),
+            _ => problem,
+        };
         SceneError {
             file,
-            key: span
-                .as_ref()
-                .and_then(|s| map.key_at(s.start))
-                .map(|k| k.to_string()),
+            key: key.map(|k| k.to_string()),
             location: span.map(|s| map.line_col(s.start)),
             problem,
         }

@@ -104,6 +104,12 @@ impl<'a> SourceMap<'a> {
         (line, col)
     }
 
+    /// The text of the line holding the byte offset, trimmed.
+    pub fn line_text(&self, offset: usize) -> &str {
+        let (line, _) = self.line_col(offset);
+        self.text.lines().nth(line - 1).unwrap_or("").trim()
+    }
+
     /// The innermost key whose key or value contains the byte offset.
     pub fn key_at(&self, offset: usize) -> Option<KeyPath> {
         self.entries()
@@ -130,6 +136,53 @@ impl<'a> SourceMap<'a> {
             .map_or_else(KeyPath::root, |e| e.path)
     }
 
+    /// For text that does not parse as TOML: the key written on the line of `offset`, inside the table opened by the
+    /// last `[table]` or `[[array]]` header before it — read from the text itself. `None` when neither is there.
+    pub fn key_near(&self, offset: usize) -> Option<KeyPath> {
+        let mut cut = offset.min(self.text.len());
+        while !self.text.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        let (before, after) = self.text.split_at(cut);
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let mut table = KeyPath::root();
+        let mut array_counts: Vec<(String, usize)> = Vec::new();
+        for line in before[..line_start].lines().map(str::trim) {
+            if let Some(name) = line.strip_prefix("[[").and_then(|r| r.split("]]").next()) {
+                let name = name.trim().to_string();
+                let index = match array_counts.iter_mut().find(|(n, _)| *n == name) {
+                    Some((_, count)) => {
+                        *count += 1;
+                        *count
+                    }
+                    None => {
+                        array_counts.push((name.clone(), 0));
+                        0
+                    }
+                };
+                table = dotted(KeyPath::root(), &name).index(index);
+            } else if let Some(name) = line.strip_prefix('[').and_then(|r| r.split(']').next()) {
+                table = dotted(KeyPath::root(), name.trim());
+            }
+        }
+        let line = before[line_start..].to_string() + after.lines().next().unwrap_or("");
+        // The key before `=`, or, on a line with no `=`, the first word (what the parser took for a key).
+        let key = line
+            .split_once('=')
+            .map_or_else(|| line.split_whitespace().next().unwrap_or(""), |(k, _)| k)
+            .trim();
+        let key = Some(key).filter(|k| {
+            !k.is_empty()
+                && k.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c))
+        });
+        match key {
+            Some(k) => Some(dotted(table, k)),
+            None if !table.is_root() => Some(table),
+            None => None,
+        }
+    }
+
     /// Line and column of a key (of its value where the key is written, else of the key), or of the nearest
     /// enclosing key that is written in the file. `None` for values from the command line.
     pub fn locate(&self, path: &KeyPath) -> Option<(usize, usize)> {
@@ -154,6 +207,11 @@ impl<'a> SourceMap<'a> {
         }
         out
     }
+}
+
+/// `path` extended by a dotted key `a.b.c`.
+fn dotted(path: KeyPath, name: &str) -> KeyPath {
+    name.split('.').map(str::trim).fold(path, KeyPath::key)
 }
 
 fn collect_table(table: &DeTable<'_>, path: &KeyPath, out: &mut Vec<Entry>) {
