@@ -94,6 +94,11 @@ impl From<SceneError> for Failure {
 /// Parses the command line, runs the command, prints messages, and returns the exit code.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Err(e) = crate::interrupt::install() {
+        eprintln!(
+            "warning: cannot handle interrupts ({e}); an interrupted run may leave a temporary file"
+        );
+    }
     let result = match cli.command {
         Command::Run(args) => run(&args),
         Command::Check { scene } => check(&scene),

@@ -16,6 +16,7 @@ pub mod compare;
 pub mod effects;
 pub mod exact;
 pub mod integrate;
+pub mod interrupt;
 pub mod kinetics;
 pub mod model;
 pub mod motion;

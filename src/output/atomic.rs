@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 
 use tempfile::NamedTempFile;
 
-/// A file being written; becomes `path` on [`AtomicFile::commit`].
+/// A file being written; becomes `path` on [`AtomicFile::commit`]. Its temporary file is registered with
+/// [`crate::interrupt`] so that an interrupt removes it (a file dropped without commit is removed by
+/// `NamedTempFile` and stays registered: removing it again on interrupt is a harmless no-op).
 pub struct AtomicFile {
     path: PathBuf,
     temp: NamedTempFile,
@@ -42,6 +44,7 @@ impl AtomicFile {
             .prefix(&format!(".{name}."))
             .suffix(".tmp")
             .tempfile_in(&dir)?;
+        crate::interrupt::register(temp.path());
         Ok(Self {
             path: path.to_path_buf(),
             temp,
@@ -61,7 +64,9 @@ impl AtomicFile {
     /// Syncs the data and renames the temporary file over the destination.
     pub fn commit(self) -> io::Result<()> {
         self.temp.as_file().sync_all()?;
-        self.temp.persist(&self.path).map_err(|e| e.error)?;
-        Ok(())
+        let temp_path = self.temp.path().to_path_buf();
+        let result = self.temp.persist(&self.path).map_err(|e| e.error);
+        crate::interrupt::unregister(&temp_path);
+        result.map(|_| ())
     }
 }
