@@ -1,23 +1,34 @@
-//! The command line: `run`, `check`. Data goes to stdout, messages to stderr. Exit codes: 0 ok, 1 the run failed,
-//! 2 bad input.
+//! The command line: `run`, `check`, `compare`, `plot`. Data goes to stdout, messages (and the progress bar) to
+//! stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input.
 
 use std::fs::File;
-use std::io::{self, Write};
+use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
 use crate::model::Scene;
+use crate::output::plot::{self, Panel, PlotError};
 use crate::output::{AtomicFile, ColumnSet, CsvWriter, meta};
+use crate::progress::{self, Progress};
 use crate::report;
 use crate::scene::{self, Overrides, SceneError};
 use crate::simulate::{self, RunError, RunReport};
 
 /// Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes.
 #[derive(Debug, Parser)]
-#[command(name = "eulerdyn", version, about, long_about = None)]
+#[command(
+    name = "eulerdyn",
+    version,
+    about,
+    long_about = None,
+    after_help = "Examples:\n  eulerdyn check scenarios/tilted_disk.toml              what will be simulated\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv    the CSV time series (and disk.csv.meta.json)\n  eulerdyn plot disk.csv -o disk.svg                     H in body and space axes, M, omega, energy, drift\n  eulerdyn compare scenarios/asymmetric_free.toml        both forms against the closed form\n\nData goes to stdout, messages to stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input."
+)]
 pub struct Cli {
+    /// No progress bar and no messages on stderr except errors.
+    #[arg(short, long, global = true)]
+    pub quiet: bool,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -35,6 +46,9 @@ pub enum Command {
     Compare {
         /// Scene file (TOML).
         scene: PathBuf,
+        /// Integration method instead of the scene's (rk4, dopri5, dop853, split2, split4, exact).
+        #[arg(long)]
+        method: Option<String>,
     },
     /// Validate a scene and print what it will simulate.
     #[command(after_help = "Example:\n  eulerdyn check scenarios/tilted_disk.toml")]
@@ -42,6 +56,27 @@ pub enum Command {
         /// Scene file (TOML).
         scene: PathBuf,
     },
+    /// Plot a run's CSV as an SVG figure.
+    ///
+    /// One panel per quantity: H in body and in space axes, the moment M, omega, the kinetic energy, and the drift
+    /// of |H| and energy on a log scale.
+    #[command(
+        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (default: all)."
+    )]
+    Plot(PlotArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    /// CSV written by `eulerdyn run` (columns are found by their header names); `-`: stdin.
+    #[arg(value_name = "RUN.csv")]
+    pub csv: PathBuf,
+    /// Output SVG file, written atomically; `-`: stdout.
+    #[arg(short = 'o', long = "output", value_name = "FIG.svg")]
+    pub output: Option<PathBuf>,
+    /// Panels to draw, comma-separated, in this order: h_body, h_space, moment, omega, energy, drift, or all.
+    #[arg(long, value_name = "LIST", default_value = "all")]
+    pub panels: String,
 }
 
 #[derive(Debug, Args)]
@@ -51,7 +86,7 @@ pub struct RunArgs {
     /// Output CSV file, written atomically with a FILE.meta.json sidecar; `-` or absent: stdout.
     #[arg(short = 'o', long = "output")]
     pub output: Option<PathBuf>,
-    /// Integration method (rk4, dopri5, dop853).
+    /// Integration method: rk4, dopri5, dop853, split2, split4 or exact (torque-free only).
     #[arg(long)]
     pub method: Option<String>,
     /// Form of Euler's equation: body or space.
@@ -99,10 +134,12 @@ pub fn main() -> ExitCode {
             "warning: cannot handle interrupts ({e}); an interrupted run may leave a temporary file"
         );
     }
+    let quiet = cli.quiet;
     let result = match cli.command {
-        Command::Run(args) => run(&args),
+        Command::Run(args) => run(&args, quiet),
         Command::Check { scene } => check(&scene),
-        Command::Compare { scene } => compare(&scene),
+        Command::Compare { scene, method } => compare(&scene, method, quiet),
+        Command::Plot(args) => plot_command(&args, quiet),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -133,10 +170,21 @@ fn print_stdout(text: &str) -> Result<(), Failure> {
     }
 }
 
-fn compare(path: &Path) -> Result<(), Failure> {
-    let scene = scene::load(path, &Overrides::default())?;
-    let comparison = crate::compare::compare(&scene)
-        .map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
+fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failure> {
+    let overrides = Overrides {
+        method,
+        ..Overrides::default()
+    };
+    let scene = scene::load(path, &overrides)?;
+    let spinner = Progress::spinner(
+        "compare",
+        "running both forms and the closed form",
+        progress::wanted(quiet),
+    );
+    let comparison = crate::compare::compare(&scene);
+    spinner.finish();
+    let comparison =
+        comparison.map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
     print_stdout(&comparison.report())?;
     if comparison.passes() {
         Ok(())
@@ -149,7 +197,7 @@ fn compare(path: &Path) -> Result<(), Failure> {
     }
 }
 
-fn run(args: &RunArgs) -> Result<(), Failure> {
+fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     let overrides = Overrides {
         method: args.method.clone(),
         frame: args.frame.clone(),
@@ -162,9 +210,16 @@ fn run(args: &RunArgs) -> Result<(), Failure> {
     };
     let scene_model = scene::load(&args.scene, &overrides)?;
     let columns = simulate::columns(&scene_model);
+    let mut progress = Progress::bar(
+        "run",
+        "t",
+        scene_model.solver.t_end,
+        "s",
+        progress::wanted(quiet),
+    );
     let output = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let Some(out_path) = output else {
-        return match write_csv(&scene_model, columns, io::stdout().lock()) {
+        return match write_csv(&scene_model, columns, io::stdout().lock(), &mut progress) {
             Ok(_) => Ok(()),
             Err(RunError::Sink(e)) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
             Err(e) => Err(run_failure(&args.scene, Path::new("stdout"), e)),
@@ -183,14 +238,15 @@ fn run(args: &RunArgs) -> Result<(), Failure> {
             .write(true)
             .open(out_path)
             .map_err(|e| Failure::Input(file_error("cannot open", e)))?;
-        write_csv(&scene_model, columns, file)
+        write_csv(&scene_model, columns, file, &mut progress)
             .map_err(|e| run_failure(&args.scene, out_path, e))?;
         return Ok(());
     }
     let mut csv_file = AtomicFile::create(out_path)
         .map_err(|e| Failure::Input(file_error("cannot create the output file", e)))?;
-    let (report, _) = write_csv(&scene_model, columns, csv_file.file())
+    let (report, _) = write_csv(&scene_model, columns, csv_file.file(), &mut progress)
         .map_err(|e| run_failure(&args.scene, out_path, e))?;
+    progress.finish();
     let scene_text = std::fs::read_to_string(&args.scene).unwrap_or_default();
     let sidecar = meta::sidecar(
         &args.scene.display().to_string(),
@@ -213,6 +269,9 @@ fn run(args: &RunArgs) -> Result<(), Failure> {
     meta_file
         .commit()
         .map_err(|e| Failure::Run(meta_error("cannot save", e)))?;
+    if quiet {
+        return Ok(());
+    }
     eprintln!(
         "wrote {} rows to {} ({} steps, {} rejected, {} right-hand-side evaluations, {:.3} s)",
         report.rows,
@@ -225,14 +284,19 @@ fn run(args: &RunArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Runs the scene, streaming its rows as CSV into `out`; returns the report and the flushed writer.
+/// Runs the scene, streaming its rows as CSV into `out` and its time into `progress`; returns the report and the
+/// flushed writer.
 fn write_csv<W: Write>(
     scene: &Scene,
     columns: ColumnSet,
     out: W,
+    progress: &mut Progress,
 ) -> Result<(RunReport, W), RunError<io::Error>> {
     let mut writer = CsvWriter::new(out, columns).map_err(RunError::Sink)?;
-    let report = simulate::run(scene, |s| writer.write(s))?;
+    let report = simulate::run(scene, |s| {
+        progress.set(s.t);
+        writer.write(s)
+    })?;
     let out = writer.finish().map_err(RunError::Sink)?;
     Ok((report, out))
 }
@@ -247,7 +311,55 @@ fn same_file(a: &Path, b: &Path) -> bool {
 
 fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
     match e {
-        RunError::Integrate(e) => Failure::Run(format!("{}: the run failed: {e}", scene.display())),
+        e @ (RunError::Integrate(_) | RunError::Diverged(_)) => {
+            Failure::Run(format!("{}: the run failed: {e}", scene.display()))
+        }
         RunError::Sink(e) => Failure::Run(format!("{}: cannot write: {e}", out.display())),
+    }
+}
+
+/// `eulerdyn plot`: reads a run's CSV and writes the SVG figure to `-o FILE` (atomically) or to stdout.
+fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
+    let panels =
+        Panel::parse_list(&args.panels).map_err(|e| Failure::Input(format!("--panels: {e}")))?;
+    let to_stdout = match args.output.as_deref() {
+        Some(p) => p.as_os_str() == "-",
+        None if io::stdout().is_terminal() => {
+            return Err(Failure::Input(
+                "give the SVG file to write with -o FIG.svg (or -o - to write the SVG to stdout)"
+                    .into(),
+            ));
+        }
+        None => true,
+    };
+    let plot_failure = |e: PlotError| match e {
+        PlotError::Input { .. } => Failure::Input(e.to_string()),
+        PlotError::Output { .. } => Failure::Run(e.to_string()),
+    };
+    match args.output.as_deref().filter(|_| !to_stdout) {
+        Some(out) => {
+            if same_file(&args.csv, out) {
+                return Err(Failure::Input(format!(
+                    "{}: the figure would overwrite the CSV it plots; give another -o path",
+                    out.display()
+                )));
+            }
+            let summary = plot::plot_file(&args.csv, out, &panels).map_err(plot_failure)?;
+            if !quiet {
+                let names: Vec<&str> = summary.panels.iter().map(|p| p.name()).collect();
+                eprintln!(
+                    "wrote {} ({} rows; panels {})",
+                    out.display(),
+                    summary.rows,
+                    names.join(", ")
+                );
+            }
+            Ok(())
+        }
+        None => {
+            let run = plot::read_run(&args.csv, &panels).map_err(plot_failure)?;
+            let svg = plot::render_svg(&run, &panels, Path::new("stdout")).map_err(plot_failure)?;
+            print_stdout(&svg)
+        }
     }
 }

@@ -8,7 +8,8 @@
 //! - [`motion`]: prescribed fixed-axis rotation (inverse dynamics, eq. 8.10) and free rotation.
 //! - [`integrate`]: the integration methods and the streaming driver.
 //! - [`exact`]: closed-form solutions used as oracles and by `compare`.
-//! - [`output`]: CSV rows, the atomic file writer, the metadata sidecar.
+//! - [`output`]: CSV rows, the atomic file writer, the metadata sidecar, SVG plots of a run.
+//! - [`progress`]: the progress bar on stderr.
 
 pub mod body;
 pub mod cli;
@@ -21,7 +22,9 @@ pub mod kinetics;
 pub mod model;
 pub mod motion;
 pub mod output;
+pub mod progress;
 pub mod report;
 pub mod scene;
 pub mod simulate;
 pub mod source_map;
+pub mod study;

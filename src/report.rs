@@ -1,18 +1,194 @@
-//! What a scene will simulate, in a form a person reads at a glance (`eulerdyn check`).
+//! What a scene will simulate, in a form a person reads at a glance (`eulerdyn check`): the body with its principal
+//! moments and axes, the motion (for a fixed axis, its tilt from the nearest principal axis), the moment center
+//! that H and M are taken about, the state at t = 0, the effects, the equation, method and tolerances, the rows and
+//! an estimate of the steps.
 
 use std::fmt::Write;
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
+use crate::body::Principal;
 use crate::effects::{Effect, TorqueProfile};
-use crate::model::{Frame, MotionSpec, Scene};
+use crate::model::{Frame, MethodName, MotionSpec, Scene};
+use crate::output::sample::BASE_COLUMNS;
+use crate::simulate;
 
-fn vec3(v: &Vector3<f64>) -> String {
-    format!("({:.6}, {:.6}, {:.6})", v[0], v[1], v[2])
+/// Width of the label column.
+const LABEL: usize = 15;
+
+/// A component: six decimals, or scientific notation for very large or small magnitudes.
+fn fixed(v: f64) -> String {
+    if v == 0.0 || (1e-4..1e6).contains(&v.abs()) || !v.is_finite() {
+        format!("{v:.6}")
+    } else {
+        format!("{v:.6e}")
+    }
 }
 
-/// A multi-line description of the scene: body, principal moments and axes, motion and moment center, effects,
-/// method and tolerances, rows and an estimate of the steps.
+/// A number of turns: three decimals, scientific notation when huge.
+fn turns(v: f64) -> String {
+    if v.abs() < 1e6 || !v.is_finite() {
+        format!("{v:.3}")
+    } else {
+        format!("{v:.3e}")
+    }
+}
+
+/// A value as given: shortest form, scientific notation for very large or small magnitudes.
+fn plain(v: f64) -> String {
+    if v == 0.0 || (1e-4..1e15).contains(&v.abs()) || !v.is_finite() {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+fn vec3(v: &Vector3<f64>) -> String {
+    format!("({}, {}, {})", fixed(v[0]), fixed(v[1]), fixed(v[2]))
+}
+
+/// Appends `text` under `label` (a blank label continues the previous item).
+fn line(out: &mut String, label: &str, text: &str) {
+    let _ = writeln!(out, "{label:<LABEL$}{text}");
+}
+
+/// The angle (degrees) between `axis` and the nearest principal direction of `principal`, and the number (1-based)
+/// of that principal axis. Principal moments equal to 1e-9 relative span a plane (or all of space) of principal
+/// directions, and the angle is measured to that plane: every axis of a sphere is principal.
+pub fn tilt_from_principal(principal: &Principal, axis: &Vector3<f64>) -> (f64, usize) {
+    let axis = axis.normalize();
+    let m = principal.moments;
+    let scale = m.amax().max(f64::MIN_POSITIVE);
+    let p = principal.axes_b.matrix();
+    // (angle, -|cos| to axis k itself, k): among axes at the same angle (a plane of equal moments), the one
+    // closest to the axis is named.
+    let mut best = (f64::INFINITY, 0.0, 1);
+    for k in 0..3 {
+        // The principal directions with the same moment as axis k: the projection of `axis` onto their span.
+        let projection: f64 = (0..3)
+            .filter(|&j| (m[j] - m[k]).abs() <= 1e-9 * scale)
+            .map(|j| p.column(j).dot(&axis).powi(2))
+            .sum();
+        let angle = projection.sqrt().clamp(0.0, 1.0).acos().to_degrees();
+        let own = -p.column(k).dot(&axis).abs();
+        if angle < best.0 - 1e-9 || (angle <= best.0 + 1e-9 && own < best.1) {
+            best = (angle, own, k + 1);
+        }
+    }
+    (best.0, best.2)
+}
+
+/// A rough estimate of the steps an adaptive method takes to reach t_end: its step h follows from
+/// |ω|·h ≈ C·rtol^(1/(p+1)) (p the order; C measured on the shipped scenarios: 4 for dopri5, 5 for dop853), and it
+/// takes at least one step per row interval. `None` for methods that are not adaptive.
+pub fn adaptive_steps_estimate(scene: &Scene, rate: f64) -> Option<f64> {
+    let s = &scene.solver;
+    let (order, c) = match s.method {
+        MethodName::Dopri5 => (5.0, 4.0),
+        MethodName::Dop853 => (8.0, 5.0),
+        _ => return None,
+    };
+    let intervals = scene.schedule.len().saturating_sub(1) as f64;
+    let by_tolerance = if rate > 0.0 {
+        (s.t_end * rate / (c * s.rtol.powf(1.0 / (order + 1.0)))).ceil()
+    } else {
+        0.0
+    };
+    Some(by_tolerance.max(intervals))
+}
+
+/// The fastest rate (rad/s) in the scene: |ω| at the start (and end, for a spin-up), or a sine torque's angular
+/// frequency. Sets the step an adaptive method needs.
+fn characteristic_rate(scene: &Scene) -> f64 {
+    let motion_rate = match &scene.motion {
+        MotionSpec::Free { omega0_b, .. } => omega0_b.norm(),
+        MotionSpec::FixedAxis(m) => m
+            .rate()
+            .abs()
+            .max((m.rate() + m.accel() * scene.solver.t_end).abs()),
+    };
+    scene
+        .effects
+        .iter()
+        .filter_map(|e| match e {
+            Effect::Torque {
+                profile: TorqueProfile::Sine { freq_hz, .. },
+                ..
+            } => Some(2.0 * std::f64::consts::PI * freq_hz),
+            _ => None,
+        })
+        .fold(motion_rate, f64::max)
+}
+
+fn principal_lines(out: &mut String, principal: &Principal, about: &str) {
+    for k in 0..3 {
+        let axis = principal.axes_b.matrix().column(k).into_owned();
+        line(
+            out,
+            "",
+            &format!(
+                "principal moment {} = {:.6e} kg*m^2 about body axis {}{about}",
+                k + 1,
+                principal.moments[k],
+                vec3(&axis)
+            ),
+        );
+    }
+}
+
+fn tensor_lines(out: &mut String, title: &str, i: &Matrix3<f64>) {
+    line(out, "", title);
+    for r in 0..3 {
+        line(
+            out,
+            "",
+            &format!(
+                "  [{:>12.6e} {:>12.6e} {:>12.6e}]",
+                i[(r, 0)],
+                i[(r, 1)],
+                i[(r, 2)]
+            ),
+        );
+    }
+}
+
+fn effect_text(e: &Effect) -> String {
+    match e {
+        Effect::Torque {
+            frame,
+            value,
+            profile,
+        } => {
+            let profile = match profile {
+                TorqueProfile::Constant => "constant".to_string(),
+                TorqueProfile::Sine { freq_hz, phase_rad } => {
+                    format!(
+                        "sine at {} Hz, phase {} deg",
+                        plain(*freq_hz),
+                        plain(phase_rad.to_degrees())
+                    )
+                }
+                TorqueProfile::Step { t_on, t_off } => {
+                    format!("step, on for {} <= t < {} s", plain(*t_on), plain(*t_off))
+                }
+            };
+            format!(
+                "torque {} N*m in {} axes, {profile}",
+                vec3(value),
+                frame.name()
+            )
+        }
+        Effect::Gravity { g_s, pivot_b } => format!(
+            "gravity g = {} m/s^2 (space axes) at C, pivot {} m from C (body axes)",
+            vec3(g_s),
+            vec3(pivot_b)
+        ),
+        Effect::Damping { c } => format!("viscous damping M = -{} N*m*s * omega", plain(*c)),
+    }
+}
+
+/// A multi-line description of the scene: body, principal moments and axes, motion and moment center, the state
+/// at t = 0, effects, method and tolerances, rows and an estimate of the steps.
 pub fn describe(scene: &Scene) -> String {
     let mut out = String::new();
     let w = &mut out;
@@ -21,159 +197,335 @@ pub fn describe(scene: &Scene) -> String {
     } else {
         &scene.name
     };
-    let _ = writeln!(w, "scene      {name}");
+    line(w, "scene", name);
     if !scene.description.is_empty() {
-        let _ = writeln!(w, "           {}", scene.description);
+        line(w, "", &scene.description);
     }
+
+    // The body.
     let body = &scene.body;
-    let _ = writeln!(w, "body       mass {} kg", body.mass());
-    let i = body.inertia_c();
-    let _ = writeln!(w, "           inertia about C, body axes (kg*m^2):");
-    for r in 0..3 {
-        let _ = writeln!(
-            w,
-            "             [{:>12.6e} {:>12.6e} {:>12.6e}]",
-            i[(r, 0)],
-            i[(r, 1)],
-            i[(r, 2)]
-        );
-    }
-    let p = body.principal();
-    for k in 0..3 {
-        let axis = p.axes_b.matrix().column(k).into_owned();
-        let _ = writeln!(
-            w,
-            "           principal moment {} = {:.6e} kg*m^2 about body axis {}",
-            k + 1,
-            p.moments[k],
-            vec3(&axis)
-        );
-    }
+    line(w, "body", &format!("mass {} kg", plain(body.mass())));
+    tensor_lines(w, "inertia about C, body axes (kg*m^2):", body.inertia_c());
+    let principal = body.principal();
+    principal_lines(w, principal, "");
+
+    // The motion and its moment center.
+    let frame = scene.solver.frame;
     match &scene.motion {
-        MotionSpec::Free { omega0_b, .. } => {
-            let _ = writeln!(
-                w,
-                "motion     free rotation, omega(0) = {} rad/s (body axes)",
-                vec3(omega0_b)
-            );
-            let center = scene.effects.iter().find_map(|e| match e {
+        MotionSpec::Free {
+            omega0_b,
+            body: free,
+        } => {
+            let pivot = scene.effects.iter().find_map(|e| match e {
                 Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
                 _ => None,
             });
-            match center {
+            line(
+                w,
+                "motion",
+                "free rotation from omega(0), under the effects listed below",
+            );
+            match pivot {
                 Some(pivot) => {
-                    let _ = writeln!(
+                    line(
                         w,
-                        "center     the fixed pivot at {} m from C (body axes)",
-                        vec3(&pivot)
+                        "moment center",
+                        &format!(
+                            "the fixed pivot, {} m from C (body axes): H and M are about it",
+                            vec3(&pivot)
+                        ),
+                    );
+                    let about = Principal::of(free.inertia_b());
+                    line(
+                        w,
+                        "",
+                        &format!(
+                            "principal moments about the pivot: {:.6e}, {:.6e}, {:.6e} kg*m^2",
+                            about.moments[0], about.moments[1], about.moments[2]
+                        ),
                     );
                 }
-                None => {
-                    let _ = writeln!(w, "center     the mass center C");
-                }
+                None => line(
+                    w,
+                    "moment center",
+                    "C, the mass center: H and M are about it",
+                ),
             }
+            let h_b = free.inertia_b() * omega0_b;
+            let h_s = scene.attitude0 * h_b;
+            line(
+                w,
+                "at t = 0",
+                &format!("omega = {} rad/s (body axes)", vec3(omega0_b)),
+            );
+            line(
+                w,
+                "",
+                &format!(
+                    "H = {} kg*m^2/s (body axes), {} (space axes), |H| = {:.6e}",
+                    vec3(&h_b),
+                    vec3(&h_s),
+                    h_b.norm()
+                ),
+            );
+            line(
+                w,
+                "",
+                &format!("kinetic energy {:.6e} J", 0.5 * omega0_b.dot(&h_b)),
+            );
         }
         MotionSpec::FixedAxis(motion) => {
-            let (axis_b, rate, accel, point_b) = (
-                motion.axis_b().into_inner(),
-                motion.rate(),
-                motion.accel(),
-                motion.point_b(),
-            );
-            let _ = writeln!(
+            let axis_b = motion.axis_b().into_inner();
+            let (tilt, nearest) = tilt_from_principal(principal, &axis_b);
+            line(
                 w,
-                "motion     prescribed rotation about the fixed axis {} (body axes)",
-                vec3(&axis_b)
+                "motion",
+                "prescribed rotation about an axis fixed in the body and in space; M is the moment it requires (M = dH/dt)",
             );
-            let _ = writeln!(
+            line(
                 w,
-                "           rate {rate} rad/s at t = 0, acceleration {accel} rad/s^2"
+                "",
+                &format!(
+                    "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
+                    vec3(&axis_b),
+                    if tilt < 1e-6 && motion.point_b() == Vector3::zeros() {
+                        ": a principal axis, no moment is needed at a constant rate"
+                    } else {
+                        ""
+                    }
+                ),
             );
+            let (rate, accel, t_end) = (motion.rate(), motion.accel(), scene.solver.t_end);
+            let turned = rate * t_end + 0.5 * accel * t_end * t_end;
+            line(
+                w,
+                "",
+                &format!(
+                    "rate {} rad/s at t = 0, acceleration {} rad/s^2: {} turns by t_end",
+                    plain(rate),
+                    plain(accel),
+                    turns(turned / std::f64::consts::TAU)
+                ),
+            );
+            let point_b = motion.point_b();
             if point_b == Vector3::zeros() {
-                let _ = writeln!(w, "center     the mass center C (on the axis)");
-            } else {
-                let _ = writeln!(
+                line(
                     w,
-                    "center     the axis point {} m from C (body axes); C moves on a circle, the bearing force is reported",
-                    vec3(&point_b)
+                    "moment center",
+                    "C, the mass center, on the axis: H and M are about it",
+                );
+            } else {
+                line(
+                    w,
+                    "moment center",
+                    &format!(
+                        "the axis point {} m from C (body axes): H and M are about it",
+                        vec3(&point_b)
+                    ),
+                );
+                line(
+                    w,
+                    "",
+                    "C moves on a circle about the axis; the bearing force F = m a_C is in the F_s columns",
                 );
             }
+            let s = motion.sample(0.0, frame);
+            line(
+                w,
+                "at t = 0",
+                &format!("omega = {} rad/s (body axes)", vec3(&s.omega_b)),
+            );
+            line(
+                w,
+                "",
+                &format!(
+                    "H = {} kg*m^2/s (body axes), |H| = {:.6e}",
+                    vec3(&s.h_b),
+                    s.h_b.norm()
+                ),
+            );
+            line(
+                w,
+                "",
+                &format!(
+                    "M = {} N*m (body axes), |M| = {:.6e}: the moment the bearings supply",
+                    vec3(&s.m_b),
+                    s.m_b.norm()
+                ),
+            );
+            if let Some(f) = s.f_s {
+                line(
+                    w,
+                    "",
+                    &format!("F = {} N (space axes), |F| = {:.6e}", vec3(&f), f.norm()),
+                );
+            }
+            line(w, "", &format!("kinetic energy {:.6e} J", s.energy));
         }
     }
+    if scene.attitude0.angle() != 0.0 {
+        let (axis, angle) = scene
+            .attitude0
+            .axis_angle()
+            .map_or((Vector3::z(), 0.0), |(a, angle)| (a.into_inner(), angle));
+        line(
+            w,
+            "",
+            &format!(
+                "attitude: body axes turned {:.3} deg about {} from space axes",
+                angle.to_degrees(),
+                vec3(&axis)
+            ),
+        );
+    }
+
+    // Effects.
     if scene.effects.is_empty() {
-        let _ = writeln!(w, "effects    none (torque-free)");
+        let none = match scene.motion {
+            MotionSpec::FixedAxis(_) => "none: the motion is prescribed",
+            MotionSpec::Free { .. } => "none: torque-free",
+        };
+        line(w, "effects", none);
     }
     for (k, e) in scene.effects.iter().enumerate() {
-        let label = if k == 0 { "effects   " } else { "          " };
-        let text = match e {
-            Effect::Torque {
-                frame,
-                value,
-                profile,
-            } => {
-                let profile = match profile {
-                    TorqueProfile::Constant => "constant".to_string(),
-                    TorqueProfile::Sine { freq_hz, phase_rad } => {
-                        format!("sine at {freq_hz} Hz, phase {} deg", phase_rad.to_degrees())
-                    }
-                    TorqueProfile::Step { t_on, t_off } => {
-                        format!("step on for {t_on} <= t < {t_off} s")
-                    }
-                };
-                format!(
-                    "torque {} N*m in {} axes, {profile}",
-                    vec3(value),
-                    frame.name()
-                )
-            }
-            Effect::Gravity { g_s, pivot_b } => format!(
-                "gravity g = {} m/s^2 (space axes), pivot {} m from C (body axes)",
-                vec3(g_s),
-                vec3(pivot_b)
-            ),
-            Effect::Damping { c } => format!("viscous damping M = -{c} * omega"),
-        };
-        let _ = writeln!(w, "{label} {text}");
+        line(w, if k == 0 { "effects" } else { "" }, &effect_text(e));
     }
+
+    // Equation, method, output, steps.
     let s = &scene.solver;
     let form = match s.frame {
         Frame::Body => "body axes: I*omega' + omega x I*omega = M",
         Frame::Space => "space axes: dH_s/dt = M_s with I_s(theta)",
     };
-    let _ = writeln!(w, "equation   {form}");
-    if s.method.is_fixed_step() {
-        let _ = writeln!(
-            w,
-            "method     {} ({}), fixed step dt = {} s",
-            s.method.name(),
-            s.backend.name(),
-            s.dt
-        );
-    } else {
-        let _ = writeln!(
-            w,
-            "method     {} ({}), adaptive, rtol = {:e}, atol = {:e}",
-            s.method.name(),
-            s.backend.name(),
-            s.rtol,
-            s.atol
-        );
-    }
-    let rows = scene.schedule.len();
-    let _ = writeln!(
-        w,
-        "output     t = 0 .. {} s, a row every {} s: {rows} rows",
-        s.t_end,
-        scene.schedule.every()
+    line(w, "equation", form);
+    let runge_kutta = matches!(
+        s.method,
+        MethodName::Rk4 | MethodName::Dopri5 | MethodName::Dop853
     );
-    let steps = if s.method.is_fixed_step() {
-        format!("{} steps", (s.t_end / s.dt).ceil().max(rows as f64 - 1.0))
+    let backend = if runge_kutta {
+        format!(" ({} backend)", s.backend.name())
     } else {
-        format!(
-            "at least {} steps (one per row interval; more as the tolerance requires)",
-            rows.saturating_sub(1)
-        )
+        String::new()
     };
-    let _ = writeln!(w, "estimate   {steps}");
+    let rows = scene.schedule.len();
+    let intervals = rows.saturating_sub(1);
+    let rate = characteristic_rate(scene);
+    let steps = if s.method.is_fixed_step() {
+        line(
+            w,
+            "method",
+            &format!(
+                "{}{backend}, fixed step dt = {} s",
+                s.method.name(),
+                plain(s.dt)
+            ),
+        );
+        let steps = (s.t_end / s.dt).ceil().max(intervals as f64);
+        format!("{} steps of dt (t_end / dt)", plain(steps))
+    } else if let Some(estimate) = adaptive_steps_estimate(scene, rate) {
+        line(
+            w,
+            "method",
+            &format!(
+                "{}{backend}, adaptive: rtol = {:e}, atol = {:e}",
+                s.method.name(),
+                s.rtol,
+                s.atol
+            ),
+        );
+        if estimate.is_finite() {
+            format!(
+                "about {} steps (adaptive: at least one per row interval, and about\n{:LABEL$}t_end*|omega|/(C*rtol^(1/(p+1))) by a rule of thumb good to a factor of 2, |omega| = {} rad/s)",
+                plain(estimate),
+                "",
+                fixed(rate)
+            )
+        } else {
+            "too many steps to estimate (|omega| * t_end is not a finite number)".to_string()
+        }
+    } else {
+        line(
+            w,
+            "method",
+            &format!(
+                "{}{backend}: every row evaluated at its time",
+                s.method.name()
+            ),
+        );
+        "no time steps".to_string()
+    };
+    let extra: Vec<&str> = simulate::columns(scene)
+        .columns()
+        .iter()
+        .skip(BASE_COLUMNS.len())
+        .map(|c| c.name)
+        .collect();
+    line(
+        w,
+        "output",
+        &format!(
+            "t = 0 .. {} s, a row every {} s: {rows} rows",
+            plain(s.t_end),
+            plain(scene.schedule.every())
+        ),
+    );
+    line(
+        w,
+        "",
+        &if extra.is_empty() {
+            format!(
+                "{} columns (t, q, omega, H, M, energy, H_norm)",
+                BASE_COLUMNS.len()
+            )
+        } else {
+            format!(
+                "{} columns (t, q, omega, H, M, energy, H_norm), then {}",
+                BASE_COLUMNS.len(),
+                extra.join(", ")
+            )
+        },
+    );
+    line(w, "estimate", &steps);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation3;
+
+    fn principal(moments: [f64; 3]) -> Principal {
+        Principal {
+            moments: Vector3::from(moments),
+            axes_b: Rotation3::identity(),
+        }
+    }
+
+    #[test]
+    fn the_tilt_is_measured_to_the_nearest_principal_axis() {
+        let disk = principal([1.0, 1.0, 2.0]);
+        let tilt = 30f64.to_radians();
+        let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, -tilt.sin(), tilt.cos()));
+        assert!((angle - 30.0).abs() < 1e-9, "{angle}");
+        assert_eq!(k, 3);
+        // 60 deg from the symmetry axis is 30 deg from the plane of equal moments, whatever its azimuth.
+        let a = 60f64.to_radians();
+        let axis = Vector3::new(a.sin() * 0.6, a.sin() * 0.8, a.cos());
+        let (angle, k) = tilt_from_principal(&disk, &axis);
+        assert!((angle - 30.0).abs() < 1e-9, "{angle}");
+        // Of the axes in that plane, the one nearer the axis is named.
+        assert_eq!(k, 2);
+        // Along an axis of the plane of equal moments: that axis is named.
+        let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, 0.0, -1.0));
+        assert!(angle < 1e-6 && k == 3, "{angle} {k}");
+        let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, 2.0, 0.0));
+        assert!(angle < 1e-6 && k == 2, "{angle} {k}");
+    }
+
+    #[test]
+    fn every_axis_of_a_sphere_is_principal() {
+        let sphere = principal([2.0, 2.0, 2.0]);
+        let (angle, _) = tilt_from_principal(&sphere, &Vector3::new(1.0, 2.0, 3.0));
+        assert!(angle < 1e-6, "{angle}");
+    }
 }

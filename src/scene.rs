@@ -469,6 +469,7 @@ fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
     }
     let motion = validate_motion(&doc, &body, &attitude0, &effects)?;
     let solver = validate_solver(&doc.solver, overrides)?;
+    validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let every_key = key_of("output", "every", overrides.every.is_some());
     let every = positive(
         every_key.clone(),
@@ -527,6 +528,58 @@ fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
         schedule,
         compare_tolerance,
     })
+}
+
+/// Checks that the method can run the scene: the splitting methods and `exact` are the project's own (no
+/// ode_solvers backend); `exact` is the torque-free closed form, so it refuses effects, and its closed form must
+/// accept the body.
+fn validate_method(
+    solver: &SolverConfig,
+    motion: &MotionSpec,
+    effects: &[Effect],
+    attitude0: &UnitQuaternion<f64>,
+    o: &Overrides,
+) -> Checked<()> {
+    let method = solver.method;
+    if solver.backend != BackendName::Own && !method.is_runge_kutta() {
+        return invalid(
+            key_of("solver", "backend", o.backend.is_some()),
+            format!(
+                "backend \"{}\" runs only rk4, dopri5 and dop853; method \"{}\" is the project's own: remove the backend or use backend = \"own\"",
+                solver.backend.name(),
+                method.name()
+            ),
+        );
+    }
+    if method != MethodName::Exact {
+        return Ok(());
+    }
+    let method_key = key_of("solver", "method", o.method.is_some());
+    if let Some((index, effect)) = effects.iter().enumerate().next() {
+        let others: Vec<&str> = MethodName::ALL
+            .iter()
+            .filter(|m| **m != MethodName::Exact)
+            .map(|m| m.name())
+            .collect();
+        let (last, first) = others.split_last().map_or((&"", &[][..]), |(l, f)| (l, f));
+        return invalid(
+            method_key,
+            format!(
+                "method \"exact\" is the torque-free closed form; the scene's effect[{index}] ({}) needs {} or {last}",
+                effect.kind(),
+                first.join(", "),
+            ),
+        );
+    }
+    if let MotionSpec::Free { omega0_b, body } = motion {
+        crate::motion::exact_flow::ExactFlow::new(body, omega0_b, attitude0).map_err(|e| {
+            Invalid {
+                key: method_key,
+                problem: format!("method \"exact\" cannot solve this body in closed form: {e}"),
+            }
+        })?;
+    }
+    Ok(())
 }
 
 fn validate_body(doc: &BodyDoc) -> Checked<RigidBody> {

@@ -25,7 +25,7 @@ fn sigint_leaves_no_partial_file_and_the_old_output_untouched() {
     std::fs::write(&scene, LONG_SCENE).unwrap();
     let out = dir.path().join("out.csv");
     std::fs::write(&out, "previous contents\n").unwrap();
-    let mut child = Command::new(BIN)
+    let child = Command::new(BIN)
         .args(["run", scene.to_str().unwrap(), "-o", out.to_str().unwrap()])
         .stderr(std::process::Stdio::piped())
         .spawn()

@@ -12,7 +12,9 @@ use super::{
 
 /// One classical RK4 step from (t, y) with step h; `t_next` is the end time of the step (used
 /// for the k4 node so the last step of an interval evaluates exactly at the row time).
-#[inline]
+// Always inlined: where several callers instantiate it (the library behind the CLI), the compiler otherwise keeps
+// it out of line and a step costs ~1.7 × as much (`cargo bench --bench methods`, README "What accuracy costs").
+#[inline(always)]
 pub(crate) fn step<const N: usize, S: OdeSystem<N>>(
     sys: &mut S,
     t: f64,

@@ -4,7 +4,7 @@
 //! The applied moment is a type parameter: a torque-free run uses [`TorqueFree`], whose zero moment the compiler
 //! removes, so an absent effect costs nothing per step; otherwise [`EffectMoments`] sums the scene's effects.
 
-use nalgebra::{Matrix3, SVector, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Rotation3, SVector, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::effects::Effect;
@@ -18,6 +18,10 @@ pub type State = SVector<f64, 7>;
 
 /// The external moment acting on the body, about the moment center.
 pub trait AppliedMoment {
+    /// Whether the moment is identically zero. The forms then skip the arithmetic that applies it, which the
+    /// compiler cannot drop by itself (in IEEE arithmetic 0·x is not 0 for every x).
+    const ZERO: bool = false;
+
     /// The moment in body axes at time t, attitude q (body → space) and angular velocity ω_b.
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64>;
 }
@@ -27,6 +31,8 @@ pub trait AppliedMoment {
 pub struct TorqueFree;
 
 impl AppliedMoment for TorqueFree {
+    const ZERO: bool = true;
+
     #[inline(always)]
     fn moment_b(&self, _t: f64, _q: &UnitQuaternion<f64>, _omega_b: &Vector3<f64>) -> Vector3<f64> {
         Vector3::zeros()
@@ -36,45 +42,92 @@ impl AppliedMoment for TorqueFree {
 /// The sum of a scene's effects, about the moment center:
 /// torque `value·f(t)` (rotated into the body when given in space axes); gravity about the pivot
 /// M = ρ_C × m g with ρ_C = −pivot the position of C relative to the pivot; damping M = −c ω.
+///
+/// Split as M_b(t, q, ω) = [`EffectMoments::rest_moment_b`](t, q) − c·ω: the part that does not depend on ω
+/// (torques, gravity) and the total damping coefficient c = Σ c_k, which the splitting methods apply as exact kicks.
 #[derive(Debug, Clone)]
 pub struct EffectMoments {
     effects: Vec<Effect>,
     mass: f64,
+    damping_c: f64,
 }
 
 impl EffectMoments {
+    /// The moments of `effects` on a body of mass `mass` (kg).
     pub fn new(effects: &[Effect], mass: f64) -> Self {
+        let damping_c = effects
+            .iter()
+            .map(|e| match e {
+                Effect::Damping { c } => *c,
+                _ => 0.0,
+            })
+            .sum();
         Self {
             effects: effects.to_vec(),
             mass,
+            damping_c,
         }
     }
-}
 
-impl AppliedMoment for EffectMoments {
-    fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
+    /// The effects summed.
+    pub fn effects(&self) -> &[Effect] {
+        &self.effects
+    }
+
+    /// The part of the moment that does not depend on ω, body axes: Σ torques + ρ_C × m (Rᵀ g_s).
+    pub fn rest_moment_b(&self, t: f64, q: &UnitQuaternion<f64>) -> Vector3<f64> {
         let mut m_b = Vector3::zeros();
         for effect in &self.effects {
-            m_b += match effect {
+            match effect {
                 Effect::Torque {
                     frame,
                     value,
                     profile,
                 } => {
                     let v = value * profile.factor(t);
-                    match frame {
+                    m_b += match frame {
                         Frame::Body => v,
                         Frame::Space => q.inverse_transform_vector(&v),
-                    }
+                    };
                 }
                 Effect::Gravity { g_s, pivot_b } => {
                     let weight_b = q.inverse_transform_vector(g_s) * self.mass;
-                    (-pivot_b).cross(&weight_b)
+                    m_b += (-pivot_b).cross(&weight_b);
                 }
-                Effect::Damping { c } => omega_b * (-c),
-            };
+                Effect::Damping { .. } => {}
+            }
         }
         m_b
+    }
+
+    /// The total viscous damping coefficient c = Σ c_k (N·m·s): the damping moment is −c ω.
+    pub fn damping_c(&self) -> f64 {
+        self.damping_c
+    }
+
+    /// An upper bound of |M_rest| over all times and attitudes (N·m): Σ |torque value| (every profile factor is
+    /// at most 1 in magnitude) + m |g| |ρ_C| for gravity. Damping is left out: its power −c|ω|² is never positive.
+    pub fn rest_moment_bound(&self) -> f64 {
+        self.effects
+            .iter()
+            .map(|e| match e {
+                Effect::Torque { value, .. } => value.norm(),
+                Effect::Gravity { g_s, pivot_b } => self.mass * g_s.norm() * pivot_b.norm(),
+                Effect::Damping { .. } => 0.0,
+            })
+            .sum()
+    }
+}
+
+impl AppliedMoment for EffectMoments {
+    /// M_b = M_rest_b(t, q) − c ω_b.
+    fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
+        let rest = self.rest_moment_b(t, q);
+        if self.damping_c == 0.0 {
+            rest
+        } else {
+            rest - omega_b * self.damping_c
+        }
     }
 }
 
@@ -84,6 +137,10 @@ impl AppliedMoment for EffectMoments {
 pub struct FreeBody {
     inertia_b: Matrix3<f64>,
     inertia_inv_b: Matrix3<f64>,
+    /// Principal moments about A (kg·m²), in the order of the columns of `axes_b`.
+    moments_p: Vector3<f64>,
+    /// Principal axes about A: columns in body axes, a proper rotation, v_b = P v_p.
+    axes_b: Rotation3<f64>,
     /// Position of C relative to A, body axes.
     rho_c_b: Vector3<f64>,
     mass: f64,
@@ -100,6 +157,10 @@ pub struct SingularInertia {
 
 impl FreeBody {
     /// The body about the point `center_b` (relative to C, body axes): C itself, or a fixed pivot.
+    ///
+    /// Refuses ([`SingularInertia`]) a principal moment ≤ 1e-12 × the largest: the inertia tensor of a body with a
+    /// zero principal moment (a thin rod) does not determine the rotation about that axis, see the README's
+    /// "Numerical stability" section.
     pub fn new(body: &RigidBody, center_b: &Vector3<f64>) -> Result<Self, SingularInertia> {
         let rho_c_b = -center_b;
         let inertia_b = body.inertia_about(&rho_c_b);
@@ -116,6 +177,8 @@ impl FreeBody {
         Ok(Self {
             inertia_b,
             inertia_inv_b,
+            moments_p: principal.moments,
+            axes_b: principal.axes_b,
             rho_c_b,
             mass: body.mass(),
         })
@@ -129,6 +192,18 @@ impl FreeBody {
     /// I_A⁻¹ in body axes.
     pub fn inertia_inv_b(&self) -> &Matrix3<f64> {
         &self.inertia_inv_b
+    }
+
+    /// Principal moments of I_A (kg·m²), in the order of the columns of [`Self::principal_axes_b`]: body-axis order
+    /// when I_A is diagonal in body axes, else ascending. I_A = P diag(moments) Pᵀ.
+    pub fn principal_moments(&self) -> &Vector3<f64> {
+        &self.moments_p
+    }
+
+    /// The principal axes P of I_A: its columns are the principal axes in body axes, det P = +1, so a vector in
+    /// principal axes maps to body axes as v_b = P v_p, and the attitude of the principal axes is q_p = q_b ⊗ P.
+    pub fn principal_axes_b(&self) -> &Rotation3<f64> {
+        &self.axes_b
     }
 
     /// Position of C relative to the moment center, body axes.
@@ -214,7 +289,11 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
         let q = attitude(y);
         let h_s = Vector3::new(y[0], y[1], y[2]);
         let omega_b = self.body.inertia_inv_b * q.inverse_transform_vector(&h_s);
-        let m_s = q * self.moment.moment_b(t, &q, &omega_b);
+        let m_s = if M::ZERO {
+            Vector3::zeros()
+        } else {
+            q * self.moment.moment_b(t, &q, &omega_b)
+        };
         with_attitude_rate(m_s, y, &omega_b)
     }
 

@@ -4,6 +4,7 @@
 
 use std::fs::File;
 use std::io;
+use std::os::unix::fs::PermissionsExt;
 use std::path::{Path, PathBuf};
 
 use tempfile::NamedTempFile;
@@ -44,6 +45,9 @@ impl AtomicFile {
             .prefix(&format!(".{name}."))
             .suffix(".tmp")
             .tempfile_in(&dir)?;
+        // tempfile creates 0600; an output file gets the usual rw-r--r--.
+        temp.as_file()
+            .set_permissions(std::fs::Permissions::from_mode(0o644))?;
         crate::interrupt::register(temp.path());
         Ok(Self {
             path: path.to_path_buf(),

@@ -1,9 +1,11 @@
-//! Output: CSV rows (streaming), the atomic file writer, and the metadata sidecar.
+//! Output: CSV rows (streaming), the atomic file writer, the metadata sidecar, and SVG plots of a run's CSV.
 
 pub mod atomic;
 pub mod csv_writer;
 pub mod meta;
+pub mod plot;
 pub mod sample;
+pub mod work_precision;
 
 pub use atomic::AtomicFile;
 pub use csv_writer::CsvWriter;

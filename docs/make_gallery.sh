@@ -1,0 +1,20 @@
+#!/bin/sh
+# Makes the gallery of the README (docs/*.svg) with eulerdyn itself. Run from the repository root:
+#   sh docs/make_gallery.sh
+# The CSV files go to a temporary directory; only the figures are kept.
+set -eu
+eulerdyn="cargo run --quiet --release --"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The tilted disk: H constant in body axes, turning about the spin axis in space axes.
+$eulerdyn run scenarios/tilted_disk.toml -o "$work/tilted_disk.csv"
+$eulerdyn plot "$work/tilted_disk.csv" -o docs/tilted_disk_h.svg --panels h_body,h_space
+
+# The tennis-racket flip: omega in body and space axes, and the drift of |H| and energy.
+$eulerdyn run scenarios/tennis_racket.toml -o "$work/tennis_racket.csv"
+$eulerdyn plot "$work/tennis_racket.csv" -o docs/tennis_racket.svg --panels omega,drift
+
+# The heavy top: H about the pivot precessing (with nutation) in space; kinetic energy traded with potential.
+$eulerdyn run scenarios/heavy_top.toml -o "$work/heavy_top.csv"
+$eulerdyn plot "$work/heavy_top.csv" -o docs/heavy_top.svg --panels h_space,energy
