@@ -18,3 +18,6 @@ $eulerdyn plot "$work/tennis_racket.csv" -o docs/tennis_racket.svg --panels omeg
 # The heavy top: H about the pivot precessing (with nutation) in space; kinetic energy traded with potential.
 $eulerdyn run scenarios/heavy_top.toml -o "$work/heavy_top.csv"
 $eulerdyn plot "$work/heavy_top.csv" -o docs/heavy_top.svg --panels h_space,energy
+
+# What accuracy costs: the work-precision study of the benchmark body (about 10 s).
+$eulerdyn accuracy scenarios/asymmetric_free.toml -o docs/work_precision.csv --plot docs/work_precision.svg

@@ -64,6 +64,25 @@ pub enum Command {
         after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (default: all)."
     )]
     Plot(PlotArgs),
+    /// Work-precision study: every applicable method over a sweep of tolerances or step sizes, its error against
+    /// the closed form (or a reference run) and its cost in wall time, steps and evaluations.
+    #[command(
+        after_help = "Example:\n  eulerdyn accuracy scenarios/asymmetric_free.toml -o table.csv --plot work_precision.svg\n\nWithout -o the table goes to stdout and the summary to stderr; with -o the summary goes to stdout."
+    )]
+    Accuracy(AccuracyArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct AccuracyArgs {
+    /// Scene file (TOML).
+    pub scene: PathBuf,
+    /// Table CSV (columns method,frame,rtol,dt,err_omega,err_attitude,energy_drift,H_drift,wall_s,steps,rejected,
+    /// evals); `-` or absent: stdout.
+    #[arg(short = 'o', long = "output", value_name = "TABLE.csv")]
+    pub output: Option<PathBuf>,
+    /// Log-log SVG figure: error against wall time, a curve per method.
+    #[arg(long, value_name = "FIG.svg")]
+    pub plot: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]
@@ -140,6 +159,7 @@ pub fn main() -> ExitCode {
         Command::Check { scene } => check(&scene),
         Command::Compare { scene, method } => compare(&scene, method, quiet),
         Command::Plot(args) => plot_command(&args, quiet),
+        Command::Accuracy(args) => accuracy_command(&args, quiet),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -319,6 +339,45 @@ fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
 }
 
 /// `eulerdyn plot`: reads a run's CSV and writes the SVG figure to `-o FILE` (atomically) or to stdout.
+fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
+    let table = args.output.as_deref().filter(|p| p.as_os_str() != "-");
+    let mut progress = None;
+    let result = crate::study::run_accuracy_command(
+        &args.scene,
+        table,
+        args.plot.as_deref(),
+        &crate::study::StudyOptions::default(),
+        |done, total, _label| {
+            progress
+                .get_or_insert_with(|| {
+                    Progress::bar(
+                        "accuracy",
+                        "run",
+                        total as f64,
+                        "runs",
+                        progress::wanted(quiet),
+                    )
+                })
+                .set(done as f64);
+        },
+    );
+    if let Some(p) = progress {
+        p.finish();
+    }
+    let study = result.map_err(|e| match e.exit_code() {
+        2 => Failure::Input(e.to_string()),
+        _ => Failure::Run(e.to_string()),
+    })?;
+    match table {
+        Some(_) => print_stdout(&study.summary()),
+        None => {
+            print_stdout(&study.table_csv())?;
+            eprint!("{}", study.summary());
+            Ok(())
+        }
+    }
+}
+
 fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
     let panels =
         Panel::parse_list(&args.panels).map_err(|e| Failure::Input(format!("--panels: {e}")))?;

@@ -356,3 +356,50 @@ fn too_many_rows_for_a_reference_are_refused_with_a_clear_message() {
         "{msg}"
     );
 }
+
+#[test]
+fn accuracy_command_writes_the_contract_table_and_the_figure() {
+    // Through the binary: exit 0, the table's header starts with the contract's columns, the SVG is written and the
+    // summary names the cheapest methods; a bad scene is exit 2.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("short.toml");
+    std::fs::write(
+        &scene,
+        "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.3, 0.0, 2.0]\n[solver]\nt_end = 2.0\n[output]\nevery = 0.5\n",
+    )
+    .unwrap();
+    let table = dir.path().join("table.csv");
+    let figure = dir.path().join("fig.svg");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_eulerdyn"))
+        .args([
+            "accuracy",
+            scene.to_str().unwrap(),
+            "-o",
+            table.to_str().unwrap(),
+            "--plot",
+        ])
+        .arg(&figure)
+        .output()
+        .unwrap();
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = std::fs::read_to_string(&table).unwrap();
+    assert!(text.starts_with(
+        "method,frame,rtol,dt,err_omega,err_attitude,energy_drift,H_drift,wall_s,steps,rejected,evals"
+    ));
+    assert!(std::fs::read_to_string(&figure).unwrap().contains("<svg"));
+    let summary = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        summary.contains("cheapest for err_omega <= 1e-6"),
+        "{summary}"
+    );
+    let bad = std::process::Command::new(env!("CARGO_BIN_EXE_eulerdyn"))
+        .args(["accuracy", "no-such-scene.toml"])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+}
