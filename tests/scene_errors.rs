@@ -636,6 +636,22 @@ fn cases() -> Vec<Case> {
             &["steps"],
         ),
         case(
+            "the exact method with an effect it cannot do",
+            free_plus("\n[[effect]]\ntype = \"torque\"\nvalue = [0.0, 0.0, 0.1]\n")
+                .replace("t_end = 1.0", "t_end = 1.0\nmethod = \"exact\" # <--"),
+            "solver.method",
+            &["exact", "effect[0]", "torque"],
+        ),
+        case(
+            "a project method through the ode_solvers backend",
+            free(
+                "t_end = 1.0",
+                "t_end = 1.0\nmethod = \"split2\"\nbackend = \"ode_solvers\" # <--",
+            ),
+            "solver.backend",
+            &["split2"],
+        ),
+        case(
             "unknown method",
             free("t_end = 1.0", "t_end = 1.0\nmethod = \"euler\" # <--"),
             "solver.method",
