@@ -32,7 +32,7 @@ fn version_prints_the_crate_version() {
 fn help_lists_every_command_with_examples() {
     let out = eulerdyn(["--help"]);
     out.expect_code(0);
-    for command in ["run", "check", "compare", "plot"] {
+    for command in ["run", "check", "compare", "plot", "accuracy"] {
         assert!(
             out.stdout.contains(&format!("  {command} ")),
             "no {command} in\n{}",
@@ -46,7 +46,7 @@ fn help_lists_every_command_with_examples() {
 
 #[test]
 fn help_of_every_command_shows_an_example_of_it() {
-    for command in ["run", "check", "compare", "plot"] {
+    for command in ["run", "check", "compare", "plot", "accuracy"] {
         for args in [vec![command, "--help"], vec!["help", command]] {
             let out = eulerdyn(&args);
             out.expect_code(0);
