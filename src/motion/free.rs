@@ -338,6 +338,19 @@ pub fn sample<M: AppliedMoment>(
         Frame::Space => first,
     };
     let m_b = moment.moment_b(t, &q, &omega_b);
+    free_sample(t, q, omega_b, h_b, h_s, m_b)
+}
+
+/// The row of a freely turning body from its attitude q, ω_b, H_b, H_s and the applied moment M_b:
+/// ω_s = R ω_b, M_s = R M_b, energy ½ ω·H.
+pub fn free_sample(
+    t: f64,
+    q: UnitQuaternion<f64>,
+    omega_b: Vector3<f64>,
+    h_b: Vector3<f64>,
+    h_s: Vector3<f64>,
+    m_b: Vector3<f64>,
+) -> Sample {
     Sample {
         t,
         q,

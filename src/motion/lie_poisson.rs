@@ -78,9 +78,8 @@
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 use crate::integrate::{IntegrateError, Schedule, Stats, rk4_substeps};
-use crate::kinetics::kinetic_energy;
 use crate::model::Frame;
-use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree};
+use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree, free_sample};
 use crate::output::Sample;
 
 /// How the order-2 Strang step is composed into one step of size h.
@@ -408,20 +407,7 @@ impl<K: KickMoment> LiePoisson<K> {
             Frame::Space => y.h,
         };
         let m_b = self.kick.moment_b(t, &q, &omega_b);
-        Sample {
-            t,
-            q,
-            omega_b,
-            omega_s: q * omega_b,
-            h_b,
-            h_s,
-            m_b,
-            m_s: q * m_b,
-            energy: kinetic_energy(&omega_b, &h_b),
-            theta: None,
-            f_s: None,
-            h_s_integrated: None,
-        }
+        free_sample(t, q, omega_b, h_b, h_s, m_b)
     }
 
     /// The exact flow of kᵢ Hᵢ²/2 over τ (module docs, with 1/Iᵢ replaced by the rate coefficient kᵢ): H_p turned

@@ -673,13 +673,13 @@ fn linear_range(lo: f64, hi: f64) -> (f64, f64) {
 }
 
 /// The range of a log axis drawn as exponents: [lo, hi] (log10 of the values) widened to whole decades.
-fn decade_range(lo: f64, hi: f64) -> (f64, f64) {
+pub(crate) fn decade_range(lo: f64, hi: f64) -> (f64, f64) {
     let (lo, hi) = (lo.floor(), hi.ceil());
     if hi <= lo { (lo, lo + 1.0) } else { (lo, hi) }
 }
 
 /// The label of the exponent `v` on a log axis: `1e-12` at a whole decade, else the value.
-fn decade_label(v: f64) -> String {
+pub(crate) fn decade_label(v: f64) -> String {
     if (v - v.round()).abs() < 1e-9 {
         format!("1e{}", v.round() as i32)
     } else {

@@ -10,6 +10,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::plot::{decade_label, decade_range};
 use crate::model::Frame;
 use crate::study::{Study, TARGETS};
 
@@ -79,21 +80,6 @@ fn curves(study: &Study) -> Vec<Curve> {
     curves
 }
 
-/// [lo, hi] widened to whole decades (at least one).
-fn decades(lo: f64, hi: f64) -> (f64, f64) {
-    let (lo, hi) = (lo.floor(), hi.ceil());
-    if hi <= lo { (lo, lo + 1.0) } else { (lo, hi) }
-}
-
-/// `1e-9` at a whole decade, else the value.
-fn decade_label(v: f64) -> String {
-    if (v - v.round()).abs() < 1e-9 {
-        format!("1e{}", v.round() as i32)
-    } else {
-        format!("{:.1e}", 10f64.powf(v))
-    }
-}
-
 type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 type DrawResult = Result<(), DrawingAreaErrorKind<std::io::Error>>;
 
@@ -132,10 +118,10 @@ fn draw(root: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
             Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
         })
     };
-    let (x0, x1) = decades_of(fold(&mut xs.into_iter()).unwrap_or((-4.0, -3.0)));
+    let (x0, x1) = fold(&mut xs.into_iter()).map_or((-4.0, -3.0), |(lo, hi)| decade_range(lo, hi));
     let target_logs: Vec<f64> = TARGETS.iter().map(|t| t.log10()).collect();
     let (y_lo, y_hi) = fold(&mut ys.into_iter()).unwrap_or((-12.0, -3.0));
-    let (y0, y1) = decades(y_lo, y_hi);
+    let (y0, y1) = decade_range(y_lo, y_hi);
     let x_fmt = |v: &f64| decade_label(*v);
     let y_fmt = |v: &f64| decade_label(*v);
     let mut chart = ChartBuilder::on(&chart_area)
@@ -188,11 +174,6 @@ fn draw(root: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         chart.draw_series(curve.points.iter().map(|&p| Circle::new(p, 4, marker)))?;
     }
     draw_legend(&legend_area, study, curves)
-}
-
-/// Whole decades around a range of log10 values.
-fn decades_of((lo, hi): (f64, f64)) -> (f64, f64) {
-    decades(lo, hi)
 }
 
 /// The legend, in its own column beside the chart so that it never hides a curve.
@@ -258,10 +239,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn decades_and_labels() {
-        assert_eq!(decades(-3.2, -1.5), (-4.0, -1.0));
-        assert_eq!(decades(-3.0, -3.0), (-3.0, -2.0));
-        assert_eq!(decade_label(-9.0), "1e-9");
+    fn wrap_breaks_at_spaces() {
         assert_eq!(wrap("a bb ccc dddd", 6), vec!["a bb", "ccc", "dddd"]);
     }
 }
