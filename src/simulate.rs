@@ -427,7 +427,7 @@ fn run_free<M: KickMoment + Clone, E>(
         );
     }
     if scene.solver.method == MethodName::Exact {
-        if M::ACTIVE {
+        if !M::ZERO {
             // Validation refuses this (scene.rs); a scene built by hand still gets a clear error.
             return Err(IntegrateError::InvalidSettings {
                 reason: "method \"exact\" is the torque-free closed form; the scene has effects"

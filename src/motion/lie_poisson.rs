@@ -122,8 +122,6 @@ impl Scheme {
 
 /// An applied moment in the form the kicks need: M_b(t, q, ω) = M_rest_b(t, q) − c·ω.
 pub trait KickMoment: AppliedMoment {
-    /// False for a moment that is always zero: its kicks are compiled out.
-    const ACTIVE: bool;
     /// The part of the moment that does not depend on ω (body axes, N·m).
     fn rest_moment_b(&self, t: f64, q_b: &UnitQuaternion<f64>) -> Vector3<f64>;
     /// The viscous damping coefficient c ≥ 0 (N·m·s): the rest of the moment is −c ω.
@@ -131,7 +129,6 @@ pub trait KickMoment: AppliedMoment {
 }
 
 impl KickMoment for TorqueFree {
-    const ACTIVE: bool = false;
     #[inline(always)]
     fn rest_moment_b(&self, _t: f64, _q_b: &UnitQuaternion<f64>) -> Vector3<f64> {
         Vector3::zeros()
@@ -143,7 +140,6 @@ impl KickMoment for TorqueFree {
 }
 
 impl KickMoment for EffectMoments {
-    const ACTIVE: bool = true;
     fn rest_moment_b(&self, t: f64, q_b: &UnitQuaternion<f64>) -> Vector3<f64> {
         EffectMoments::rest_moment_b(self, t, q_b)
     }
@@ -551,7 +547,7 @@ impl<K: KickMoment> FixedStep for LiePoisson<K> {
         let stages = self.weights.len();
         for (n, &w) in self.weights.iter().enumerate() {
             let tau = w * h;
-            if K::ACTIVE {
+            if !K::ZERO {
                 self.kick(t_s, 0.5 * tau, y);
                 evals += 1;
             }
@@ -562,13 +558,13 @@ impl<K: KickMoment> FixedStep for LiePoisson<K> {
             } else {
                 t + elapsed * h
             };
-            if K::ACTIVE {
+            if !K::ZERO {
                 self.kick(t_s, 0.5 * tau, y);
                 evals += 1;
             }
         }
         Self::normalise(y);
-        if !K::ACTIVE && self.frame == Frame::Body {
+        if K::ZERO && self.frame == Frame::Body {
             let n = y.h.norm();
             if n > 0.0 {
                 y.h *= y.h_norm0 / n;
