@@ -263,9 +263,14 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
     #[inline]
     fn rhs(&mut self, t: f64, y: &State) -> State {
         let omega_b = Vector3::new(y[0], y[1], y[2]);
-        let m_b = self.moment.moment_b(t, &attitude(y), &omega_b);
         let h_b = self.body.inertia_b * omega_b;
-        let omega_dot_b = self.body.inertia_inv_b * (m_b - omega_b.cross(&h_b));
+        let gyroscopic_b = omega_b.cross(&h_b);
+        let omega_dot_b = if M::ZERO {
+            self.body.inertia_inv_b * -gyroscopic_b
+        } else {
+            let m_b = self.moment.moment_b(t, &attitude(y), &omega_b);
+            self.body.inertia_inv_b * (m_b - gyroscopic_b)
+        };
         with_attitude_rate(omega_dot_b, y, &omega_b)
     }
 
