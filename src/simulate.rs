@@ -313,17 +313,27 @@ pub fn columns(scene: &Scene) -> ColumnSet {
     }
 }
 
-/// The Runge–Kutta settings a scene asks for. For split2/split4 only `dt` and `max_steps` apply (the splitting
-/// driver takes the same fixed steps as RK4, and `method` is reported as `Rk4`); `exact` uses none of them
-/// (`method` reported as `Dop853`).
-pub fn settings(scene: &Scene) -> integrate::Settings {
+/// How a scene's method runs: a splitting scheme or the closed form (the project's own methods, stepped here), or
+/// a Runge–Kutta method through [`integrate::integrate`] with these settings.
+enum Runner {
+    Splitting(Scheme),
+    Exact,
+    RungeKutta(integrate::Settings),
+}
+
+/// The runner of the scene's method.
+fn runner(scene: &Scene) -> Runner {
     let s = &scene.solver;
-    integrate::Settings {
-        method: match s.method {
-            MethodName::Rk4 | MethodName::Split2 | MethodName::Split4 => integrate::Method::Rk4,
-            MethodName::Dopri5 => integrate::Method::Dopri5,
-            MethodName::Dop853 | MethodName::Exact => integrate::Method::Dop853,
-        },
+    let method = match s.method {
+        MethodName::Split2 => return Runner::Splitting(Scheme::Strang),
+        MethodName::Split4 => return Runner::Splitting(Scheme::Suzuki4),
+        MethodName::Exact => return Runner::Exact,
+        MethodName::Rk4 => integrate::Method::Rk4,
+        MethodName::Dopri5 => integrate::Method::Dopri5,
+        MethodName::Dop853 => integrate::Method::Dop853,
+    };
+    Runner::RungeKutta(integrate::Settings {
+        method,
         backend: match s.backend {
             BackendName::Own => integrate::Backend::Own,
             BackendName::OdeSolvers => integrate::Backend::OdeSolvers,
@@ -332,7 +342,12 @@ pub fn settings(scene: &Scene) -> integrate::Settings {
         atol: s.atol,
         dt: s.dt,
         ..integrate::Settings::default()
-    }
+    })
+}
+
+/// The most steps a fixed-step run of the project's own methods may take (as for the Runge–Kutta methods).
+fn max_steps() -> u64 {
+    integrate::Settings::default().max_steps
 }
 
 /// Why the row callback stopped a run: the guard, or the sink.
@@ -394,15 +409,6 @@ fn split_error<E: std::error::Error + 'static>(e: IntegrateError<Stop<E>>) -> Ru
     })
 }
 
-/// The composition scheme of a splitting method.
-fn scheme(method: MethodName) -> Option<Scheme> {
-    match method {
-        MethodName::Split2 => Some(Scheme::Strang),
-        MethodName::Split4 => Some(Scheme::Suzuki4),
-        _ => None,
-    }
-}
-
 /// Free rotation with the scene's method, in the form the scene's frame selects, streaming each row.
 fn run_free<M: KickMoment + Clone, E>(
     scene: &Scene,
@@ -412,35 +418,38 @@ fn run_free<M: KickMoment + Clone, E>(
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
     let frame = scene.solver.frame;
-    let settings = settings(scene);
-    if let Some(scheme) = scheme(scene.solver.method) {
-        let mut split = LiePoisson::new(body, frame, scheme, moment);
-        let sampler = split.clone();
-        let y0 = split.initial_state(body, omega0_b, &scene.attitude0);
-        return run_fixed_step(
-            &mut split,
-            y0,
-            &scene.schedule,
-            settings.dt,
-            settings.max_steps,
-            |t, y| sink(&sampler.sample(t, y)),
-        );
-    }
-    if scene.solver.method == MethodName::Exact {
-        if !M::ZERO {
-            // Validation refuses this (scene.rs); a scene built by hand still gets a clear error.
-            return Err(IntegrateError::InvalidSettings {
-                reason: "method \"exact\" is the torque-free closed form; the scene has effects"
-                    .into(),
-            });
+    let settings = match runner(scene) {
+        Runner::Splitting(scheme) => {
+            let mut split = LiePoisson::new(body, frame, scheme, moment);
+            let sampler = split.clone();
+            let y0 = split.initial_state(body, omega0_b, &scene.attitude0);
+            return run_fixed_step(
+                &mut split,
+                y0,
+                &scene.schedule,
+                scene.solver.dt,
+                max_steps(),
+                |t, y| sink(&sampler.sample(t, y)),
+            );
         }
-        let flow = ExactFlow::new(body, omega0_b, &scene.attitude0).map_err(|e| {
-            IntegrateError::InvalidSettings {
-                reason: format!("method \"exact\": {e}"),
+        Runner::Exact => {
+            if !M::ZERO {
+                // Validation refuses this (scene.rs); a scene built by hand still gets a clear error.
+                return Err(IntegrateError::InvalidSettings {
+                    reason:
+                        "method \"exact\" is the torque-free closed form; the scene has effects"
+                            .into(),
+                });
             }
-        })?;
-        return flow.run(&scene.schedule, frame, sink);
-    }
+            let flow = ExactFlow::new(body, omega0_b, &scene.attitude0).map_err(|e| {
+                IntegrateError::InvalidSettings {
+                    reason: format!("method \"exact\": {e}"),
+                }
+            })?;
+            return flow.run(&scene.schedule, frame, sink);
+        }
+        Runner::RungeKutta(settings) => settings,
+    };
     let y0 = free::initial_state(body, frame, omega0_b, &scene.attitude0);
     let on_row = |t: f64, y: &free::State| sink(&free::sample(body, &moment, frame, t, y));
     match frame {
@@ -502,29 +511,31 @@ fn run_fixed_axis<E>(
         sample.h_s_integrated = Some(*h_s_int);
         sink(&sample)
     };
-    let settings = settings(scene);
-    if let Some(scheme) = scheme(scene.solver.method) {
-        let mut quadrature = KickQuadrature::new(scheme, |t| system.moment_s(t));
-        return run_fixed_step(
-            &mut quadrature,
-            h_s0,
-            &scene.schedule,
-            settings.dt,
-            settings.max_steps,
-            on_row,
-        );
-    }
-    if scene.solver.method == MethodName::Exact {
-        let mut stats = Stats::default();
-        for t in scene.schedule.iter() {
-            let h_s = motion.sample(t, frame).h_s;
-            stats.evals += 1;
-            if t > 0.0 {
-                stats.steps += 1;
-            }
-            on_row(t, &h_s).map_err(|cause| IntegrateError::Stopped { t, cause })?;
+    let settings = match runner(scene) {
+        Runner::Splitting(scheme) => {
+            let mut quadrature = KickQuadrature::new(scheme, |t| system.moment_s(t));
+            return run_fixed_step(
+                &mut quadrature,
+                h_s0,
+                &scene.schedule,
+                scene.solver.dt,
+                max_steps(),
+                on_row,
+            );
         }
-        return Ok(stats);
-    }
+        Runner::Exact => {
+            let mut stats = Stats::default();
+            for t in scene.schedule.iter() {
+                let h_s = motion.sample(t, frame).h_s;
+                stats.evals += 1;
+                if t > 0.0 {
+                    stats.steps += 1;
+                }
+                on_row(t, &h_s).map_err(|cause| IntegrateError::Stopped { t, cause })?;
+            }
+            return Ok(stats);
+        }
+        Runner::RungeKutta(settings) => settings,
+    };
     integrate::integrate(&mut system, h_s0, &scene.schedule, &settings, on_row)
 }
