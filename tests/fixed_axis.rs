@@ -28,6 +28,19 @@ fn tilted_axis(theta: f64) -> Vector3<f64> {
     Vector3::new(0.0, -theta.sin(), theta.cos())
 }
 
+/// The notes' disk spinning at the constant rate OMEGA about its axis tilted θ, through C, starting from the
+/// identity attitude.
+fn disk_motion(theta: f64) -> FixedAxis {
+    FixedAxis::new(
+        &disk(),
+        tilted_axis(theta),
+        OMEGA,
+        0.0,
+        Vector3::zeros(),
+        UnitQuaternion::identity(),
+    )
+}
+
 fn tilts() -> impl Iterator<Item = f64> {
     (0..=36).map(|k| k as f64 * FRAC_PI_2 / 36.0)
 }
@@ -42,14 +55,7 @@ fn disk_part_a_central_moment_of_momentum_in_principal_axes() {
     // Notes, disk example (a): H_C = I_C·ω = (0, −¼mR²ω sinθ, ½mR²ω cosθ) (eq. 8.2).
     let mr2 = MASS * RADIUS * RADIUS;
     for theta in tilts() {
-        let motion = FixedAxis::new(
-            &disk(),
-            tilted_axis(theta),
-            OMEGA,
-            0.0,
-            Vector3::zeros(),
-            UnitQuaternion::identity(),
-        );
+        let motion = disk_motion(theta);
         let h_b = motion.h_b(&motion.angle(0.37));
         let expected = Vector3::new(
             0.0,
@@ -154,14 +160,7 @@ fn disk_required_moment_is_omega_cross_h_along_x1_constant_in_body_turning_in_sp
     // ¼mR²ω² sinθ cosθ and the sign is negative in the notes' setup (ω = ω(0, −sinθ, cosθ)).
     let q = MASS * RADIUS * RADIUS / 4.0;
     for theta in tilts() {
-        let motion = FixedAxis::new(
-            &disk(),
-            tilted_axis(theta),
-            OMEGA,
-            0.0,
-            Vector3::zeros(),
-            UnitQuaternion::identity(),
-        );
+        let motion = disk_motion(theta);
         let magnitude = q * OMEGA * OMEGA * theta.sin() * theta.cos();
         let scale = q * OMEGA * OMEGA;
         let m_b0 = motion.moment_b(&motion.angle(0.0));
@@ -185,14 +184,7 @@ fn disk_required_moment_is_omega_cross_h_along_x1_constant_in_body_turning_in_sp
     }
     // Zero at θ = 0 and 90°: the axis is principal, H ∥ ω.
     for theta in [0.0, FRAC_PI_2] {
-        let motion = FixedAxis::new(
-            &disk(),
-            tilted_axis(theta),
-            OMEGA,
-            0.0,
-            Vector3::zeros(),
-            UnitQuaternion::identity(),
-        );
+        let motion = disk_motion(theta);
         let angle = motion.angle(0.4);
         assert!(motion.moment_b(&angle).norm() <= 8.0 * f64::EPSILON * q * OMEGA * OMEGA);
         assert!(motion.moment_s(&angle).norm() <= 8.0 * f64::EPSILON * q * OMEGA * OMEGA);
