@@ -68,12 +68,16 @@
 //!
 //! # Work counters
 //!
-//! [`Stats::steps`] counts steps of size h (a `split4` step, three Strang stages, counts once);
+//! [`Stats::steps`] counts steps of size h (a `split4` step, five Strang stages, counts once);
 //! [`Stats::evals`] counts sub-flows: every exact rotation (planar or about H) and every kick (kicks only when the
-//! scene has effects). Per step with three distinct moments, Casimir splitting: `split2` 4 rotations (+ 2 kicks),
-//! `split4` 12 rotations (+ 6 kicks); a symmetric body skips its zero-rate rotation (3 and 9). A fixed-axis motion
-//! (prescribed, so there is nothing to split) integrates Ḣ_s = M_s(t) with the kicks alone — the trapezoidal rule
-//! for `split2` and its composition for `split4` — and counts moment evaluations (2 per stage).
+//! scene has effects) of the composition as written above. Per step with three distinct moments, Casimir
+//! splitting: `split2` 4 rotations (+ 2 kicks), `split4` 20 rotations (+ 10 kicks); a symmetric body skips its
+//! zero-rate rotation (2 and 10). Torque-free, a step is computed with its sub-flows fused where that is exact —
+//! the Casimir rotations of all stages as one, adjacent rotations about the same axis as one, the last rotation of
+//! a step with the first of the next (`FusedStep`: 3 rotations per `split2` step, 11 per `split4` step) — which
+//! the counters do not show: they count the sub-flows the fused ones stand for. A fixed-axis motion (prescribed,
+//! so there is nothing to split) integrates Ḣ_s = M_s(t) with the kicks alone — the trapezoidal rule for `split2`
+//! and its composition for `split4` — and counts moment evaluations (2 per stage).
 
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
@@ -535,7 +539,7 @@ impl<K: KickMoment> LiePoisson<K> {
             Frame::Body => y.h[i],
             Frame::Space => rotation_column(&y.q_p, i).dot(&y.h),
         };
-        let half = 0.5 * k * h_i * tau;
+        let half = (0.5 * k * tau) * h_i;
         let (s2, c2) = sin_cos(half);
         turn_quaternion(&mut y.q_p, i, c2, s2);
         if self.frame == Frame::Body {
@@ -925,6 +929,107 @@ mod tests {
                 );
             assert!(unit(&y.q_p).angle_to(&expected) <= 1e-15, "{frame:?}");
             assert!((lp.h_p(&y) - h_p).norm() <= 1e-15 * h_p.norm(), "{frame:?}");
+        }
+    }
+
+    /// One unit in the last place of x.
+    fn ulp(x: f64) -> f64 {
+        f64::from_bits(x.abs().to_bits() + 1) - x.abs()
+    }
+
+    #[test]
+    fn inline_sin_cos_is_the_library_one_to_an_ulp() {
+        // The series are truncated where their remainders are below 1e-18 relative (|x| <= 1/16): the results are
+        // the correctly rounded values but for about 0.5 ulp, like the library's, so they differ from it by at
+        // most one ulp; beyond 1/16 they are the library's.
+        let mut x = 1e-300;
+        let mut xs = vec![0.0, 0.0625, -0.0625, 0.0625f64.next_down(), 1e-8, 2.5e-4];
+        while x < 0.0625 {
+            xs.push(x);
+            xs.push(-x);
+            x *= 1.003_7;
+        }
+        for x in xs {
+            let (s, c) = sin_cos(x);
+            let (s_lib, c_lib) = x.sin_cos();
+            assert!((s - s_lib).abs() <= ulp(s_lib), "sin({x:e})");
+            assert!((c - c_lib).abs() <= ulp(c_lib), "cos({x:e})");
+        }
+        for x in [0.0626, -0.3, 1.0, 3.0, 100.0] {
+            assert_eq!(sin_cos(x), x.sin_cos());
+        }
+    }
+
+    #[test]
+    fn newton_renormalisation_is_the_division_to_rounding() {
+        // After a step |q|^2 - 1 is a few ulp; up to 1e-12 one Newton step leaves an error below (3/8)e^2 < 1e-24,
+        // so it matches q/|q| to within the roundings of both (about 1 ulp each).
+        let q0 = [0.3, -0.5, 0.7, 0.1];
+        let n0 = q0.iter().map(|v| v * v).sum::<f64>().sqrt();
+        for e in [0.0, 2.2e-16, -4.4e-16, 1e-14, -1e-12, 1e-12] {
+            let scale = (1.0 + e) / n0;
+            let mut y = SplitState {
+                h: Vector3::zeros(),
+                q_p: q0.map(|v| v * scale),
+                h_norm0: 0.0,
+                h_lo: Vector3::zeros(),
+                open_tau: 0.0,
+            };
+            let n = y.q_p.iter().map(|v| v * v).sum::<f64>().sqrt();
+            let divided = y.q_p.map(|v| v / n);
+            LiePoisson::<TorqueFree>::normalise(&mut y);
+            for (a, b) in y.q_p.iter().zip(divided) {
+                assert!((a - b).abs() <= 2.0 * ulp(b), "e = {e:e}: {a} vs {b}");
+            }
+            assert!((y.q_p.iter().map(|v| v * v).sum::<f64>() - 1.0).abs() <= 4.0 * f64::EPSILON);
+        }
+    }
+
+    #[test]
+    fn fused_steps_are_the_composition() {
+        // The torque-free step fuses sub-flows whose product is exact in exact arithmetic (FusedStep) and carries
+        // its last rotation into the next step; step_unfused applies the composition sub-flow by sub-flow. After
+        // 1001 steps of |ω|h ≈ 0.02 they agree to rounding — measured ≤ 1.0e-13 (relative ω and H_s, attitude
+        // angle; the most on the tilted body, split4); the bound allows 10×. Checked in both forms, both
+        // splittings, both schemes, on a body whose principal axes are not its body axes, the fused state read as a
+        // row (sample closes its open rotation).
+        let tilted = FreeBody::new(
+            &RigidBody::new(
+                1.0,
+                nalgebra::Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1),
+            )
+            .unwrap(),
+            &Vector3::zeros(),
+        )
+        .unwrap();
+        let q0 = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
+        let omega0 = Vector3::new(0.3, 0.1, 2.0);
+        let h = 0.01;
+        for b in [body([1.0, 2.0, 3.0]), tilted] {
+            for frame in [Frame::Body, Frame::Space] {
+                for splitting in [Splitting::Casimir, Splitting::Planar] {
+                    for scheme in [Scheme::Strang, Scheme::Suzuki4] {
+                        let mut lp = LiePoisson::new(&b, frame, scheme, TorqueFree)
+                            .with_splitting(splitting);
+                        let y0 = lp.initial_state(&b, &omega0, &q0);
+                        let (mut fused, mut unfused) = (y0, y0);
+                        for n in 0..1001 {
+                            let (t, t_next) = (n as f64 * h, (n + 1) as f64 * h);
+                            let evals = lp.step(t, t_next, h, &mut fused);
+                            assert_eq!(evals, lp.step_unfused(t, t_next, h, &mut unfused));
+                        }
+                        assert_eq!(unfused.open_tau, 0.0);
+                        let (a, e) = (lp.sample(10.0, &fused), lp.sample(10.0, &unfused));
+                        let label = format!("{frame:?} {splitting:?} {scheme:?}");
+                        assert!(
+                            (a.omega_b - e.omega_b).norm() <= 1e-12 * e.omega_b.norm(),
+                            "{label}"
+                        );
+                        assert!((a.h_s - e.h_s).norm() <= 1e-12 * e.h_s.norm(), "{label}");
+                        assert!(a.q.angle_to(&e.q) <= 1e-12, "{label}");
+                    }
+                }
+            }
         }
     }
 
