@@ -515,34 +515,45 @@ impl<K: KickMoment> LiePoisson<K> {
         y
     }
 
-    /// [`Self::turn_axis`] about eᵢ, dispatched to the axis as a constant (so the state stays in registers).
+    /// [`Self::turn_axis`] about eᵢ in the method's form.
     #[inline(always)]
     fn turn(&self, i: usize, tau: f64, y: &mut SplitState) -> u64 {
+        match self.frame {
+            Frame::Body => self.turn_in::<true>(i, tau, y),
+            Frame::Space => self.turn_in::<false>(i, tau, y),
+        }
+    }
+
+    /// [`Self::turn_axis`] about eᵢ, the axis and the form (`BODY`) as constants, so that the state stays in
+    /// registers.
+    #[inline(always)]
+    fn turn_in<const BODY: bool>(&self, i: usize, tau: f64, y: &mut SplitState) -> u64 {
         match i {
-            0 => self.turn_axis::<0>(tau, y),
-            1 => self.turn_axis::<1>(tau, y),
-            _ => self.turn_axis::<2>(tau, y),
+            0 => self.turn_axis::<0, BODY>(tau, y),
+            1 => self.turn_axis::<1, BODY>(tau, y),
+            _ => self.turn_axis::<2, BODY>(tau, y),
         }
     }
 
     /// The exact flow of kᵢ Hᵢ²/2 over τ (module docs, with 1/Iᵢ replaced by the rate coefficient kᵢ), i = `I`:
-    /// H_p turned by −kᵢHᵢτ about eᵢ (body form only), q_p ⊗ rotation by +kᵢHᵢτ about eᵢ. Returns 1 (a sub-flow),
-    /// or 0 when kᵢ = 0 and nothing is done.
+    /// H_p turned by −kᵢHᵢτ about eᵢ (body form, `BODY`, only), q_p ⊗ rotation by +kᵢHᵢτ about eᵢ. Returns 1 (a
+    /// sub-flow), or 0 when kᵢ = 0 and nothing is done.
     #[inline(always)]
-    fn turn_axis<const I: usize>(&self, tau: f64, y: &mut SplitState) -> u64 {
+    fn turn_axis<const I: usize, const BODY: bool>(&self, tau: f64, y: &mut SplitState) -> u64 {
         let i = I;
         let k = self.rate_p[i];
         if k == 0.0 {
             return 0;
         }
-        let h_i = match self.frame {
-            Frame::Body => y.h[i],
-            Frame::Space => rotation_column(&y.q_p, i).dot(&y.h),
+        let h_i = if BODY {
+            y.h[i]
+        } else {
+            rotation_column(&y.q_p, i).dot(&y.h)
         };
         let half = (0.5 * k * tau) * h_i;
         let (s2, c2) = sin_cos(half);
         turn_quaternion(&mut y.q_p, i, c2, s2);
-        if self.frame == Frame::Body {
+        if BODY {
             // The full angle from the half angle: one sin_cos per sub-flow.
             let (s, c) = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
             let (j, k) = ((i + 1) % 3, (i + 2) % 3);
@@ -558,6 +569,15 @@ impl<K: KickMoment> LiePoisson<K> {
     /// axes, q_p ← Rot(H_s/|H|, |H|τ/I_r) ⊗ q_p, in the space form. Returns the sub-flows done (0 or 1).
     #[inline(always)]
     fn turn_about_h(&self, tau: f64, y: &mut SplitState) -> u64 {
+        match self.frame {
+            Frame::Body => self.turn_about_h_in::<true>(tau, y),
+            Frame::Space => self.turn_about_h_in::<false>(tau, y),
+        }
+    }
+
+    /// [`Self::turn_about_h`] in the body form (`BODY`) or the space form.
+    #[inline(always)]
+    fn turn_about_h_in<const BODY: bool>(&self, tau: f64, y: &mut SplitState) -> u64 {
         if self.casimir_rate == 0.0 {
             return 0;
         }
@@ -569,10 +589,7 @@ impl<K: KickMoment> LiePoisson<K> {
         let v = y.h * (s2 / norm);
         let r = Quaternion::new(c2, v.x, v.y, v.z);
         let q = Quaternion::new(y.q_p[0], y.q_p[1], y.q_p[2], y.q_p[3]);
-        let turned = match self.frame {
-            Frame::Body => q * r,
-            Frame::Space => r * q,
-        };
+        let turned = if BODY { q * r } else { r * q };
         y.q_p = [turned.w, turned.i, turned.j, turned.k];
         1
     }
@@ -658,24 +675,33 @@ impl<K: KickMoment> LiePoisson<K> {
     /// step's open rotation added, the last left open; then q_p renormalised and, in the body form, H_p rescaled.
     #[inline(always)]
     fn step_fused(&self, h: f64, y: &mut SplitState) {
+        match self.frame {
+            Frame::Body => self.step_fused_in::<true>(h, y),
+            Frame::Space => self.step_fused_in::<false>(h, y),
+        }
+    }
+
+    /// [`Self::step_fused`] in the body form (`BODY`) or the space form.
+    #[inline(always)]
+    fn step_fused_in<const BODY: bool>(&self, h: f64, y: &mut SplitState) {
         let fused = &self.fused;
-        self.turn_about_h(fused.casimir * h, y);
-        let last = fused.turns.len().wrapping_sub(1);
-        for (n, &(axis, fraction)) in fused.turns.iter().enumerate() {
-            let mut tau = fraction * h;
-            if fused.carry {
-                if n == last {
-                    y.open_tau = tau;
-                    break;
+        self.turn_about_h_in::<BODY>(fused.casimir * h, y);
+        match fused.turns.as_slice() {
+            [(first, f_first), middle @ .., (_, f_last)] if fused.carry => {
+                self.turn_in::<BODY>(*first, f_first * h + y.open_tau, y);
+                for &(axis, fraction) in middle {
+                    self.turn_in::<BODY>(axis, fraction * h, y);
                 }
-                if n == 0 {
-                    tau += y.open_tau;
+                y.open_tau = f_last * h;
+            }
+            turns => {
+                for &(axis, fraction) in turns {
+                    self.turn_in::<BODY>(axis, fraction * h, y);
                 }
             }
-            self.turn(axis, tau, y);
         }
         Self::normalise(y);
-        if self.frame == Frame::Body {
+        if BODY {
             Self::rescale(y);
         }
     }
