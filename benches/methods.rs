@@ -1,10 +1,24 @@
 //! What each method costs on the benchmark body (I = (1, 2, 3) kg·m², ω0 = (0.3, 0, 2) rad/s, torque-free), in
-//! both forms of Euler's equation, against a hand-written RK4 loop with the same right-hand side inlined (the
-//! floor), in the same process; then the fastest method reaching a largest ω error ≤ 1e-10 rad/s on the benchmark
-//! scene (t_end = 100 s, rows every 0.5 s) and on the same body under a sine torque (no closed form).
+//! both forms of Euler's equation, against hand-written loops measured in the same process; then the fastest
+//! method reaching a largest ω error ≤ 1e-10 rad/s on the benchmark scene (t_end = 100 s, rows every 0.5 s) and on
+//! the same body under a sine torque (no closed form).
 //!
-//! Targets (issue 5): fixed-step methods ≤ 1.3 × the floor per step; adaptive methods ≤ 1.5 × the floor per
-//! right-hand-side evaluation (the floor's ns/step / 4); the fastest method to ω error ≤ 1e-10 in ≤ 0.25 ms.
+//! The floors (hand-written loops, plain arrays, everything inlined, written for this one body):
+//!
+//! * the RK4 floor: classical RK4 with the right-hand side of each form inlined, the quaternion renormalised after
+//!   every step (as every method of the project does). Its ns/step is the floor of the fixed-step methods, its
+//!   ns/step / 4 (per right-hand-side evaluation) that of the adaptive ones; also timed with the sine torque.
+//! * the DOPRI5 step: an accepted DOPRI5 step at a fixed step size (7 stages with FSAL, error norm, controller
+//!   power, renormalisation, f at the renormalised state), per evaluation: what the adaptive methods' own work
+//!   costs without step-size bookkeeping.
+//! * the splitting floors: split2 and split4 themselves (the Casimir splitting C T_a T_c T_a, Suzuki's weights for
+//!   split4, exact rotations, the same fusions of sub-flows and the same sin/cos series as the project's), in both
+//!   forms. A split4 step is five Strang steps, so it cannot come near an RK4 step; its own loop is its floor. The
+//!   bench checks that each reaches the project's state after 1e5 steps (ω and attitude to 1e-12) — the same work.
+//!
+//! Targets (issue 5): fixed-step methods ≤ 1.3 × the RK4 floor per step, and split2/split4 ≤ 1.3 × their own loop
+//! per step; adaptive methods ≤ 1.5 × the floor per right-hand-side evaluation (the RK4 floor's ns/step / 4); the
+//! fastest method to ω error ≤ 1e-10 in ≤ 0.25 ms.
 //!
 //! Per-step costs run `simulate::run` with rows only at 0 and t_end (so rows cost nothing); `exact` takes no
 //! steps and is timed per row instead (a row every 1 ms). Each figure is the median (and the minimum) of 21
@@ -292,6 +306,260 @@ fn floor_sample(frame: Frame) -> f64 {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
+// The splitting methods' own floors: split2/split4 written by hand for this one body, torque-free, on plain arrays,
+// everything inlined. The same method as the project's: the Casimir splitting (I_r = I₂; T_a about axis 1 with
+// rate 1/I₁ − 1/I₂, T_c about axis 3 with rate 1/I₃ − 1/I₂, C about H with rate 1/I₂), Strang's drift
+// C(τ) T_a(τ/2) T_c(τ) T_a(τ/2) composed with the same weights (split4: Suzuki's five stages), each sub-flow the
+// exact rotation, q renormalised and, in the body form, H rescaled to |H(0)| after every step. Written the way one
+// writes a Strang splitting for speed, with the same fusions as the project: the Casimir rotations of a step as
+// one C(h), the two T_a(wh/2) between stages as one, the last T_a of a step with the first of the next (closed at
+// the end). sin/cos by the same series as the project's for |x| ≤ 1/16 (a copy: the project's is private), so
+// that the two do the same arithmetic; `split_floor_sample` checks that they reach the same state.
+
+/// (sin x, cos x): the Taylor series to x⁹ and x⁸ in Estrin's scheme for |x| ≤ 1/16 (exact to rounding there),
+/// the library's beyond — as `sin_cos` in src/motion/lie_poisson.rs.
+#[inline(always)]
+fn sin_cos(x: f64) -> (f64, f64) {
+    if x.abs() > 0.0625 {
+        return x.sin_cos();
+    }
+    let z = x * x;
+    let z2 = z * z;
+    let sin_tail = (-1.0 / 6.0 + z * (1.0 / 120.0)) + z2 * (-1.0 / 5040.0 + z * (1.0 / 362_880.0));
+    let cos_tail = (-0.5 + z * (1.0 / 24.0)) + z2 * (-1.0 / 720.0 + z * (1.0 / 40_320.0));
+    (x + (x * z) * sin_tail, 1.0 + z * cos_tail)
+}
+
+/// The state of the hand-written splitting: H (principal = body axes in the body form, space axes in the space
+/// form) and q (principal → space, (w, x, y, z)).
+#[derive(Clone, Copy)]
+struct SplitY {
+    h: [f64; 3],
+    q: [f64; 4],
+}
+
+/// The rates of the benchmark body's Casimir splitting: k_a, k_c, 1/I_r; and in the space form nothing else.
+struct Rates {
+    k_a: f64,
+    k_c: f64,
+    casimir: f64,
+}
+
+/// a ⊗ b.
+#[inline(always)]
+fn quat_mul(a: &[f64; 4], b: &[f64; 4]) -> [f64; 4] {
+    [
+        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
+        a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+        a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
+        a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0],
+    ]
+}
+
+/// T_a(τ) about axis 1: angle k_a·H₁·τ, H₁ = H_p,1 (body form) or (R(q) e₁)·H_s (space form); q ← q ⊗ (cos,
+/// sin·e₁) of the half angle; body form: (H₂, H₃) turned by the full angle.
+#[inline(always)]
+fn turn_a<const BODY: bool>(k: f64, tau: f64, y: &mut SplitY) {
+    let [w, x, yy, z] = y.q;
+    let h1 = if BODY {
+        y.h[0]
+    } else {
+        (1.0 - 2.0 * (yy * yy + z * z)) * y.h[0]
+            + 2.0 * (yy * x + w * z) * y.h[1]
+            + 2.0 * (z * x - w * yy) * y.h[2]
+    };
+    let (s2, c2) = sin_cos((0.5 * k * tau) * h1);
+    y.q = [
+        c2 * w - s2 * x,
+        c2 * x + s2 * w,
+        c2 * yy + s2 * z,
+        c2 * z - s2 * yy,
+    ];
+    if BODY {
+        let (s, c) = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
+        let (h2, h3) = (y.h[1], y.h[2]);
+        y.h[1] = c * h2 + s * h3;
+        y.h[2] = c * h3 - s * h2;
+    }
+}
+
+/// T_c(τ) about axis 3, as [`turn_a`]: angle k_c·H₃·τ; body form: (H₁, H₂) turned by the full angle.
+#[inline(always)]
+fn turn_c<const BODY: bool>(k: f64, tau: f64, y: &mut SplitY) {
+    let [w, x, yy, z] = y.q;
+    let h3 = if BODY {
+        y.h[2]
+    } else {
+        2.0 * (x * z + w * yy) * y.h[0]
+            + 2.0 * (yy * z - w * x) * y.h[1]
+            + (1.0 - 2.0 * (x * x + yy * yy)) * y.h[2]
+    };
+    let (s2, c2) = sin_cos((0.5 * k * tau) * h3);
+    y.q = [
+        c2 * w - s2 * z,
+        c2 * x + s2 * yy,
+        c2 * yy - s2 * x,
+        c2 * z + s2 * w,
+    ];
+    if BODY {
+        let (s, c) = (2.0 * s2 * c2, (c2 - s2) * (c2 + s2));
+        let (h1, h2) = (y.h[0], y.h[1]);
+        y.h[0] = c * h1 + s * h2;
+        y.h[1] = c * h2 - s * h1;
+    }
+}
+
+/// `steps` torque-free steps of size h of the Casimir splitting composed with the N stage `weights` (split2: [1];
+/// split4: Suzuki's), in the body form (`BODY`) or the space form, fused (see above), closed at the end.
+#[inline(always)]
+fn hand_split<const BODY: bool, const N: usize>(
+    r: &Rates,
+    weights: [f64; N],
+    mut y: SplitY,
+    h: f64,
+    steps: u64,
+) -> SplitY {
+    let n0 = (y.h[0] * y.h[0] + y.h[1] * y.h[1] + y.h[2] * y.h[2]).sqrt();
+    let inv_n0_sq = 1.0 / (n0 * n0);
+    // The durations of the fused rotations, once: C(h Σw); before stage s the T_a (half of stage 0, closing the
+    // open one; halves of stages s − 1 and s); T_c of stage s; the open T_a (half of the last stage).
+    let tau_casimir = weights.iter().sum::<f64>() * h;
+    let tau_a: [f64; N] = std::array::from_fn(|s| {
+        if s == 0 {
+            0.5 * weights[0] * h
+        } else {
+            (0.5 * weights[s - 1] + 0.5 * weights[s]) * h
+        }
+    });
+    let tau_c = weights.map(|w| w * h);
+    let tau_open = 0.5 * weights[N - 1] * h;
+    let mut open = 0.0;
+    for _ in 0..steps {
+        // C(h): q ← q ⊗ r (body form) or r ⊗ q (space form), r = (cos, sin·H/|H|) of |H|h/(2I_r).
+        let norm = (y.h[0] * y.h[0] + y.h[1] * y.h[1] + y.h[2] * y.h[2]).sqrt();
+        let (s2, c2) = sin_cos(0.5 * norm * tau_casimir * r.casimir);
+        let v = s2 / norm;
+        let rot = [c2, v * y.h[0], v * y.h[1], v * y.h[2]];
+        y.q = if BODY {
+            quat_mul(&y.q, &rot)
+        } else {
+            quat_mul(&rot, &y.q)
+        };
+        turn_a::<BODY>(r.k_a, tau_a[0] + open, &mut y);
+        turn_c::<BODY>(r.k_c, tau_c[0], &mut y);
+        for s in 1..N {
+            turn_a::<BODY>(r.k_a, tau_a[s], &mut y);
+            turn_c::<BODY>(r.k_c, tau_c[s], &mut y);
+        }
+        open = tau_open;
+        let f = 1.5 - 0.5 * (y.q[0] * y.q[0] + y.q[1] * y.q[1] + y.q[2] * y.q[2] + y.q[3] * y.q[3]);
+        for v in &mut y.q {
+            *v *= f;
+        }
+        if BODY {
+            let f = 1.5 - 0.5 * ((y.h[0] * y.h[0] + y.h[1] * y.h[1] + y.h[2] * y.h[2]) * inv_n0_sq);
+            for v in &mut y.h {
+                *v *= f;
+            }
+        }
+    }
+    turn_a::<BODY>(r.k_a, open, &mut y);
+    y
+}
+
+/// Suzuki's fractal weights of split4: p, p, 1 − 4p, p, p with p = 1/(4 − 4^{1/3}).
+fn suzuki_weights() -> [f64; 5] {
+    let p = 1.0 / (4.0 - 4f64.cbrt());
+    [p, p, 1.0 - 4.0 * p, p, p]
+}
+
+/// ns per step of the hand-written split2 (`fourth` false) or split4 in `frame` (1e5 steps of 1e-3 s, as the
+/// project's case), and the final state as (ω_b, q_b).
+fn split_floor_sample(frame: Frame, fourth: bool) -> (f64, [f64; 3], [f64; 4]) {
+    let steps = 100_000u64;
+    let h = black_box(1e-3);
+    let [i1, i2, i3] = black_box(MOMENTS);
+    let r = Rates {
+        k_a: 1.0 / i1 - 1.0 / i2,
+        k_c: 1.0 / i3 - 1.0 / i2,
+        casimir: 1.0 / i2,
+    };
+    // T_a is about axis 1 (the smallest moment), T_c about axis 3 (the largest), I_r = I₂.
+    assert!(i1 < i2 && i2 < i3);
+    let y0 = SplitY {
+        h: [i1 * OMEGA0[0], i2 * OMEGA0[1], i3 * OMEGA0[2]],
+        q: [1.0, 0.0, 0.0, 0.0],
+    };
+    let (strang, suzuki) = (black_box([1.0]), black_box(suzuki_weights()));
+    let start = Instant::now();
+    let y = match (frame, fourth) {
+        (Frame::Body, false) => hand_split::<true, 1>(&r, strang, black_box(y0), h, steps),
+        (Frame::Space, false) => hand_split::<false, 1>(&r, strang, black_box(y0), h, steps),
+        (Frame::Body, true) => hand_split::<true, 5>(&r, suzuki, black_box(y0), h, steps),
+        (Frame::Space, true) => hand_split::<false, 5>(&r, suzuki, black_box(y0), h, steps),
+    };
+    let ns = start.elapsed().as_secs_f64() * 1e9 / steps as f64;
+    let y = black_box(y);
+    let h_p = if frame == Frame::Body {
+        y.h
+    } else {
+        // H_p = R(q)ᵀ H_s.
+        let [w, x, yy, z] = y.q;
+        let hs = y.h;
+        [
+            (1.0 - 2.0 * (yy * yy + z * z)) * hs[0]
+                + 2.0 * (x * yy + w * z) * hs[1]
+                + 2.0 * (x * z - w * yy) * hs[2],
+            2.0 * (x * yy - w * z) * hs[0]
+                + (1.0 - 2.0 * (x * x + z * z)) * hs[1]
+                + 2.0 * (yy * z + w * x) * hs[2],
+            2.0 * (x * z + w * yy) * hs[0]
+                + 2.0 * (yy * z - w * x) * hs[1]
+                + (1.0 - 2.0 * (x * x + yy * yy)) * hs[2],
+        ]
+    };
+    (ns, [h_p[0] / i1, h_p[1] / i2, h_p[2] / i3], y.q)
+}
+
+/// The samples of one splitting floor and its final state.
+struct SplitFloor {
+    frame: Frame,
+    /// split4 (else split2).
+    fourth: bool,
+    /// ns per step of each sample.
+    samples: Vec<f64>,
+    /// ω_b and q_b after 1e5 steps.
+    omega_b: [f64; 3],
+    q: [f64; 4],
+}
+
+/// The largest difference between the hand-written splitting's final state and the project's run of the same
+/// method and form (the SPARSE_SCENE, 100 s): (|Δω|/|ω|, attitude angle in rad).
+fn split_floor_check(case: &Case, omega_b: [f64; 3], q: [f64; 4]) -> (f64, f64) {
+    let mut last = None;
+    simulate::run(&case.scene, |s| {
+        last = Some(*s);
+        Ok::<(), Infallible>(())
+    })
+    .expect("the benchmark scene runs");
+    let s = last.expect("a row at t_end");
+    let d_omega = (0..3)
+        .map(|i| (s.omega_b[i] - omega_b[i]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+        / s.omega_b.norm();
+    // The vector part of q_project⁻¹ ⊗ q_hand is sin(angle/2) times the axis.
+    let conj = [s.q.w, -s.q.i, -s.q.j, -s.q.k];
+    let d = quat_mul(&conj, &q);
+    let angle = 2.0
+        * (d[1] * d[1] + d[2] * d[2] + d[3] * d[3])
+            .sqrt()
+            .min(1.0)
+            .asin();
+    (d_omega, angle)
+}
+
+// ---------------------------------------------------------------------------------------------------------------
 
 /// One measured case: a method in a form on a backend.
 struct Case {
@@ -388,12 +656,29 @@ fn per_step_costs() {
     let mut floor_sine = Vec::new();
     let mut dopri5_body = Vec::new();
     let mut dopri5_space = Vec::new();
+    let mut split_floors: Vec<SplitFloor> = [false, true]
+        .into_iter()
+        .flat_map(|fourth| {
+            [Frame::Body, Frame::Space].map(|frame| SplitFloor {
+                frame,
+                fourth,
+                samples: Vec::new(),
+                omega_b: [0.0; 3],
+                q: [0.0; 4],
+            })
+        })
+        .collect();
     for _ in 0..SAMPLES {
         floor_body.push(floor_sample(Frame::Body));
         floor_space.push(floor_sample(Frame::Space));
         floor_sine.push(floor_sine_sample());
         dopri5_body.push(dopri5_floor_sample(Frame::Body));
         dopri5_space.push(dopri5_floor_sample(Frame::Space));
+        for floor in &mut split_floors {
+            let (ns, omega_b, q) = split_floor_sample(floor.frame, floor.fourth);
+            floor.samples.push(ns);
+            (floor.omega_b, floor.q) = (omega_b, q);
+        }
         for case in &mut cases {
             case.sample();
         }
@@ -446,9 +731,48 @@ fn per_step_costs() {
         Frame::Body => median(&dopri5_body),
         Frame::Space => median(&dopri5_space),
     };
+    println!(
+        "  the splitting methods' own floors: split2/split4 written by hand for this body (plain arrays, the same \
+         fused sub-flows and sin/cos series), final state after 1e5 steps against the project's run:"
+    );
+    let mut own_floor = Vec::new();
+    for SplitFloor {
+        frame,
+        fourth,
+        samples,
+        omega_b,
+        q,
+    } in &split_floors
+    {
+        let name = if *fourth { "split4" } else { "split2" };
+        let case = cases
+            .iter()
+            .find(|c| c.backend == BackendName::Own && c.method.name() == name && c.frame == *frame)
+            .expect("the project's splitting case");
+        let (d_omega, angle) = split_floor_check(case, *omega_b, *q);
+        let (m, lo) = (median(samples), min(samples));
+        println!(
+            "    {name} {:5} form  {m:7.1} ns/step ({lo:5.1}) = {:.2} x the RK4 floor's step; |d omega|/|omega| \
+             {d_omega:.1e}, attitude {angle:.1e} rad",
+            frame.name(),
+            m / floor(*frame).0
+        );
+        assert!(
+            d_omega <= 1e-12 && angle <= 1e-12,
+            "the hand-written {name} ({}) does not reach the project's state",
+            frame.name()
+        );
+        own_floor.push((name, *frame, m));
+    }
+    let own_floor = |method: &str, frame: Frame| {
+        own_floor
+            .iter()
+            .find(|(n, f, _)| *n == method && *f == frame)
+            .map(|(_, _, m)| *m)
+    };
     println!();
     println!(
-        "  {:<20} {:<6} {:>9} {:>9} {:>7} {:>9}  {:>15} {:>9}  {:<11} vs DOPRI5 step",
+        "  {:<20} {:<6} {:>9} {:>9} {:>7} {:>9}  {:>15} {:>9}  {:<11} vs the hand-written step (DOPRI5 per eval; split2/4 per step, target <= 1.3)",
         "method",
         "form",
         "ns/step",
@@ -487,8 +811,18 @@ fn per_step_costs() {
             BackendName::Own => "MISSED",
             _ => "(reference)",
         };
+        let own = match case.backend {
+            BackendName::Own => own_floor(case.method.name(), case.frame),
+            _ => None,
+        };
         let vs_dopri5 = if case.method.is_adaptive() {
             format!("{:.2} per eval", per_eval / dopri5_floor(case.frame))
+        } else if let Some(own) = own {
+            let r = m / own;
+            format!(
+                "{r:.2} per step vs its own loop: {}",
+                if r <= 1.3 { "ok" } else { "MISSED" }
+            )
         } else {
             String::new()
         };
