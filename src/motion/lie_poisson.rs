@@ -759,6 +759,7 @@ impl<K: KickMoment> FixedStep for LiePoisson<K> {
     /// One step: torque-free, the fused step ([`FusedStep`], on a copy of the state held in registers); with
     /// effects, [`LiePoisson::step_unfused`] (the kicks sit between the drifts, so nothing fuses). Returns the
     /// sub-flows of the composition (the fused ones counted as the sub-flows they stand for).
+    #[inline(always)]
     fn step(&mut self, t: f64, t_next: f64, h: f64, y: &mut SplitState) -> u64 {
         if K::ZERO {
             let mut state = *y;
@@ -848,6 +849,9 @@ pub fn run_fixed_step<S: FixedStep, E>(
         let delta = t_b - t_a;
         let n = rk4_substeps(delta, dt);
         let h = delta / n as f64;
+        // The steps work on a copy that nothing else sees (`on_row` takes a reference), so that it can stay in
+        // registers.
+        let mut y_steps = y;
         for i in 0..n {
             let t = t_a + i as f64 * h;
             if stats.steps >= max_steps {
@@ -861,12 +865,13 @@ pub fn run_fixed_step<S: FixedStep, E>(
             } else {
                 t_a + (i + 1) as f64 * h
             };
-            stats.evals += method.step(t, t_next, h, &mut y);
+            stats.evals += method.step(t, t_next, h, &mut y_steps);
             stats.steps += 1;
-            if !method.is_finite(&y) {
+            if !method.is_finite(&y_steps) {
                 return Err(IntegrateError::NonFinite { t: t_next });
             }
         }
+        y = y_steps;
         on_row(t_b, &y).map_err(|cause| IntegrateError::Stopped { t: t_b, cause })?;
         t_a = t_b;
     }
