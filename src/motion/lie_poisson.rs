@@ -169,7 +169,7 @@ pub struct SplitState {
     /// step (≈ 2e-11 relative after 10⁵ kicks, measured); carried here, the rounding errors cancel. Zero otherwise.
     pub h_lo: Vector3<f64>,
     /// Torque-free: the duration τ of the step's last planar rotation T_a(τ), not yet applied — it is fused with
-    /// the first rotation of the next step, about the same axis ([`FusedStep`]); [`LiePoisson::sample`] applies it
+    /// the first rotation of the next step, about the same axis (`FusedStep`); [`LiePoisson::sample`] applies it
     /// to a copy, so rows are those of the unfused composition. Zero otherwise.
     pub open_tau: f64,
 }
