@@ -756,8 +756,8 @@ pub trait FixedStep {
 impl<K: KickMoment> FixedStep for LiePoisson<K> {
     type State = SplitState;
 
-    /// One step: torque-free, the fused step ([`FusedStep`], on a copy of the state held in registers); with
-    /// effects, [`LiePoisson::step_unfused`] (the kicks sit between the drifts, so nothing fuses). Returns the
+    /// One step: torque-free, the fused step (`FusedStep`, on a copy of the state held in registers); with
+    /// effects, `LiePoisson::step_unfused` (the kicks sit between the drifts, so nothing fuses). Returns the
     /// sub-flows of the composition (the fused ones counted as the sub-flows they stand for).
     #[inline(always)]
     fn step(&mut self, t: f64, t_next: f64, h: f64, y: &mut SplitState) -> u64 {
