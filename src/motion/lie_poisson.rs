@@ -825,6 +825,7 @@ impl<F: FnMut(f64) -> Vector3<f64>> FixedStep for KickQuadrature<F> {
 /// last one landing on t_b exactly (the same steps as RK4). Errors: `InvalidSettings` for dt not positive and
 /// finite, `TooManySteps` past `max_steps`, `NonFinite` when the state stops being finite (no such state is ever
 /// reported), `Stopped` when `on_row` fails.
+#[inline(never)]
 pub fn run_fixed_step<S: FixedStep, E>(
     method: &mut S,
     y0: S::State,
