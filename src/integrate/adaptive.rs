@@ -51,6 +51,15 @@ pub(crate) trait EmbeddedPair {
     /// RHS evaluations per attempted step (not counting the post-acceptance FSAL evaluation).
     const STAGE_EVALS: u64;
 
+    /// Hairer's FAC11/FACOLD^β = err^EXPO1 / facold^β, given ln(facold) (0 gives err^EXPO1).
+    ///
+    /// Default: exp(EXPO1·ln err − β·ln facold), one logarithm and one exponential on the step's
+    /// critical path instead of two powers (equal up to rounding). err = 0 gives 0, as err^EXPO1.
+    #[inline]
+    fn controller_power(err: f64, ln_fac_old: f64) -> f64 {
+        (Self::EXPO1 * err.ln() - Self::BETA * ln_fac_old).exp()
+    }
+
     /// Attempts one step of size h from (t, y) with k1 = f(t, y).
     fn attempt<const N: usize, S: OdeSystem<N>>(
         sys: &mut S,
@@ -105,9 +114,12 @@ pub(crate) fn hinit<const N: usize, S: OdeSystem<N>>(
     (100.0 * h).min(h1).min(h_max)
 }
 
-/// Hairer's step-size controller state (FACOLD, REJECT).
+/// Lower bound of FACOLD = max(err, 1e-4) (Hairer's codes).
+const FAC_OLD_MIN: f64 = 1e-4;
+
+/// Hairer's step-size controller state (FACOLD, kept as its logarithm; REJECT).
 struct Controller<P> {
-    fac_old: f64,
+    ln_fac_old: f64,
     reject: bool,
     _pair: std::marker::PhantomData<P>,
 }
@@ -115,7 +127,7 @@ struct Controller<P> {
 impl<P: EmbeddedPair> Controller<P> {
     fn new() -> Self {
         Self {
-            fac_old: 1e-4,
+            ln_fac_old: FAC_OLD_MIN.ln(),
             reject: false,
             _pair: std::marker::PhantomData,
         }
@@ -130,15 +142,17 @@ impl<P: EmbeddedPair> Controller<P> {
     /// unclamped proposal is remembered. (If the error of the shortened step says h_prop is too
     /// large, the next attempt is simply rejected and shrunk as usual.)
     fn accept(&mut self, err: f64, h: f64, h_prop: f64, h_max: f64) -> f64 {
-        let fac11 = err.powf(P::EXPO1);
-        let fac = fac11 / self.fac_old.powf(P::BETA) / P::SAFE;
+        let fac = P::controller_power(err, self.ln_fac_old) / P::SAFE;
         let shrink_limit = 1.0 / P::FAC_MIN;
         let grow_limit = 1.0 / P::FAC_MAX;
         let mut h_new = h / fac.clamp(grow_limit, shrink_limit);
         if h < h_prop {
             h_new = h_new.max(h_prop);
         }
-        self.fac_old = err.max(1e-4);
+        if P::BETA != 0.0 {
+            // ln max(err, 1e-4), sharing ln err with `controller_power`.
+            self.ln_fac_old = err.ln().max(FAC_OLD_MIN.ln());
+        }
         h_new = h_new.min(h_max);
         if self.reject {
             h_new = h_new.min(h.max(h_prop));
@@ -153,7 +167,7 @@ impl<P: EmbeddedPair> Controller<P> {
         self.reject = true;
         let shrink_limit = 1.0 / P::FAC_MIN;
         if err.is_finite() {
-            h / shrink_limit.min(err.powf(P::EXPO1) / P::SAFE)
+            h / shrink_limit.min(P::controller_power(err, 0.0) / P::SAFE)
         } else {
             h * P::FAC_MIN
         }
@@ -307,6 +321,50 @@ mod tests {
         assert_eq!(c.reject(f64::NAN, 1.0), Pair::FAC_MIN);
         // After a rejection the next accepted step may not grow.
         assert_eq!(c.accept(1e-10, 0.2, 0.2, 10.0), 0.2);
+    }
+
+    /// Pair with Hairer's DOPRI5 exponents, for the default `controller_power`.
+    struct PiPair;
+    impl EmbeddedPair for PiPair {
+        const HINIT_ORDER: f64 = 5.0;
+        const EXPO1: f64 = 0.2 - 0.04 * 0.75;
+        const BETA: f64 = 0.04;
+        const FAC_MIN: f64 = 0.2;
+        const FAC_MAX: f64 = 10.0;
+        const STAGE_EVALS: u64 = 6;
+        fn attempt<const N: usize, S: OdeSystem<N>>(
+            sys: &mut S,
+            t: f64,
+            y: &SVector<f64, N>,
+            k1: &SVector<f64, N>,
+            h: f64,
+            tol: Tol,
+        ) -> Trial<N> {
+            Pair::attempt(sys, t, y, k1, h, tol)
+        }
+    }
+
+    #[test]
+    fn controller_power_is_hairers_power() {
+        // exp(EXPO1·ln err − β·ln facold) = err^EXPO1 / facold^β to a few ulps over the range
+        // the controller sees (err ≤ 1 accepted, > 1 rejected; facold ∈ [1e-4, 1]).
+        for err in [0.0, 1e-300, 1e-30, 1e-12, 3.7e-5, 1e-4, 0.5, 1.0, 2.0, 1e6] {
+            for fac_old in [1e-4, 2.5e-3, 0.3, 1.0] {
+                let fast = PiPair::controller_power(err, f64::ln(fac_old));
+                let hairer = err.powf(PiPair::EXPO1) / fac_old.powf(PiPair::BETA);
+                assert!(
+                    (fast - hairer).abs() <= 1e-14 * hairer,
+                    "err {err:e}, facold {fac_old:e}: {fast:e} vs {hairer:e}"
+                );
+            }
+        }
+        // The controller's floor of facold, kept as a logarithm: ln max(err, 1e-4).
+        let mut c = Controller::<PiPair>::new();
+        assert_eq!(c.ln_fac_old, f64::ln(1e-4));
+        c.accept(1e-9, 0.1, 0.1, 10.0);
+        assert_eq!(c.ln_fac_old, f64::ln(1e-4));
+        c.accept(0.25, 0.1, 0.1, 10.0);
+        assert_eq!(c.ln_fac_old, f64::ln(0.25));
     }
 
     #[test]

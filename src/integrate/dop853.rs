@@ -116,6 +116,12 @@ impl EmbeddedPair for Dop853 {
     const FAC_MAX: f64 = 6.0;
     const STAGE_EVALS: u64 = 11;
 
+    /// err^(1/8) = √√√err (β = 0: FACOLD does not enter), three square roots instead of a power.
+    #[inline]
+    fn controller_power(err: f64, _ln_fac_old: f64) -> f64 {
+        err.sqrt().sqrt().sqrt()
+    }
+
     #[inline]
     fn attempt<const N: usize, S: OdeSystem<N>>(
         sys: &mut S,
@@ -278,6 +284,19 @@ mod tests {
             })
             .sum();
         assert!((s - 1.0 / 6.0).abs() < 1e-13, "{s}");
+    }
+
+    #[test]
+    fn controller_power_is_the_eighth_root() {
+        // √√√err = err^(1/8) to 2 ulps (three correctly rounded square roots), and 0 ↦ 0.
+        for err in [0.0, 1e-300, 1e-20, 3.3e-7, 0.01, 0.999, 1.0, 4.0, 1e10] {
+            let fast = Dop853::controller_power(err, 0.0);
+            let hairer = err.powf(Dop853::EXPO1);
+            assert!(
+                (fast - hairer).abs() <= 2.0 * f64::EPSILON * hairer,
+                "err {err:e}: {fast:e} vs {hairer:e}"
+            );
+        }
     }
 
     #[test]
