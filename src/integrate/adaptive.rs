@@ -34,6 +34,38 @@ pub(crate) struct Trial<const N: usize> {
     pub f_new: Option<SVector<f64, N>>,
 }
 
+/// Stage argument y + Σ_j c_j·k_j with c_j = a_j·h (tableau weight times step), the terms added
+/// to y in the order given (the newest stage last: its result then waits on one multiplication
+/// and one addition, the older terms are summed while it is being evaluated). Per component, so
+/// the compiler emits straight-line code without vector temporaries.
+#[inline(always)]
+pub(crate) fn stage_arg<const N: usize, const M: usize>(
+    y: &SVector<f64, N>,
+    terms: [(f64, &SVector<f64, N>); M],
+) -> SVector<f64, N> {
+    let mut arg = *y;
+    for (i, a) in arg.iter_mut().enumerate() {
+        for (c, k) in terms {
+            *a += c * k[i];
+        }
+    }
+    arg
+}
+
+/// Σ_j c_j·k_j, summed in the order given (per component, as [`stage_arg`]).
+#[inline(always)]
+pub(crate) fn weighted_sum<const N: usize, const M: usize>(
+    terms: [(f64, &SVector<f64, N>); M],
+) -> SVector<f64, N> {
+    let mut sum = SVector::<f64, N>::zeros();
+    for (i, s) in sum.iter_mut().enumerate() {
+        for (c, k) in terms {
+            *s += c * k[i];
+        }
+    }
+    sum
+}
+
 /// An explicit embedded Runge–Kutta pair with Hairer's controller parameters.
 pub(crate) trait EmbeddedPair {
     /// Order used by `hinit` (IORD in Hairer's codes).
@@ -365,6 +397,33 @@ mod tests {
         assert_eq!(c.ln_fac_old, f64::ln(1e-4));
         c.accept(0.25, 0.1, 0.1, 10.0);
         assert_eq!(c.ln_fac_old, f64::ln(0.25));
+    }
+
+    #[test]
+    fn combinations_equal_the_vector_expressions() {
+        // stage_arg / weighted_sum against nalgebra's y + h·Σ a_j k_j: only the rounding differs
+        // (h folded into the weights, another summation order), so they agree to a few ulps of
+        // the largest magnitude involved, |y| + Σ|a_j h k_j| (≤ 2M + 2 roundings of it).
+        let y = SVector::<f64, 7>::from([1.0, -0.3, 2.5e-3, 0.7, -0.7, 1e-9, 0.1]);
+        let k1 = SVector::<f64, 7>::from([0.3, 1.7, -2.0, 0.01, 5.0, -1e-3, 0.0]);
+        let k2 = SVector::<f64, 7>::from([-0.9, 0.2, 3.0, -4.0, 1e-6, 2.0, -0.5]);
+        let k3 = SVector::<f64, 7>::from([2.2, -1.1, 0.4, 0.6, -0.8, 1.0, 3.3]);
+        let (a1, a2, a3, h) = (19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, 0.037);
+        let fast = stage_arg(&y, [(a1 * h, &k1), (a2 * h, &k2), (a3 * h, &k3)]);
+        let vector = y + (k1 * a1 + k2 * a2 + k3 * a3) * h;
+        let sum = weighted_sum([(a1 * h, &k1), (a2 * h, &k2), (a3 * h, &k3)]);
+        for i in 0..7 {
+            let terms = (a1 * k1[i]).abs() + (a2 * k2[i]).abs() + (a3 * k3[i]).abs();
+            let scale = y[i].abs() + h * terms;
+            assert!(
+                (fast[i] - vector[i]).abs() <= 8.0 * f64::EPSILON * scale,
+                "{i}"
+            );
+            assert!(
+                (y[i] + sum[i] - vector[i]).abs() <= 8.0 * f64::EPSILON * scale,
+                "{i}"
+            );
+        }
     }
 
     #[test]
