@@ -9,14 +9,14 @@
 //!
 //! Error (DP86CO): with ŷ − y = h·Σ b_j k_j and sc_i = atol + rtol·max(|y_i|, |ŷ_i|),
 //! err5 = Σ_i (Σ_j er_j k_{j,i} / sc_i)², err3 = Σ_i ((Σ_j b_j k_{j,i} − bhh1 k1 − bhh2 k9 −
-//! bhh3 k12)_i / sc_i)², err = |h|·err5 / sqrt(N·(err5 + 0.01·err3)).
+//! bhh3 k12)_i / sc_i)², err = |h|·err5 / sqrt(N·(err5 + 0.01·err3)), returned as err².
 
 #![allow(clippy::excessive_precision)]
 
 use nalgebra::SVector;
 
 use super::OdeSystem;
-use super::adaptive::{EmbeddedPair, Tol, Trial, stage_arg, weighted_sum};
+use super::adaptive::{EmbeddedPair, Tol, Trial, scaled_sum_sq, stage_arg, weighted_sum};
 
 const C2: f64 = 0.526001519587677318785587544488E-01;
 const C3: f64 = 0.789002279381515978178381316732E-01;
@@ -116,10 +116,11 @@ impl EmbeddedPair for Dop853 {
     const FAC_MAX: f64 = 6.0;
     const STAGE_EVALS: u64 = 11;
 
-    /// err^(1/8) = √√√err (β = 0: FACOLD does not enter), three square roots instead of a power.
+    /// SAFE/err^(1/8) = SAFE·(1/err²)^(1/16), four square roots and one division instead of a
+    /// power and two divisions (β = 0: FACOLD does not enter). err = 0 gives +∞.
     #[inline]
-    fn controller_power(err: f64, _ln_fac_old: f64) -> f64 {
-        err.sqrt().sqrt().sqrt()
+    fn step_ratio(err_sq: f64, _ln_fac_old: f64) -> f64 {
+        Self::SAFE * (1.0 / err_sq).sqrt().sqrt().sqrt().sqrt()
     }
 
     // Always inlined into the driver: where several systems instantiate it (the library behind the CLI), the
@@ -246,32 +247,29 @@ impl EmbeddedPair for Dop853 {
         ]);
         let y_new = y + slope * h;
 
-        let mut err5 = 0.0;
-        let mut err3 = 0.0;
-        for i in 0..N {
-            // One division per component for both sums: 1/sc_i.
-            let sk_inv = 1.0 / tol.scale(y[i], y_new[i]);
-            let e3 = (slope[i] - BHH1 * k1[i] - BHH2 * k9[i] - BHH3 * k12[i]) * sk_inv;
-            err3 += e3 * e3;
-            let e5 = ER1 * k1[i]
-                + ER6 * k6[i]
-                + ER7 * k7[i]
-                + ER8 * k8[i]
-                + ER9 * k9[i]
-                + ER10 * k10[i]
-                + ER11 * k11[i]
-                + ER12 * k12[i];
-            let e5 = e5 * sk_inv;
-            err5 += e5 * e5;
-        }
+        let sk_inv = tol.inverse_scales(y, &y_new);
+        let e3 = weighted_sum([(1.0, &slope), (-BHH1, k1), (-BHH2, &k9), (-BHH3, &k12)]);
+        let e5 = weighted_sum([
+            (ER1, k1),
+            (ER6, &k6),
+            (ER7, &k7),
+            (ER8, &k8),
+            (ER9, &k9),
+            (ER10, &k10),
+            (ER11, &k11),
+            (ER12, &k12),
+        ]);
+        let err3 = scaled_sum_sq(&e3, &sk_inv);
+        let err5 = scaled_sum_sq(&e5, &sk_inv);
         let mut deno = err5 + 0.01 * err3;
         if deno <= 0.0 {
             deno = 1.0;
         }
-        let err = h.abs() * err5 * (1.0 / (N as f64 * deno)).sqrt();
+        // err² = h²·err5² / (N·deno).
+        let err_sq = (h * err5) * (h * err5) / (N as f64 * deno);
         Trial {
             y_new,
-            err,
+            err_sq,
             f_new: None,
         }
     }
@@ -346,16 +344,18 @@ mod tests {
     }
 
     #[test]
-    fn controller_power_is_the_eighth_root() {
-        // √√√err = err^(1/8) to 2 ulps (three correctly rounded square roots), and 0 ↦ 0.
-        for err in [0.0, 1e-300, 1e-20, 3.3e-7, 0.01, 0.999, 1.0, 4.0, 1e10] {
-            let fast = Dop853::controller_power(err, 0.0);
-            let hairer = err.powf(Dop853::EXPO1);
+    fn step_ratio_is_safe_over_the_eighth_root() {
+        // SAFE·(1/err²)^(1/16) = SAFE/err^(1/8) to 4 ulps (a division and four correctly
+        // rounded square roots, each halving the relative error it inherits), and 0 ↦ +∞.
+        for err in [1e-150, 1e-20, 3.3e-7, 0.01, 0.999, 1.0, 4.0, 1e10] {
+            let fast = Dop853::step_ratio(err * err, 0.0);
+            let hairer = Dop853::SAFE / err.powf(Dop853::EXPO1);
             assert!(
-                (fast - hairer).abs() <= 2.0 * f64::EPSILON * hairer,
+                (fast - hairer).abs() <= 4.0 * f64::EPSILON * hairer,
                 "err {err:e}: {fast:e} vs {hairer:e}"
             );
         }
+        assert_eq!(Dop853::step_ratio(0.0, 0.0), f64::INFINITY);
     }
 
     #[test]

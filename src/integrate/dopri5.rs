@@ -3,12 +3,13 @@
 //! Coefficients: HNW I, §II.5, Table 5.2 (Dormand & Prince 1980), as in Hairer's `dopri5.f`.
 //! The 7th stage is f(t + h, y₁) (a7j = b_j), reused as k1 of the next step (FSAL), so a step
 //! costs 6 evaluations. Error: err_i = h·Σ e_j k_j with e = b − b̂ (E1..E7 of `dopri5.f`),
-//! err = sqrt(mean((err_i/sc_i)²)), sc_i = atol + rtol·max(|y_i|, |y₁_i|) (HNW I eq. (4.11)).
+//! err = sqrt(mean((err_i/sc_i)²)), sc_i = atol + rtol·max(|y_i|, |y₁_i|) (HNW I eq. (4.11)),
+//! returned as err² (the controller needs no square root).
 
 use nalgebra::SVector;
 
 use super::OdeSystem;
-use super::adaptive::{EmbeddedPair, Tol, Trial, stage_arg, weighted_sum};
+use super::adaptive::{EmbeddedPair, Tol, Trial, scaled_sum_sq, stage_arg, weighted_sum};
 
 const C2: f64 = 1.0 / 5.0;
 const C3: f64 = 3.0 / 10.0;
@@ -118,13 +119,10 @@ impl EmbeddedPair for Dopri5 {
             (E6 * h, &k6),
             (E7 * h, &k7),
         ]);
-        let mut sum = 0.0;
-        for i in 0..N {
-            sum += (e[i] / tol.scale(y[i], y_new[i])).powi(2);
-        }
+        let sk_inv = tol.inverse_scales(y, &y_new);
         Trial {
             y_new,
-            err: (sum / N as f64).sqrt(),
+            err_sq: scaled_sum_sq(&e, &sk_inv) * (1.0 / N as f64),
             f_new: Some(k7),
         }
     }
