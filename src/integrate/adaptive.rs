@@ -387,7 +387,7 @@ mod tests {
         assert_eq!(c.accept(1e-10, 0.2, 0.2, 10.0), 0.2);
     }
 
-    /// Pair with Hairer's DOPRI5 exponents, for the default `controller_power`.
+    /// Pair with Hairer's DOPRI5 exponents, for the default `step_ratio`.
     struct PiPair;
     impl EmbeddedPair for PiPair {
         const HINIT_ORDER: f64 = 5.0;
