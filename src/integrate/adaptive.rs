@@ -21,17 +21,78 @@ impl Tol {
     pub fn scale(&self, y0: f64, y1: f64) -> f64 {
         self.atol + self.rtol * y0.abs().max(y1.abs())
     }
+
+    /// Reciprocal scales 1/sc_i of the step y → y₁: one division per component, computed while
+    /// the last stage is evaluated, so the error norm multiplies instead of dividing.
+    #[inline(always)]
+    pub fn inverse_scales<const N: usize>(
+        &self,
+        y: &SVector<f64, N>,
+        y_new: &SVector<f64, N>,
+    ) -> SVector<f64, N> {
+        let mut inv = SVector::<f64, N>::zeros();
+        for (i, v) in inv.iter_mut().enumerate() {
+            *v = 1.0 / self.scale(y[i], y_new[i]);
+        }
+        inv
+    }
+}
+
+/// Σ_i (e_i·s_i)², the sum of squares of an error estimate e scaled by s = 1/sc, in four
+/// interleaved partial sums (a dependency chain of ⌈N/4⌉ + 2 additions instead of N; the order
+/// only changes the rounding).
+#[inline(always)]
+pub(crate) fn scaled_sum_sq<const N: usize>(e: &SVector<f64, N>, s: &SVector<f64, N>) -> f64 {
+    let mut acc = [0.0; 4];
+    for i in 0..N {
+        let r = e[i] * s[i];
+        acc[i % 4] += r * r;
+    }
+    (acc[0] + acc[1]) + (acc[2] + acc[3])
 }
 
 /// Result of one attempted step of an embedded pair.
 pub(crate) struct Trial<const N: usize> {
     /// Higher-order solution at t + h (local extrapolation).
     pub y_new: SVector<f64, N>,
-    /// Scaled error estimate; the step is accepted iff err ≤ 1.
-    pub err: f64,
+    /// Square of the scaled error estimate err; the step is accepted iff err² ≤ 1 (⇔ err ≤ 1).
+    /// The square root is never taken: the controller works with ln err² or (err²)^(1/16).
+    pub err_sq: f64,
     /// f(t + h, y_new) if the pair computes it inside the step (FSAL, DOPRI5); `None` if the
     /// driver must evaluate it after acceptance (DOP853, as in `dop853.f`).
     pub f_new: Option<SVector<f64, N>>,
+}
+
+/// Stage argument y + Σ_j c_j·k_j with c_j = a_j·h (tableau weight times step), the terms added
+/// to y in the order given (the newest stage last: its result then waits on one multiplication
+/// and one addition, the older terms are summed while it is being evaluated). Per component, so
+/// the compiler emits straight-line code without vector temporaries.
+#[inline(always)]
+pub(crate) fn stage_arg<const N: usize, const M: usize>(
+    y: &SVector<f64, N>,
+    terms: [(f64, &SVector<f64, N>); M],
+) -> SVector<f64, N> {
+    let mut arg = *y;
+    for (i, a) in arg.iter_mut().enumerate() {
+        for (c, k) in terms {
+            *a += c * k[i];
+        }
+    }
+    arg
+}
+
+/// Σ_j c_j·k_j, summed in the order given (per component, as [`stage_arg`]).
+#[inline(always)]
+pub(crate) fn weighted_sum<const N: usize, const M: usize>(
+    terms: [(f64, &SVector<f64, N>); M],
+) -> SVector<f64, N> {
+    let mut sum = SVector::<f64, N>::zeros();
+    for (i, s) in sum.iter_mut().enumerate() {
+        for (c, k) in terms {
+            *s += c * k[i];
+        }
+    }
+    sum
 }
 
 /// An explicit embedded Runge–Kutta pair with Hairer's controller parameters.
@@ -50,6 +111,18 @@ pub(crate) trait EmbeddedPair {
     const SAFE: f64 = 0.9;
     /// RHS evaluations per attempted step (not counting the post-acceptance FSAL evaluation).
     const STAGE_EVALS: u64;
+
+    /// Unclamped step ratio h_new/h = SAFE·facold^β / err^EXPO1 from err² and ln(facold): the
+    /// reciprocal of Hairer's FAC = FAC11/FACOLD^β/SAFE (ln facold = 0 gives SAFE/err^EXPO1, the
+    /// ratio after a rejection).
+    ///
+    /// Default: exp(ln SAFE + β·ln facold − (EXPO1/2)·ln err²), one logarithm and one exponential
+    /// on the step's critical path instead of two powers and two divisions (equal up to rounding).
+    /// err = 0 gives +∞ (clamped to FAC_MAX by the controller), as Hairer's FAC = 0 does.
+    #[inline]
+    fn step_ratio(err_sq: f64, ln_fac_old: f64) -> f64 {
+        (Self::SAFE.ln() + Self::BETA * ln_fac_old - 0.5 * Self::EXPO1 * err_sq.ln()).exp()
+    }
 
     /// Attempts one step of size h from (t, y) with k1 = f(t, y).
     fn attempt<const N: usize, S: OdeSystem<N>>(
@@ -105,9 +178,12 @@ pub(crate) fn hinit<const N: usize, S: OdeSystem<N>>(
     (100.0 * h).min(h1).min(h_max)
 }
 
-/// Hairer's step-size controller state (FACOLD, REJECT).
+/// Lower bound of FACOLD = max(err, 1e-4) (Hairer's codes).
+const FAC_OLD_MIN: f64 = 1e-4;
+
+/// Hairer's step-size controller state (FACOLD, kept as its logarithm; REJECT).
 struct Controller<P> {
-    fac_old: f64,
+    ln_fac_old: f64,
     reject: bool,
     _pair: std::marker::PhantomData<P>,
 }
@@ -115,30 +191,32 @@ struct Controller<P> {
 impl<P: EmbeddedPair> Controller<P> {
     fn new() -> Self {
         Self {
-            fac_old: 1e-4,
+            ln_fac_old: FAC_OLD_MIN.ln(),
             reject: false,
             _pair: std::marker::PhantomData,
         }
     }
 
-    /// Accepted step of size `h` with error `err`; `h_prop` is the proposal the step was cut
-    /// from (h < h_prop if it was shortened to land on a row). Returns the next proposal.
+    /// Accepted step of size `h` with error err (given as err²); `h_prop` is the proposal the
+    /// step was cut from (h < h_prop if it was shortened to land on a row). Returns the next
+    /// proposal.
     ///
-    /// Hairer: fac = err^EXPO1 / facold^β / SAFE, h_new = h / clamp(fac, 1/FAC_MAX, 1/FAC_MIN);
-    /// after a rejection h_new ≤ h; h_new ≤ hmax. Landing on a row must not shrink the step
+    /// Hairer: fac = err^EXPO1 / facold^β / SAFE, h_new = h / clamp(fac, 1/FAC_MAX, 1/FAC_MIN),
+    /// computed as h·clamp(1/fac, FAC_MIN, FAC_MAX) ([`EmbeddedPair::step_ratio`]); after a
+    /// rejection h_new ≤ h; h_new ≤ hmax. Landing on a row must not shrink the step
     /// carried forward, so for a shortened step (h < h_prop) h_new = max(h_new, h_prop): the
     /// unclamped proposal is remembered. (If the error of the shortened step says h_prop is too
     /// large, the next attempt is simply rejected and shrunk as usual.)
-    fn accept(&mut self, err: f64, h: f64, h_prop: f64, h_max: f64) -> f64 {
-        let fac11 = err.powf(P::EXPO1);
-        let fac = fac11 / self.fac_old.powf(P::BETA) / P::SAFE;
-        let shrink_limit = 1.0 / P::FAC_MIN;
-        let grow_limit = 1.0 / P::FAC_MAX;
-        let mut h_new = h / fac.clamp(grow_limit, shrink_limit);
+    fn accept(&mut self, err_sq: f64, h: f64, h_prop: f64, h_max: f64) -> f64 {
+        let ratio = P::step_ratio(err_sq, self.ln_fac_old);
+        let mut h_new = h * ratio.clamp(P::FAC_MIN, P::FAC_MAX);
         if h < h_prop {
             h_new = h_new.max(h_prop);
         }
-        self.fac_old = err.max(1e-4);
+        if P::BETA != 0.0 {
+            // ln max(err, 1e-4) = max(½·ln err², ln 1e-4), sharing ln err² with `step_ratio`.
+            self.ln_fac_old = (0.5 * err_sq.ln()).max(FAC_OLD_MIN.ln());
+        }
         h_new = h_new.min(h_max);
         if self.reject {
             h_new = h_new.min(h.max(h_prop));
@@ -147,13 +225,13 @@ impl<P: EmbeddedPair> Controller<P> {
         h_new
     }
 
-    /// Rejected step: h_new = h / min(1/FAC_MIN, err^EXPO1/SAFE) (Hairer); a non-finite error
-    /// (non-finite trial state) shrinks by the maximal factor FAC_MIN.
-    fn reject(&mut self, err: f64, h: f64) -> f64 {
+    /// Rejected step with error err (given as err²): h_new = h / min(1/FAC_MIN, err^EXPO1/SAFE)
+    /// (Hairer), computed as h·max(FAC_MIN, SAFE/err^EXPO1); a non-finite error (non-finite
+    /// trial state) shrinks by the maximal factor FAC_MIN.
+    fn reject(&mut self, err_sq: f64, h: f64) -> f64 {
         self.reject = true;
-        let shrink_limit = 1.0 / P::FAC_MIN;
-        if err.is_finite() {
-            h / shrink_limit.min(err.powf(P::EXPO1) / P::SAFE)
+        if err_sq.is_finite() {
+            h * P::step_ratio(err_sq, 0.0).max(P::FAC_MIN)
         } else {
             h * P::FAC_MIN
         }
@@ -226,7 +304,7 @@ where
             let trial = P::attempt(sys, t, &y, &k1, h, tol);
             stats.evals += P::STAGE_EVALS;
 
-            if trial.err <= 1.0 && all_finite(&trial.y_new) {
+            if trial.err_sq <= 1.0 && all_finite(&trial.y_new) {
                 let mut y_new = trial.y_new;
                 sys.project(&mut y_new);
                 let k_new = match trial.f_new {
@@ -237,7 +315,7 @@ where
                     }
                 };
                 if all_finite(&y_new) && all_finite(&k_new) {
-                    h_prop = ctl.accept(trial.err, h, h_prop, h_max);
+                    h_prop = ctl.accept(trial.err_sq, h, h_prop, h_max);
                     t = t_new;
                     y = y_new;
                     k1 = k_new;
@@ -246,7 +324,7 @@ where
                 }
                 h_prop = ctl.reject(f64::NAN, h);
             } else {
-                h_prop = ctl.reject(trial.err, h);
+                h_prop = ctl.reject(trial.err_sq, h);
             }
             stats.rejected += 1;
         }
@@ -277,7 +355,7 @@ mod tests {
         ) -> Trial<N> {
             Trial {
                 y_new: *y,
-                err: 0.0,
+                err_sq: 0.0,
                 f_new: None,
             }
         }
@@ -307,6 +385,102 @@ mod tests {
         assert_eq!(c.reject(f64::NAN, 1.0), Pair::FAC_MIN);
         // After a rejection the next accepted step may not grow.
         assert_eq!(c.accept(1e-10, 0.2, 0.2, 10.0), 0.2);
+    }
+
+    /// Pair with Hairer's DOPRI5 exponents, for the default `step_ratio`.
+    struct PiPair;
+    impl EmbeddedPair for PiPair {
+        const HINIT_ORDER: f64 = 5.0;
+        const EXPO1: f64 = 0.2 - 0.04 * 0.75;
+        const BETA: f64 = 0.04;
+        const FAC_MIN: f64 = 0.2;
+        const FAC_MAX: f64 = 10.0;
+        const STAGE_EVALS: u64 = 6;
+        fn attempt<const N: usize, S: OdeSystem<N>>(
+            sys: &mut S,
+            t: f64,
+            y: &SVector<f64, N>,
+            k1: &SVector<f64, N>,
+            h: f64,
+            tol: Tol,
+        ) -> Trial<N> {
+            Pair::attempt(sys, t, y, k1, h, tol)
+        }
+    }
+
+    #[test]
+    fn step_ratio_is_hairers_factor() {
+        // exp(ln SAFE + β·ln facold − (EXPO1/2)·ln err²) = 1/fac with Hairer's
+        // fac = err^EXPO1/facold^β/SAFE, to a few ulps over the range the controller sees
+        // (err ≤ 1 accepted, > 1 rejected; facold ∈ [1e-4, 1]).
+        for err in [1e-150, 1e-30, 1e-12, 3.7e-5, 1e-4, 0.5, 1.0, 2.0, 1e6] {
+            for fac_old in [1e-4, 2.5e-3, 0.3, 1.0] {
+                let fast = PiPair::step_ratio(err * err, f64::ln(fac_old));
+                let fac = err.powf(PiPair::EXPO1) / fac_old.powf(PiPair::BETA) / PiPair::SAFE;
+                assert!(
+                    (fast - 1.0 / fac).abs() <= 1e-14 / fac,
+                    "err {err:e}, facold {fac_old:e}: {fast:e} vs {:e}",
+                    1.0 / fac
+                );
+            }
+        }
+        assert_eq!(PiPair::step_ratio(0.0, 0.0), f64::INFINITY);
+        // The controller's floor of facold, kept as a logarithm: ln max(err, 1e-4).
+        let mut c = Controller::<PiPair>::new();
+        assert_eq!(c.ln_fac_old, f64::ln(1e-4));
+        c.accept(1e-18, 0.1, 0.1, 10.0);
+        assert_eq!(c.ln_fac_old, f64::ln(1e-4));
+        c.accept(0.25 * 0.25, 0.1, 0.1, 10.0);
+        assert!((c.ln_fac_old - f64::ln(0.25)).abs() <= 1e-15);
+    }
+
+    #[test]
+    fn combinations_equal_the_vector_expressions() {
+        // stage_arg / weighted_sum against nalgebra's y + h·Σ a_j k_j: only the rounding differs
+        // (h folded into the weights, another summation order), so they agree to a few ulps of
+        // the largest magnitude involved, |y| + Σ|a_j h k_j| (≤ 2M + 2 roundings of it).
+        let y = SVector::<f64, 7>::from([1.0, -0.3, 2.5e-3, 0.7, -0.7, 1e-9, 0.1]);
+        let k1 = SVector::<f64, 7>::from([0.3, 1.7, -2.0, 0.01, 5.0, -1e-3, 0.0]);
+        let k2 = SVector::<f64, 7>::from([-0.9, 0.2, 3.0, -4.0, 1e-6, 2.0, -0.5]);
+        let k3 = SVector::<f64, 7>::from([2.2, -1.1, 0.4, 0.6, -0.8, 1.0, 3.3]);
+        let (a1, a2, a3, h) = (19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, 0.037);
+        let fast = stage_arg(&y, [(a1 * h, &k1), (a2 * h, &k2), (a3 * h, &k3)]);
+        let vector = y + (k1 * a1 + k2 * a2 + k3 * a3) * h;
+        let sum = weighted_sum([(a1 * h, &k1), (a2 * h, &k2), (a3 * h, &k3)]);
+        for i in 0..7 {
+            let terms = (a1 * k1[i]).abs() + (a2 * k2[i]).abs() + (a3 * k3[i]).abs();
+            let scale = y[i].abs() + h * terms;
+            assert!(
+                (fast[i] - vector[i]).abs() <= 8.0 * f64::EPSILON * scale,
+                "{i}"
+            );
+            assert!(
+                (y[i] + sum[i] - vector[i]).abs() <= 8.0 * f64::EPSILON * scale,
+                "{i}"
+            );
+        }
+    }
+
+    #[test]
+    fn scaled_sum_sq_is_the_error_norms_sum() {
+        // Σ (e_i·(1/sc_i))² in four partial sums vs Σ (e_i/sc_i)² in one: every term is
+        // positive with a relative rounding ≤ 3ε apart (reciprocal, product, square), and both
+        // sums add ≤ N roundings, so they agree to (N + 6)·ε relative.
+        let tol = Tol {
+            rtol: 1e-7,
+            atol: 1e-9,
+        };
+        let y = SVector::<f64, 7>::from([1.0, -0.3, 2.5e-3, 0.7, -0.7, 1e-12, 0.1]);
+        let y_new = SVector::<f64, 7>::from([1.1, -0.2, 2.4e-3, 0.71, -0.69, 0.0, -0.1]);
+        let e = SVector::<f64, 7>::from([3e-8, -1e-9, 4e-11, 2e-7, -5e-8, 1e-10, 7e-9]);
+        let fast = scaled_sum_sq(&e, &tol.inverse_scales(&y, &y_new));
+        let plain: f64 = (0..7)
+            .map(|i| (e[i] / tol.scale(y[i], y_new[i])).powi(2))
+            .sum();
+        assert!(
+            (fast - plain).abs() <= 13.0 * f64::EPSILON * plain,
+            "{fast} vs {plain}"
+        );
     }
 
     #[test]
