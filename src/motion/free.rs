@@ -124,54 +124,42 @@ impl EffectMoments {
     /// The part of the moment that does not depend on ω, body axes: Σ torques + ρ_C × m (Rᵀ g_s).
     #[inline]
     pub fn rest_moment_b(&self, t: f64, q: &UnitQuaternion<f64>) -> Vector3<f64> {
-        self.rest_moment_b_with(t, || *q)
+        self.rest_moment_b_with(t, || |v_s: &Vector3<f64>| q.inverse_transform_vector(v_s))
     }
 
-    /// [`Self::rest_moment_b`] with the attitude computed by `attitude` only if an effect depends on it.
+    /// [`Self::rest_moment_b`], the rotation into the body (v_s ↦ Rᵀ v_s) built by `rotation` only if an effect
+    /// depends on the attitude: the body-axis torques M_b(t), plus Rᵀ M_s(t) for the space-axis torques and
+    /// ρ_C × m (Rᵀ g_s) for gravity.
     #[inline(always)]
-    fn rest_moment_b_with(
+    fn rest_moment_b_with<R: Fn(&Vector3<f64>) -> Vector3<f64>>(
         &self,
         t: f64,
-        attitude: impl FnOnce() -> UnitQuaternion<f64>,
+        rotation: impl FnOnce() -> R,
     ) -> Vector3<f64> {
         let m_b = self.torques_b.at(t);
-        if self.needs_attitude {
-            m_b + self.attitude_moment_b(t, &attitude())
-        } else {
-            m_b
+        if !self.needs_attitude {
+            return m_b;
         }
-    }
-
-    /// The moments that depend on the attitude, body axes: Rᵀ M_s(t) for the space-axis torques and
-    /// ρ_C × m (Rᵀ g_s) for gravity. Kept out of line so that the right-hand side of a scene without them stays
-    /// small enough to inline.
-    #[inline(never)]
-    fn attitude_moment_b(&self, t: f64, q: &UnitQuaternion<f64>) -> Vector3<f64> {
-        let mut m_b = if self.torques_s.is_zero() {
+        let to_body = rotation();
+        let mut m_attitude_b = if self.torques_s.is_zero() {
             Vector3::zeros()
         } else {
-            q.inverse_transform_vector(&self.torques_s.at(t))
+            to_body(&self.torques_s.at(t))
         };
         for gravity in &self.gravity {
-            let weight_b = q.inverse_transform_vector(&gravity.g_s) * self.mass;
-            m_b += gravity.rho_c_b.cross(&weight_b);
+            let weight_b = to_body(&gravity.g_s) * self.mass;
+            m_attitude_b += gravity.rho_c_b.cross(&weight_b);
         }
-        m_b
+        m_b + m_attitude_b
     }
 
-    /// M_b = M_rest_b(t, q) − c ω_b, the attitude computed by `attitude` only if an effect depends on it.
+    /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
     #[inline(always)]
-    fn moment_b_with(
-        &self,
-        t: f64,
-        attitude: impl FnOnce() -> UnitQuaternion<f64>,
-        omega_b: &Vector3<f64>,
-    ) -> Vector3<f64> {
-        let rest = self.rest_moment_b_with(t, attitude);
+    fn with_damping(&self, rest_b: Vector3<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
         if self.damping_c == 0.0 {
-            rest
+            rest_b
         } else {
-            rest - omega_b * self.damping_c
+            rest_b - omega_b * self.damping_c
         }
     }
 
@@ -198,18 +186,24 @@ impl AppliedMoment for EffectMoments {
     /// M_b = M_rest_b(t, q) − c ω_b.
     #[inline]
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
-        self.moment_b_with(t, || *q, omega_b)
+        self.with_damping(self.rest_moment_b(t, q), omega_b)
     }
 
-    /// M_b = M_rest_b(t, q) − c ω_b, q = q_state / |q_state| normalised only for space torques and gravity.
-    #[inline]
+    /// M_b = M_rest_b(t, q) − c ω_b, rotating by q = q_state / |q_state| ([`StateRotation`]) only for space
+    /// torques and gravity. Out of line: the forms' right-hand sides, inlined at every stage of an integrator,
+    /// stay small.
+    #[inline(never)]
     fn moment_b_at_state(
         &self,
         t: f64,
         q_state: &Quaternion<f64>,
         omega_b: &Vector3<f64>,
     ) -> Vector3<f64> {
-        self.moment_b_with(t, || UnitQuaternion::new_normalize(*q_state), omega_b)
+        let rest_b = self.rest_moment_b_with(t, || {
+            let rotation = StateRotation::of(q_state);
+            move |v_s: &Vector3<f64>| rotation.to_body(v_s)
+        });
+        self.with_damping(rest_b, omega_b)
     }
 }
 
@@ -345,22 +339,13 @@ impl FreeBody {
                     Some(m_b) => gyroscopic + inertia_recip_b.component_mul(m_b),
                 }
             }
-            EulerForm::General => self.omega_dot_general_b(omega_b, m_b),
-        }
-    }
-
-    /// ω̇ = I⁻¹ (M − ω × I ω) with the 3×3 products, for a tensor not diagonal in body axes. Out of line, so that
-    /// the principal form's right-hand side stays small enough to inline into the integrators.
-    #[inline(never)]
-    fn omega_dot_general_b(
-        &self,
-        omega_b: &Vector3<f64>,
-        m_b: Option<&Vector3<f64>>,
-    ) -> Vector3<f64> {
-        let gyroscopic_b = omega_b.cross(&(self.inertia_b * omega_b));
-        match m_b {
-            None => self.inertia_inv_b * -gyroscopic_b,
-            Some(m_b) => self.inertia_inv_b * (m_b - gyroscopic_b),
+            EulerForm::General => {
+                let gyroscopic_b = omega_b.cross(&(self.inertia_b * omega_b));
+                match m_b {
+                    None => self.inertia_inv_b * -gyroscopic_b,
+                    Some(m_b) => self.inertia_inv_b * (m_b - gyroscopic_b),
+                }
+            }
         }
     }
 
@@ -419,7 +404,7 @@ pub struct BodyForm<M: AppliedMoment> {
 }
 
 impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
-    #[inline]
+    #[inline(always)]
     fn rhs(&mut self, t: f64, y: &State) -> State {
         let omega_b = Vector3::new(y[0], y[1], y[2]);
         let omega_dot_b = if M::ZERO {
@@ -440,7 +425,7 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
 /// Space form, state (H_s, q): Ḣ_s = M_s (eq. 8.9 in axes fixed in space), with
 /// ω_b = I⁻¹ (Rᵀ H_s) — rotated into the body and divided by the principal moments, I_s(θ) never inverted;
 /// diag(1/I_k) Rᵀ H_s when I_A is diagonal in body axes, [`FreeBody::omega_b_of`] —
-/// and q̇ = ½ q ⊗ (0, ω_b).
+/// and q̇ = ½ q ⊗ (0, ω_b). R is the rotation of the state's quaternion normalised, [`StateRotation`].
 #[derive(Debug, Clone)]
 pub struct SpaceForm<M: AppliedMoment> {
     pub body: FreeBody,
@@ -448,21 +433,72 @@ pub struct SpaceForm<M: AppliedMoment> {
 }
 
 impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
-    #[inline]
+    #[inline(always)]
     fn rhs(&mut self, t: f64, y: &State) -> State {
-        let q = attitude(y);
+        let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
+        let rotation = StateRotation::of(&q_state);
         let h_s = Vector3::new(y[0], y[1], y[2]);
-        let omega_b = self.body.omega_b_of(&q.inverse_transform_vector(&h_s));
+        let omega_b = self.body.omega_b_of(&rotation.to_body(&h_s));
         let m_s = if M::ZERO {
             Vector3::zeros()
         } else {
-            q * self.moment.moment_b(t, &q, &omega_b)
+            rotation.to_space(&self.moment.moment_b_at_state(t, &q_state, &omega_b))
         };
         with_attitude_rate(m_s, y, &omega_b)
     }
 
     fn project(&self, y: &mut State) {
         normalise_quaternion(y);
+    }
+}
+
+/// The rotation R of the attitude held in a state, q = (w, x, y, z) of norm near but not exactly 1, without
+/// normalising q first: R(q/|q|) = A(q) / |q|², with A(q) the quadratic form
+///
+/// A = [w²+x²−y²−z², 2(xy−wz), 2(xz+wy); 2(xy+wz), w²−x²+y²−z², 2(yz−wx); 2(xz−wy), 2(yz+wx), w²−x²−y²+z²].
+///
+/// The square root and divisions of a normalisation would sit on the path from one stage to the next; here the
+/// one division, 1/|q|², is computed alongside the products.
+#[derive(Debug, Clone, Copy)]
+pub struct StateRotation {
+    a: Matrix3<f64>,
+    inv_norm2: f64,
+}
+
+impl StateRotation {
+    /// The rotation of a state's quaternion part q_state = (w, x, y, z).
+    #[inline(always)]
+    pub fn of(q_state: &Quaternion<f64>) -> Self {
+        let (w, x, y, z) = (q_state.w, q_state.i, q_state.j, q_state.k);
+        let (ww, xx, yy, zz) = (w * w, x * x, y * y, z * z);
+        let (xy, xz, yz) = (x * y, x * z, y * z);
+        let (wx, wy, wz) = (w * x, w * y, w * z);
+        Self {
+            a: Matrix3::new(
+                ww + xx - yy - zz,
+                2.0 * (xy - wz),
+                2.0 * (xz + wy),
+                2.0 * (xy + wz),
+                ww - xx + yy - zz,
+                2.0 * (yz - wx),
+                2.0 * (xz - wy),
+                2.0 * (yz + wx),
+                ww - xx - yy + zz,
+            ),
+            inv_norm2: 1.0 / ((ww + xx) + (yy + zz)),
+        }
+    }
+
+    /// v_b = Rᵀ v_s.
+    #[inline(always)]
+    pub fn to_body(&self, v_s: &Vector3<f64>) -> Vector3<f64> {
+        self.a.tr_mul(v_s) * self.inv_norm2
+    }
+
+    /// v_s = R v_b.
+    #[inline(always)]
+    pub fn to_space(&self, v_b: &Vector3<f64>) -> Vector3<f64> {
+        (self.a * v_b) * self.inv_norm2
     }
 }
 
@@ -737,41 +773,49 @@ mod tests {
         let omega_b = v(0.3, -1.2, 2.0);
         let all = every_kind();
         for t in [0.0, 0.4, 1.0, 1.7, 2.5, 3.1] {
-            // Alone, each effect is computed with the same operations as before: the same bits.
-            for effect in &all {
-                let moments = EffectMoments::new(std::slice::from_ref(effect), mass);
-                let before = moment_as_listed(std::slice::from_ref(effect), mass, t, &q, &omega_b);
-                assert_eq!(
+            for effects in all.chunks(1).chain([&all[..]]) {
+                let moments = EffectMoments::new(effects, mass);
+                let before = moment_as_listed(effects, mass, t, &q, &omega_b);
+                // The moments are summed in another order, and the state's attitude is rotated as A(q)/|q|²
+                // rather than normalised first: equal to the rounding of the sum and of a rotation, 8u times the
+                // largest possible moment Σ|torque| + m|g||ρ_C| + c|ω|.
+                let scale = moments.rest_moment_bound() + moments.damping_c() * omega_b.norm();
+                for after in [
                     moments.moment_b(t, &q, &omega_b),
-                    before,
-                    "{effect:?} at t = {t}"
-                );
-                assert_eq!(
                     moments.moment_b_at_state(t, &q_state, &omega_b),
-                    before,
-                    "{effect:?} at t = {t}"
-                );
+                    moments.rest_moment_b(t, &q) - omega_b * moments.damping_c(),
+                ] {
+                    assert!(
+                        (after - before).amax() <= 8.0 * U * scale,
+                        "{effects:?} at t = {t}: {after} vs {before}"
+                    );
+                }
+                // Alone, an effect given the unit quaternion is computed with the same operations as before.
+                if effects.len() == 1 {
+                    assert_eq!(
+                        moments.moment_b(t, &q, &omega_b),
+                        before,
+                        "{effects:?}, t = {t}"
+                    );
+                }
             }
-            // Together they are summed in another order: equal to the rounding of the sum, 8u Σ|M_k|.
-            let moments = EffectMoments::new(&all, mass);
-            let before = moment_as_listed(&all, mass, t, &q, &omega_b);
-            let scale: f64 = all
-                .iter()
-                .map(|e| moment_as_listed(std::slice::from_ref(e), mass, t, &q, &omega_b).amax())
-                .sum();
-            for after in [
-                moments.moment_b(t, &q, &omega_b),
-                moments.moment_b_at_state(t, &q_state, &omega_b),
-            ] {
-                assert!(
-                    (after - before).amax() <= 8.0 * U * scale,
-                    "t = {t}: {after} vs {before}"
-                );
-            }
-            // The split used by the splitting methods: M = M_rest − c ω.
-            let rest = moments.rest_moment_b(t, &q);
-            let split = rest - omega_b * moments.damping_c();
-            assert!((split - before).amax() <= 8.0 * U * scale);
+        }
+    }
+
+    #[test]
+    fn the_state_rotation_is_the_rotation_of_the_normalised_quaternion() {
+        let v_b = v(0.3, -1.2, 2.0);
+        for q_state in [
+            nalgebra::Quaternion::new(0.9, 0.2, -0.3, 0.25),
+            nalgebra::Quaternion::new(-0.1, 0.7, 0.7, -0.2) * 1.000_001,
+            nalgebra::Quaternion::new(1.0, 0.0, 0.0, 0.0),
+        ] {
+            let q = UnitQuaternion::new_normalize(q_state);
+            let rotation = StateRotation::of(&q_state);
+            // A(q)/|q|² is R(q/|q|) up to the rounding of ~10 products and sums per entry: 8u |v|.
+            let bound = 8.0 * U * v_b.norm();
+            assert!((rotation.to_space(&v_b) - q * v_b).amax() <= bound);
+            assert!((rotation.to_body(&v_b) - q.inverse_transform_vector(&v_b)).amax() <= bound);
         }
     }
 
