@@ -124,33 +124,54 @@ impl EffectMoments {
     /// The part of the moment that does not depend on ω, body axes: Σ torques + ρ_C × m (Rᵀ g_s).
     #[inline]
     pub fn rest_moment_b(&self, t: f64, q: &UnitQuaternion<f64>) -> Vector3<f64> {
-        self.rest_moment_b_with(t, || |v_s: &Vector3<f64>| q.inverse_transform_vector(v_s))
+        self.rest_moment_b_with(t, || {
+            self.attitude_moment_b(t, |v_s| q.inverse_transform_vector(v_s))
+        })
     }
 
-    /// [`Self::rest_moment_b`], the rotation into the body (v_s ↦ Rᵀ v_s) built by `rotation` only if an effect
-    /// depends on the attitude: the body-axis torques M_b(t), plus Rᵀ M_s(t) for the space-axis torques and
-    /// ρ_C × m (Rᵀ g_s) for gravity.
+    /// [`Self::rest_moment_b`]: the body-axis torques M_b(t), plus `attitude_part()` only if an effect depends on
+    /// the attitude.
     #[inline(always)]
-    fn rest_moment_b_with<R: Fn(&Vector3<f64>) -> Vector3<f64>>(
+    fn rest_moment_b_with(
         &self,
         t: f64,
-        rotation: impl FnOnce() -> R,
+        attitude_part: impl FnOnce() -> Vector3<f64>,
     ) -> Vector3<f64> {
         let m_b = self.torques_b.at(t);
-        if !self.needs_attitude {
-            return m_b;
+        if self.needs_attitude {
+            m_b + attitude_part()
+        } else {
+            m_b
         }
-        let to_body = rotation();
-        let mut m_attitude_b = if self.torques_s.is_zero() {
+    }
+
+    /// The moments that depend on the attitude, body axes, given the rotation `to_body`: v_s ↦ Rᵀ v_s:
+    /// Rᵀ M_s(t) for the space-axis torques and ρ_C × m (Rᵀ g_s) for gravity.
+    #[inline(always)]
+    fn attitude_moment_b(
+        &self,
+        t: f64,
+        to_body: impl Fn(&Vector3<f64>) -> Vector3<f64>,
+    ) -> Vector3<f64> {
+        let mut m_b = if self.torques_s.is_zero() {
             Vector3::zeros()
         } else {
             to_body(&self.torques_s.at(t))
         };
         for gravity in &self.gravity {
             let weight_b = to_body(&gravity.g_s) * self.mass;
-            m_attitude_b += gravity.rho_c_b.cross(&weight_b);
+            m_b += gravity.rho_c_b.cross(&weight_b);
         }
-        m_b + m_attitude_b
+        m_b
+    }
+
+    /// [`Self::attitude_moment_b`] at the attitude held in a state ([`StateRotation`]). Out of line: only scenes
+    /// with space torques or gravity call it, and the right-hand sides, inlined at every stage of an integrator,
+    /// stay small.
+    #[inline(never)]
+    fn attitude_moment_at_state_b(&self, t: f64, q_state: &Quaternion<f64>) -> Vector3<f64> {
+        let rotation = StateRotation::of(q_state);
+        self.attitude_moment_b(t, |v_s| rotation.to_body(v_s))
     }
 
     /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
@@ -190,19 +211,15 @@ impl AppliedMoment for EffectMoments {
     }
 
     /// M_b = M_rest_b(t, q) − c ω_b, rotating by q = q_state / |q_state| ([`StateRotation`]) only for space
-    /// torques and gravity. Out of line: the forms' right-hand sides, inlined at every stage of an integrator,
-    /// stay small.
-    #[inline(never)]
+    /// torques and gravity.
+    #[inline(always)]
     fn moment_b_at_state(
         &self,
         t: f64,
         q_state: &Quaternion<f64>,
         omega_b: &Vector3<f64>,
     ) -> Vector3<f64> {
-        let rest_b = self.rest_moment_b_with(t, || {
-            let rotation = StateRotation::of(q_state);
-            move |v_s: &Vector3<f64>| rotation.to_body(v_s)
-        });
+        let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, q_state));
         self.with_damping(rest_b, omega_b)
     }
 }
