@@ -4,10 +4,10 @@
 //! The applied moment is a type parameter: a torque-free run uses [`TorqueFree`], whose zero moment the compiler
 //! removes, so an absent effect costs nothing per step; otherwise [`EffectMoments`] sums the scene's effects.
 
-use nalgebra::{Matrix3, Rotation3, SVector, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, Rotation3, SVector, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
-use crate::effects::Effect;
+use crate::effects::{Effect, TorqueSum};
 use crate::integrate::OdeSystem;
 use crate::kinetics::kinetic_energy;
 use crate::model::Frame;
@@ -24,6 +24,19 @@ pub trait AppliedMoment {
 
     /// The moment in body axes at time t, attitude q (body → space) and angular velocity ω_b.
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64>;
+
+    /// [`Self::moment_b`] at the attitude held in a state, `q_state` = (q_w, q_x, q_y, q_z) of norm near but not
+    /// exactly 1: the moment at q = q_state / |q_state|. A moment that does not depend on the attitude skips
+    /// normalising it.
+    #[inline(always)]
+    fn moment_b_at_state(
+        &self,
+        t: f64,
+        q_state: &Quaternion<f64>,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        self.moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
+    }
 }
 
 /// No effects: M = 0.
@@ -41,30 +54,64 @@ impl AppliedMoment for TorqueFree {
 
 /// The sum of a scene's effects, about the moment center:
 /// torque `value·f(t)` (rotated into the body when given in space axes); gravity about the pivot
-/// M = ρ_C × m g with ρ_C = −pivot the position of C relative to the pivot; damping M = −c ω.
+/// M = ρ_C × m Rᵀg with ρ_C = −pivot the position of C relative to the pivot; damping M = −c ω.
 ///
 /// Split as M_b(t, q, ω) = [`EffectMoments::rest_moment_b`](t, q) − c·ω: the part that does not depend on ω
 /// (torques, gravity) and the total damping coefficient c = Σ c_k, which the splitting methods apply as exact kicks.
+///
+/// The effects are compiled once: the body-axis torques into one [`TorqueSum`], the space-axis torques into another
+/// (rotated into the body once per evaluation), so that only space torques and gravity need the attitude.
 #[derive(Debug, Clone)]
 pub struct EffectMoments {
     effects: Vec<Effect>,
     mass: f64,
+    torques_b: TorqueSum,
+    torques_s: TorqueSum,
+    gravity: Vec<GravityMoment>,
+    needs_attitude: bool,
     damping_c: f64,
+}
+
+/// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
+#[derive(Debug, Clone, Copy)]
+struct GravityMoment {
+    g_s: Vector3<f64>,
+    rho_c_b: Vector3<f64>,
 }
 
 impl EffectMoments {
     /// The moments of `effects` on a body of mass `mass` (kg).
     pub fn new(effects: &[Effect], mass: f64) -> Self {
-        let damping_c = effects
-            .iter()
-            .map(|e| match e {
-                Effect::Damping { c } => *c,
-                _ => 0.0,
-            })
-            .sum();
+        let mut torques_b = TorqueSum::default();
+        let mut torques_s = TorqueSum::default();
+        let mut gravity = Vec::new();
+        let mut damping_c = 0.0;
+        for effect in effects {
+            match effect {
+                Effect::Torque {
+                    frame: Frame::Body,
+                    value,
+                    profile,
+                } => torques_b.add(value, profile),
+                Effect::Torque {
+                    frame: Frame::Space,
+                    value,
+                    profile,
+                } => torques_s.add(value, profile),
+                Effect::Gravity { g_s, pivot_b } => gravity.push(GravityMoment {
+                    g_s: *g_s,
+                    rho_c_b: -pivot_b,
+                }),
+                Effect::Damping { c } => damping_c += c,
+            }
+        }
         Self {
             effects: effects.to_vec(),
             mass,
+            needs_attitude: !torques_s.is_zero() || !gravity.is_empty(),
+            torques_b,
+            torques_s,
+            gravity,
             damping_c,
         }
     }
@@ -75,29 +122,66 @@ impl EffectMoments {
     }
 
     /// The part of the moment that does not depend on ω, body axes: Σ torques + ρ_C × m (Rᵀ g_s).
+    #[inline]
     pub fn rest_moment_b(&self, t: f64, q: &UnitQuaternion<f64>) -> Vector3<f64> {
-        let mut m_b = Vector3::zeros();
-        for effect in &self.effects {
-            match effect {
-                Effect::Torque {
-                    frame,
-                    value,
-                    profile,
-                } => {
-                    let v = value * profile.factor(t);
-                    m_b += match frame {
-                        Frame::Body => v,
-                        Frame::Space => q.inverse_transform_vector(&v),
-                    };
-                }
-                Effect::Gravity { g_s, pivot_b } => {
-                    let weight_b = q.inverse_transform_vector(g_s) * self.mass;
-                    m_b += (-pivot_b).cross(&weight_b);
-                }
-                Effect::Damping { .. } => {}
-            }
+        self.rest_moment_b_with(t, || {
+            self.attitude_moment_b(t, |v_s| q.inverse_transform_vector(v_s))
+        })
+    }
+
+    /// [`Self::rest_moment_b`]: the body-axis torques M_b(t), plus `attitude_part()` only if an effect depends on
+    /// the attitude.
+    #[inline(always)]
+    fn rest_moment_b_with(
+        &self,
+        t: f64,
+        attitude_part: impl FnOnce() -> Vector3<f64>,
+    ) -> Vector3<f64> {
+        let m_b = self.torques_b.at(t);
+        if self.needs_attitude {
+            m_b + attitude_part()
+        } else {
+            m_b
+        }
+    }
+
+    /// The moments that depend on the attitude, body axes, given the rotation `to_body`: v_s ↦ Rᵀ v_s:
+    /// Rᵀ M_s(t) for the space-axis torques and ρ_C × m (Rᵀ g_s) for gravity.
+    #[inline(always)]
+    fn attitude_moment_b(
+        &self,
+        t: f64,
+        to_body: impl Fn(&Vector3<f64>) -> Vector3<f64>,
+    ) -> Vector3<f64> {
+        let mut m_b = if self.torques_s.is_zero() {
+            Vector3::zeros()
+        } else {
+            to_body(&self.torques_s.at(t))
+        };
+        for gravity in &self.gravity {
+            let weight_b = to_body(&gravity.g_s) * self.mass;
+            m_b += gravity.rho_c_b.cross(&weight_b);
         }
         m_b
+    }
+
+    /// [`Self::attitude_moment_b`] at the attitude held in a state ([`StateRotation`]). Out of line: only scenes
+    /// with space torques or gravity call it, and the right-hand sides, inlined at every stage of an integrator,
+    /// stay small.
+    #[inline(never)]
+    fn attitude_moment_at_state_b(&self, t: f64, q_state: &Quaternion<f64>) -> Vector3<f64> {
+        let rotation = StateRotation::of(q_state);
+        self.attitude_moment_b(t, |v_s| rotation.to_body(v_s))
+    }
+
+    /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
+    #[inline(always)]
+    fn with_damping(&self, rest_b: Vector3<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
+        if self.damping_c == 0.0 {
+            rest_b
+        } else {
+            rest_b - omega_b * self.damping_c
+        }
     }
 
     /// The total viscous damping coefficient c = Σ c_k (N·m·s): the damping moment is −c ω.
@@ -121,14 +205,37 @@ impl EffectMoments {
 
 impl AppliedMoment for EffectMoments {
     /// M_b = M_rest_b(t, q) − c ω_b.
+    #[inline]
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
-        let rest = self.rest_moment_b(t, q);
-        if self.damping_c == 0.0 {
-            rest
-        } else {
-            rest - omega_b * self.damping_c
-        }
+        self.with_damping(self.rest_moment_b(t, q), omega_b)
     }
+
+    /// M_b = M_rest_b(t, q) − c ω_b, rotating by q = q_state / |q_state| ([`StateRotation`]) only for space
+    /// torques and gravity.
+    #[inline(always)]
+    fn moment_b_at_state(
+        &self,
+        t: f64,
+        q_state: &Quaternion<f64>,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, q_state));
+        self.with_damping(rest_b, omega_b)
+    }
+}
+
+/// How Euler's equation is evaluated for a body: in principal form when I_A is diagonal in body axes, else with
+/// the full tensor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum EulerForm {
+    /// I_A = diag(I_1, I_2, I_3) in body axes: ω̇_k = e_k ω_{k+1} ω_{k+2} + M_k / I_k (k cyclic), the reciprocals
+    /// 1/I_k and the coefficients e_k = (I_{k+1} − I_{k+2}) / I_k computed once.
+    Principal {
+        inertia_recip_b: Vector3<f64>,
+        euler_coefficients: Vector3<f64>,
+    },
+    /// A general tensor: ω̇ = I⁻¹ (M − ω × I ω) with the 3×3 products.
+    General,
 }
 
 /// The body about its moment center A: I_A and its inverse from the principal decomposition
@@ -144,6 +251,7 @@ pub struct FreeBody {
     /// Position of C relative to A, body axes.
     rho_c_b: Vector3<f64>,
     mass: f64,
+    euler: EulerForm,
 }
 
 /// Why a body cannot turn freely.
@@ -172,8 +280,22 @@ impl FreeBody {
             });
         }
         let p = principal.axes_b.matrix();
-        let inertia_inv_b =
-            p * Matrix3::from_diagonal(&principal.moments.map(|m| 1.0 / m)) * p.transpose();
+        let inertia_recip_p = principal.moments.map(|m| 1.0 / m);
+        let inertia_inv_b = p * Matrix3::from_diagonal(&inertia_recip_p) * p.transpose();
+        let diagonal = (0..3).all(|r| (0..3).all(|c| r == c || inertia_b[(r, c)] == 0.0));
+        let euler = if diagonal {
+            let i = inertia_b.diagonal();
+            EulerForm::Principal {
+                inertia_recip_b: i.map(|m| 1.0 / m),
+                euler_coefficients: Vector3::new(
+                    (i[1] - i[2]) / i[0],
+                    (i[2] - i[0]) / i[1],
+                    (i[0] - i[1]) / i[2],
+                ),
+            }
+        } else {
+            EulerForm::General
+        };
         Ok(Self {
             inertia_b,
             inertia_inv_b,
@@ -181,6 +303,7 @@ impl FreeBody {
             axes_b: principal.axes_b,
             rho_c_b,
             mass: body.mass(),
+            euler,
         })
     }
 
@@ -214,6 +337,44 @@ impl FreeBody {
     /// Mass (kg).
     pub fn mass(&self) -> f64 {
         self.mass
+    }
+
+    /// ω̇_b from Euler's equation in body axes, I ω̇ = M_b − ω × I ω, with M_b = 0 when `m_b` is `None`. When I_A is
+    /// diagonal in body axes, in principal form: I_1 ω̇_1 = M_1 − (I_3 − I_2) ω_2 ω_3 (and cyclic), evaluated as
+    /// ω̇_k = e_k ω_{k+1} ω_{k+2} + M_k / I_k with e_k = (I_{k+1} − I_{k+2}) / I_k; else ω̇ = I⁻¹ (M − ω × I ω).
+    #[inline(always)]
+    pub fn omega_dot_b(&self, omega_b: &Vector3<f64>, m_b: Option<&Vector3<f64>>) -> Vector3<f64> {
+        match &self.euler {
+            EulerForm::Principal {
+                inertia_recip_b,
+                euler_coefficients: e,
+            } => {
+                let (w1, w2, w3) = (omega_b[0], omega_b[1], omega_b[2]);
+                let gyroscopic = Vector3::new(e[0] * w2 * w3, e[1] * w3 * w1, e[2] * w1 * w2);
+                match m_b {
+                    None => gyroscopic,
+                    Some(m_b) => gyroscopic + inertia_recip_b.component_mul(m_b),
+                }
+            }
+            EulerForm::General => {
+                let gyroscopic_b = omega_b.cross(&(self.inertia_b * omega_b));
+                match m_b {
+                    None => self.inertia_inv_b * -gyroscopic_b,
+                    Some(m_b) => self.inertia_inv_b * (m_b - gyroscopic_b),
+                }
+            }
+        }
+    }
+
+    /// ω_b = I⁻¹ H_b: diag(1/I_k) H_b when I_A is diagonal in body axes, else the 3×3 product with I⁻¹.
+    #[inline(always)]
+    pub fn omega_b_of(&self, h_b: &Vector3<f64>) -> Vector3<f64> {
+        match &self.euler {
+            EulerForm::Principal {
+                inertia_recip_b, ..
+            } => inertia_recip_b.component_mul(h_b),
+            EulerForm::General => self.inertia_inv_b * h_b,
+        }
     }
 }
 
@@ -251,8 +412,8 @@ fn with_attitude_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>) ->
     State::from([first[0], first[1], first[2], dq[0], dq[1], dq[2], dq[3]])
 }
 
-/// Body form, state (ω_b, q): I ω̇ = M_b − ω × I ω (Euler's equation in body axes, eq. 8.9 with constant I),
-/// q̇ = ½ q ⊗ (0, ω_b).
+/// Body form, state (ω_b, q): I ω̇ = M_b − ω × I ω (Euler's equation in body axes, eq. 8.9 with constant I; in
+/// principal form when I_A is diagonal in body axes, [`FreeBody::omega_dot_b`]), q̇ = ½ q ⊗ (0, ω_b).
 #[derive(Debug, Clone)]
 pub struct BodyForm<M: AppliedMoment> {
     pub body: FreeBody,
@@ -260,16 +421,15 @@ pub struct BodyForm<M: AppliedMoment> {
 }
 
 impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
-    #[inline]
+    #[inline(always)]
     fn rhs(&mut self, t: f64, y: &State) -> State {
         let omega_b = Vector3::new(y[0], y[1], y[2]);
-        let h_b = self.body.inertia_b * omega_b;
-        let gyroscopic_b = omega_b.cross(&h_b);
         let omega_dot_b = if M::ZERO {
-            self.body.inertia_inv_b * -gyroscopic_b
+            self.body.omega_dot_b(&omega_b, None)
         } else {
-            let m_b = self.moment.moment_b(t, &attitude(y), &omega_b);
-            self.body.inertia_inv_b * (m_b - gyroscopic_b)
+            let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
+            let m_b = self.moment.moment_b_at_state(t, &q_state, &omega_b);
+            self.body.omega_dot_b(&omega_b, Some(&m_b))
         };
         with_attitude_rate(omega_dot_b, y, &omega_b)
     }
@@ -280,8 +440,9 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
 }
 
 /// Space form, state (H_s, q): Ḣ_s = M_s (eq. 8.9 in axes fixed in space), with
-/// ω_b = I⁻¹ (Rᵀ H_s) — rotated into the body and divided by the principal moments, I_s(θ) never inverted —
-/// and q̇ = ½ q ⊗ (0, ω_b).
+/// ω_b = I⁻¹ (Rᵀ H_s) — rotated into the body and divided by the principal moments, I_s(θ) never inverted;
+/// diag(1/I_k) Rᵀ H_s when I_A is diagonal in body axes, [`FreeBody::omega_b_of`] —
+/// and q̇ = ½ q ⊗ (0, ω_b). R is the rotation of the state's quaternion normalised, [`StateRotation`].
 #[derive(Debug, Clone)]
 pub struct SpaceForm<M: AppliedMoment> {
     pub body: FreeBody,
@@ -289,21 +450,72 @@ pub struct SpaceForm<M: AppliedMoment> {
 }
 
 impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
-    #[inline]
+    #[inline(always)]
     fn rhs(&mut self, t: f64, y: &State) -> State {
-        let q = attitude(y);
+        let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
+        let rotation = StateRotation::of(&q_state);
         let h_s = Vector3::new(y[0], y[1], y[2]);
-        let omega_b = self.body.inertia_inv_b * q.inverse_transform_vector(&h_s);
+        let omega_b = self.body.omega_b_of(&rotation.to_body(&h_s));
         let m_s = if M::ZERO {
             Vector3::zeros()
         } else {
-            q * self.moment.moment_b(t, &q, &omega_b)
+            rotation.to_space(&self.moment.moment_b_at_state(t, &q_state, &omega_b))
         };
         with_attitude_rate(m_s, y, &omega_b)
     }
 
     fn project(&self, y: &mut State) {
         normalise_quaternion(y);
+    }
+}
+
+/// The rotation R of the attitude held in a state, q = (w, x, y, z) of norm near but not exactly 1, without
+/// normalising q first: R(q/|q|) = A(q) / |q|², with A(q) the quadratic form
+///
+/// A = [w²+x²−y²−z², 2(xy−wz), 2(xz+wy); 2(xy+wz), w²−x²+y²−z², 2(yz−wx); 2(xz−wy), 2(yz+wx), w²−x²−y²+z²].
+///
+/// The square root and divisions of a normalisation would sit on the path from one stage to the next; here the
+/// one division, 1/|q|², is computed alongside the products.
+#[derive(Debug, Clone, Copy)]
+pub struct StateRotation {
+    a: Matrix3<f64>,
+    inv_norm2: f64,
+}
+
+impl StateRotation {
+    /// The rotation of a state's quaternion part q_state = (w, x, y, z).
+    #[inline(always)]
+    pub fn of(q_state: &Quaternion<f64>) -> Self {
+        let (w, x, y, z) = (q_state.w, q_state.i, q_state.j, q_state.k);
+        let (ww, xx, yy, zz) = (w * w, x * x, y * y, z * z);
+        let (xy, xz, yz) = (x * y, x * z, y * z);
+        let (wx, wy, wz) = (w * x, w * y, w * z);
+        Self {
+            a: Matrix3::new(
+                ww + xx - yy - zz,
+                2.0 * (xy - wz),
+                2.0 * (xz + wy),
+                2.0 * (xy + wz),
+                ww - xx + yy - zz,
+                2.0 * (yz - wx),
+                2.0 * (xz - wy),
+                2.0 * (yz + wx),
+                ww - xx - yy + zz,
+            ),
+            inv_norm2: 1.0 / ((ww + xx) + (yy + zz)),
+        }
+    }
+
+    /// v_b = Rᵀ v_s.
+    #[inline(always)]
+    pub fn to_body(&self, v_s: &Vector3<f64>) -> Vector3<f64> {
+        self.a.tr_mul(v_s) * self.inv_norm2
+    }
+
+    /// v_s = R v_b.
+    #[inline(always)]
+    pub fn to_space(&self, v_b: &Vector3<f64>) -> Vector3<f64> {
+        (self.a * v_b) * self.inv_norm2
     }
 }
 
@@ -335,7 +547,7 @@ pub fn sample<M: AppliedMoment>(
         Frame::Body => (first, body.inertia_b * first),
         Frame::Space => {
             let h_b = q.inverse_transform_vector(&first);
-            (body.inertia_inv_b * h_b, h_b)
+            (body.omega_b_of(&h_b), h_b)
         }
     };
     let h_s = match frame {
@@ -369,5 +581,278 @@ pub fn free_sample(
         theta: None,
         f_s: None,
         h_s_integrated: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::effects::TorqueProfile;
+    use proptest::prelude::*;
+
+    const U: f64 = f64::EPSILON / 2.0;
+
+    fn principal_body(moments: [f64; 3]) -> FreeBody {
+        FreeBody::new(
+            &RigidBody::from_principal(2.0, moments).unwrap(),
+            &Vector3::zeros(),
+        )
+        .unwrap()
+    }
+
+    /// The same body evaluated through the 3×3 products.
+    fn general(body: &FreeBody) -> FreeBody {
+        FreeBody {
+            euler: EulerForm::General,
+            ..*body
+        }
+    }
+
+    fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
+        Vector3::new(x, y, z)
+    }
+
+    #[test]
+    fn the_principal_form_is_chosen_exactly_when_the_tensor_is_diagonal_in_body_axes() {
+        let diagonal = principal_body([1.0, 2.0, 3.0]);
+        assert!(matches!(diagonal.euler, EulerForm::Principal { .. }));
+        // A pivot on a body axis shifts the tensor by m(|ρ|²E − ρρᵀ), still diagonal.
+        let on_axis = FreeBody::new(
+            &RigidBody::from_principal(2.0, [1.0, 2.0, 3.0]).unwrap(),
+            &v(0.0, 0.0, -0.5),
+        )
+        .unwrap();
+        assert!(matches!(on_axis.euler, EulerForm::Principal { .. }));
+        assert_eq!(on_axis.inertia_b().diagonal(), v(1.5, 2.5, 3.0));
+        // Off the axes it is not.
+        let off_axis = FreeBody::new(
+            &RigidBody::from_principal(2.0, [1.0, 2.0, 3.0]).unwrap(),
+            &v(0.1, 0.0, -0.5),
+        )
+        .unwrap();
+        assert_eq!(off_axis.euler, EulerForm::General);
+        let tensor = Matrix3::new(2.0, 0.3, -0.2, 0.3, 2.5, 0.1, -0.2, 0.1, 3.0);
+        let full = FreeBody::new(&RigidBody::new(1.0, tensor).unwrap(), &Vector3::zeros()).unwrap();
+        assert_eq!(full.euler, EulerForm::General);
+    }
+
+    proptest! {
+        /// Both evaluations of I ω̇ = M − ω × I ω agree to rounding. The principal form rounds
+        /// e_k = (I_{k+1} − I_{k+2})/I_k, two products, M_k/I_k and a sum; the matrix form rounds I ω, the two
+        /// products of the cross product and their difference (absolute error ≈ u (I_{k+1} + I_{k+2}) |ω_{k+1} ω_{k+2}|,
+        /// not relative to the difference I_{k+1} − I_{k+2}), then I⁻¹(M − …). So per component
+        /// |Δω̇_k| ≤ 8u [(I_{k+1} + I_{k+2}) |ω_{k+1} ω_{k+2}| + |M_k|] / I_k.
+        #[test]
+        fn principal_and_matrix_forms_agree(
+            i1 in 0.1f64..10.0, i2 in 0.1f64..10.0, i3 in 0.1f64..10.0,
+            w in prop::array::uniform3(-50.0f64..50.0),
+            m in prop::array::uniform3(-20.0f64..20.0),
+        ) {
+            let [i1, i2, i3] = [i1, i2, i3];
+            prop_assume!(i1 + i2 >= i3 && i2 + i3 >= i1 && i3 + i1 >= i2);
+            let body = principal_body([i1, i2, i3]);
+            let matrix = general(&body);
+            let (omega_b, m_b) = (Vector3::from(w), Vector3::from(m));
+            let i = [i1, i2, i3];
+            for torque in [None, Some(&m_b)] {
+                let fast = body.omega_dot_b(&omega_b, torque);
+                let slow = matrix.omega_dot_b(&omega_b, torque);
+                for k in 0..3 {
+                    let (a, b) = ((k + 1) % 3, (k + 2) % 3);
+                    let m_k = torque.map_or(0.0, |m| m[k]);
+                    let bound = 8.0 * U * ((i[a] + i[b]) * (omega_b[a] * omega_b[b]).abs() + m_k.abs()) / i[k];
+                    prop_assert!((fast[k] - slow[k]).abs() <= bound, "k={k}: {fast} vs {slow}, bound {bound}");
+                }
+            }
+            // ω_b = I⁻¹ H_b: I⁻¹ = P diag(1/I) Pᵀ with P = identity is exactly diag(1/I), and the zero entries add
+            // exact zeros, so the two agree to the bit.
+            let h_b = Vector3::from(m);
+            prop_assert_eq!(body.omega_b_of(&h_b), matrix.omega_b_of(&h_b));
+        }
+    }
+
+    #[test]
+    fn both_forms_right_hand_sides_agree_with_the_matrix_path() {
+        let body = principal_body([1.0, 2.0, 3.0]);
+        let effects = [Effect::Torque {
+            frame: Frame::Body,
+            value: v(0.5, 0.0, 0.0),
+            profile: TorqueProfile::Sine {
+                freq_hz: 0.5,
+                phase_rad: 0.0,
+            },
+        }];
+        let moments = EffectMoments::new(&effects, 2.0);
+        let q = UnitQuaternion::from_euler_angles(0.3, -0.2, 1.1);
+        let y = State::from([0.3, -0.7, 2.0, q.w, q.i, q.j, q.k]);
+        let mut fast = BodyForm {
+            body,
+            moment: moments.clone(),
+        };
+        let mut slow = BodyForm {
+            body: general(&body),
+            moment: moments.clone(),
+        };
+        let (a, b) = (fast.rhs(0.7, &y), slow.rhs(0.7, &y));
+        // |ω| ≤ 2.2, I ≤ 3, |M| ≤ 0.5: the bound of principal_and_matrix_forms_agree is below 8u·(5·1.4 + 0.5).
+        assert!((a - b).amax() <= 8.0 * U * 7.5, "{a} vs {b}");
+        assert_eq!(a.fixed_rows::<4>(3), b.fixed_rows::<4>(3));
+        let mut fast = SpaceForm {
+            body,
+            moment: moments.clone(),
+        };
+        let mut slow = SpaceForm {
+            body: general(&body),
+            moment: moments,
+        };
+        assert_eq!(fast.rhs(0.7, &y), slow.rhs(0.7, &y));
+    }
+
+    /// The moment as summed before the effects were compiled: every effect in turn, starting from zero.
+    fn moment_as_listed(
+        effects: &[Effect],
+        mass: f64,
+        t: f64,
+        q: &UnitQuaternion<f64>,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        let mut m_b = Vector3::zeros();
+        for effect in effects {
+            m_b += match *effect {
+                Effect::Torque {
+                    frame,
+                    value,
+                    profile,
+                } => {
+                    let factor = match profile {
+                        TorqueProfile::Constant => 1.0,
+                        TorqueProfile::Sine { freq_hz, phase_rad } => {
+                            (2.0 * std::f64::consts::PI * freq_hz * t + phase_rad).sin()
+                        }
+                        TorqueProfile::Step { t_on, t_off } => {
+                            if t_on <= t && t < t_off {
+                                1.0
+                            } else {
+                                0.0
+                            }
+                        }
+                    };
+                    match frame {
+                        Frame::Body => value * factor,
+                        Frame::Space => q.inverse_transform_vector(&(value * factor)),
+                    }
+                }
+                Effect::Gravity { g_s, pivot_b } => {
+                    (-pivot_b).cross(&(q.inverse_transform_vector(&g_s) * mass))
+                }
+                Effect::Damping { c } => -omega_b * c,
+            };
+        }
+        m_b
+    }
+
+    fn every_kind() -> Vec<Effect> {
+        let sine = TorqueProfile::Sine {
+            freq_hz: 0.7,
+            phase_rad: 0.4,
+        };
+        let step = TorqueProfile::Step {
+            t_on: 1.0,
+            t_off: 2.5,
+        };
+        let mut effects = Vec::new();
+        for frame in [Frame::Body, Frame::Space] {
+            for (value, profile) in [
+                (v(0.2, -0.1, 0.3), TorqueProfile::Constant),
+                (v(0.5, 0.25, -0.4), sine),
+                (v(-0.3, 0.6, 0.1), step),
+            ] {
+                effects.push(Effect::Torque {
+                    frame,
+                    value,
+                    profile,
+                });
+            }
+        }
+        effects.push(Effect::Gravity {
+            g_s: v(0.0, 0.0, -9.81),
+            pivot_b: v(0.01, -0.02, -0.05),
+        });
+        effects.push(Effect::Damping { c: 0.3 });
+        effects
+    }
+
+    #[test]
+    fn every_effect_kind_gives_the_moment_it_gave_before() {
+        let mass = 1.5;
+        let q_state = nalgebra::Quaternion::new(0.9, 0.2, -0.3, 0.25);
+        let q = UnitQuaternion::new_normalize(q_state);
+        let omega_b = v(0.3, -1.2, 2.0);
+        let all = every_kind();
+        for t in [0.0, 0.4, 1.0, 1.7, 2.5, 3.1] {
+            for effects in all.chunks(1).chain([&all[..]]) {
+                let moments = EffectMoments::new(effects, mass);
+                let before = moment_as_listed(effects, mass, t, &q, &omega_b);
+                // The moments are summed in another order, and the state's attitude is rotated as A(q)/|q|²
+                // rather than normalised first: equal to the rounding of the sum and of a rotation, 8u times the
+                // largest possible moment Σ|torque| + m|g||ρ_C| + c|ω|.
+                let scale = moments.rest_moment_bound() + moments.damping_c() * omega_b.norm();
+                for after in [
+                    moments.moment_b(t, &q, &omega_b),
+                    moments.moment_b_at_state(t, &q_state, &omega_b),
+                    moments.rest_moment_b(t, &q) - omega_b * moments.damping_c(),
+                ] {
+                    assert!(
+                        (after - before).amax() <= 8.0 * U * scale,
+                        "{effects:?} at t = {t}: {after} vs {before}"
+                    );
+                }
+                // Alone, an effect given the unit quaternion is computed with the same operations as before.
+                if effects.len() == 1 {
+                    assert_eq!(
+                        moments.moment_b(t, &q, &omega_b),
+                        before,
+                        "{effects:?}, t = {t}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_state_rotation_is_the_rotation_of_the_normalised_quaternion() {
+        let v_b = v(0.3, -1.2, 2.0);
+        for q_state in [
+            nalgebra::Quaternion::new(0.9, 0.2, -0.3, 0.25),
+            nalgebra::Quaternion::new(-0.1, 0.7, 0.7, -0.2) * 1.000_001,
+            nalgebra::Quaternion::new(1.0, 0.0, 0.0, 0.0),
+        ] {
+            let q = UnitQuaternion::new_normalize(q_state);
+            let rotation = StateRotation::of(&q_state);
+            // A(q)/|q|² is R(q/|q|) up to the rounding of ~10 products and sums per entry: 8u |v|.
+            let bound = 8.0 * U * v_b.norm();
+            assert!((rotation.to_space(&v_b) - q * v_b).amax() <= bound);
+            assert!((rotation.to_body(&v_b) - q.inverse_transform_vector(&v_b)).amax() <= bound);
+        }
+    }
+
+    #[test]
+    fn only_space_torques_and_gravity_need_the_attitude() {
+        let needs = |effects: &[Effect]| EffectMoments::new(effects, 1.0).needs_attitude;
+        let all = every_kind();
+        let (body_torques, rest) = all.split_at(3);
+        assert!(!needs(body_torques));
+        assert!(!needs(&[Effect::Damping { c: 0.1 }]));
+        assert!(needs(&rest[..1]));
+        assert!(needs(&rest[3..4]));
+        // Without them, the attitude is never normalised: a state quaternion of any norm gives the same moment.
+        let moments = EffectMoments::new(body_torques, 1.0);
+        let omega_b = v(0.1, 0.2, 0.3);
+        let unit = nalgebra::Quaternion::new(1.0, 0.0, 0.0, 0.0);
+        let zero = nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0);
+        assert_eq!(
+            moments.moment_b_at_state(1.2, &zero, &omega_b),
+            moments.moment_b_at_state(1.2, &unit, &omega_b)
+        );
     }
 }
