@@ -35,6 +35,7 @@ use eulerdyn::model::{BackendName, Frame, MethodName};
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use eulerdyn::study::{self, StudyOptions, format_seconds};
+use eulerdyn::trig::{self, small_sin_cos};
 
 /// The benchmark body, torque-free, rows only at 0 and t_end.
 const SPARSE_SCENE: &str = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.3, 0.0, 2.0]\n[solver]\nrtol = 1e-10\natol = 1e-12\ndt = 1e-3\nt_end = 100.0\n[output]\nevery = 100.0\n";
@@ -129,11 +130,12 @@ fn hand_rk4(f: impl Fn(&Y) -> Y, mut y: Y, h: f64, steps: u64) -> Y {
     y
 }
 
-/// Body form under the benchmark's sine torque M_x = 0.5·sin(2π·0.5·t) N·m (scenarios/benchmark_sine.toml).
+/// Body form under the benchmark's sine torque M_x = 0.5·sin(2π·0.5·t) N·m (scenarios/benchmark_sine.toml), the sine
+/// inline (`eulerdyn::trig::sin`, as the project's torques).
 #[inline(always)]
 fn rhs_body_sine(c: &[f64; 3], inv1: f64, t: f64, y: &Y) -> Y {
     let mut f = rhs_body(c, y);
-    f[0] += inv1 * 0.5 * (std::f64::consts::PI * t).sin();
+    f[0] += inv1 * 0.5 * trig::sin(std::f64::consts::PI * t);
     f
 }
 
@@ -313,22 +315,8 @@ fn floor_sample(frame: Frame) -> f64 {
 // exact rotation, q renormalised and, in the body form, H rescaled to |H(0)| after every step. Written the way one
 // writes a Strang splitting for speed, with the same fusions as the project: the Casimir rotations of a step as
 // one C(h), the two T_a(wh/2) between stages as one, the last T_a of a step with the first of the next (closed at
-// the end). sin/cos by the same series as the project's for |x| ≤ 1/16 (a copy: the project's is private), so
-// that the two do the same arithmetic; `split_floor_sample` checks that they reach the same state.
-
-/// (sin x, cos x): the Taylor series to x⁹ and x⁸ in Estrin's scheme for |x| ≤ 1/16 (exact to rounding there),
-/// the library's beyond — as `sin_cos` in src/motion/lie_poisson.rs.
-#[inline(always)]
-fn sin_cos(x: f64) -> (f64, f64) {
-    if x.abs() > 0.0625 {
-        return x.sin_cos();
-    }
-    let z = x * x;
-    let z2 = z * z;
-    let sin_tail = (-1.0 / 6.0 + z * (1.0 / 120.0)) + z2 * (-1.0 / 5040.0 + z * (1.0 / 362_880.0));
-    let cos_tail = (-0.5 + z * (1.0 / 24.0)) + z2 * (-1.0 / 720.0 + z * (1.0 / 40_320.0));
-    (x + (x * z) * sin_tail, 1.0 + z * cos_tail)
-}
+// the end). sin/cos by the project's series for |x| ≤ 1/16 (`eulerdyn::trig::small_sin_cos`), so that the two
+// do the same arithmetic; `split_floor_sample` checks that they reach the same state.
 
 /// The state of the hand-written splitting: H (principal = body axes in the body form, space axes in the space
 /// form) and q (principal → space, (w, x, y, z)).
@@ -368,7 +356,7 @@ fn turn_a<const BODY: bool>(k: f64, tau: f64, y: &mut SplitY) {
             + 2.0 * (yy * x + w * z) * y.h[1]
             + 2.0 * (z * x - w * yy) * y.h[2]
     };
-    let (s2, c2) = sin_cos((0.5 * k * tau) * h1);
+    let (s2, c2) = small_sin_cos((0.5 * k * tau) * h1);
     y.q = [
         c2 * w - s2 * x,
         c2 * x + s2 * w,
@@ -394,7 +382,7 @@ fn turn_c<const BODY: bool>(k: f64, tau: f64, y: &mut SplitY) {
             + 2.0 * (yy * z - w * x) * y.h[1]
             + (1.0 - 2.0 * (x * x + yy * yy)) * y.h[2]
     };
-    let (s2, c2) = sin_cos((0.5 * k * tau) * h3);
+    let (s2, c2) = small_sin_cos((0.5 * k * tau) * h3);
     y.q = [
         c2 * w - s2 * z,
         c2 * x + s2 * yy,
@@ -437,7 +425,7 @@ fn hand_split<const BODY: bool, const N: usize>(
     for _ in 0..steps {
         // C(h): q ← q ⊗ r (body form) or r ⊗ q (space form), r = (cos, sin·H/|H|) of |H|h/(2I_r).
         let norm = (y.h[0] * y.h[0] + y.h[1] * y.h[1] + y.h[2] * y.h[2]).sqrt();
-        let (s2, c2) = sin_cos(0.5 * norm * tau_casimir * r.casimir);
+        let (s2, c2) = small_sin_cos(0.5 * norm * tau_casimir * r.casimir);
         let v = s2 / norm;
         let rot = [c2, v * y.h[0], v * y.h[1], v * y.h[2]];
         y.q = if BODY {

@@ -3,6 +3,7 @@
 use nalgebra::Vector3;
 
 use crate::model::Frame;
+use crate::trig;
 
 /// Time profile of an applied torque.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -95,12 +96,12 @@ impl TorqueSum {
         self.constant == Vector3::zeros() && self.sines.is_empty() && self.steps.is_empty()
     }
 
-    /// M(t) = Σ value_k · f_k(t).
-    #[inline]
+    /// M(t) = Σ value_k · f_k(t). Always inlined: a call at every Runge–Kutta stage would spill the state.
+    #[inline(always)]
     pub fn at(&self, t: f64) -> Vector3<f64> {
         let mut m = self.constant;
         for sine in &self.sines {
-            m += sine.value * (sine.omega_rad_s * t + sine.phase_rad).sin();
+            m += sine.value * trig::sin(sine.omega_rad_s * t + sine.phase_rad);
         }
         for step in &self.steps {
             if step.t_on <= t && t < step.t_off {
@@ -142,7 +143,9 @@ mod tests {
         );
         assert!(!sum.is_zero());
         for t in [0.0, 0.9, 1.0, 1.5, 2.0, 7.3] {
-            let sine = (2.0 * std::f64::consts::PI * 0.5 * t + 0.3).sin();
+            // The sine as the profile defines it, by the crate's inline sine (tested against the library's in
+            // `trig`).
+            let sine = trig::sin(2.0 * std::f64::consts::PI * 0.5 * t + 0.3);
             let step = if (1.0..2.0).contains(&t) { 1.0 } else { 0.0 };
             // Each term is computed as the profile defines it; only the order of the sum differs (exact here:
             // the constant part 2a is exact and the other terms are added one by one as before).

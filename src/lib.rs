@@ -28,3 +28,4 @@ pub mod scene;
 pub mod simulate;
 pub mod source_map;
 pub mod study;
+pub mod trig;

@@ -726,8 +726,9 @@ mod tests {
                 } => {
                     let factor = match profile {
                         TorqueProfile::Constant => 1.0,
+                        // The crate's inline sine (within an ulp of the library's, tested in `trig`).
                         TorqueProfile::Sine { freq_hz, phase_rad } => {
-                            (2.0 * std::f64::consts::PI * freq_hz * t + phase_rad).sin()
+                            crate::trig::sin(2.0 * std::f64::consts::PI * freq_hz * t + phase_rad)
                         }
                         TorqueProfile::Step { t_on, t_off } => {
                             if t_on <= t && t < t_off {

@@ -85,6 +85,7 @@ use crate::integrate::{IntegrateError, Schedule, Stats, rk4_substeps};
 use crate::model::Frame;
 use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree, free_sample};
 use crate::output::Sample;
+use crate::trig::small_sin_cos;
 
 /// How the order-2 Strang step is composed into one step of size h.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -178,24 +179,6 @@ pub struct SplitState {
 #[inline]
 fn phi1(x: f64) -> f64 {
     if x == 0.0 { 1.0 } else { x.exp_m1() / x }
-}
-
-/// (sin x, cos x), for the half-angle of every sub-flow. For |x| ≤ 1/16 (|ω|·τ ≤ 1/8, which a step resolving
-/// the motion keeps to) by the Taylor series to x⁹ and x⁸, evaluated inline in Estrin's scheme (a short chain of
-/// dependent operations): the remainders (< x¹¹/11! and x¹⁰/10!) are below 10⁻¹⁸ relative there and the terms after
-/// the first add less than x²/6 ≤ 0.001 ulp of rounding, so the results are the correctly rounded ones but for
-/// ≈ 0.5 ulp — as the library's — without a call, which would spill the state to memory. Beyond 1/16 the
-/// library's `sin_cos`.
-#[inline(always)]
-fn sin_cos(x: f64) -> (f64, f64) {
-    if x.abs() > 0.0625 {
-        return x.sin_cos();
-    }
-    let z = x * x;
-    let z2 = z * z;
-    let sin_tail = (-1.0 / 6.0 + z * (1.0 / 120.0)) + z2 * (-1.0 / 5040.0 + z * (1.0 / 362_880.0));
-    let cos_tail = (-0.5 + z * (1.0 / 24.0)) + z2 * (-1.0 / 720.0 + z * (1.0 / 40_320.0));
-    (x + (x * z) * sin_tail, 1.0 + z * cos_tail)
 }
 
 /// q ⊗ (c, s·eᵢ) for (i, j, k) cyclic: w' = c w − s vᵢ, vᵢ' = c vᵢ + s w, v_j' = c v_j + s v_k, v_k' = c v_k − s v_j.
@@ -551,7 +534,7 @@ impl<K: KickMoment> LiePoisson<K> {
             rotation_column(&y.q_p, i).dot(&y.h)
         };
         let half = (0.5 * k * tau) * h_i;
-        let (s2, c2) = sin_cos(half);
+        let (s2, c2) = small_sin_cos(half);
         turn_quaternion(&mut y.q_p, i, c2, s2);
         if BODY {
             // The full angle from the half angle: one sin_cos per sub-flow.
@@ -585,7 +568,7 @@ impl<K: KickMoment> LiePoisson<K> {
         if norm == 0.0 {
             return 1;
         }
-        let (s2, c2) = sin_cos(0.5 * norm * tau * self.casimir_rate);
+        let (s2, c2) = small_sin_cos(0.5 * norm * tau * self.casimir_rate);
         let v = y.h * (s2 / norm);
         let r = Quaternion::new(c2, v.x, v.y, v.z);
         let q = Quaternion::new(y.q_p[0], y.q_p[1], y.q_p[2], y.q_p[3]);
@@ -967,29 +950,6 @@ mod tests {
     /// One unit in the last place of x.
     fn ulp(x: f64) -> f64 {
         f64::from_bits(x.abs().to_bits() + 1) - x.abs()
-    }
-
-    #[test]
-    fn inline_sin_cos_is_the_library_one_to_an_ulp() {
-        // The series are truncated where their remainders are below 1e-18 relative (|x| <= 1/16): the results are
-        // the correctly rounded values but for about 0.5 ulp, like the library's, so they differ from it by at
-        // most one ulp; beyond 1/16 they are the library's.
-        let mut x = 1e-300;
-        let mut xs = vec![0.0, 0.0625, -0.0625, 0.0625f64.next_down(), 1e-8, 2.5e-4];
-        while x < 0.0625 {
-            xs.push(x);
-            xs.push(-x);
-            x *= 1.003_7;
-        }
-        for x in xs {
-            let (s, c) = sin_cos(x);
-            let (s_lib, c_lib) = x.sin_cos();
-            assert!((s - s_lib).abs() <= ulp(s_lib), "sin({x:e})");
-            assert!((c - c_lib).abs() <= ulp(c_lib), "cos({x:e})");
-        }
-        for x in [0.0626, -0.3, 1.0, 3.0, 100.0] {
-            assert_eq!(sin_cos(x), x.sin_cos());
-        }
     }
 
     #[test]
