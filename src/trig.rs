@@ -49,9 +49,11 @@ pub fn sin(x: f64) -> f64 {
         return x.sin();
     }
     let (n, y0, y1) = rem_pio2(x);
-    let s = kernel_sin(y0, y1);
-    let c = kernel_cos(y0, y1);
-    let v = if n & 1 == 0 { s } else { c };
+    let v = if n & 1 == 0 {
+        kernel_sin(y0, y1)
+    } else {
+        kernel_cos(y0, y1)
+    };
     if n & 2 == 0 { v } else { -v }
 }
 
