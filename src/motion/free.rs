@@ -26,13 +26,15 @@ pub trait AppliedMoment {
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64>;
 
     /// [`Self::moment_b`] at the attitude held in a state, `q_state` = (q_w, q_x, q_y, q_z) of norm near but not
-    /// exactly 1: the moment at q = q_state / |q_state|. A moment that does not depend on the attitude skips
-    /// normalising it.
+    /// exactly 1: the moment at q = q_state / |q_state|. `rotation` gives [`StateRotation::of`]`(q_state)`, called
+    /// only by a moment that needs the attitude, so that a form which has computed it already passes it on instead
+    /// of having it computed twice. A moment that does not depend on the attitude skips both.
     #[inline(always)]
     fn moment_b_at_state(
         &self,
         t: f64,
         q_state: &Quaternion<f64>,
+        _rotation: impl FnOnce() -> StateRotation,
         omega_b: &Vector3<f64>,
     ) -> Vector3<f64> {
         self.moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
@@ -169,8 +171,12 @@ impl EffectMoments {
     /// with space torques or gravity call it, and the right-hand sides, inlined at every stage of an integrator,
     /// stay small.
     #[inline(never)]
-    fn attitude_moment_at_state_b(&self, t: f64, q_state: &Quaternion<f64>) -> Vector3<f64> {
-        let rotation = StateRotation::of(q_state);
+    fn attitude_moment_at_state_b(
+        &self,
+        t: f64,
+        rotation: impl FnOnce() -> StateRotation,
+    ) -> Vector3<f64> {
+        let rotation = rotation();
         self.attitude_moment_b(t, |v_s| rotation.to_body(v_s))
     }
 
@@ -216,10 +222,11 @@ impl AppliedMoment for EffectMoments {
     fn moment_b_at_state(
         &self,
         t: f64,
-        q_state: &Quaternion<f64>,
+        _q_state: &Quaternion<f64>,
+        rotation: impl FnOnce() -> StateRotation,
         omega_b: &Vector3<f64>,
     ) -> Vector3<f64> {
-        let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, q_state));
+        let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, rotation));
         self.with_damping(rest_b, omega_b)
     }
 }
@@ -428,7 +435,12 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
             self.body.omega_dot_b(&omega_b, None)
         } else {
             let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
-            let m_b = self.moment.moment_b_at_state(t, &q_state, &omega_b);
+            let m_b = self.moment.moment_b_at_state(
+                t,
+                &q_state,
+                || StateRotation::of(&q_state),
+                &omega_b,
+            );
             self.body.omega_dot_b(&omega_b, Some(&m_b))
         };
         with_attitude_rate(omega_dot_b, y, &omega_b)
@@ -459,7 +471,11 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
         let m_s = if M::ZERO {
             Vector3::zeros()
         } else {
-            rotation.to_space(&self.moment.moment_b_at_state(t, &q_state, &omega_b))
+            rotation.to_space(
+                &self
+                    .moment
+                    .moment_b_at_state(t, &q_state, || rotation, &omega_b),
+            )
         };
         with_attitude_rate(m_s, y, &omega_b)
     }
@@ -800,7 +816,12 @@ mod tests {
                 let scale = moments.rest_moment_bound() + moments.damping_c() * omega_b.norm();
                 for after in [
                     moments.moment_b(t, &q, &omega_b),
-                    moments.moment_b_at_state(t, &q_state, &omega_b),
+                    moments.moment_b_at_state(
+                        t,
+                        &q_state,
+                        || StateRotation::of(&q_state),
+                        &omega_b,
+                    ),
                     moments.rest_moment_b(t, &q) - omega_b * moments.damping_c(),
                 ] {
                     assert!(
@@ -852,8 +873,8 @@ mod tests {
         let unit = nalgebra::Quaternion::new(1.0, 0.0, 0.0, 0.0);
         let zero = nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0);
         assert_eq!(
-            moments.moment_b_at_state(1.2, &zero, &omega_b),
-            moments.moment_b_at_state(1.2, &unit, &omega_b)
+            moments.moment_b_at_state(1.2, &zero, || StateRotation::of(&zero), &omega_b),
+            moments.moment_b_at_state(1.2, &unit, || StateRotation::of(&unit), &omega_b)
         );
     }
 }
