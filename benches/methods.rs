@@ -902,6 +902,18 @@ fn fastest_to_1e10(scene_file: &str) {
             format_seconds(r.evals as f64 * per_eval_pair * 1e-9),
             r.wall_s * 1e9 / r.evals as f64
         );
+        let without_sine = constant_torque_cost(&path, &text, r);
+        match without_sine {
+            Ok((evals, ns_per_eval)) => println!(
+                "    the same run with the sine replaced by a constant torque of the same value (same method and \
+                 tolerances): {evals} evaluations at {ns_per_eval:.1} ns each; at that rate these {} evaluations \
+                 would take {}: the sine's arithmetic costs {:.1} ns per evaluation",
+                r.evals,
+                format_seconds(r.evals as f64 * ns_per_eval * 1e-9),
+                r.wall_s * 1e9 / r.evals as f64 - ns_per_eval
+            ),
+            Err(e) => println!("    constant-torque variant: {e}"),
+        }
     }
     match best {
         Some(r) => println!(
@@ -914,6 +926,45 @@ fn fastest_to_1e10(scene_file: &str) {
         ),
         None => println!("    no integrating method reached err_omega <= 1e-10"),
     }
+}
+
+/// The sine-torque scene with every sine profile made constant (`freq_hz` dropped), run with the method, form and
+/// tolerances of `row`: its evaluations and the median ns per evaluation of the whole integration (the study's timing:
+/// `simulate::run` with the rows consumed), over [`SAMPLES`] runs.
+fn constant_torque_cost(
+    path: &Path,
+    text: &str,
+    row: &eulerdyn::study::StudyRow,
+) -> Result<(u64, f64), String> {
+    let constant: String = text
+        .lines()
+        .filter(|line| !line.trim_start().starts_with("freq_hz"))
+        .map(|line| line.replace("profile = \"sine\"", "profile = \"constant\""))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let overrides = Overrides {
+        method: Some(row.method_name.name().to_string()),
+        frame: Some(row.frame.name().to_string()),
+        backend: Some(row.backend.name().to_string()),
+        rtol: row.rtol,
+        atol: row.atol,
+        dt: row.dt,
+        ..Overrides::default()
+    };
+    let scene = scene::parse(path, &constant, &overrides).map_err(|e| e.to_string())?;
+    let mut times = Vec::with_capacity(SAMPLES);
+    let mut evals = 0;
+    for _ in 0..SAMPLES {
+        let start = Instant::now();
+        let report = simulate::run(&scene, |s| {
+            black_box(s);
+            Ok::<(), Infallible>(())
+        })
+        .map_err(|e| e.to_string())?;
+        times.push(start.elapsed().as_secs_f64());
+        evals = report.stats.evals;
+    }
+    Ok((evals, median(&times) * 1e9 / evals as f64))
 }
 
 fn main() {

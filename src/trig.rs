@@ -41,8 +41,8 @@ const C6: f64 = -1.135_964_755_778_819_482_65e-11;
 /// sin x, within one ulp of the correctly rounded value, the algorithm of FreeBSD's msun (fdlibm, Sun Microsystems
 /// 1993: `s_sin.c`, `e_rem_pio2.c`, `k_sin.c`, `k_cos.c`): x = n·π/2 + (y₀ + y₁) by Cody–Waite reduction with π/2 in
 /// three parts (a second and third round only where the first cancels, near a multiple of π/2), then
-/// sin x = ±sin y or ±cos y by n mod 4, both kernels minimax polynomials on |y| ≤ π/4 and both evaluated, so that
-/// no branch depends on n. For |x| ≥ 2²⁰·π/2, NaN and ±∞: `f64::sin`.
+/// sin x = ±sin y or ±cos y by n mod 4, both kernels minimax polynomials on |y| ≤ π/4; only the kernel n mod 2 asks
+/// for is evaluated (a branch that follows t, so it is predicted). For |x| ≥ 2²⁰·π/2, NaN and ±∞: `f64::sin`.
 #[inline(always)]
 pub fn sin(x: f64) -> f64 {
     if x.is_nan() || x.abs() >= MEDIUM_LIMIT {
