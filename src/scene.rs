@@ -731,6 +731,20 @@ fn validate_motion(
                 key: KeyPath::root().key("body").key(body_key),
                 problem: e.to_string(),
             })?;
+            // H = I_A ω₀ and T = ½ ω₀·H must be numbers: every row reports them, and the divergence guard measures
+            // the run by T.
+            let h0_b = free_body.inertia_b() * omega0_b;
+            let energy0 = 0.5 * omega0_b.dot(&h0_b);
+            if !(energy0.is_finite() && h0_b.norm().is_finite()) {
+                return invalid(
+                    KeyPath::root().key("initial").key("omega"),
+                    format!(
+                        "ω₀ = ({:e}, {:e}, {:e}) rad/s is too large: the moment of momentum I·ω₀ or the kinetic \
+                         energy ½ ω₀·I·ω₀ is beyond the range of double precision",
+                        omega0_b.x, omega0_b.y, omega0_b.z
+                    ),
+                );
+            }
             Ok(MotionSpec::Free {
                 omega0_b,
                 body: free_body,
@@ -772,11 +786,24 @@ fn validate_motion(
                     Vector3::new(0.0, -tilt.sin(), tilt.cos())
                 }
             };
+            let rate = finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?;
+            let accel = finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?;
+            // The required moment M = I α + ω × I ω is of order I_max (ω² + |α|): it must be a number at t = 0.
+            let inertia_max = body.inertia_c().abs().max();
+            if !(inertia_max * (rate * rate + accel.abs())).is_finite() {
+                return invalid(
+                    motion().key("rate"),
+                    format!(
+                        "rate {rate:e} rad/s with accel {accel:e} rad/s^2 is too large: the moment that keeps the \
+                         body on its axis, of order I·(ω² + |α|), is beyond the range of double precision"
+                    ),
+                );
+            }
             Ok(MotionSpec::FixedAxis(FixedAxis::new(
                 body,
                 axis_b,
-                finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?,
-                finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?,
+                rate,
+                accel,
                 match m.point {
                     None => Vector3::zeros(),
                     Some(Numbers(p)) => vector(motion().key("point"), p, "m")?,

@@ -339,6 +339,21 @@ fn cases() -> Vec<Case> {
             &["finite"],
         ),
         case(
+            "omega so large that I·omega overflows",
+            free(
+                "omega = [0.3, 0.0, 2.0]",
+                "omega = [1e200, 0.0, 1e200] # <--",
+            ),
+            "initial.omega",
+            &["too large", "double precision"],
+        ),
+        case(
+            "rate so large that the bearing moment overflows",
+            disk("rate = 10.0", "rate = 1e200 # <--"),
+            "motion.rate",
+            &["too large", "double precision"],
+        ),
+        case(
             "effect value has a string (the second effect)",
             free_plus(
                 "\n[[effect]]\ntype = \"damping\"\nc = 0.1\n\n[[effect]]\ntype = \"damping\"\nc = \"x\" # <--\n",
