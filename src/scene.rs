@@ -467,6 +467,7 @@ fn validate(doc: SceneDoc, overrides: &Overrides) -> Checked<Scene> {
             "only one gravity effect is allowed: its pivot is the single fixed point of the body",
         );
     }
+    effect_moments_in_range(&effects, body.mass())?;
     let motion = validate_motion(&doc, &body, &attitude0, &effects)?;
     let solver = validate_solver(&doc.solver, overrides)?;
     validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
@@ -812,6 +813,36 @@ fn validate_motion(
             )))
         }
     }
+}
+
+/// The largest moments of the effects, |value| for a torque and m|g||pivot| for gravity, and their sum must be
+/// numbers: the divergence guard bounds the work the effects can do by that sum.
+fn effect_moments_in_range(effects: &[Effect], mass: f64) -> Checked<()> {
+    let mut sum = 0.0;
+    for (index, effect) in effects.iter().enumerate() {
+        let (name, largest) = match effect {
+            Effect::Torque { value, .. } => ("value", value.norm()),
+            Effect::Gravity { g_s, pivot_b } => ("g", mass * g_s.norm() * pivot_b.norm()),
+            Effect::Damping { .. } => continue,
+        };
+        sum += largest;
+        if !sum.is_finite() {
+            let problem = if largest.is_finite() {
+                format!(
+                    "too large: the moment of this effect (up to {largest:e} N*m), added to the others', is beyond \
+                     the range of double precision"
+                )
+            } else {
+                "too large: the moment of this effect is beyond the range of double precision"
+                    .to_string()
+            };
+            return invalid(
+                KeyPath::root().key("effect").index(index).key(name),
+                problem,
+            );
+        }
+    }
+    Ok(())
 }
 
 fn validate_effect(index: usize, doc: &EffectDoc) -> Checked<Effect> {

@@ -348,6 +348,20 @@ fn cases() -> Vec<Case> {
             &["too large", "double precision"],
         ),
         case(
+            "torque whose length overflows",
+            free_plus("\n[[effect]]\ntype = \"torque\"\nvalue = [1e300, 0.0, 1e300] # <--\n"),
+            "effect[0].value",
+            &["too large", "double precision"],
+        ),
+        case(
+            "gravity moment m|g||pivot| overflows",
+            free_plus(
+                "\n[[effect]]\ntype = \"gravity\"\ng = [0.0, 0.0, -1e200] # <--\npivot = [0.0, 0.0, 1e200]\n",
+            ),
+            "effect[0].g",
+            &["too large", "double precision"],
+        ),
+        case(
             "rate so large that the bearing moment overflows",
             disk("rate = 10.0", "rate = 1e200 # <--"),
             "motion.rate",
