@@ -5,6 +5,8 @@
 //! error of `K_ADAPTIVE · rtol` per unit of |ω|·t_end (local errors of size rtol·|y| per step, accumulated about
 //! linearly over the run); for RK4 the global error of an order-4 method, `K_RK4 · (|ω| dt)⁴ · |ω| t_end`.
 
+mod common;
+
 use std::convert::Infallible;
 use std::path::Path;
 
@@ -17,6 +19,8 @@ use eulerdyn::output::Sample;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+
+use common::sign_changes;
 
 /// Global-error constant of the adaptive methods relative to rtol per unit of |ω|·t. Measured on the asymmetric
 /// torque-free body: 0.0004–0.15 (dopri5 in the space form is the largest); a tolerance that is not honoured, e.g.
@@ -369,17 +373,6 @@ fn sine_torque_matches_a_fine_rk4_reference_with_every_method() {
     }
 }
 
-/// Times where ω_y changes sign, by linear interpolation between rows.
-fn sign_changes(rows: &[Sample]) -> Vec<f64> {
-    rows.windows(2)
-        .filter(|w| w[0].omega_b[1].signum() != w[1].omega_b[1].signum())
-        .map(|w| {
-            let (a, b) = (w[0].omega_b[1], w[1].omega_b[1]);
-            w[0].t + (w[1].t - w[0].t) * a / (a - b)
-        })
-        .collect()
-}
-
 #[test]
 fn tennis_racket_flips_at_the_closed_form_interval() {
     // Landau & Lifshitz §37: near the intermediate axis, ω_y ∝ sn(λt) changes sign every 2K/λ. Rows every 0.05 s and
@@ -398,7 +391,7 @@ fn tennis_racket_flips_at_the_closed_form_interval() {
     );
     for o in configurations() {
         let scene = scene_from(&text, &o);
-        let flips = sign_changes(&rows(&scene));
+        let flips = sign_changes(&rows(&scene), 1);
         assert!(flips.len() >= 3, "{}: {} flips", label(&o), flips.len());
         for pair in flips.windows(2) {
             let measured = pair[1] - pair[0];

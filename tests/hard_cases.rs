@@ -17,7 +17,7 @@ use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, GuardedQuantity, RunError, RunReport};
 use nalgebra::{UnitQuaternion, Vector3};
 
-use common::{eulerdyn, write_file};
+use common::{eulerdyn, sign_changes, write_file};
 
 fn scene_from(text: &str, overrides: &Overrides) -> Scene {
     scene::parse(Path::new("test.toml"), text, overrides).unwrap()
@@ -219,17 +219,6 @@ fn exact_is_accurate_to_round_off_at_a_million_seconds() {
 
 // ---------------------------------------------------------------------------------------------------------------
 // The intermediate axis and the separatrix.
-
-/// Times where ω_b[axis] changes sign, by linear interpolation between rows.
-fn sign_changes(rows: &[Sample], axis: usize) -> Vec<f64> {
-    rows.windows(2)
-        .filter(|w| w[0].omega_b[axis].signum() != w[1].omega_b[axis].signum())
-        .map(|w| {
-            let (a, b) = (w[0].omega_b[axis], w[1].omega_b[axis]);
-            w[0].t + (w[1].t - w[0].t) * a / (a - b)
-        })
-        .collect()
-}
 
 #[test]
 fn intermediate_axis_flips_at_the_closed_form_interval_with_every_method() {

@@ -1,5 +1,5 @@
-//! Helpers shared by the command-line tests: running the real `eulerdyn` binary, writing scenes into temporary
-//! directories, and checking what a run left on disk.
+//! Helpers shared by the tests: running the real `eulerdyn` binary, writing scenes into temporary directories,
+//! checking what a run left on disk, and reading rows.
 
 // Each test file uses its own subset of these helpers.
 #![allow(dead_code)]
@@ -7,6 +7,8 @@
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+
+use eulerdyn::output::Sample;
 
 /// A free-motion scene: asymmetric body, torque-free, t_end = 1 s, a row every 0.1 s.
 pub const FREE_SCENE: &str = r#"name = "free"
@@ -163,4 +165,15 @@ pub fn expected_times(every: f64, t_end: f64) -> Vec<f64> {
     }
     times.push(t_end);
     times
+}
+
+/// Times where ω_b[axis] changes sign, by linear interpolation between rows.
+pub fn sign_changes(rows: &[Sample], axis: usize) -> Vec<f64> {
+    rows.windows(2)
+        .filter(|w| w[0].omega_b[axis].signum() != w[1].omega_b[axis].signum())
+        .map(|w| {
+            let (a, b) = (w[0].omega_b[axis], w[1].omega_b[axis]);
+            w[0].t + (w[1].t - w[0].t) * a / (a - b)
+        })
+        .collect()
 }
