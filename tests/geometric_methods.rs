@@ -49,6 +49,18 @@ fn rows(scene: &Scene) -> Vec<Sample> {
     run(scene).0
 }
 
+/// The largest of |ω − ω_ref| (rad/s) and the attitude angle to the reference (rad) over rows at the same times.
+fn largest_error(rows: &[Sample], reference: &[Sample]) -> f64 {
+    rows.iter()
+        .zip(reference)
+        .map(|(r, f)| {
+            (r.omega_b - f.omega_b)
+                .norm()
+                .max(attitude_angle(&r.q, &f.q))
+        })
+        .fold(0.0, f64::max)
+}
+
 fn with(method: &str, frame: &str, dt: Option<f64>, rtol: Option<f64>) -> Overrides {
     Overrides {
         method: Some(method.into()),
@@ -203,15 +215,7 @@ fn observed_order_of_every_fixed_step_method() {
                                 let (w, q) = oracle.errors(&rows(&scene_from(&free, &o)), 1.0);
                                 w.max(q)
                             }
-                            "mixed" => rows(&scene_from(MIXED, &o))
-                                .iter()
-                                .zip(&reference)
-                                .map(|(r, f)| {
-                                    (r.omega_b - f.omega_b)
-                                        .norm()
-                                        .max(attitude_angle(&r.q, &f.q))
-                                })
-                                .fold(0.0, f64::max),
+                            "mixed" => largest_error(&rows(&scene_from(MIXED, &o)), &reference),
                             _ => rows(&scene_from(&tilted, &o))
                                 .iter()
                                 .map(|r| (r.h_s_integrated.unwrap() - r.h_s).norm())
@@ -264,15 +268,7 @@ fn observed_order_of_the_adaptive_methods_against_their_tolerance() {
                             let (w, q) = oracle.errors(&rows(&scene_from(&free, &o)), 1.0);
                             w.max(q)
                         } else {
-                            rows(&scene_from(&mixed, &o))
-                                .iter()
-                                .zip(&reference)
-                                .map(|(r, f)| {
-                                    (r.omega_b - f.omega_b)
-                                        .norm()
-                                        .max(attitude_angle(&r.q, &f.q))
-                                })
-                                .fold(0.0, f64::max)
+                            largest_error(&rows(&scene_from(&mixed, &o)), &reference)
                         }
                     })
                     .collect();
