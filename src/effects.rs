@@ -44,6 +44,17 @@ impl Effect {
             Effect::Damping { .. } => "damping",
         }
     }
+
+    /// An upper bound of the moment's magnitude over all times and attitudes, on a body of mass `mass` (kg), N·m:
+    /// |value| for a torque (every profile factor is at most 1 in magnitude), m |g| |pivot| for gravity (|ρ_C| =
+    /// |pivot|); `None` for damping, whose moment −c ω depends on ω and whose power −c|ω|² is never positive.
+    pub fn largest_moment(&self, mass: f64) -> Option<f64> {
+        match self {
+            Effect::Torque { value, .. } => Some(value.norm()),
+            Effect::Gravity { g_s, pivot_b } => Some(mass * g_s.norm() * pivot_b.norm()),
+            Effect::Damping { .. } => None,
+        }
+    }
 }
 
 /// The torques of one frame summed, compiled once so that every evaluation does only the time-dependent

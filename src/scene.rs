@@ -815,15 +815,17 @@ fn validate_motion(
     }
 }
 
-/// The largest moments of the effects, |value| for a torque and m|g||pivot| for gravity, and their sum must be
-/// numbers: the divergence guard bounds the work the effects can do by that sum.
+/// The largest moments of the effects ([`Effect::largest_moment`]) and their sum must be numbers: the divergence
+/// guard bounds the work the effects can do by that sum ([`crate::motion::free::EffectMoments::rest_moment_bound`]).
 fn effect_moments_in_range(effects: &[Effect], mass: f64) -> Checked<()> {
     let mut sum = 0.0;
     for (index, effect) in effects.iter().enumerate() {
-        let (name, largest) = match effect {
-            Effect::Torque { value, .. } => ("value", value.norm()),
-            Effect::Gravity { g_s, pivot_b } => ("g", mass * g_s.norm() * pivot_b.norm()),
-            Effect::Damping { .. } => continue,
+        let Some(largest) = effect.largest_moment(mass) else {
+            continue;
+        };
+        let name = match effect {
+            Effect::Gravity { .. } => "g",
+            _ => "value",
         };
         sum += largest;
         if !sum.is_finite() {

@@ -200,11 +200,7 @@ impl EffectMoments {
     pub fn rest_moment_bound(&self) -> f64 {
         self.effects
             .iter()
-            .map(|e| match e {
-                Effect::Torque { value, .. } => value.norm(),
-                Effect::Gravity { g_s, pivot_b } => self.mass * g_s.norm() * pivot_b.norm(),
-                Effect::Damping { .. } => 0.0,
-            })
+            .filter_map(|e| e.largest_moment(self.mass))
             .sum()
     }
 }
