@@ -24,7 +24,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use eulerdyn::output::{ColumnSet, CsvWriter, Sample};
+use eulerdyn::output::CsvWriter;
+use eulerdyn::sample::{ColumnSet, Sample};
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 

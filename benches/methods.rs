@@ -31,10 +31,11 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::Instant;
 
-use eulerdyn::model::{BackendName, Frame, MethodName};
+use eulerdyn::analysis::study::{self, StudyOptions, format_seconds};
+use eulerdyn::frames::Form;
+use eulerdyn::method::{Backend, Method};
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
-use eulerdyn::study::{self, StudyOptions, format_seconds};
 use eulerdyn::trig::{self, small_sin_cos};
 
 /// The benchmark body, torque-free, rows only at 0 and t_end.
@@ -171,7 +172,7 @@ fn floor_sine_sample() -> f64 {
 /// quaternion and re-evaluates f at the renormalised state (as the project's dopri5 does: 7 evaluations per
 /// step). The step is fixed (h = 0.05 s, no rejection), so this is the work of an accepted adaptive step without
 /// the bookkeeping of step-size selection. Returns ns per right-hand-side evaluation.
-fn dopri5_floor_sample(frame: Frame) -> f64 {
+fn dopri5_floor_sample(frame: Form) -> f64 {
     const A: [[f64; 6]; 6] = [
         [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
         [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
@@ -217,12 +218,12 @@ fn dopri5_floor_sample(frame: Frame) -> f64 {
     let c = [(i2 - i3) / i1, (i3 - i1) / i2, (i1 - i2) / i3];
     let inv = [1.0 / i1, 1.0 / i2, 1.0 / i3];
     let f = |y: &Y| match frame {
-        Frame::Body => rhs_body(&c, y),
-        Frame::Space => rhs_space(&inv, y),
+        Form::Body => rhs_body(&c, y),
+        Form::Space => rhs_space(&inv, y),
     };
     let mut y: Y = match frame {
-        Frame::Body => [OMEGA0[0], OMEGA0[1], OMEGA0[2], 1.0, 0.0, 0.0, 0.0],
-        Frame::Space => [
+        Form::Body => [OMEGA0[0], OMEGA0[1], OMEGA0[2], 1.0, 0.0, 0.0, 0.0],
+        Form::Space => [
             i1 * OMEGA0[0],
             i2 * OMEGA0[1],
             i3 * OMEGA0[2],
@@ -278,18 +279,18 @@ fn dopri5_floor_sample(frame: Frame) -> f64 {
 }
 
 /// ns per step of the hand-written loop in `frame` (1e5 steps of 1e-3 s, as the rk4 case).
-fn floor_sample(frame: Frame) -> f64 {
+fn floor_sample(frame: Form) -> f64 {
     let steps = 100_000u64;
     let h = black_box(1e-3);
     let [i1, i2, i3] = black_box(MOMENTS);
     let start = Instant::now();
     let y = match frame {
-        Frame::Body => {
+        Form::Body => {
             let c = [(i2 - i3) / i1, (i3 - i1) / i2, (i1 - i2) / i3];
             let y0 = [OMEGA0[0], OMEGA0[1], OMEGA0[2], 1.0, 0.0, 0.0, 0.0];
             hand_rk4(|y| rhs_body(&c, y), black_box(y0), h, steps)
         }
-        Frame::Space => {
+        Form::Space => {
             let inv = [1.0 / i1, 1.0 / i2, 1.0 / i3];
             let y0 = [
                 i1 * OMEGA0[0],
@@ -463,7 +464,7 @@ fn suzuki_weights() -> [f64; 5] {
 
 /// ns per step of the hand-written split2 (`fourth` false) or split4 in `frame` (1e5 steps of 1e-3 s, as the
 /// project's case), and the final state as (ω_b, q_b).
-fn split_floor_sample(frame: Frame, fourth: bool) -> (f64, [f64; 3], [f64; 4]) {
+fn split_floor_sample(frame: Form, fourth: bool) -> (f64, [f64; 3], [f64; 4]) {
     let steps = 100_000u64;
     let h = black_box(1e-3);
     let [i1, i2, i3] = black_box(MOMENTS);
@@ -481,14 +482,14 @@ fn split_floor_sample(frame: Frame, fourth: bool) -> (f64, [f64; 3], [f64; 4]) {
     let (strang, suzuki) = (black_box([1.0]), black_box(suzuki_weights()));
     let start = Instant::now();
     let y = match (frame, fourth) {
-        (Frame::Body, false) => hand_split::<true, 1>(&r, strang, black_box(y0), h, steps),
-        (Frame::Space, false) => hand_split::<false, 1>(&r, strang, black_box(y0), h, steps),
-        (Frame::Body, true) => hand_split::<true, 5>(&r, suzuki, black_box(y0), h, steps),
-        (Frame::Space, true) => hand_split::<false, 5>(&r, suzuki, black_box(y0), h, steps),
+        (Form::Body, false) => hand_split::<true, 1>(&r, strang, black_box(y0), h, steps),
+        (Form::Space, false) => hand_split::<false, 1>(&r, strang, black_box(y0), h, steps),
+        (Form::Body, true) => hand_split::<true, 5>(&r, suzuki, black_box(y0), h, steps),
+        (Form::Space, true) => hand_split::<false, 5>(&r, suzuki, black_box(y0), h, steps),
     };
     let ns = start.elapsed().as_secs_f64() * 1e9 / steps as f64;
     let y = black_box(y);
-    let h_p = if frame == Frame::Body {
+    let h_p = if frame == Form::Body {
         y.h
     } else {
         // H_p = R(q)ᵀ H_s.
@@ -511,7 +512,7 @@ fn split_floor_sample(frame: Frame, fourth: bool) -> (f64, [f64; 3], [f64; 4]) {
 
 /// The samples of one splitting floor and its final state.
 struct SplitFloor {
-    frame: Frame,
+    frame: Form,
     /// split4 (else split2).
     fourth: bool,
     /// ns per step of each sample.
@@ -551,10 +552,10 @@ fn split_floor_check(case: &Case, omega_b: [f64; 3], q: [f64; 4]) -> (f64, f64) 
 
 /// One measured case: a method in a form on a backend.
 struct Case {
-    method: MethodName,
-    backend: BackendName,
-    frame: Frame,
-    scene: eulerdyn::model::Scene,
+    method: Method,
+    backend: Backend,
+    frame: Form,
+    scene: eulerdyn::scene::Scene,
     /// ns per step (per row for `exact`) of each sample.
     samples: Vec<f64>,
     steps: u64,
@@ -609,12 +610,12 @@ fn min(v: &[f64]) -> f64 {
 fn per_step_costs() {
     let path = Path::new("benchmark.toml");
     let mut cases = Vec::new();
-    for backend in [BackendName::Own, BackendName::OdeSolvers] {
-        for method in MethodName::ALL {
-            if backend != BackendName::Own && !method.is_runge_kutta() {
+    for backend in [Backend::Own, Backend::OdeSolvers] {
+        for method in Method::ALL {
+            if backend != Backend::Own && !method.is_runge_kutta() {
                 continue;
             }
-            for frame in [Frame::Body, Frame::Space] {
+            for frame in [Form::Body, Form::Space] {
                 let overrides = Overrides {
                     method: Some(method.name().into()),
                     frame: Some(frame.name().into()),
@@ -647,7 +648,7 @@ fn per_step_costs() {
     let mut split_floors: Vec<SplitFloor> = [false, true]
         .into_iter()
         .flat_map(|fourth| {
-            [Frame::Body, Frame::Space].map(|frame| SplitFloor {
+            [Form::Body, Form::Space].map(|frame| SplitFloor {
                 frame,
                 fourth,
                 samples: Vec::new(),
@@ -657,11 +658,11 @@ fn per_step_costs() {
         })
         .collect();
     for _ in 0..SAMPLES {
-        floor_body.push(floor_sample(Frame::Body));
-        floor_space.push(floor_sample(Frame::Space));
+        floor_body.push(floor_sample(Form::Body));
+        floor_space.push(floor_sample(Form::Space));
         floor_sine.push(floor_sine_sample());
-        dopri5_body.push(dopri5_floor_sample(Frame::Body));
-        dopri5_space.push(dopri5_floor_sample(Frame::Space));
+        dopri5_body.push(dopri5_floor_sample(Form::Body));
+        dopri5_space.push(dopri5_floor_sample(Form::Space));
         for floor in &mut split_floors {
             let (ns, omega_b, q) = split_floor_sample(floor.frame, floor.fourth);
             floor.samples.push(ns);
@@ -671,9 +672,9 @@ fn per_step_costs() {
             case.sample();
         }
     }
-    let floor = |frame: Frame| match frame {
-        Frame::Body => (median(&floor_body), min(&floor_body)),
-        Frame::Space => (median(&floor_space), min(&floor_space)),
+    let floor = |frame: Form| match frame {
+        Form::Body => (median(&floor_body), min(&floor_body)),
+        Form::Space => (median(&floor_space), min(&floor_space)),
     };
     println!(
         "benchmark body, torque-free, t_end = 100 s, rows at 0 and 100 s only; fixed-step methods dt = 1e-3 s \
@@ -682,7 +683,7 @@ fn per_step_costs() {
     println!(
         "  floor: hand-written RK4 loop, same right-hand side inlined, quaternion renormalised every step:"
     );
-    for frame in [Frame::Body, Frame::Space] {
+    for frame in [Form::Body, Form::Space] {
         let (m, lo) = floor(frame);
         println!(
             "    {:5} form  {m:7.1} ns/step ({lo:5.1})  = {:5.1} ns per right-hand-side evaluation",
@@ -695,7 +696,7 @@ fn per_step_costs() {
         median(&floor_sine),
         min(&floor_sine),
         median(&floor_sine) / 4.0,
-        (median(&floor_sine) - floor(Frame::Body).0) / 4.0
+        (median(&floor_sine) - floor(Form::Body).0) / 4.0
     );
     println!(
         "  a hand-written DOPRI5 step (7 stages, error norm, controller power, renormalise, f at the new state):"
@@ -704,20 +705,20 @@ fn per_step_costs() {
         "    body  form  {:5.1} ns per evaluation ({:5.1}) = {:.2} x the RK4 floor's",
         median(&dopri5_body),
         min(&dopri5_body),
-        median(&dopri5_body) / (floor(Frame::Body).0 / 4.0)
+        median(&dopri5_body) / (floor(Form::Body).0 / 4.0)
     );
     println!(
         "    space form  {:5.1} ns per evaluation ({:5.1}) = {:.2} x the RK4 floor's",
         median(&dopri5_space),
         min(&dopri5_space),
-        median(&dopri5_space) / (floor(Frame::Space).0 / 4.0)
+        median(&dopri5_space) / (floor(Form::Space).0 / 4.0)
     );
     SINE_FLOOR_NS_PER_EVAL.with(|c| c.set(median(&floor_sine) / 4.0));
     SINE_DOPRI5_NS_PER_EVAL
-        .with(|c| c.set(median(&dopri5_body) + (median(&floor_sine) - floor(Frame::Body).0) / 4.0));
-    let dopri5_floor = |frame: Frame| match frame {
-        Frame::Body => median(&dopri5_body),
-        Frame::Space => median(&dopri5_space),
+        .with(|c| c.set(median(&dopri5_body) + (median(&floor_sine) - floor(Form::Body).0) / 4.0));
+    let dopri5_floor = |frame: Form| match frame {
+        Form::Body => median(&dopri5_body),
+        Form::Space => median(&dopri5_space),
     };
     println!(
         "  the splitting methods' own floors: split2/split4 written by hand for this body (plain arrays, the same \
@@ -735,7 +736,7 @@ fn per_step_costs() {
         let name = if *fourth { "split4" } else { "split2" };
         let case = cases
             .iter()
-            .find(|c| c.backend == BackendName::Own && c.method.name() == name && c.frame == *frame)
+            .find(|c| c.backend == Backend::Own && c.method.name() == name && c.frame == *frame)
             .expect("the project's splitting case");
         let (d_omega, angle) = split_floor_check(case, *omega_b, *q);
         let (m, lo) = (median(samples), min(samples));
@@ -752,7 +753,7 @@ fn per_step_costs() {
         );
         own_floor.push((name, *frame, m));
     }
-    let own_floor = |method: &str, frame: Frame| {
+    let own_floor = |method: &str, frame: Form| {
         own_floor
             .iter()
             .find(|(n, f, _)| *n == method && *f == frame)
@@ -774,7 +775,7 @@ fn per_step_costs() {
     for case in &cases {
         let (m, lo) = (median(&case.samples), min(&case.samples));
         let label = match case.backend {
-            BackendName::Own => case.method.name().to_string(),
+            Backend::Own => case.method.name().to_string(),
             b => format!("{}/{}", case.method.name(), b.name()),
         };
         let (floor_m, _) = floor(case.frame);
@@ -795,12 +796,12 @@ fn per_step_costs() {
         };
         // The target is for the project's own methods; the ode_solvers rows show what owning the tableaus saved.
         let verdict = match case.backend {
-            BackendName::Own if ratio <= target => "ok",
-            BackendName::Own => "MISSED",
+            Backend::Own if ratio <= target => "ok",
+            Backend::Own => "MISSED",
             _ => "(reference)",
         };
         let own = match case.backend {
-            BackendName::Own => own_floor(case.method.name(), case.frame),
+            Backend::Own => own_floor(case.method.name(), case.frame),
             _ => None,
         };
         let vs_dopri5 = if case.method.is_adaptive() {
@@ -840,8 +841,8 @@ fn fastest_to_1e10(scene_file: &str) {
         rtols: (32..=48).map(|k| 10f64.powf(-f64::from(k) / 4.0)).collect(),
         halvings: 12,
         repeats: 21,
-        backends: vec![BackendName::Own],
-        frames: vec![Frame::Body, Frame::Space],
+        backends: vec![Backend::Own],
+        frames: vec![Form::Body, Form::Space],
         max_fixed_steps: 2e7,
         slow_curve_seconds: 0.5,
     };
@@ -889,7 +890,7 @@ fn fastest_to_1e10(scene_file: &str) {
         .filter(|r| r.error(study.measure).is_some_and(|e| e <= 1e-10))
         .min_by(|a, b| a.wall_s.total_cmp(&b.wall_s));
     if let Some(r) = best
-        && study.measure == eulerdyn::study::Measure::Omega
+        && study.measure == eulerdyn::analysis::study::Measure::Omega
         && scene_file.contains("sine")
     {
         let per_eval = SINE_FLOOR_NS_PER_EVAL.with(|c| c.get());
@@ -934,7 +935,7 @@ fn fastest_to_1e10(scene_file: &str) {
 fn constant_torque_cost(
     path: &Path,
     text: &str,
-    row: &eulerdyn::study::StudyRow,
+    row: &eulerdyn::analysis::study::StudyRow,
 ) -> Result<(u64, f64), String> {
     let constant: String = text
         .lines()

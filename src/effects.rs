@@ -2,7 +2,7 @@
 
 use nalgebra::Vector3;
 
-use crate::model::Frame;
+use crate::frames::Axes;
 use crate::trig;
 
 /// Time profile of an applied torque.
@@ -21,7 +21,7 @@ pub enum TorqueProfile {
 pub enum Effect {
     /// An applied torque (N·m), given in body or space axes, with a time profile.
     Torque {
-        frame: Frame,
+        frame: Axes,
         value: Vector3<f64>,
         profile: TorqueProfile,
     },

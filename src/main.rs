@@ -1,5 +1,5 @@
-//! The `eulerdyn` command: a thin shell over the library's [`eulerdyn::cli`].
+//! The `eulerdyn` command: a thin shell over the library's [`eulerdyn::app::cli`].
 
 fn main() -> std::process::ExitCode {
-    eulerdyn::cli::main()
+    eulerdyn::app::cli::main()
 }

@@ -8,9 +8,11 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use approx::assert_relative_eq;
 use eulerdyn::body::{RigidBody, Shape};
-use eulerdyn::model::{BackendName, Frame, MethodName, MotionSpec};
+use eulerdyn::frames::Form;
+use eulerdyn::method::{Backend, Method};
 use eulerdyn::motion::fixed_axis::FixedAxis;
-use eulerdyn::output::Sample;
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::MotionSpec;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
@@ -114,7 +116,7 @@ fn disk_part_b_inertia_and_moment_of_momentum_in_axes_along_the_spin_axis() {
                 );
             }
         }
-        let sample = motion.sample(0.0, Frame::Space);
+        let sample = motion.sample(0.0, Form::Space);
         let h_bar = Vector3::new(0.0, q * OMEGA * s * c, q * OMEGA * (1.0 + c * c));
         for k in 0..3 {
             assert!(
@@ -206,7 +208,7 @@ fn required_moment_is_the_rate_of_change_of_h_s() {
     let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 1.1);
     for point in [Vector3::zeros(), Vector3::new(0.1, 0.2, -0.05)] {
         let motion = FixedAxis::new(&body, axis, 2.0, 3.0, point, attitude);
-        let h_s = |t: f64| motion.sample(t, Frame::Body).h_s;
+        let h_s = |t: f64| motion.sample(t, Form::Body).h_s;
         let h = 1e-3;
         for t in [0.0, 0.4, 1.3] {
             let derivative = (h_s(t - 2.0 * h) - 8.0 * h_s(t - h) + 8.0 * h_s(t + h)
@@ -214,7 +216,7 @@ fn required_moment_is_the_rate_of_change_of_h_s() {
                 / (12.0 * h);
             let angle = motion.angle(t);
             let scale = h_s(t).norm() * angle.theta_dot.abs().max(1.0);
-            for frame in [Frame::Body, Frame::Space] {
+            for frame in [Form::Body, Form::Space] {
                 let m_s = motion.sample(t, frame).m_s;
                 assert!(
                     (m_s - derivative).norm() <= 1e-8 * scale,
@@ -381,7 +383,7 @@ fn offset_point_force_is_m_a_c_and_h_about_the_fixed_point_is_i_a_omega() {
 
 #[test]
 fn scene_backend_and_method_names_round_trip() {
-    for m in MethodName::ALL {
+    for m in Method::ALL {
         let overrides = Overrides {
             method: Some(m.name().into()),
             ..Overrides::default()
@@ -401,5 +403,5 @@ fn scene_backend_and_method_names_round_trip() {
         },
     )
     .unwrap();
-    assert_eq!(scene.solver.backend, BackendName::OdeSolvers);
+    assert_eq!(scene.solver.backend, Backend::OdeSolvers);
 }

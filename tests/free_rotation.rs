@@ -10,12 +10,12 @@ mod common;
 use std::convert::Infallible;
 use std::path::Path;
 
-use eulerdyn::compare::attitude_angle;
+use eulerdyn::analysis::compare::attitude_angle;
 use eulerdyn::exact::{
     AxialTorqueSymmetric, HeavySymmetricTop, PrecessionRoots, SteadyPrecession, TorqueFreeBody,
 };
-use eulerdyn::model::Scene;
-use eulerdyn::output::Sample;
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};

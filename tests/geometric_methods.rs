@@ -13,10 +13,11 @@ mod common;
 use std::convert::Infallible;
 use std::path::Path;
 
-use eulerdyn::compare::{self, attitude_angle};
+use eulerdyn::analysis::compare::{self, attitude_angle};
 use eulerdyn::exact::TorqueFreeBody;
-use eulerdyn::model::{MethodName, Scene};
-use eulerdyn::output::Sample;
+use eulerdyn::method::Method;
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, RunReport};
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
@@ -99,7 +100,7 @@ impl Oracle {
     fn of(scene: &Scene) -> Self {
         let principal = scene.body.principal();
         let p_b = UnitQuaternion::from_rotation_matrix(&principal.axes_b);
-        let eulerdyn::model::MotionSpec::Free { omega0_b, .. } = &scene.motion else {
+        let eulerdyn::scene::MotionSpec::Free { omega0_b, .. } = &scene.motion else {
             panic!("free motion")
         };
         let exact = TorqueFreeBody::new(
@@ -454,7 +455,7 @@ fn exact_with_effects_is_refused_naming_the_method_and_the_effect() {
 #[test]
 fn the_ode_solvers_backend_runs_only_the_runge_kutta_methods() {
     let text = free_text("[1.0, 2.0, 3.0]", Vector3::new(0.3, 0.0, 2.0), 1.0, 0.1);
-    for method in MethodName::ALL {
+    for method in Method::ALL {
         let o = Overrides {
             method: Some(method.name().into()),
             backend: Some("ode_solvers".into()),
@@ -491,7 +492,7 @@ fn every_shipped_torque_free_and_effect_scenario_runs_with_the_splitting() {
         }
         let text = std::fs::read_to_string(&path).unwrap();
         let base = scene_from(&text, &Overrides::default());
-        let eulerdyn::model::MotionSpec::Free { omega0_b, .. } = &base.motion else {
+        let eulerdyn::scene::MotionSpec::Free { omega0_b, .. } = &base.motion else {
             continue;
         };
         let dt = 0.02 / omega0_b.norm().max(1.0);

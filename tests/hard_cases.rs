@@ -9,10 +9,11 @@ mod common;
 use std::convert::Infallible;
 use std::path::Path;
 
-use eulerdyn::compare::attitude_angle;
+use eulerdyn::analysis::compare::attitude_angle;
 use eulerdyn::exact::TorqueFreeBody;
-use eulerdyn::model::{MethodName, Scene};
-use eulerdyn::output::Sample;
+use eulerdyn::method::Method;
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, GuardedQuantity, RunError, RunReport};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -423,7 +424,7 @@ fn a_thin_rod_is_refused_with_a_clear_error_for_every_method() {
     // scene error naming the key and the reason, exit 2 from the CLI, no output file, never a NaN.
     let text = "[body]\nmass = 1.0\nshape = { type = \"thin_rod\", length = 1.0 }\n[initial]\nomega = [0.0, 1.0, 2.0]\n\
                 [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
-    for method in MethodName::ALL {
+    for method in Method::ALL {
         for frame in ["body", "space"] {
             let err = scene::parse(
                 Path::new("rod.toml"),
@@ -902,7 +903,7 @@ fn t_end_zero_gives_the_initial_row_with_every_method() {
             assert_eq!(rows[0].t, 0.0);
             assert_eq!(report.stats.steps, 0, "{s}");
             assert!(attitude_angle(&rows[0].q, &scene.attitude0) <= 1e-15, "{s}");
-            if let eulerdyn::model::MotionSpec::Free { omega0_b, .. } = &scene.motion {
+            if let eulerdyn::scene::MotionSpec::Free { omega0_b, .. } = &scene.motion {
                 assert!(
                     (rows[0].omega_b - omega0_b).norm() <= 1e-15 * omega0_b.norm(),
                     "{s}"

@@ -16,9 +16,9 @@
 use std::convert::Infallible;
 use std::path::Path;
 
-use eulerdyn::compare::attitude_angle;
-use eulerdyn::model::Scene;
-use eulerdyn::output::Sample;
+use eulerdyn::analysis::compare::attitude_angle;
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};

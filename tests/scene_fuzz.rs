@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use eulerdyn::report;
+use eulerdyn::app::report;
 use eulerdyn::scene::{self, Overrides, SceneError};
 use proptest::prelude::*;
 

@@ -4,8 +4,9 @@
 
 use std::path::Path;
 
-use eulerdyn::model::{BackendName, Frame, MethodName};
-use eulerdyn::study::{self, Measure, StudyError, StudyOptions, TABLE_COLUMNS, TARGETS};
+use eulerdyn::analysis::study::{self, Measure, StudyError, StudyOptions, TABLE_COLUMNS, TARGETS};
+use eulerdyn::frames::Form;
+use eulerdyn::method::{Backend, Method};
 
 /// The benchmark body, torque-free, 20 s with a row every 2 s (steps not limited by the rows).
 const FREE: &str = r#"name = "short-free"
@@ -97,8 +98,8 @@ fn the_table_starts_with_the_contract_columns_and_has_a_row_per_run() {
         assert_eq!(evals, row.evals);
         assert_eq!(record.get(16), Some("ok"));
     }
-    // Every method of MethodName::ALL that applies to a torque-free scene is there.
-    for method in MethodName::ALL {
+    // Every method of Method::ALL that applies to a torque-free scene is there.
+    for method in Method::ALL {
         assert!(
             s.rows.iter().any(|r| r.method_name == method),
             "{} missing; skipped: {:?}",
@@ -113,12 +114,12 @@ fn the_table_starts_with_the_contract_columns_and_has_a_row_per_run() {
 #[test]
 fn errors_fall_with_the_tolerance_and_the_step() {
     let s = quick_study(FREE);
-    for method in MethodName::ALL {
+    for method in Method::ALL {
         let curve: Vec<f64> = s
             .rows
             .iter()
-            .filter(|r| r.method_name == method && r.backend == BackendName::Own)
-            .filter(|r| r.frame == Frame::Body)
+            .filter(|r| r.method_name == method && r.backend == Backend::Own)
+            .filter(|r| r.frame == Form::Body)
             .map(|r| r.err_omega)
             .collect();
         if method.is_adaptive() {
@@ -209,7 +210,7 @@ fn without_a_closed_form_the_reference_is_a_dop853_run_and_exact_is_not_swept() 
         "{}",
         s.reference
     );
-    assert!(s.rows.iter().all(|r| r.method_name != MethodName::Exact));
+    assert!(s.rows.iter().all(|r| r.method_name != Method::Exact));
     assert!(
         s.skipped.iter().any(|k| k.method == "exact"),
         "{:?}",
@@ -220,7 +221,7 @@ fn without_a_closed_form_the_reference_is_a_dop853_run_and_exact_is_not_swept() 
     let tight = s
         .rows
         .iter()
-        .find(|r| r.method_name == MethodName::Dop853 && r.rtol == Some(1e-10))
+        .find(|r| r.method_name == Method::Dop853 && r.rtol == Some(1e-10))
         .expect("dop853 at 1e-10");
     assert!(tight.err_omega < 1e-8, "{}", tight.err_omega);
 }

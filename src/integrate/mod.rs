@@ -68,6 +68,9 @@ mod schedule;
 
 pub use schedule::{Schedule, ScheduleError, ScheduleIter};
 
+use crate::method::defaults;
+pub use crate::method::{Backend, Method};
+
 /// Right-hand side y' = f(t, y) of a system with `N` real states.
 ///
 /// The integrators are monomorphised over the implementing type (no dynamic dispatch in the
@@ -84,36 +87,6 @@ pub trait OdeSystem<const N: usize> {
     /// derivative is re-evaluated at the projected state, costing one extra evaluation.)
     /// With the ode_solvers backend it runs once per row interval.
     fn project(&self, _y: &mut SVector<f64, N>) {}
-}
-
-/// Integration method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Method {
-    /// Classical Runge–Kutta of order 4 (HNW I, §II.1, Table 1.2, "the" Runge–Kutta method),
-    /// fixed step h ≤ [`Settings::dt`]: between consecutive rows t_a < t_b it takes
-    /// n = ⌈(t_b − t_a)/dt⌉ equal steps h = (t_b − t_a)/n at times t_a + i·h.
-    Rk4,
-    /// Dormand–Prince 5(4) (HNW I, §II.5, Table 5.2) with FSAL (6 evaluations per step),
-    /// local extrapolation, the error norm of HNW I eq. (4.11) and Hairer's `dopri5.f`
-    /// controller: safety 0.9, 0.2 ≤ h_new/h ≤ 10, PI (Lund) stabilisation β = 0.04 (HNW II §IV.2),
-    /// exponent 1/5 − 0.75β.
-    Dopri5,
-    /// Dormand–Prince 8(5,3) with Hairer's `dop853.f` coefficients and error estimator
-    /// (12 stages, 12 evaluations per accepted step, HNW I §II.5), controller
-    /// safety 0.9, 1/3 ≤ h_new/h ≤ 6, β = 0, exponent 1/8.
-    Dop853,
-}
-
-/// Which implementation runs the [`Method`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum Backend {
-    /// The implementations in this module (default): exact row landing, projection after every
-    /// step, no heap allocation per step.
-    #[default]
-    Own,
-    /// The same method through `ode_solvers` 0.6.2 (cross-check). One short solve per row
-    /// interval; see [`ode_solvers_path`] for the workarounds applied.
-    OdeSolvers,
 }
 
 /// Integrator settings.
@@ -139,15 +112,16 @@ pub struct Settings {
 }
 
 impl Default for Settings {
-    /// DOP853 on the own backend, rtol = 1e-10, atol = 1e-12, dt = 1e-3, max_steps = 10^8.
+    /// The scene defaults of [`crate::method::defaults`]: DOP853 on the own backend, rtol = 1e-10, atol = 1e-12,
+    /// dt = 1e-3, max_steps = 10^8.
     fn default() -> Self {
         Self {
-            method: Method::Dop853,
+            method: Method::DEFAULT,
             backend: Backend::Own,
-            rtol: 1e-10,
-            atol: 1e-12,
-            dt: 1e-3,
-            max_steps: 100_000_000,
+            rtol: defaults::RTOL,
+            atol: defaults::ATOL,
+            dt: defaults::DT,
+            max_steps: defaults::MAX_STEPS,
         }
     }
 }
@@ -175,6 +149,7 @@ impl Settings {
                     return Err(format!("atol = {} must be positive and finite", self.atol));
                 }
             }
+            other => return Err(not_runge_kutta(other)),
         }
         Ok(())
     }
@@ -316,7 +291,18 @@ where
             adaptive::run::<dop853::Dop853, N, S, E, F>(sys, y0, schedule, settings, &mut on_row)
         }
         (Backend::OdeSolvers, _) => ode_solvers_path::run(sys, y0, schedule, settings, &mut on_row),
+        (Backend::Own, other) => Err(IntegrateError::InvalidSettings {
+            reason: not_runge_kutta(other),
+        }),
     }
+}
+
+/// Why a method that is not a Runge–Kutta method cannot run here.
+fn not_runge_kutta(method: Method) -> String {
+    format!(
+        "method \"{}\" is not a Runge–Kutta method; it has a driver of its own (splitting or closed form)",
+        method.name()
+    )
 }
 
 /// True if every component is finite.

@@ -218,6 +218,11 @@ where
                 let y_end = solver.y_out().last().cloned();
                 r.map(|s| (s, None, y_end))
             }
+            other => {
+                return Err(IntegrateError::InvalidSettings {
+                    reason: super::not_runge_kutta(other),
+                });
+            }
         };
         let (s, bad, y_end) = match outcome {
             Ok(v) => v,

@@ -17,11 +17,11 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use crate::exact::{ExactError, TorqueFreeBody};
+use crate::frames::Form;
 use crate::integrate::{IntegrateError, Schedule, Stats};
 use crate::kinetics::kinetic_energy;
-use crate::model::Frame;
 use crate::motion::free::FreeBody;
-use crate::output::Sample;
+use crate::sample::Sample;
 
 /// The closed-form torque-free motion of a [`FreeBody`] from ω_b(0) and q_b(0).
 #[derive(Debug, Clone)]
@@ -56,16 +56,16 @@ impl ExactFlow {
     }
 
     /// The row at time t in the form `frame` (module docs). M = 0: the flow is torque-free.
-    pub fn sample(&self, t: f64, frame: Frame) -> Sample {
+    pub fn sample(&self, t: f64, frame: Form) -> Sample {
         let q = self.exact.attitude(t) * self.axes_q.inverse();
         let moments = self.body.principal_moments();
         let (omega_b, h_b, h_s) = match frame {
-            Frame::Body => {
+            Form::Body => {
                 let omega_p = self.exact.omega_p(t);
                 let h_b = self.axes_q * omega_p.component_mul(moments);
                 (self.axes_q * omega_p, h_b, q * h_b)
             }
-            Frame::Space => {
+            Form::Space => {
                 let h_s = self.exact.h_s();
                 let h_b = q.inverse_transform_vector(&h_s);
                 (self.body.inertia_inv_b() * h_b, h_b, h_s)
@@ -92,7 +92,7 @@ impl ExactFlow {
     pub fn run<E>(
         &self,
         schedule: &Schedule,
-        frame: Frame,
+        frame: Form,
         mut on_row: impl FnMut(&Sample) -> Result<(), E>,
     ) -> Result<Stats, IntegrateError<E>> {
         let mut stats = Stats::default();

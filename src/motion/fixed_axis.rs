@@ -6,9 +6,9 @@
 use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
+use crate::frames::Form;
 use crate::kinetics::kinetic_energy;
-use crate::model::Frame;
-use crate::output::Sample;
+use crate::sample::Sample;
 
 /// Rotation about a fixed axis through the fixed point A: θ(t) = θ̇₀ t + ½ θ̈ t², attitude
 /// R(t) = Rot(a_s, θ(t))·R₀ with a_s = R₀ a_b, so that the axis a_b is fixed in the body and in space.
@@ -190,17 +190,17 @@ impl FixedAxis {
     /// The full kinetic state at time t, with the required moment computed in the form `frame` selects (the other
     /// frame's components by rotation): body form [`FixedAxis::moment_b`], space form [`FixedAxis::moment_s`].
     /// Energy is ½ ω·H_A, the body's whole kinetic energy since A is fixed.
-    pub fn sample(&self, t: f64, frame: Frame) -> Sample {
+    pub fn sample(&self, t: f64, frame: Form) -> Sample {
         let angle = self.angle(t);
         let q = self.attitude(angle.theta);
         let omega_b = self.omega_b(&angle);
         let h_b = self.h_b(&angle);
         let (m_b, m_s) = match frame {
-            Frame::Body => {
+            Form::Body => {
                 let m_b = self.moment_b(&angle);
                 (m_b, q * m_b)
             }
-            Frame::Space => {
+            Form::Space => {
                 let m_s = self.moment_s(&angle);
                 (q.inverse() * m_s, m_s)
             }

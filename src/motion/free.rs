@@ -8,10 +8,10 @@ use nalgebra::{Matrix3, Quaternion, Rotation3, SVector, UnitQuaternion, Vector3}
 
 use crate::body::RigidBody;
 use crate::effects::{Effect, TorqueSum};
+use crate::frames::{Axes, Form};
 use crate::integrate::OdeSystem;
 use crate::kinetics::kinetic_energy;
-use crate::model::Frame;
-use crate::output::Sample;
+use crate::sample::Sample;
 
 /// State vector of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z).
 pub type State = SVector<f64, 7>;
@@ -91,12 +91,12 @@ impl EffectMoments {
         for effect in effects {
             match effect {
                 Effect::Torque {
-                    frame: Frame::Body,
+                    frame: Axes::Body,
                     value,
                     profile,
                 } => torques_b.add(value, profile),
                 Effect::Torque {
-                    frame: Frame::Space,
+                    frame: Axes::Space,
                     value,
                     profile,
                 } => torques_s.add(value, profile),
@@ -534,13 +534,13 @@ impl StateRotation {
 /// The initial state of the form `frame` from ω_b(0) and q(0).
 pub fn initial_state(
     body: &FreeBody,
-    frame: Frame,
+    frame: Form,
     omega0_b: &Vector3<f64>,
     q0: &UnitQuaternion<f64>,
 ) -> State {
     let first = match frame {
-        Frame::Body => *omega0_b,
-        Frame::Space => q0 * (body.inertia_b * omega0_b),
+        Form::Body => *omega0_b,
+        Form::Space => q0 * (body.inertia_b * omega0_b),
     };
     State::from([first[0], first[1], first[2], q0.w, q0.i, q0.j, q0.k])
 }
@@ -549,22 +549,22 @@ pub fn initial_state(
 pub fn sample<M: AppliedMoment>(
     body: &FreeBody,
     moment: &M,
-    frame: Frame,
+    frame: Form,
     t: f64,
     y: &State,
 ) -> Sample {
     let q = attitude(y);
     let first = Vector3::new(y[0], y[1], y[2]);
     let (omega_b, h_b) = match frame {
-        Frame::Body => (first, body.inertia_b * first),
-        Frame::Space => {
+        Form::Body => (first, body.inertia_b * first),
+        Form::Space => {
             let h_b = q.inverse_transform_vector(&first);
             (body.omega_b_of(&h_b), h_b)
         }
     };
     let h_s = match frame {
-        Frame::Body => q * h_b,
-        Frame::Space => first,
+        Form::Body => q * h_b,
+        Form::Space => first,
     };
     let m_b = moment.moment_b(t, &q, &omega_b);
     free_sample(t, q, omega_b, h_b, h_s, m_b)
@@ -687,7 +687,7 @@ mod tests {
     fn both_forms_right_hand_sides_agree_with_the_matrix_path() {
         let body = principal_body([1.0, 2.0, 3.0]);
         let effects = [Effect::Torque {
-            frame: Frame::Body,
+            frame: Axes::Body,
             value: v(0.5, 0.0, 0.0),
             profile: TorqueProfile::Sine {
                 freq_hz: 0.5,
@@ -751,8 +751,8 @@ mod tests {
                         }
                     };
                     match frame {
-                        Frame::Body => value * factor,
-                        Frame::Space => q.inverse_transform_vector(&(value * factor)),
+                        Axes::Body => value * factor,
+                        Axes::Space => q.inverse_transform_vector(&(value * factor)),
                     }
                 }
                 Effect::Gravity { g_s, pivot_b } => {
@@ -774,7 +774,7 @@ mod tests {
             t_off: 2.5,
         };
         let mut effects = Vec::new();
-        for frame in [Frame::Body, Frame::Space] {
+        for frame in [Axes::Body, Axes::Space] {
             for (value, profile) in [
                 (v(0.2, -0.1, 0.3), TorqueProfile::Constant),
                 (v(0.5, 0.25, -0.4), sine),

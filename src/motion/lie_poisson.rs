@@ -81,10 +81,10 @@
 
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
+use crate::frames::Form;
 use crate::integrate::{IntegrateError, Schedule, Stats, rk4_substeps};
-use crate::model::Frame;
 use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree, free_sample};
-use crate::output::Sample;
+use crate::sample::Sample;
 use crate::trig::small_sin_cos;
 
 /// How the order-2 Strang step is composed into one step of size h.
@@ -234,7 +234,7 @@ fn unit(q: &[f64; 4]) -> UnitQuaternion<f64> {
 pub struct LiePoisson<K: KickMoment> {
     scheme: Scheme,
     weights: Vec<f64>,
-    frame: Frame,
+    frame: Form,
     moments_p: [f64; 3],
     /// Principal axes P (v_b = P v_p) and as a quaternion; `identity` when the body axes are principal.
     axes_b: Rotation3<f64>,
@@ -332,7 +332,7 @@ pub enum Splitting {
 impl<K: KickMoment> LiePoisson<K> {
     /// The splitting of `body` (about its moment center) in the form `frame`, composed by `scheme`, with the
     /// applied moment `kick`.
-    pub fn new(body: &FreeBody, frame: Frame, scheme: Scheme, kick: K) -> Self {
+    pub fn new(body: &FreeBody, frame: Form, scheme: Scheme, kick: K) -> Self {
         let moments = *body.principal_moments();
         let axes_b = *body.principal_axes_b();
         let identity = axes_b == Rotation3::identity();
@@ -433,11 +433,11 @@ impl<K: KickMoment> LiePoisson<K> {
             q0_b * self.axes_q
         };
         let h = match self.frame {
-            Frame::Body => {
+            Form::Body => {
                 let omega_p = self.axes_b.inverse_transform_vector(omega0_b);
                 Vector3::from_fn(|i, _| self.moments_p[i] * omega_p[i])
             }
-            Frame::Space => q0_b * (body.inertia_b() * omega0_b),
+            Form::Space => q0_b * (body.inertia_b() * omega0_b),
         };
         SplitState {
             h,
@@ -461,8 +461,8 @@ impl<K: KickMoment> LiePoisson<K> {
     /// H in principal axes: the state (body form) or q_p⁻¹ H_s (space form).
     pub fn h_p(&self, y: &SplitState) -> Vector3<f64> {
         match self.frame {
-            Frame::Body => y.h,
-            Frame::Space => unit(&y.q_p).inverse_transform_vector(&y.h),
+            Form::Body => y.h,
+            Form::Space => unit(&y.q_p).inverse_transform_vector(&y.h),
         }
     }
 
@@ -478,8 +478,8 @@ impl<K: KickMoment> LiePoisson<K> {
             (self.axes_b * omega_p, self.axes_b * h_p)
         };
         let h_s = match self.frame {
-            Frame::Body => q * h_b,
-            Frame::Space => y.h,
+            Form::Body => q * h_b,
+            Form::Space => y.h,
         };
         let m_b = self.kick.moment_b(t, &q, &omega_b);
         free_sample(t, q, omega_b, h_b, h_s, m_b)
@@ -502,8 +502,8 @@ impl<K: KickMoment> LiePoisson<K> {
     #[inline(always)]
     fn turn(&self, i: usize, tau: f64, y: &mut SplitState) -> u64 {
         match self.frame {
-            Frame::Body => self.turn_in::<true>(i, tau, y),
-            Frame::Space => self.turn_in::<false>(i, tau, y),
+            Form::Body => self.turn_in::<true>(i, tau, y),
+            Form::Space => self.turn_in::<false>(i, tau, y),
         }
     }
 
@@ -553,8 +553,8 @@ impl<K: KickMoment> LiePoisson<K> {
     #[inline(always)]
     fn turn_about_h(&self, tau: f64, y: &mut SplitState) -> u64 {
         match self.frame {
-            Frame::Body => self.turn_about_h_in::<true>(tau, y),
-            Frame::Space => self.turn_about_h_in::<false>(tau, y),
+            Form::Body => self.turn_about_h_in::<true>(tau, y),
+            Form::Space => self.turn_about_h_in::<false>(tau, y),
         }
     }
 
@@ -600,7 +600,7 @@ impl<K: KickMoment> LiePoisson<K> {
         let c = self.kick.damping_c();
         if c == 0.0 {
             match self.frame {
-                Frame::Body => {
+                Form::Body => {
                     let rest_p = if self.identity {
                         rest_b
                     } else {
@@ -608,7 +608,7 @@ impl<K: KickMoment> LiePoisson<K> {
                     };
                     y.h += rest_p * tau;
                 }
-                Frame::Space => compensated_add(&mut y.h, &mut y.h_lo, &(q_b * rest_b * tau)),
+                Form::Space => compensated_add(&mut y.h, &mut y.h_lo, &(q_b * rest_b * tau)),
             }
             return;
         }
@@ -619,16 +619,16 @@ impl<K: KickMoment> LiePoisson<K> {
             self.axes_b.inverse_transform_vector(&rest_b)
         };
         let h_p = match self.frame {
-            Frame::Body => y.h,
-            Frame::Space => q_p.inverse_transform_vector(&y.h),
+            Form::Body => y.h,
+            Form::Space => q_p.inverse_transform_vector(&y.h),
         };
         let increment_p = Vector3::from_fn(|i, _| {
             let k = c / self.moments_p[i];
             (rest_p[i] - k * h_p[i]) * tau * phi1(-k * tau)
         });
         match self.frame {
-            Frame::Body => y.h += increment_p,
-            Frame::Space => compensated_add(&mut y.h, &mut y.h_lo, &(q_p * increment_p)),
+            Form::Body => y.h += increment_p,
+            Form::Space => compensated_add(&mut y.h, &mut y.h_lo, &(q_p * increment_p)),
         }
     }
 
@@ -659,8 +659,8 @@ impl<K: KickMoment> LiePoisson<K> {
     #[inline(always)]
     fn step_fused(&self, h: f64, y: &mut SplitState) {
         match self.frame {
-            Frame::Body => self.step_fused_in::<true>(h, y),
-            Frame::Space => self.step_fused_in::<false>(h, y),
+            Form::Body => self.step_fused_in::<true>(h, y),
+            Form::Space => self.step_fused_in::<false>(h, y),
         }
     }
 
@@ -717,7 +717,7 @@ impl<K: KickMoment> LiePoisson<K> {
             }
         }
         Self::normalise(y);
-        if K::ZERO && self.frame == Frame::Body {
+        if K::ZERO && self.frame == Form::Body {
             Self::rescale(y);
         }
         evals
@@ -905,7 +905,7 @@ mod tests {
     fn sub_flow_matches_euler_and_keeps_h_s() {
         // A tiny step of T₁ alone: Ḣ_p = H_p × (H₁/I₁) e₁ and q̇ = ½ q ⊗ (H₁/I₁) e₁ to first order; H_s unchanged.
         let b = body([1.0, 2.0, 3.0]);
-        let lp = LiePoisson::new(&b, Frame::Body, Scheme::Strang, TorqueFree)
+        let lp = LiePoisson::new(&b, Form::Body, Scheme::Strang, TorqueFree)
             .with_splitting(Splitting::Planar);
         let q0 = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
         let mut y = lp.initial_state(&b, &Vector3::new(0.7, -0.4, 0.2), &q0);
@@ -930,7 +930,7 @@ mod tests {
         let b = body([1.0, 2.0, 3.0]);
         let q0 = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
         let omega0 = Vector3::new(0.7, -0.4, 0.2);
-        for frame in [Frame::Body, Frame::Space] {
+        for frame in [Form::Body, Form::Space] {
             let lp = LiePoisson::new(&b, frame, Scheme::Strang, TorqueFree);
             assert_eq!(lp.splitting(), Splitting::Casimir);
             let mut y = lp.initial_state(&b, &omega0, &q0);
@@ -998,7 +998,7 @@ mod tests {
         let omega0 = Vector3::new(0.3, 0.1, 2.0);
         let h = 0.01;
         for b in [body([1.0, 2.0, 3.0]), tilted] {
-            for frame in [Frame::Body, Frame::Space] {
+            for frame in [Form::Body, Form::Space] {
                 for splitting in [Splitting::Casimir, Splitting::Planar] {
                     for scheme in [Scheme::Strang, Scheme::Suzuki4] {
                         let mut lp = LiePoisson::new(&b, frame, scheme, TorqueFree)
@@ -1034,13 +1034,13 @@ mod tests {
         let b = body([1.0, 2.0, 3.0]);
         let m_s = Vector3::new(1e-3, 3e-4, 1e-3);
         let torque = crate::effects::Effect::Torque {
-            frame: Frame::Space,
+            frame: crate::frames::Axes::Space,
             value: m_s,
             profile: crate::effects::TorqueProfile::Constant,
         };
         let mut lp = LiePoisson::new(
             &b,
-            Frame::Space,
+            Form::Space,
             Scheme::Strang,
             EffectMoments::new(&[torque], 1.0),
         );
@@ -1071,7 +1071,7 @@ mod tests {
             UnitQuaternion::identity(),
         )
         .unwrap();
-        let mut lp = LiePoisson::new(&b, Frame::Body, Scheme::Strang, TorqueFree);
+        let mut lp = LiePoisson::new(&b, Form::Body, Scheme::Strang, TorqueFree);
         let mut y = lp.initial_state(&b, &omega0, &UnitQuaternion::identity());
         let h = 0.5; // |ω| h ≈ 1.5 rad per step
         let mut evals = 0;

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use tempfile::NamedTempFile;
 
 /// A file being written; becomes `path` on [`AtomicFile::commit`]. Its temporary file is registered with
-/// [`crate::interrupt`] so that an interrupt removes it (a file dropped without commit is removed by
+/// [`crate::app::interrupt`] so that an interrupt removes it (a file dropped without commit is removed by
 /// `NamedTempFile` and stays registered: removing it again on interrupt is a harmless no-op).
 pub struct AtomicFile {
     path: PathBuf,
@@ -48,7 +48,7 @@ impl AtomicFile {
         // tempfile creates 0600; an output file gets the usual rw-r--r--.
         temp.as_file()
             .set_permissions(std::fs::Permissions::from_mode(0o644))?;
-        crate::interrupt::register(temp.path());
+        crate::app::interrupt::register(temp.path());
         Ok(Self {
             path: path.to_path_buf(),
             temp,
@@ -70,7 +70,7 @@ impl AtomicFile {
         self.temp.as_file().sync_all()?;
         let temp_path = self.temp.path().to_path_buf();
         let result = self.temp.persist(&self.path).map_err(|e| e.error);
-        crate::interrupt::unregister(&temp_path);
+        crate::app::interrupt::unregister(&temp_path);
         result.map(|_| ())
     }
 }

@@ -3,7 +3,7 @@
 
 use std::io::{self, BufWriter, Write};
 
-use super::sample::{ColumnSet, Sample};
+use crate::sample::{ColumnSet, Sample};
 
 /// Writes samples as CSV rows to any writer.
 pub struct CsvWriter<W: Write> {

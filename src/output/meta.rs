@@ -3,10 +3,10 @@
 
 use serde_json::{Value, json};
 
-use crate::model::{MotionSpec, Scene};
+use crate::scene::{MotionSpec, Scene};
 use crate::simulate::RunReport;
 
-use super::sample::Column;
+use crate::sample::Column;
 
 /// The sidecar document for a run of `scene` (read from `scene_path`, whose text is `scene_text`).
 pub fn sidecar(

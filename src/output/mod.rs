@@ -4,9 +4,7 @@ pub mod atomic;
 pub mod csv_writer;
 pub mod meta;
 pub mod plot;
-pub mod sample;
 pub mod work_precision;
 
 pub use atomic::AtomicFile;
 pub use csv_writer::CsvWriter;
-pub use sample::{Column, ColumnSet, Sample};

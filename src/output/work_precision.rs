@@ -1,6 +1,6 @@
 //! The work-precision figure of `eulerdyn accuracy`: error against wall time, both on log scales, a curve per
 //! method and form (solid: body form, dashed: space form), a marker per run, and grey lines at the error levels
-//! the summary names ([`crate::study::TARGETS`]).
+//! the summary names ([`crate::analysis::study::TARGETS`]).
 //!
 //! Drawn with plotters' SVG backend (pure Rust, no font libraries: the SVG names the font family and the viewer
 //! renders the text). Log scales are drawn as log10 of the values on linear axes, labelled at every decade.
@@ -11,8 +11,8 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::plot::{decade_label, decade_range};
-use crate::model::Frame;
-use crate::study::{Study, TARGETS};
+use crate::analysis::study::{Study, TARGETS};
+use crate::frames::Form;
 
 /// The smallest error drawn; smaller values (an exact 0) are drawn at it.
 pub const ERROR_FLOOR: f64 = 1e-17;
@@ -69,7 +69,7 @@ fn curves(study: &Study) -> Vec<Curve> {
             None => curves.push(Curve {
                 label,
                 color: PALETTE[method_index % PALETTE.len()],
-                dashed: row.frame == Frame::Space,
+                dashed: row.frame == Form::Space,
                 points: vec![point],
             }),
         }

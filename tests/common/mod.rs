@@ -8,7 +8,7 @@ use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use eulerdyn::output::Sample;
+use eulerdyn::sample::Sample;
 
 /// A free-motion scene: asymmetric body, torque-free, t_end = 1 s, a row every 0.1 s.
 pub const FREE_SCENE: &str = r#"name = "free"

@@ -9,9 +9,11 @@ use nalgebra::{UnitQuaternion, Vector3};
 
 use crate::effects::{Effect, TorqueProfile};
 use crate::exact::{AxialTorqueSymmetric, TorqueFreeBody};
+use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
-use crate::model::{Frame, MethodName, MotionSpec, Scene};
-use crate::output::Sample;
+use crate::method::Method;
+use crate::sample::Sample;
+use crate::scene::{MotionSpec, Scene};
 use crate::simulate::{self, RunError};
 
 /// A closed-form solution that applies to a scene.
@@ -57,7 +59,7 @@ impl Oracle {
             }
             [
                 Effect::Torque {
-                    frame: Frame::Body,
+                    frame: Axes::Body,
                     value,
                     profile: TorqueProfile::Constant,
                 },
@@ -309,13 +311,13 @@ impl Comparison {
 /// closed form, read two ways; for the splitting methods both forms are the same map.
 fn method_note(scene: &Scene) -> Option<String> {
     match (scene.solver.method, &scene.motion) {
-        (MethodName::Exact, MotionSpec::Free { .. }) => Some(
+        (Method::Exact, MotionSpec::Free { .. }) => Some(
             "method exact: both forms are the closed form — body: omega from the Jacobi functions; space: omega \
              from the closed-form attitude and the constant H_s — so \"body vs space\" checks the attitude \
              against omega, and \"vs exact\" the rows against the oracle"
                 .into(),
         ),
-        (MethodName::Split2 | MethodName::Split4, MotionSpec::Free { .. }) => Some(format!(
+        (Method::Split2 | Method::Split4, MotionSpec::Free { .. }) => Some(format!(
             "method {}: the body form turns H_p, the space form keeps H_s; the two are the same map in exact \
              arithmetic, so \"body vs space\" is round-off (amplified where the motion is unstable, as near \
              the separatrix)",
@@ -333,9 +335,9 @@ pub struct HandOver;
 /// Runs the scene in both frames (in lockstep) and against its closed form.
 pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
     let mut body_scene = scene.clone();
-    body_scene.solver.frame = Frame::Body;
+    body_scene.solver.frame = Form::Body;
     let mut space_scene = scene.clone();
-    space_scene.solver.frame = Frame::Space;
+    space_scene.solver.frame = Form::Space;
     let oracle = Oracle::for_scene(scene);
     let (sender, receiver) = mpsc::sync_channel::<Sample>(1024);
     let space_run = thread::spawn(move || {

@@ -9,8 +9,10 @@ use nalgebra::{Matrix3, Vector3};
 
 use crate::body::Principal;
 use crate::effects::{Effect, TorqueProfile};
-use crate::model::{Frame, MethodName, MotionSpec, Scene};
-use crate::output::sample::BASE_COLUMNS;
+use crate::frames::Form;
+use crate::method::Method;
+use crate::sample::BASE_COLUMNS;
+use crate::scene::{MotionSpec, Scene};
 use crate::simulate;
 
 /// Width of the label column.
@@ -84,8 +86,8 @@ pub fn tilt_from_principal(principal: &Principal, axis: &Vector3<f64>) -> (f64, 
 pub fn adaptive_steps_estimate(scene: &Scene, rate: f64) -> Option<f64> {
     let s = &scene.solver;
     let (order, c) = match s.method {
-        MethodName::Dopri5 => (5.0, 4.0),
-        MethodName::Dop853 => (8.0, 5.0),
+        Method::Dopri5 => (5.0, 4.0),
+        Method::Dop853 => (8.0, 5.0),
         _ => return None,
     };
     let intervals = scene.schedule.len().saturating_sub(1) as f64;
@@ -394,14 +396,11 @@ pub fn describe(scene: &Scene) -> String {
     // Equation, method, output, steps.
     let s = &scene.solver;
     let form = match s.frame {
-        Frame::Body => "body axes: I*omega' + omega x I*omega = M",
-        Frame::Space => "space axes: dH_s/dt = M_s with I_s(theta)",
+        Form::Body => "body axes: I*omega' + omega x I*omega = M",
+        Form::Space => "space axes: dH_s/dt = M_s with I_s(theta)",
     };
     line(w, "equation", form);
-    let runge_kutta = matches!(
-        s.method,
-        MethodName::Rk4 | MethodName::Dopri5 | MethodName::Dop853
-    );
+    let runge_kutta = matches!(s.method, Method::Rk4 | Method::Dopri5 | Method::Dop853);
     let backend = if runge_kutta {
         format!(" ({} backend)", s.backend.name())
     } else {

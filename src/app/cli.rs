@@ -8,11 +8,12 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
-use crate::model::Scene;
+use crate::app::progress::{self, Progress};
+use crate::app::report;
 use crate::output::plot::{self, Panel, PlotError};
-use crate::output::{AtomicFile, ColumnSet, CsvWriter, meta};
-use crate::progress::{self, Progress};
-use crate::report;
+use crate::output::{AtomicFile, CsvWriter, meta};
+use crate::sample::ColumnSet;
+use crate::scene::Scene;
 use crate::scene::{self, Overrides, SceneError};
 use crate::simulate::{self, RunError, RunReport};
 
@@ -148,7 +149,7 @@ impl From<SceneError> for Failure {
 /// Parses the command line, runs the command, prints messages, and returns the exit code.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
-    if let Err(e) = crate::interrupt::install() {
+    if let Err(e) = crate::app::interrupt::install() {
         eprintln!(
             "warning: cannot handle interrupts ({e}); an interrupted run may leave a temporary file"
         );
@@ -201,7 +202,7 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
         "running both forms and the closed form",
         progress::wanted(quiet),
     );
-    let comparison = crate::compare::compare(&scene);
+    let comparison = crate::analysis::compare::compare(&scene);
     spinner.finish();
     let comparison =
         comparison.map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
@@ -342,11 +343,11 @@ fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
 fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
     let table = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let mut progress = None;
-    let result = crate::study::run_accuracy_command(
+    let result = crate::analysis::study::run_accuracy_command(
         &args.scene,
         table,
         args.plot.as_deref(),
-        &crate::study::StudyOptions::default(),
+        &crate::analysis::study::StudyOptions::default(),
         |done, total, _label| {
             progress
                 .get_or_insert_with(|| {

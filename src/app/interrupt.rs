@@ -18,7 +18,7 @@ pub fn install() -> Result<(), String> {
         for path in &pending {
             let _ = std::fs::remove_file(path);
         }
-        crate::progress::clear();
+        crate::app::progress::clear();
         eprintln!("error: interrupted; no output file was written or changed");
         std::process::exit(EXIT_INTERRUPTED);
     })

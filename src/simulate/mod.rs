@@ -10,13 +10,15 @@ use std::time::Instant;
 
 use nalgebra::{SVector, Vector3};
 
+use crate::frames::Form;
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats};
-use crate::model::{BackendName, Frame, MethodName, MotionSpec, Scene};
+use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, EffectMoments, FreeBody, SpaceForm, TorqueFree};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme, run_fixed_step};
-use crate::output::{ColumnSet, Sample};
+use crate::sample::{ColumnSet, Sample};
+use crate::scene::{MotionSpec, Scene};
 
 /// What a finished run did.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -186,16 +188,16 @@ impl DivergenceGuard {
         let i_min = body.principal_moments().min();
         let s = &scene.solver;
         let accuracy = match s.method {
-            MethodName::Dopri5 | MethodName::Dop853 => {
+            Method::Dopri5 | Method::Dop853 => {
                 let omega0 = (2.0 * e0 / i_min).sqrt();
                 let scale = 1f64.min(omega0).min(h0_b.norm()).max(f64::MIN_POSITIVE);
                 Accuracy::Tolerance(s.rtol + s.atol / scale)
             }
-            MethodName::Rk4 | MethodName::Split2 | MethodName::Split4 => Accuracy::Step {
+            Method::Rk4 | Method::Split2 | Method::Split4 => Accuracy::Step {
                 dt: s.dt,
                 order: s.method.order().map_or(1, |p| p as i32),
             },
-            MethodName::Exact => Accuracy::RoundOff,
+            Method::Exact => Accuracy::RoundOff,
         };
         Some(Self {
             e0,
@@ -207,10 +209,10 @@ impl DivergenceGuard {
             conserved: scene.effects.is_empty(),
             accuracy,
             hint: match s.method {
-                MethodName::Rk4 => HINT_RK4,
-                MethodName::Split2 | MethodName::Split4 => HINT_SPLIT,
-                MethodName::Dopri5 | MethodName::Dop853 => HINT_ADAPTIVE,
-                MethodName::Exact => HINT_EXACT,
+                Method::Rk4 => HINT_RK4,
+                Method::Split2 | Method::Split4 => HINT_SPLIT,
+                Method::Dopri5 | Method::Dop853 => HINT_ADAPTIVE,
+                Method::Exact => HINT_EXACT,
             },
         })
     }
@@ -325,18 +327,18 @@ enum Runner {
 fn runner(scene: &Scene) -> Runner {
     let s = &scene.solver;
     let method = match s.method {
-        MethodName::Split2 => return Runner::Splitting(Scheme::Strang),
-        MethodName::Split4 => return Runner::Splitting(Scheme::Suzuki4),
-        MethodName::Exact => return Runner::Exact,
-        MethodName::Rk4 => integrate::Method::Rk4,
-        MethodName::Dopri5 => integrate::Method::Dopri5,
-        MethodName::Dop853 => integrate::Method::Dop853,
+        Method::Split2 => return Runner::Splitting(Scheme::Strang),
+        Method::Split4 => return Runner::Splitting(Scheme::Suzuki4),
+        Method::Exact => return Runner::Exact,
+        Method::Rk4 => integrate::Method::Rk4,
+        Method::Dopri5 => integrate::Method::Dopri5,
+        Method::Dop853 => integrate::Method::Dop853,
     };
     Runner::RungeKutta(integrate::Settings {
         method,
         backend: match s.backend {
-            BackendName::Own => integrate::Backend::Own,
-            BackendName::OdeSolvers => integrate::Backend::OdeSolvers,
+            Backend::Own => integrate::Backend::Own,
+            Backend::OdeSolvers => integrate::Backend::OdeSolvers,
         },
         rtol: s.rtol,
         atol: s.atol,
@@ -453,14 +455,14 @@ fn run_free<M: KickMoment + Clone, E>(
     let y0 = free::initial_state(body, frame, omega0_b, &scene.attitude0);
     let on_row = |t: f64, y: &free::State| sink(&free::sample(body, &moment, frame, t, y));
     match frame {
-        Frame::Body => {
+        Form::Body => {
             let mut system = BodyForm {
                 body: *body,
                 moment: moment.clone(),
             };
             integrate::integrate(&mut system, y0, &scene.schedule, &settings, on_row)
         }
-        Frame::Space => {
+        Form::Space => {
             let mut system = SpaceForm {
                 body: *body,
                 moment: moment.clone(),
@@ -474,7 +476,7 @@ fn run_free<M: KickMoment + Clone, E>(
 /// scene's frame selects.
 struct RequiredMomentRate<'a> {
     motion: &'a FixedAxis,
-    frame: Frame,
+    frame: Form,
 }
 
 impl RequiredMomentRate<'_> {
@@ -482,8 +484,8 @@ impl RequiredMomentRate<'_> {
     fn moment_s(&self, t: f64) -> Vector3<f64> {
         let angle = self.motion.angle(t);
         match self.frame {
-            Frame::Space => self.motion.moment_s(&angle),
-            Frame::Body => self.motion.attitude(angle.theta) * self.motion.moment_b(&angle),
+            Form::Space => self.motion.moment_s(&angle),
+            Form::Body => self.motion.attitude(angle.theta) * self.motion.moment_b(&angle),
         }
     }
 }

@@ -1,6 +1,6 @@
 //! `eulerdyn accuracy`: the work-precision study of a scene — what each digit of accuracy costs in time.
 //!
-//! Every method of [`MethodName::ALL`] that the scene accepts is run over a sweep: adaptive methods over the
+//! Every method of [`Method::ALL`] that the scene accepts is run over a sweep: adaptive methods over the
 //! relative tolerances 1e-3 … 1e-13 (one per decade), fixed-step methods over step sizes halved from a coarse start.
 //! Each run is compared, row by row while it streams, with a reference:
 //!
@@ -48,9 +48,12 @@ use std::time::Instant;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use crate::compare::{Oracle, attitude_angle};
-use crate::model::{BackendName, Frame, MethodName, Scene};
-use crate::output::{AtomicFile, Sample};
+use crate::analysis::compare::{Oracle, attitude_angle};
+use crate::frames::Form;
+use crate::method::{Backend, Method};
+use crate::output::AtomicFile;
+use crate::sample::Sample;
+use crate::scene::Scene;
 use crate::scene::{self, Overrides, SceneError};
 use crate::simulate;
 
@@ -96,9 +99,9 @@ pub struct StudyOptions {
     /// Timed repeats of a run (the median is reported); fewer for slow runs.
     pub repeats: usize,
     /// Backends swept; ode_solvers curves are labelled `method/ode_solvers`.
-    pub backends: Vec<BackendName>,
+    pub backends: Vec<Backend>,
     /// Forms of Euler's equation swept.
-    pub frames: Vec<Frame>,
+    pub frames: Vec<Form>,
     /// Most steps of one fixed-step run.
     pub max_fixed_steps: f64,
     /// A curve stops refining once one of its runs took longer than this (s).
@@ -112,8 +115,8 @@ impl Default for StudyOptions {
             rtols: (3..=13).map(|k| 10f64.powi(-k)).collect(),
             halvings: 10,
             repeats: 5,
-            backends: vec![BackendName::Own, BackendName::OdeSolvers],
-            frames: vec![Frame::Body, Frame::Space],
+            backends: vec![Backend::Own, Backend::OdeSolvers],
+            frames: vec![Form::Body, Form::Space],
             max_fixed_steps: 2e7,
             slow_curve_seconds: 1.0,
         }
@@ -128,8 +131,8 @@ impl StudyOptions {
             rtols: vec![1e-4, 1e-6, 1e-8, 1e-10],
             halvings: 3,
             repeats: 1,
-            backends: vec![BackendName::Own],
-            frames: vec![Frame::Body],
+            backends: vec![Backend::Own],
+            frames: vec![Form::Body],
             max_fixed_steps: 1e6,
             slow_curve_seconds: 0.5,
         }
@@ -171,9 +174,9 @@ impl Measure {
 pub struct StudyRow {
     /// The curve's label: the method's name, with `/ode_solvers` for that backend.
     pub method: String,
-    pub method_name: MethodName,
-    pub backend: BackendName,
-    pub frame: Frame,
+    pub method_name: Method,
+    pub backend: Backend,
+    pub frame: Form,
     /// Relative tolerance (adaptive methods whose result depends on it).
     pub rtol: Option<f64>,
     /// Absolute tolerance used with `rtol`.
@@ -393,9 +396,9 @@ impl Sweep<'_> {
     /// Runs one setting: errors on a first streaming run, then the timed repeats.
     fn run(
         &self,
-        method: MethodName,
-        backend: BackendName,
-        frame: Frame,
+        method: Method,
+        backend: Backend,
+        frame: Form,
         tolerances: Option<(f64, f64)>,
         dt: Option<f64>,
     ) -> RunOutcome {
@@ -499,9 +502,9 @@ fn median(values: &mut [f64]) -> f64 {
 }
 
 /// `dop853` or `dop853/ode_solvers`.
-fn label(method: MethodName, backend: BackendName) -> String {
+fn label(method: Method, backend: Backend) -> String {
     match backend {
-        BackendName::Own => method.name().to_string(),
+        Backend::Own => method.name().to_string(),
         other => format!("{}/{}", method.name(), other.name()),
     }
 }
@@ -566,14 +569,14 @@ fn oracle_rows(scene: &Scene, oracle: &Oracle) -> Option<Vec<RefRow>> {
 fn reference_run(
     path: &Path,
     text: &str,
-    frame: Frame,
+    frame: Form,
 ) -> Result<(Vec<RefRow>, f64, u64), StudyError> {
     let mut last_refusal = None;
     for rtol in REFERENCE_RTOL {
         let overrides = Overrides {
-            method: Some(MethodName::Dop853.name().into()),
+            method: Some(Method::Dop853.name().into()),
             frame: Some(frame.name().into()),
-            backend: Some(BackendName::Own.name().into()),
+            backend: Some(Backend::Own.name().into()),
             rtol: Some(rtol),
             atol: Some(REFERENCE_ATOL),
             ..Overrides::default()
@@ -683,8 +686,8 @@ pub fn accuracy(
             )
         }
         None => {
-            let (rows, rtol, steps) = reference_run(scene_path, text, Frame::Body)?;
-            let (other, _, _) = reference_run(scene_path, text, Frame::Space)?;
+            let (rows, rtol, steps) = reference_run(scene_path, text, Form::Body)?;
+            let (other, _, _) = reference_run(scene_path, text, Form::Space)?;
             let spread = rows
                 .iter()
                 .zip(&other)
@@ -714,8 +717,8 @@ pub fn accuracy(
     // the Runge–Kutta methods only.
     let mut curves = Vec::new();
     for &backend in &options.backends {
-        for method in MethodName::ALL {
-            if backend != BackendName::Own && !method.is_runge_kutta() {
+        for method in Method::ALL {
+            if backend != Backend::Own && !method.is_runge_kutta() {
                 continue;
             }
             for &frame in &options.frames {
@@ -1040,7 +1043,7 @@ impl Study {
 pub struct CurveCost {
     /// The curve's label (`dop853`, `dop853/ode_solvers`).
     pub method: String,
-    pub frame: Frame,
+    pub frame: Form,
     /// Index into [`Study::rows`] of the fastest run of the curve reaching each target.
     pub rows: [Option<usize>; 3],
 }

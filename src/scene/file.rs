@@ -11,11 +11,13 @@ use serde::{Deserialize, Deserializer};
 
 use crate::body::{InvalidBody, RigidBody, Shape};
 use crate::effects::{Effect, TorqueProfile};
+use crate::frames::{Axes, Form};
 use crate::integrate::Schedule;
-use crate::model::{BackendName, Frame, MethodName, MotionSpec, Scene, SolverConfig};
+use crate::method::{Backend, Method};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
-use crate::source_map::{KeyPath, SourceMap};
+use crate::scene::source_map::{KeyPath, SourceMap};
+use crate::scene::{MotionSpec, Scene, SolverConfig};
 
 /// Most rows a run may write (a CSV of about 10 GB).
 pub const MAX_ROWS: f64 = 5e7;
@@ -542,7 +544,7 @@ fn validate_method(
     o: &Overrides,
 ) -> Checked<()> {
     let method = solver.method;
-    if solver.backend != BackendName::Own && !method.is_runge_kutta() {
+    if solver.backend != Backend::Own && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "backend", o.backend.is_some()),
             format!(
@@ -552,14 +554,14 @@ fn validate_method(
             ),
         );
     }
-    if method != MethodName::Exact {
+    if method != Method::Exact {
         return Ok(());
     }
     let method_key = key_of("solver", "method", o.method.is_some());
     if let Some((index, effect)) = effects.iter().enumerate().next() {
-        let others: Vec<&str> = MethodName::ALL
+        let others: Vec<&str> = Method::ALL
             .iter()
-            .filter(|m| **m != MethodName::Exact)
+            .filter(|m| **m != Method::Exact)
             .map(|m| m.name())
             .collect();
         let (last, first) = others.split_last().map_or((&"", &[][..]), |(l, f)| (l, f));
@@ -949,8 +951,8 @@ fn validate_effect(index: usize, doc: &EffectDoc) -> Checked<Effect> {
             };
             Effect::Torque {
                 frame: match doc.frame {
-                    None | Some(FrameDoc::Body) => Frame::Body,
-                    Some(FrameDoc::Space) => Frame::Space,
+                    None | Some(FrameDoc::Body) => Axes::Body,
+                    Some(FrameDoc::Space) => Axes::Space,
                 },
                 value: vector(
                     key("value"),
@@ -1002,7 +1004,7 @@ fn choice<T: Copy>(key: KeyPath, given: &str, options: &[(&str, T)]) -> Checked<
 }
 
 fn validate_solver(doc: &SolverDoc, o: &Overrides) -> Checked<SolverConfig> {
-    let methods: Vec<(&str, MethodName)> = MethodName::ALL.iter().map(|m| (m.name(), *m)).collect();
+    let methods: Vec<(&str, Method)> = Method::ALL.iter().map(|m| (m.name(), *m)).collect();
     let method = choice(
         key_of("solver", "method", o.method.is_some()),
         o.method
@@ -1017,7 +1019,7 @@ fn validate_solver(doc: &SolverDoc, o: &Overrides) -> Checked<SolverConfig> {
             .as_deref()
             .or(doc.frame.as_deref())
             .unwrap_or("body"),
-        &[("body", Frame::Body), ("space", Frame::Space)],
+        &[("body", Form::Body), ("space", Form::Space)],
     )?;
     let backend = choice(
         key_of("solver", "backend", o.backend.is_some()),
@@ -1025,10 +1027,7 @@ fn validate_solver(doc: &SolverDoc, o: &Overrides) -> Checked<SolverConfig> {
             .as_deref()
             .or(doc.backend.as_deref())
             .unwrap_or("own"),
-        &[
-            ("own", BackendName::Own),
-            ("ode_solvers", BackendName::OdeSolvers),
-        ],
+        &[("own", Backend::Own), ("ode_solvers", Backend::OdeSolvers)],
     )?;
     let rtol = o.rtol.or(doc.rtol).unwrap_or(1e-10);
     let rtol_key = key_of("solver", "rtol", o.rtol.is_some());

@@ -1,0 +1,53 @@
+//! The validated scene: everything a run needs, in the types the simulation uses. Built by [`crate::scene`].
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+use crate::body::RigidBody;
+use crate::effects::Effect;
+use crate::frames::Form;
+use crate::integrate::Schedule;
+use crate::method::{Backend, Method};
+use crate::motion::fixed_axis::FixedAxis;
+use crate::motion::free::FreeBody;
+
+/// `[solver]`, validated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverConfig {
+    pub method: Method,
+    pub frame: Form,
+    pub backend: Backend,
+    pub rtol: f64,
+    pub atol: f64,
+    pub dt: f64,
+    pub t_end: f64,
+}
+
+/// The motion of the body.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MotionSpec {
+    /// Free rotation from the initial angular velocity (body axes, rad/s), about the moment center
+    /// (C, or the pivot of a gravity effect).
+    Free {
+        omega0_b: Vector3<f64>,
+        body: FreeBody,
+    },
+    /// Prescribed rotation about a fixed axis.
+    FixedAxis(FixedAxis),
+}
+
+/// A validated scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    pub name: String,
+    pub description: String,
+    pub body: RigidBody,
+    pub motion: MotionSpec,
+    /// Attitude at t = 0 (body → space).
+    pub attitude0: UnitQuaternion<f64>,
+    pub effects: Vec<Effect>,
+    pub solver: SolverConfig,
+    /// Row times: k·every, then t_end.
+    pub schedule: Schedule,
+    /// Largest allowed difference for `eulerdyn compare`.
+    pub compare_tolerance: f64,
+}
