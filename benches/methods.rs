@@ -617,9 +617,9 @@ fn per_step_costs() {
             }
             for frame in [Form::Body, Form::Space] {
                 let overrides = Overrides {
-                    method: Some(method.name().into()),
-                    frame: Some(frame.name().into()),
-                    backend: Some(backend.name().into()),
+                    method: Some(method),
+                    frame: Some(frame),
+                    backend: Some(backend),
                     // `exact` takes no steps: time it per row, a row every 1 ms.
                     every: (!method.is_fixed_step() && !method.is_adaptive()).then_some(1e-3),
                     ..Overrides::default()
@@ -944,9 +944,9 @@ fn constant_torque_cost(
         .collect::<Vec<_>>()
         .join("\n");
     let overrides = Overrides {
-        method: Some(row.method_name.name().to_string()),
-        frame: Some(row.frame.name().to_string()),
-        backend: Some(row.backend.name().to_string()),
+        method: Some(row.method_name),
+        frame: Some(row.frame),
+        backend: Some(row.backend),
         rtol: row.rtol,
         atol: row.atol,
         dt: row.dt,

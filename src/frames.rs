@@ -2,6 +2,8 @@
 //! equation that is integrated. A vector `v_b` is in [`Axes::Body`], `v_s` in [`Axes::Space`]; the attitude
 //! `r_sb` (the quaternion q) maps body to space, `v_s = r_sb · v_b`.
 
+use crate::named::{Named, serde_by_name};
+
 /// The axes a vector is expressed in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Axes {
@@ -24,6 +26,16 @@ impl Axes {
         }
     }
 }
+
+impl Named for Axes {
+    const ALL: &'static [Self] = &[Axes::Body, Axes::Space];
+
+    fn name(&self) -> &'static str {
+        Axes::name(self)
+    }
+}
+
+serde_by_name!(Axes);
 
 /// The form of Euler's equation that is integrated (or, for prescribed motion, that computes the moment).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -50,3 +62,13 @@ impl Form {
         }
     }
 }
+
+impl Named for Form {
+    const ALL: &'static [Self] = &Form::ALL;
+
+    fn name(&self) -> &'static str {
+        Form::name(self)
+    }
+}
+
+serde_by_name!(Form);

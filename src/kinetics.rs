@@ -1,7 +1,7 @@
 //! Kinetic states of a rigid body (the reference notes, Theorems 23–25). Every function works in whatever axes its
 //! arguments are expressed in, as long as they are all in the same axes.
 
-use nalgebra::{Matrix3, Rotation3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 
 /// Momentum P = m v_C (Theorem 23, eq. 8.1).
 pub fn momentum(mass: f64, v_c: &Vector3<f64>) -> Vector3<f64> {
@@ -39,10 +39,4 @@ pub fn kinetic_energy_c(
     omega: &Vector3<f64>,
 ) -> f64 {
     0.5 * mass * v_c.norm_squared() + 0.5 * omega.dot(&(inertia_c * omega))
-}
-
-/// An inertia tensor given in body axes, expressed in space axes: I_s = R I_b Rᵀ (the notes' transformation
-/// eq. 7.25 with T = Rᵀ).
-pub fn inertia_in_space(r_sb: &Rotation3<f64>, inertia_b: &Matrix3<f64>) -> Matrix3<f64> {
-    r_sb.matrix() * inertia_b * r_sb.matrix().transpose()
 }

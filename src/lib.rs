@@ -15,6 +15,7 @@ pub mod integrate;
 pub mod kinetics;
 pub mod method;
 pub mod motion;
+pub mod named;
 pub mod output;
 pub mod sample;
 pub mod scene;

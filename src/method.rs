@@ -1,6 +1,8 @@
 //! The integration methods and the two implementations of the Runge–Kutta ones: one type each, used by the scene,
 //! the integrators, the study and the command line alike.
 
+use crate::named::{Named, serde_by_name};
+
 /// An integration method, by its scene-file name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Method {
@@ -46,7 +48,6 @@ impl Method {
     /// ```
     /// use eulerdyn::Method;
     /// assert_eq!(Method::Dop853.name(), "dop853");
-    /// assert_eq!(Method::from_name("split4"), Some(Method::Split4));
     /// ```
     pub fn name(&self) -> &'static str {
         match self {
@@ -57,11 +58,6 @@ impl Method {
             Method::Split4 => "split4",
             Method::Exact => "exact",
         }
-    }
-
-    /// The method of this name, if there is one.
-    pub fn from_name(name: &str) -> Option<Method> {
-        Method::ALL.into_iter().find(|m| m.name() == name)
     }
 
     /// Whether the method takes steps of the fixed size `dt` (rk4, split2, split4). The adaptive methods adapt
@@ -94,6 +90,16 @@ impl Method {
     }
 }
 
+impl Named for Method {
+    const ALL: &'static [Self] = &Method::ALL;
+
+    fn name(&self) -> &'static str {
+        Method::name(self)
+    }
+}
+
+serde_by_name!(Method);
+
 /// Which implementation runs the Runge–Kutta methods.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Backend {
@@ -121,12 +127,17 @@ impl Backend {
             Backend::OdeSolvers => "ode_solvers",
         }
     }
+}
 
-    /// The backend of this name, if there is one.
-    pub fn from_name(name: &str) -> Option<Backend> {
-        Backend::ALL.into_iter().find(|b| b.name() == name)
+impl Named for Backend {
+    const ALL: &'static [Self] = &Backend::ALL;
+
+    fn name(&self) -> &'static str {
+        Backend::name(self)
     }
 }
+
+serde_by_name!(Backend);
 
 /// The solver settings a scene gets for what it leaves out: `method` [`Method::DEFAULT`], body form, own
 /// backend, and these tolerances and step.

@@ -11,8 +11,9 @@ use eulerdyn::body::{RigidBody, Shape};
 use eulerdyn::frames::Form;
 use eulerdyn::method::{Backend, Method};
 use eulerdyn::motion::fixed_axis::FixedAxis;
+use eulerdyn::named::Named;
 use eulerdyn::sample::Sample;
-use eulerdyn::scene::MotionSpec;
+use eulerdyn::scene::Motion;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
@@ -285,9 +286,9 @@ fn integrating_h_s_dot_equals_m_s_tracks_i_s_omega_s() {
             for backend in ["own", "ode_solvers"] {
                 for frame in ["body", "space"] {
                     let overrides = Overrides {
-                        method: Some(method.into()),
-                        backend: Some(backend.into()),
-                        frame: Some(frame.into()),
+                        method: Some(Named::parse(method).unwrap()),
+                        backend: Some(Named::parse(backend).unwrap()),
+                        frame: Some(Named::parse(frame).unwrap()),
                         ..Overrides::default()
                     };
                     let rows = run_scene(path, &overrides);
@@ -351,7 +352,7 @@ fn offset_point_force_is_m_a_c_and_h_about_the_fixed_point_is_i_a_omega() {
         &Overrides::default(),
     )
     .unwrap();
-    let MotionSpec::FixedAxis(motion) = &scene.motion else {
+    let Motion::FixedAxis(motion) = &scene.motion else {
         panic!("offset_disk is a fixed-axis scene")
     };
     let e = 0.02;
@@ -385,7 +386,7 @@ fn offset_point_force_is_m_a_c_and_h_about_the_fixed_point_is_i_a_omega() {
 fn scene_backend_and_method_names_round_trip() {
     for m in Method::ALL {
         let overrides = Overrides {
-            method: Some(m.name().into()),
+            method: Some(m),
             ..Overrides::default()
         };
         let scene = scene::load(
@@ -398,7 +399,7 @@ fn scene_backend_and_method_names_round_trip() {
     let scene = scene::load(
         std::path::Path::new("scenarios/tilted_disk.toml"),
         &Overrides {
-            backend: Some("ode_solvers".into()),
+            backend: Some(Named::parse("ode_solvers").unwrap()),
             ..Overrides::default()
         },
     )

@@ -14,6 +14,7 @@ use eulerdyn::analysis::compare::attitude_angle;
 use eulerdyn::exact::{
     AxialTorqueSymmetric, HeavySymmetricTop, PrecessionRoots, SteadyPrecession, TorqueFreeBody,
 };
+use eulerdyn::named::Named;
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
@@ -54,9 +55,9 @@ fn configurations() -> Vec<Overrides> {
         for backend in ["own", "ode_solvers"] {
             for frame in ["body", "space"] {
                 out.push(Overrides {
-                    method: Some(method.into()),
-                    backend: Some(backend.into()),
-                    frame: Some(frame.into()),
+                    method: Some(Named::parse(method).unwrap()),
+                    backend: Some(Named::parse(backend).unwrap()),
+                    frame: Some(Named::parse(frame).unwrap()),
                     rtol,
                     atol: rtol.map(|r| r * 1e-2),
                     dt,
@@ -80,9 +81,9 @@ fn bound(o: &Overrides, omega_max: f64, t_end: f64) -> f64 {
 fn label(o: &Overrides) -> String {
     format!(
         "{} {} {}",
-        o.method.as_deref().unwrap_or(""),
-        o.backend.as_deref().unwrap_or(""),
-        o.frame.as_deref().unwrap_or("")
+        o.method.map_or("", |m| m.name()),
+        o.backend.map_or("", |b| b.name()),
+        o.frame.map_or("", |f| f.name())
     )
 }
 
@@ -176,7 +177,7 @@ fn torque_free_invariants_and_body_space_agreement() {
                 label(&o)
             );
             assert!((row.q.into_inner().norm() - 1.0).abs() <= 4.0 * f64::EPSILON);
-            if o.frame.as_deref() == Some("space") {
+            if o.frame == Some(eulerdyn::Form::Space) {
                 assert_eq!(
                     row.h_s,
                     h0,
@@ -190,14 +191,14 @@ fn torque_free_invariants_and_body_space_agreement() {
     let body = rows(&scene_from(
         text,
         &Overrides {
-            frame: Some("body".into()),
+            frame: Some(Named::parse("body").unwrap()),
             ..Overrides::default()
         },
     ));
     let space = rows(&scene_from(
         text,
         &Overrides {
-            frame: Some("space".into()),
+            frame: Some(Named::parse("space").unwrap()),
             ..Overrides::default()
         },
     ));
@@ -347,7 +348,7 @@ fn sine_torque_matches_a_fine_rk4_reference_with_every_method() {
     let reference = rows(&scene_from(
         &text,
         &Overrides {
-            method: Some("rk4".into()),
+            method: Some(Named::parse("rk4").unwrap()),
             dt: Some(1e-4),
             ..Overrides::default()
         },

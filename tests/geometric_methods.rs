@@ -16,6 +16,7 @@ use std::path::Path;
 use eulerdyn::analysis::compare::{self, attitude_angle};
 use eulerdyn::exact::TorqueFreeBody;
 use eulerdyn::method::Method;
+use eulerdyn::named::Named;
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
@@ -64,8 +65,8 @@ fn largest_error(rows: &[Sample], reference: &[Sample]) -> f64 {
 
 fn with(method: &str, frame: &str, dt: Option<f64>, rtol: Option<f64>) -> Overrides {
     Overrides {
-        method: Some(method.into()),
-        frame: Some(frame.into()),
+        method: Some(Named::parse(method).unwrap()),
+        frame: Some(Named::parse(frame).unwrap()),
         dt,
         rtol,
         atol: rtol.map(|r| r * 1e-2),
@@ -100,7 +101,7 @@ impl Oracle {
     fn of(scene: &Scene) -> Self {
         let principal = scene.body.principal();
         let p_b = UnitQuaternion::from_rotation_matrix(&principal.axes_b);
-        let eulerdyn::scene::MotionSpec::Free { omega0_b, .. } = &scene.motion else {
+        let eulerdyn::scene::Motion::Free { omega0_b, .. } = &scene.motion else {
             panic!("free motion")
         };
         let exact = TorqueFreeBody::new(
@@ -457,8 +458,8 @@ fn the_ode_solvers_backend_runs_only_the_runge_kutta_methods() {
     let text = free_text("[1.0, 2.0, 3.0]", Vector3::new(0.3, 0.0, 2.0), 1.0, 0.1);
     for method in Method::ALL {
         let o = Overrides {
-            method: Some(method.name().into()),
-            backend: Some("ode_solvers".into()),
+            method: Some(method),
+            backend: Some(Named::parse("ode_solvers").unwrap()),
             ..Overrides::default()
         };
         let r = scene::parse(Path::new("s.toml"), &text, &o);
@@ -492,7 +493,7 @@ fn every_shipped_torque_free_and_effect_scenario_runs_with_the_splitting() {
         }
         let text = std::fs::read_to_string(&path).unwrap();
         let base = scene_from(&text, &Overrides::default());
-        let eulerdyn::scene::MotionSpec::Free { omega0_b, .. } = &base.motion else {
+        let eulerdyn::scene::Motion::Free { omega0_b, .. } = &base.motion else {
             continue;
         };
         let dt = 0.02 / omega0_b.norm().max(1.0);

@@ -12,6 +12,7 @@ use std::path::Path;
 use eulerdyn::analysis::compare::attitude_angle;
 use eulerdyn::exact::TorqueFreeBody;
 use eulerdyn::method::Method;
+use eulerdyn::named::Named;
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
@@ -71,8 +72,8 @@ struct Setting {
 impl Setting {
     fn overrides(&self) -> Overrides {
         Overrides {
-            method: Some(self.method.into()),
-            frame: Some(self.frame.into()),
+            method: Some(Named::parse(self.method).unwrap()),
+            frame: Some(Named::parse(self.frame).unwrap()),
             rtol: self.rtol,
             atol: self.rtol.map(|r| r * 1e-2),
             dt: self.dt,
@@ -144,8 +145,8 @@ fn long_horizon_split_methods_keep_h_exact_and_energy_bounded() {
         let scene = scene_from(
             &text,
             &Overrides {
-                method: Some(method.into()),
-                frame: Some(frame.into()),
+                method: Some(Named::parse(method).unwrap()),
+                frame: Some(Named::parse(frame).unwrap()),
                 dt: Some(0.1),
                 ..Overrides::default()
             },
@@ -204,8 +205,8 @@ fn exact_is_accurate_to_round_off_at_a_million_seconds() {
         let scene = scene_from(
             &text,
             &Overrides {
-                method: Some("exact".into()),
-                frame: Some(frame.into()),
+                method: Some(Named::parse("exact").unwrap()),
+                frame: Some(Named::parse(frame).unwrap()),
                 ..Overrides::default()
             },
         );
@@ -430,8 +431,8 @@ fn a_thin_rod_is_refused_with_a_clear_error_for_every_method() {
                 Path::new("rod.toml"),
                 text,
                 &Overrides {
-                    method: Some(method.name().into()),
-                    frame: Some(frame.into()),
+                    method: Some(method),
+                    frame: Some(Named::parse(frame).unwrap()),
                     ..Overrides::default()
                 },
             )
@@ -639,8 +640,8 @@ fn fast_spin_adaptive_methods_finish_and_a_too_large_fixed_step_is_caught() {
         let scene = scene_from(
             &text,
             &Overrides {
-                method: Some("rk4".into()),
-                frame: Some(frame.into()),
+                method: Some(Named::parse("rk4").unwrap()),
+                frame: Some(Named::parse(frame).unwrap()),
                 dt: Some(5e-4),
                 ..Overrides::default()
             },
@@ -770,7 +771,7 @@ fn strong_damping_decays_exactly_and_an_unstable_step_is_caught() {
         scene_from(
             &damped([0.0, 0.0, 5.0]),
             &Overrides {
-                method: Some(method.into()),
+                method: Some(Named::parse(method).unwrap()),
                 dt: Some(3.0),
                 every: Some(3.0),
                 ..Overrides::default()
@@ -903,7 +904,7 @@ fn t_end_zero_gives_the_initial_row_with_every_method() {
             assert_eq!(rows[0].t, 0.0);
             assert_eq!(report.stats.steps, 0, "{s}");
             assert!(attitude_angle(&rows[0].q, &scene.attitude0) <= 1e-15, "{s}");
-            if let eulerdyn::scene::MotionSpec::Free { omega0_b, .. } = &scene.motion {
+            if let eulerdyn::scene::Motion::Free { omega0_b, .. } = &scene.motion {
                 assert!(
                     (rows[0].omega_b - omega0_b).norm() <= 1e-15 * omega0_b.norm(),
                     "{s}"

@@ -17,6 +17,7 @@ use std::convert::Infallible;
 use std::path::Path;
 
 use eulerdyn::analysis::compare::attitude_angle;
+use eulerdyn::named::Named;
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Overrides};
@@ -120,8 +121,8 @@ fn case() -> impl Strategy<Value = Case> {
 
 fn scene(text: &str, method: &str, frame: &str, omega: f64) -> Scene {
     let o = Overrides {
-        method: Some(method.into()),
-        frame: Some(frame.into()),
+        method: Some(Named::parse(method).unwrap()),
+        frame: Some(Named::parse(frame).unwrap()),
         rtol: Some(RTOL),
         atol: Some(RTOL * 1e-2),
         dt: Some(SPLIT_OMEGA_DT / omega),

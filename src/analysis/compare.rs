@@ -13,7 +13,7 @@ use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
 use crate::method::Method;
 use crate::sample::Sample;
-use crate::scene::{MotionSpec, Scene};
+use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
 
 /// A closed-form solution that applies to a scene.
@@ -42,8 +42,8 @@ impl Oracle {
     /// The closed form that applies to the scene, if any.
     pub fn for_scene(scene: &Scene) -> Option<Oracle> {
         let omega0_b = match &scene.motion {
-            MotionSpec::FixedAxis(_) => return Some(Oracle::FixedAxis),
-            MotionSpec::Free { omega0_b, .. } => *omega0_b,
+            Motion::FixedAxis(_) => return Some(Oracle::FixedAxis),
+            Motion::Free { omega0_b, .. } => *omega0_b,
         };
         let principal = scene.body.principal();
         let principal_b = UnitQuaternion::from_rotation_matrix(&principal.axes_b);
@@ -311,13 +311,13 @@ impl Comparison {
 /// closed form, read two ways; for the splitting methods both forms are the same map.
 fn method_note(scene: &Scene) -> Option<String> {
     match (scene.solver.method, &scene.motion) {
-        (Method::Exact, MotionSpec::Free { .. }) => Some(
+        (Method::Exact, Motion::Free { .. }) => Some(
             "method exact: both forms are the closed form — body: omega from the Jacobi functions; space: omega \
              from the closed-form attitude and the constant H_s — so \"body vs space\" checks the attitude \
              against omega, and \"vs exact\" the rows against the oracle"
                 .into(),
         ),
-        (Method::Split2 | Method::Split4, MotionSpec::Free { .. }) => Some(format!(
+        (Method::Split2 | Method::Split4, Motion::Free { .. }) => Some(format!(
             "method {}: the body form turns H_p, the space form keeps H_s; the two are the same map in exact \
              arithmetic, so \"body vs space\" is round-off (amplified where the motion is unstable, as near \
              the separatrix)",

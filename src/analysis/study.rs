@@ -403,9 +403,9 @@ impl Sweep<'_> {
         dt: Option<f64>,
     ) -> RunOutcome {
         let overrides = Overrides {
-            method: Some(method.name().to_string()),
-            frame: Some(frame.name().to_string()),
-            backend: Some(backend.name().to_string()),
+            method: Some(method),
+            frame: Some(frame),
+            backend: Some(backend),
             rtol: tolerances.map(|t| t.0),
             atol: tolerances.map(|t| t.1),
             dt,
@@ -574,9 +574,9 @@ fn reference_run(
     let mut last_refusal = None;
     for rtol in REFERENCE_RTOL {
         let overrides = Overrides {
-            method: Some(Method::Dop853.name().into()),
-            frame: Some(frame.name().into()),
-            backend: Some(Backend::Own.name().into()),
+            method: Some(Method::Dop853),
+            frame: Some(frame),
+            backend: Some(Backend::Own),
             rtol: Some(rtol),
             atol: Some(REFERENCE_ATOL),
             ..Overrides::default()

@@ -193,7 +193,7 @@ fn print_stdout(text: &str) -> Result<(), Failure> {
 
 fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failure> {
     let overrides = Overrides {
-        method,
+        method: scene::flag_value(path, "solver", "method", method.as_deref())?,
         ..Overrides::default()
     };
     let scene = scene::load(path, &overrides)?;
@@ -220,9 +220,9 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
 
 fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     let overrides = Overrides {
-        method: args.method.clone(),
-        frame: args.frame.clone(),
-        backend: args.backend.clone(),
+        method: scene::flag_value(&args.scene, "solver", "method", args.method.as_deref())?,
+        frame: scene::flag_value(&args.scene, "solver", "frame", args.frame.as_deref())?,
+        backend: scene::flag_value(&args.scene, "solver", "backend", args.backend.as_deref())?,
         rtol: args.rtol,
         atol: args.atol,
         dt: args.dt,

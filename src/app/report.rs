@@ -12,7 +12,7 @@ use crate::effects::{Effect, TorqueProfile};
 use crate::frames::Form;
 use crate::method::Method;
 use crate::sample::BASE_COLUMNS;
-use crate::scene::{MotionSpec, Scene};
+use crate::scene::{Motion, Scene};
 use crate::simulate;
 
 /// Width of the label column.
@@ -103,8 +103,8 @@ pub fn adaptive_steps_estimate(scene: &Scene, rate: f64) -> Option<f64> {
 /// frequency. Sets the step an adaptive method needs.
 fn characteristic_rate(scene: &Scene) -> f64 {
     let motion_rate = match &scene.motion {
-        MotionSpec::Free { omega0_b, .. } => omega0_b.norm(),
-        MotionSpec::FixedAxis(m) => m
+        Motion::Free { omega0_b, .. } => omega0_b.norm(),
+        Motion::FixedAxis(m) => m
             .rate()
             .abs()
             .max((m.rate() + m.accel() * scene.solver.t_end).abs()),
@@ -214,7 +214,7 @@ pub fn describe(scene: &Scene) -> String {
     // The motion and its moment center.
     let frame = scene.solver.frame;
     match &scene.motion {
-        MotionSpec::Free {
+        Motion::Free {
             omega0_b,
             body: free,
         } => {
@@ -276,7 +276,7 @@ pub fn describe(scene: &Scene) -> String {
                 &format!("kinetic energy {:.6e} J", 0.5 * omega0_b.dot(&h_b)),
             );
         }
-        MotionSpec::FixedAxis(motion) => {
+        Motion::FixedAxis(motion) => {
             let axis_b = motion.axis_b().into_inner();
             let (tilt, nearest) = tilt_from_principal(principal, &axis_b);
             line(
@@ -384,8 +384,8 @@ pub fn describe(scene: &Scene) -> String {
     // Effects.
     if scene.effects.is_empty() {
         let none = match scene.motion {
-            MotionSpec::FixedAxis(_) => "none: the motion is prescribed",
-            MotionSpec::Free { .. } => "none: torque-free",
+            Motion::FixedAxis(_) => "none: the motion is prescribed",
+            Motion::Free { .. } => "none: torque-free",
         };
         line(w, "effects", none);
     }

@@ -18,7 +18,7 @@
 //! pub enum IntegrateError<E = Infallible> {
 //!     NonFinite { t }, StepSizeTooSmall { t, h }, TooManySteps { t, steps },
 //!     Stopped { t, cause: E }, InvalidSettings { reason }, Backend { t, message },
-//! }   // + map_cause(f) -> IntegrateError<G>, time() -> Option<f64>
+//! }   // + split_cause() -> Result<IntegrateError<Infallible>, (t, E)>, time() -> Option<f64>
 //! pub struct Schedule;   // Schedule::new(every, t_end) -> Result<Schedule, ScheduleError>;
 //!                        // len(), time(k), iter(), every(), t_end()
 //! pub fn integrate<const N: usize, S: OdeSystem<N>, E>(
@@ -233,17 +233,17 @@ pub enum IntegrateError<E = Infallible> {
 }
 
 impl<E> IntegrateError<E> {
-    /// Converts the callback error carried by [`IntegrateError::Stopped`] with `f`; every other
-    /// variant is passed through unchanged.
-    pub fn map_cause<G>(self, f: impl FnOnce(E) -> G) -> IntegrateError<G> {
-        match self {
+    /// Separates the row callback's error from the integrator's own failures: `Err((t, cause))` for
+    /// [`IntegrateError::Stopped`], `Ok(failure)` for every other variant (which carries no callback error).
+    pub fn split_cause(self) -> Result<IntegrateError<Infallible>, (f64, E)> {
+        Ok(match self {
+            Self::Stopped { t, cause } => return Err((t, cause)),
             Self::NonFinite { t } => IntegrateError::NonFinite { t },
             Self::StepSizeTooSmall { t, h } => IntegrateError::StepSizeTooSmall { t, h },
             Self::TooManySteps { t, steps } => IntegrateError::TooManySteps { t, steps },
-            Self::Stopped { t, cause } => IntegrateError::Stopped { t, cause: f(cause) },
             Self::InvalidSettings { reason } => IntegrateError::InvalidSettings { reason },
             Self::Backend { t, message } => IntegrateError::Backend { t, message },
-        }
+        })
     }
 
     /// Time at which the run stopped (`None` for [`IntegrateError::InvalidSettings`]).
@@ -387,20 +387,17 @@ mod tests {
     }
 
     #[test]
-    fn map_cause_and_time() {
+    fn split_cause_and_time() {
         let e: IntegrateError<&str> = IntegrateError::Stopped {
             t: 2.5,
             cause: "full",
         };
         assert_eq!(e.time(), Some(2.5));
-        match e.map_cause(str::len) {
-            IntegrateError::Stopped { t, cause } => assert_eq!((t, cause), (2.5, 4)),
-            other => panic!("{other}"),
-        }
+        assert!(matches!(e.split_cause(), Err((2.5, "full"))));
         let e: IntegrateError<&str> = IntegrateError::NonFinite { t: 1.0 };
         assert!(matches!(
-            e.map_cause(str::len),
-            IntegrateError::NonFinite { t: 1.0 }
+            e.split_cause(),
+            Ok(IntegrateError::NonFinite { t: 1.0 })
         ));
         let msg = IntegrateError::<Infallible>::NonFinite { t: 1.25 }.to_string();
         assert!(msg.contains("1.25") && msg.contains("smaller dt"));

@@ -332,6 +332,13 @@ impl FreeBody {
         &self.axes_b
     }
 
+    /// The moment of momentum about the moment center and the kinetic energy at the angular velocity `omega_b`:
+    /// H_b = I_A ω_b (eq. 8.6: A fixed or A = C) and T = ½ ω_b·H_b.
+    pub fn momentum_and_energy(&self, omega_b: &Vector3<f64>) -> (Vector3<f64>, f64) {
+        let h_b = self.inertia_b * omega_b;
+        (h_b, kinetic_energy(omega_b, &h_b))
+    }
+
     /// Position of C relative to the moment center, body axes.
     pub fn rho_c_b(&self) -> &Vector3<f64> {
         &self.rho_c_b

@@ -3,7 +3,7 @@
 
 use serde_json::{Value, json};
 
-use crate::scene::{MotionSpec, Scene};
+use crate::scene::{Motion, Scene};
 use crate::simulate::RunReport;
 
 use crate::sample::Column;
@@ -18,8 +18,8 @@ pub fn sidecar(
 ) -> Value {
     let s = &scene.solver;
     let motion = match scene.motion {
-        MotionSpec::Free { .. } => "free",
-        MotionSpec::FixedAxis { .. } => "fixed_axis",
+        Motion::Free { .. } => "free",
+        Motion::FixedAxis { .. } => "fixed_axis",
     };
     json!({
         "eulerdyn_version": env!("CARGO_PKG_VERSION"),

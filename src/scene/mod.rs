@@ -1,8 +1,16 @@
-//! Scenes: the validated [`Scene`] a run needs, and its TOML front end ([`load`], [`parse`]).
+//! Scenes: a scene as a typed value ([`SceneSpec`], built in code or read from TOML by [`load`] and [`parse`]),
+//! its validation ([`SceneSpec::build`]) and the validated [`Scene`] a run needs.
 
 mod file;
 mod model;
 pub mod source_map;
+mod spec;
+mod validate;
 
-pub use file::{MAX_FIXED_STEPS, MAX_ROWS, Overrides, SceneError, load, parse};
-pub use model::{MotionSpec, Scene, SolverConfig};
+pub use file::{SceneError, flag_value, load, parse};
+pub use model::{Motion, Scene, SolverConfig};
+pub use spec::{
+    BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,
+    MotionSpec, OutputSpec, ProfileKind, SceneSpec, ShapeKind, ShapeSpec, SolverSpec,
+};
+pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

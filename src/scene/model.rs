@@ -24,7 +24,7 @@ pub struct SolverConfig {
 
 /// The motion of the body.
 #[derive(Debug, Clone, PartialEq)]
-pub enum MotionSpec {
+pub enum Motion {
     /// Free rotation from the initial angular velocity (body axes, rad/s), about the moment center
     /// (C, or the pivot of a gravity effect).
     Free {
@@ -41,7 +41,7 @@ pub struct Scene {
     pub name: String,
     pub description: String,
     pub body: RigidBody,
-    pub motion: MotionSpec,
+    pub motion: Motion,
     /// Attitude at t = 0 (body → space).
     pub attitude0: UnitQuaternion<f64>,
     pub effects: Vec<Effect>,
