@@ -8,7 +8,6 @@
 mod common;
 
 use std::convert::Infallible;
-use std::path::Path;
 
 use eulerdyn::analysis::compare::attitude_angle;
 use eulerdyn::exact::{
@@ -16,12 +15,12 @@ use eulerdyn::exact::{
 };
 use eulerdyn::named::Named;
 use eulerdyn::sample::Sample;
+use eulerdyn::scene::Overrides;
 use eulerdyn::scene::Scene;
-use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
-use common::sign_changes;
+use common::{scene_from, sign_changes};
 
 /// Global-error constant of the adaptive methods relative to rtol per unit of |ω|·t. Measured on the asymmetric
 /// torque-free body: 0.0004–0.15 (dopri5 in the space form is the largest); a tolerance that is not honoured, e.g.
@@ -29,10 +28,6 @@ use common::sign_changes;
 const K_ADAPTIVE: f64 = 1.0;
 /// Global-error constant of RK4 relative to (|ω| dt)⁴·|ω| t. Measured on the asymmetric torque-free body: ≤ 4e-6.
 const K_RK4: f64 = 0.01;
-
-fn scene_from(text: &str, overrides: &Overrides) -> Scene {
-    scene::parse(Path::new("test.toml"), text, overrides).unwrap()
-}
 
 fn rows(scene: &Scene) -> Vec<Sample> {
     let mut out = Vec::new();

@@ -23,11 +23,7 @@ use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, RunReport};
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
-use common::{eulerdyn, repo_path, write_file};
-
-fn scene_from(text: &str, overrides: &Overrides) -> Scene {
-    scene::parse(Path::new("test.toml"), text, overrides).unwrap()
-}
+use common::{eulerdyn, repo_path, scene_from, write_file};
 
 fn run(scene: &Scene) -> (Vec<Sample>, RunReport) {
     let mut out = Vec::new();

@@ -19,11 +19,7 @@ use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, GuardedQuantity, RunError, RunReport};
 use nalgebra::{UnitQuaternion, Vector3};
 
-use common::{eulerdyn, sign_changes, write_file};
-
-fn scene_from(text: &str, overrides: &Overrides) -> Scene {
-    scene::parse(Path::new("test.toml"), text, overrides).unwrap()
-}
+use common::{eulerdyn, scene_from, sign_changes, write_file};
 
 fn try_rows(scene: &Scene) -> (Vec<Sample>, Result<RunReport, RunError<Infallible>>) {
     let mut out = Vec::new();

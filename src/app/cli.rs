@@ -42,7 +42,7 @@ pub enum Command {
     )]
     Run(RunArgs),
     /// Run a scene in both forms of Euler's equation and against its closed form; exit 1 if they differ by more
-    /// than the scene's [compare] tolerance.
+    /// than the scene's `[compare]` tolerance.
     #[command(after_help = "Example:\n  eulerdyn compare scenarios/asymmetric_free.toml")]
     Compare {
         /// Scene file (TOML).

@@ -66,6 +66,17 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
 }
 
 /// Parses and validates scene text; `path` is used in messages only.
+///
+/// ```
+/// use std::path::Path;
+/// use eulerdyn::scene::{Overrides, parse};
+/// let text = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.5\n";
+/// let scene = parse(Path::new("inline.toml"), text, &Overrides::default()).unwrap();
+/// assert_eq!(scene.schedule.len(), 3);
+/// let bad = text.replace("mass = 1.0", "mass = -1.0");
+/// let err = parse(Path::new("inline.toml"), &bad, &Overrides::default()).unwrap_err();
+/// assert!(err.to_string().starts_with("inline.toml:2:1: key `body.mass`: must be a finite number > 0"));
+/// ```
 pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, SceneError> {
     let map = SourceMap::new(text);
     if text.trim().is_empty() {

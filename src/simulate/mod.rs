@@ -105,6 +105,28 @@ enum Stop<E> {
     Sink(E),
 }
 
+/// Runs the scene and keeps its rows: the samples in time order and what the run did.
+///
+/// ```
+/// use eulerdyn::scene::{BodySpec, SceneSpec};
+/// // A free asymmetric body spinning about its axis of largest inertia: |H| is conserved.
+/// let scene = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 5.0, 0.5)
+///     .with_omega([0.0, 0.0, 2.0])
+///     .build()
+///     .unwrap();
+/// let (samples, report) = eulerdyn::simulate::samples(&scene).unwrap();
+/// assert_eq!(samples.len() as u64, report.rows);
+/// assert!((samples.last().unwrap().h_s.norm() - 6.0).abs() < 1e-9);
+/// ```
+pub fn samples(scene: &Scene) -> Result<(Vec<Sample>, RunReport), RunError<Infallible>> {
+    let mut samples = Vec::with_capacity(scene.schedule.len());
+    let report = run(scene, |s: &Sample| {
+        samples.push(*s);
+        Ok::<(), Infallible>(())
+    })?;
+    Ok((samples, report))
+}
+
 /// Runs the scene, calling `sink` with every row in time order. A free motion's rows pass the
 /// [`DivergenceGuard`] first.
 pub fn run<E: std::error::Error + 'static>(

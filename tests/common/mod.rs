@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use eulerdyn::sample::Sample;
+use eulerdyn::scene::{self, Overrides, Scene};
 
 /// A free-motion scene: asymmetric body, torque-free, t_end = 1 s, a row every 0.1 s.
 pub const FREE_SCENE: &str = r#"name = "free"
@@ -176,4 +177,9 @@ pub fn sign_changes(rows: &[Sample], axis: usize) -> Vec<f64> {
             w[0].t + (w[1].t - w[0].t) * a / (a - b)
         })
         .collect()
+}
+
+/// The scene of `text` with `overrides`; panics with the scene error (a test's own scene text is valid).
+pub fn scene_from(text: &str, overrides: &Overrides) -> Scene {
+    scene::parse(Path::new("test.toml"), text, overrides).unwrap_or_else(|e| panic!("{e}\n{text}"))
 }
