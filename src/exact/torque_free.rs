@@ -348,6 +348,21 @@ fn classify(moments: &Vector3<f64>, omega: &Vector3<f64>) -> Option<(Matrix3<f64
     Some((perm, axis3_user, separatrix))
 }
 
+/// The initial phase τ₀ of the elliptic functions from (cn τ₀, sn τ₀) ∝ (`x`, `y`) = (ω₁/a, ε ω₂/b), cn τ₀ ≥ 0:
+/// τ₀ = F(φ₀|m) = sin φ₀ R_F(cos²φ₀, cos²φ₀ + m′ sin²φ₀, 1) (DLMF 19.25.5, homogeneous form), atanh(sin φ₀) on
+/// the separatrix (m = 1).
+fn initial_phase(x: f64, y: f64, mc: f64, separatrix: bool) -> Result<f64, ExactError> {
+    let r = x.hypot(y);
+    let (s0, c0) = (y / r, x / r);
+    Ok(if separatrix {
+        s0.atanh()
+    } else if s0 == 0.0 {
+        0.0
+    } else {
+        s0 * ellip::elliprf(c0 * c0, c0 * c0 + mc * s0 * s0, 1.0).map_err(ExactError::Numerical)?
+    })
+}
+
 fn quat_z(angle: f64) -> Quaternion<f64> {
     let (s, c) = (0.5 * angle).sin_cos();
     Quaternion::new(c, 0.0, 0.0, s)
@@ -389,19 +404,7 @@ impl Elliptic {
         let jac = JacobiElliptic::with_complement(m, mc)
             .or_else(|| JacobiElliptic::new(m))
             .ok_or(ExactError::Numerical("elliptic parameter out of [0, 1]"))?;
-        // Initial phase: (cn τ₀, sn τ₀) ∝ (ω₁/a, ε ω₂/b), cn τ₀ ≥ 0.
-        let (x, y) = (w.x / a, eps * w.y / b);
-        let r = x.hypot(y);
-        let (s0, c0) = (y / r, x / r);
-        let tau0 = if separatrix {
-            s0.atanh()
-        } else if s0 == 0.0 {
-            0.0
-        } else {
-            // F(φ₀|m) = sin φ₀ R_F(cos²φ₀, cos²φ₀ + m′ sin²φ₀, 1)  (DLMF 19.25.5 homogeneous form).
-            s0 * ellip::elliprf(c0 * c0, c0 * c0 + mc * s0 * s0, 1.0)
-                .map_err(ExactError::Numerical)?
-        };
+        let tau0 = initial_phase(w.x / a, eps * w.y / b, mc, separatrix)?;
         // Back to physical units: amplitudes, λ and |H| scale with |ω|; m, τ₀ do not.
         let (a, b, c, lambda) = (a * scale, b * scale, c * scale, lambda * scale);
         let h_norm = (ic.component_mul(&w)).norm() * scale;
@@ -435,23 +438,31 @@ impl Elliptic {
             q_fixed: UnitQuaternion::identity(),
             q_perm: UnitQuaternion::identity(),
         };
-        if separatrix {
-            let nu = -n;
-            e.sqrt_nu = nu.sqrt();
-            e.sep_lin = h_norm / i3 + coef_pi * lambda / (1.0 + nu);
-            e.sep_atan = coef_pi * e.sqrt_nu / (1.0 + nu);
-            e.g0 = (e.sqrt_nu * tau0.tanh()).atan();
-        } else if n != 0.0 {
-            // Π(n|m) − K = (n/3) R_J(0, m′, 1, 1 − n)  (DLMF §19.25(i)).
-            e.rj_complete = elliprj(0.0, mc, 1.0, 1.0 - n).map_err(ExactError::Numerical)?;
-            let (s, c, d, j) = e.reduced(tau0);
-            e.g0 = e.g_integral(s, c, d, j);
-        }
+        e.init_precession(h_norm, coef_pi, mc)?;
         let q_perm = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(perm));
         let q_h0 = e.q_h(0.0);
         e.q_fixed = q0 * q_perm.inverse() * q_h0.inverse();
         e.q_perm = q_perm;
         Ok(e)
+    }
+
+    /// The constants of the precession angle's integral ∫dτ/(1 − n sn²): on the separatrix (sn = tanh, n = −ν)
+    /// its closed form in atan; elsewhere Π(n|m) − K and its value at τ₀.
+    fn init_precession(&mut self, h_norm: f64, coef_pi: f64, mc: f64) -> Result<(), ExactError> {
+        let (n, tau0) = (self.n, self.tau0);
+        if self.separatrix {
+            let nu = -n;
+            self.sqrt_nu = nu.sqrt();
+            self.sep_lin = h_norm / self.inertia[2] + coef_pi * self.lambda / (1.0 + nu);
+            self.sep_atan = coef_pi * self.sqrt_nu / (1.0 + nu);
+            self.g0 = (self.sqrt_nu * tau0.tanh()).atan();
+        } else if n != 0.0 {
+            // Π(n|m) − K = (n/3) R_J(0, m′, 1, 1 − n)  (DLMF §19.25(i)).
+            self.rj_complete = elliprj(0.0, mc, 1.0, 1.0 - n).map_err(ExactError::Numerical)?;
+            let (s, c, d, j) = self.reduced(tau0);
+            self.g0 = self.g_integral(s, c, d, j);
+        }
+        Ok(())
     }
 
     fn tau(&self, t: f64) -> f64 {
