@@ -897,19 +897,14 @@ pub fn plot_file(csv: &Path, out: &Path, panels: &[Panel]) -> Result<PlotSummary
 
 /// Writes `bytes` to `out` through a temporary file renamed over it.
 fn write_atomically(out: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    use std::io::Write;
-    let fail = |what: &str, e: std::io::Error| PlotError::Output {
-        file: out.to_path_buf(),
-        problem: format!("{what}: {e}"),
-    };
-    let mut file = super::AtomicFile::create(out).map_err(|e| PlotError::Input {
+    let file = super::AtomicFile::create(out).map_err(|e| PlotError::Input {
         file: out.to_path_buf(),
         problem: format!("cannot create the output file: {e}"),
     })?;
-    file.file()
-        .write_all(bytes)
-        .map_err(|e| fail("cannot write", e))?;
-    file.commit().map_err(|e| fail("cannot save", e))
+    file.write_and_commit(bytes).map_err(|e| PlotError::Output {
+        file: out.to_path_buf(),
+        problem: e.to_string(),
+    })
 }
 
 #[cfg(test)]
