@@ -100,3 +100,50 @@ impl AtomicFile {
         self.commit().map_err(CommitError::Save)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .expect("listing")
+            .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn the_destination_is_the_old_file_until_commit_and_the_new_one_after() {
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let out = dir.path().join("out.json");
+        std::fs::write(&out, "old").expect("written");
+        let mut file = AtomicFile::create(&out).expect("created");
+        for k in 0..1000 {
+            write!(file.file(), "{k},").expect("buffered");
+        }
+        assert_eq!(std::fs::read_to_string(&out).expect("read"), "old");
+        file.commit().expect("committed");
+        let text = std::fs::read_to_string(&out).expect("read");
+        assert!(text.starts_with("0,1,2,") && text.ends_with("998,999,"));
+        assert_eq!(names(dir.path()), ["out.json"]);
+    }
+
+    #[test]
+    fn a_file_dropped_before_commit_leaves_the_old_one_and_no_temporary_file() {
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let out = dir.path().join("out.csv");
+        std::fs::write(&out, "old").expect("written");
+        let mut file = AtomicFile::create(&out).expect("created");
+        file.file().write_all(b"new").expect("buffered");
+        drop(file);
+        assert_eq!(std::fs::read_to_string(&out).expect("read"), "old");
+        assert_eq!(names(dir.path()), ["out.csv"]);
+        AtomicFile::create(&out)
+            .expect("created")
+            .write_and_commit(b"new")
+            .expect("committed");
+        assert_eq!(std::fs::read_to_string(&out).expect("read"), "new");
+    }
+}
