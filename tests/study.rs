@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use eulerdyn::analysis::study::{self, Measure, StudyError, StudyOptions, TABLE_COLUMNS, TARGETS};
+use eulerdyn::app::accuracy::run_accuracy_command;
 use eulerdyn::frames::Form;
 use eulerdyn::method::{Backend, Method};
 
@@ -258,7 +259,7 @@ fn the_command_writes_the_table_and_the_figure() {
     let table = dir.path().join("table.csv");
     let plot = dir.path().join("fig.svg");
     let mut calls = Vec::new();
-    let s = study::run_accuracy_command(
+    let s = run_accuracy_command(
         &scene,
         Some(&table),
         Some(&plot),
@@ -293,13 +294,13 @@ fn bad_input_is_refused_and_leaves_no_files() {
 
     // An output directory that does not exist: refused before the study, exit 2.
     let missing = dir.path().join("no/such/dir/table.csv");
-    let e = study::run_accuracy_command(&scene, Some(&missing), None, &quick, |_, _, _| {})
+    let e = run_accuracy_command(&scene, Some(&missing), None, &quick, |_, _, _| {})
         .expect_err("refused");
     assert_eq!(e.exit_code(), 2, "{e}");
     assert!(e.to_string().contains("does not exist"), "{e}");
 
     // The scene file as the output: refused, the scene untouched.
-    let e = study::run_accuracy_command(&scene, Some(&scene), None, &quick, |_, _, _| {})
+    let e = run_accuracy_command(&scene, Some(&scene), None, &quick, |_, _, _| {})
         .expect_err("refused");
     assert_eq!(e.exit_code(), 2);
     assert_eq!(std::fs::read_to_string(&scene).expect("scene"), FREE);
@@ -309,8 +310,8 @@ fn bad_input_is_refused_and_leaves_no_files() {
     std::fs::write(&bad, FREE.replace("mass = 1.0", "mass = -1.0")).expect("written");
     let table = dir.path().join("table.csv");
     std::fs::write(&table, "keep me").expect("written");
-    let e = study::run_accuracy_command(&bad, Some(&table), None, &quick, |_, _, _| {})
-        .expect_err("refused");
+    let e =
+        run_accuracy_command(&bad, Some(&table), None, &quick, |_, _, _| {}).expect_err("refused");
     assert!(matches!(e, StudyError::Scene(_)), "{e}");
     assert_eq!(e.exit_code(), 2);
     assert!(e.to_string().contains("body.mass"), "{e}");

@@ -5,10 +5,10 @@
 use std::sync::mpsc;
 use std::thread;
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
 use crate::effects::{Effect, TorqueProfile};
-use crate::exact::{AxialTorqueSymmetric, TorqueFreeBody};
+use crate::exact::{AxialTorqueSymmetric, DampedSpin, TorqueFreeBody};
 use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
 use crate::method::Method;
@@ -21,19 +21,13 @@ pub enum Oracle {
     /// Torque-free body: ω and attitude (Landau & Lifshitz §37).
     TorqueFree {
         exact: Box<TorqueFreeBody>,
-        /// Body → principal: the attitude of the principal axes in the body.
-        principal_b: UnitQuaternion<f64>,
+        /// Principal → body: `v_b = r_bp * v_p`; its columns are the principal axes in body axes.
+        r_bp: UnitQuaternion<f64>,
     },
     /// Symmetric body (I1 = I2, body axes principal) under a constant torque along its symmetry axis: ω only.
     AxialTorque(AxialTorqueSymmetric),
-    /// Spin about a principal axis under viscous damping M = −cω: ω(t) = ω(0)·exp(−c t / I) about the fixed axis,
-    /// turned angle ω(0)·I/c·(1 − exp(−c t / I)).
-    DampedSpin {
-        omega0_b: Vector3<f64>,
-        inertia: f64,
-        c: f64,
-        q0: UnitQuaternion<f64>,
-    },
+    /// Spin about a principal axis under viscous damping M = −cω (see [`DampedSpin`]).
+    DampedSpin(DampedSpin),
     /// Prescribed fixed-axis motion: the closed-form H_s = I_s(θ)·ω_s against Ḣ_s = M_s integrated.
     FixedAxis,
 }
@@ -46,15 +40,15 @@ impl Oracle {
             Motion::Free { omega0_b, .. } => *omega0_b,
         };
         let principal = scene.body.principal();
-        let principal_b = UnitQuaternion::from_rotation_matrix(&principal.axes_b);
+        let r_bp = principal_to_body(&principal.axes_b);
         match scene.effects.as_slice() {
             [] => {
-                let omega0_p = principal_b.inverse_transform_vector(&omega0_b);
-                TorqueFreeBody::new(principal.moments, omega0_p, scene.attitude0 * principal_b)
+                let omega0_p = r_bp.inverse_transform_vector(&omega0_b);
+                TorqueFreeBody::new(principal.moments, omega0_p, scene.attitude0 * r_bp)
                     .ok()
                     .map(|exact| Oracle::TorqueFree {
                         exact: Box::new(exact),
-                        principal_b,
+                        r_bp,
                     })
             }
             [
@@ -66,7 +60,7 @@ impl Oracle {
             ] => {
                 let m = principal.moments;
                 let axial = value[0] == 0.0 && value[1] == 0.0;
-                let body_axes_principal = principal_b == UnitQuaternion::identity();
+                let body_axes_principal = r_bp == UnitQuaternion::identity();
                 (axial && body_axes_principal && m[0] == m[1])
                     .then(|| AxialTorqueSymmetric::new(m[0], m[2], value[2], omega0_b).ok())
                     .flatten()
@@ -77,12 +71,10 @@ impl Oracle {
                 let h0_b = scene.body.inertia_c() * omega0_b;
                 let inertia = h0_b.dot(&omega0_b) / omega0_b.norm_squared();
                 let along = (h0_b - omega0_b * inertia).norm() <= 1e-14 * h0_b.norm();
-                (omega0_b.norm() > 0.0 && along && *c > 0.0).then_some(Oracle::DampedSpin {
-                    omega0_b,
-                    inertia,
-                    c: *c,
-                    q0: scene.attitude0,
-                })
+                along
+                    .then(|| DampedSpin::new(omega0_b, inertia, *c, scene.attitude0).ok())
+                    .flatten()
+                    .map(Oracle::DampedSpin)
             }
             _ => None,
         }
@@ -103,11 +95,11 @@ impl Oracle {
     /// The closed-form values at time t: ω_b, attitude (if known), H_s (if known), energy (if known).
     fn at(&self, t: f64) -> Exact {
         match self {
-            Oracle::TorqueFree { exact, principal_b } => {
-                let omega_b = principal_b * exact.omega_p(t);
+            Oracle::TorqueFree { exact, r_bp } => {
+                let omega_b = r_bp * exact.omega_p(t);
                 Exact {
                     omega_b: Some(omega_b),
-                    q: Some(exact.attitude(t) * principal_b.inverse()),
+                    q: Some(exact.attitude(t) * r_bp.inverse()),
                     h_s: Some(exact.h_s()),
                     energy: Some(exact.energy()),
                 }
@@ -118,27 +110,24 @@ impl Oracle {
                 h_s: None,
                 energy: None,
             },
-            Oracle::DampedSpin {
-                omega0_b,
-                inertia,
-                c,
-                q0,
-            } => {
-                let decay = (-c * t / inertia).exp();
-                let w0 = omega0_b.norm();
-                let turned = w0 * inertia / c * (-(-c * t / inertia).exp_m1());
-                let axis = nalgebra::Unit::new_normalize(*omega0_b);
-                let q = q0 * UnitQuaternion::from_axis_angle(&axis, turned);
+            Oracle::DampedSpin(spin) => {
+                let s = spin.at(t);
                 Exact {
-                    omega_b: Some(omega0_b * decay),
-                    q: Some(q),
-                    h_s: Some(q * (omega0_b * (inertia * decay))),
-                    energy: Some(0.5 * inertia * w0 * w0 * decay * decay),
+                    omega_b: Some(s.omega_b),
+                    q: Some(s.q),
+                    h_s: Some(s.h_s),
+                    energy: Some(s.energy),
                 }
             }
             Oracle::FixedAxis => Exact::default(),
         }
     }
+}
+
+/// The rotation principal → body (`v_b = r_bp * v_p`) whose matrix has the principal axes, in body axes, as its
+/// columns (as [`crate::body::Principal::axes_b`] holds them).
+fn principal_to_body(axes_b: &Rotation3<f64>) -> UnitQuaternion<f64> {
+    UnitQuaternion::from_rotation_matrix(axes_b)
 }
 
 #[derive(Debug, Default)]
@@ -383,4 +372,39 @@ pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
         rows,
         note: method_note(scene),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::body::Principal;
+    use nalgebra::Matrix3;
+
+    #[test]
+    fn r_bp_maps_principal_to_body_axes() {
+        // A tensor whose principal axes are not the body axes.
+        let turn = Rotation3::from_euler_angles(0.3, -0.7, 1.1);
+        let inertia_b = turn.matrix()
+            * Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0))
+            * turn.matrix().transpose();
+        let principal = Principal::of(&inertia_b);
+        let r_bp = principal_to_body(&principal.axes_b);
+        for k in 0..3 {
+            // Principal axis k, expressed in body axes, is r_bp · e_k, an eigenvector of the body tensor.
+            let axis_b = r_bp * Vector3::ith(k, 1.0);
+            let moment = principal.moments[k];
+            assert!(
+                (inertia_b * axis_b - axis_b * moment).norm() < 1e-12,
+                "axis {k}"
+            );
+            // The eigenvector the tensor was built with (moments ascending: same order, up to sign).
+            assert!(
+                (axis_b.dot(&turn.matrix().column(k)).abs() - 1.0).abs() < 1e-12,
+                "axis {k}"
+            );
+            // And the body's eigenvector, expressed in principal axes, is e_k.
+            let e_k = r_bp.inverse_transform_vector(&axis_b);
+            assert!((e_k - Vector3::ith(k, 1.0)).norm() < 1e-12, "axis {k}");
+        }
+    }
 }

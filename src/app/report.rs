@@ -11,7 +11,9 @@ use crate::body::Principal;
 use crate::effects::{Effect, TorqueProfile};
 use crate::frames::Form;
 use crate::method::Method;
-use crate::sample::BASE_COLUMNS;
+use crate::motion::fixed_axis::FixedAxis;
+use crate::motion::free::FreeBody;
+use crate::sample::{BASE_COLUMNS, Sample};
 use crate::scene::{Motion, Scene};
 use crate::simulate;
 
@@ -194,6 +196,25 @@ fn effect_text(e: &Effect) -> String {
 pub fn describe(scene: &Scene) -> String {
     let mut out = String::new();
     let w = &mut out;
+    scene_lines(w, scene);
+    body_lines(w, scene);
+    match &scene.motion {
+        Motion::Free {
+            omega0_b,
+            body: free,
+        } => free_motion_lines(w, scene, omega0_b, free),
+        Motion::FixedAxis(motion) => fixed_axis_lines(w, scene, motion),
+    }
+    attitude_line(w, scene);
+    effect_lines(w, scene);
+    let steps = method_lines(w, scene);
+    output_lines(w, scene);
+    line(w, "estimate", &steps);
+    out
+}
+
+/// The scene's name and description.
+fn scene_lines(w: &mut String, scene: &Scene) {
     let name = if scene.name.is_empty() {
         "(unnamed)"
     } else {
@@ -203,185 +224,198 @@ pub fn describe(scene: &Scene) -> String {
     if !scene.description.is_empty() {
         line(w, "", &scene.description);
     }
+}
 
-    // The body.
+/// The body: mass, inertia tensor about C, principal moments and axes.
+fn body_lines(w: &mut String, scene: &Scene) {
     let body = &scene.body;
     line(w, "body", &format!("mass {} kg", plain(body.mass())));
     tensor_lines(w, "inertia about C, body axes (kg*m^2):", body.inertia_c());
-    let principal = body.principal();
-    principal_lines(w, principal, "");
+    principal_lines(w, body.principal(), "");
+}
 
-    // The motion and its moment center.
-    let frame = scene.solver.frame;
-    match &scene.motion {
-        Motion::Free {
-            omega0_b,
-            body: free,
-        } => {
-            let pivot = scene.effects.iter().find_map(|e| match e {
-                Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
-                _ => None,
-            });
+/// Free motion: its moment center (C, or the pivot of a gravity effect) and the state at t = 0.
+fn free_motion_lines(w: &mut String, scene: &Scene, omega0_b: &Vector3<f64>, free: &FreeBody) {
+    let pivot = scene.effects.iter().find_map(|e| match e {
+        Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
+        _ => None,
+    });
+    line(
+        w,
+        "motion",
+        "free rotation from omega(0), under the effects listed below",
+    );
+    match pivot {
+        Some(pivot) => {
             line(
                 w,
-                "motion",
-                "free rotation from omega(0), under the effects listed below",
-            );
-            match pivot {
-                Some(pivot) => {
-                    line(
-                        w,
-                        "moment center",
-                        &format!(
-                            "the fixed pivot, {} m from C (body axes): H and M are about it",
-                            vec3(&pivot)
-                        ),
-                    );
-                    let about = Principal::of(free.inertia_b());
-                    line(
-                        w,
-                        "",
-                        &format!(
-                            "principal moments about the pivot: {:.6e}, {:.6e}, {:.6e} kg*m^2",
-                            about.moments[0], about.moments[1], about.moments[2]
-                        ),
-                    );
-                }
-                None => line(
-                    w,
-                    "moment center",
-                    "C, the mass center: H and M are about it",
+                "moment center",
+                &format!(
+                    "the fixed pivot, {} m from C (body axes): H and M are about it",
+                    vec3(&pivot)
                 ),
-            }
-            let h_b = free.inertia_b() * omega0_b;
-            let h_s = scene.attitude0 * h_b;
-            line(
-                w,
-                "at t = 0",
-                &format!("omega = {} rad/s (body axes)", vec3(omega0_b)),
             );
+            let about = Principal::of(free.inertia_b());
             line(
                 w,
                 "",
                 &format!(
-                    "H = {} kg*m^2/s (body axes), {} (space axes), |H| = {:.6e}",
-                    vec3(&h_b),
-                    vec3(&h_s),
-                    h_b.norm()
+                    "principal moments about the pivot: {:.6e}, {:.6e}, {:.6e} kg*m^2",
+                    about.moments[0], about.moments[1], about.moments[2]
                 ),
-            );
-            line(
-                w,
-                "",
-                &format!("kinetic energy {:.6e} J", 0.5 * omega0_b.dot(&h_b)),
             );
         }
-        Motion::FixedAxis(motion) => {
-            let axis_b = motion.axis_b().into_inner();
-            let (tilt, nearest) = tilt_from_principal(principal, &axis_b);
-            line(
-                w,
-                "motion",
-                "prescribed rotation about an axis fixed in the body and in space; M is the moment it requires (M = dH/dt)",
-            );
-            line(
-                w,
-                "",
-                &format!(
-                    "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
-                    vec3(&axis_b),
-                    if tilt < 1e-6 && motion.point_b() == Vector3::zeros() {
-                        ": a principal axis, no moment is needed at a constant rate"
-                    } else {
-                        ""
-                    }
-                ),
-            );
-            let (rate, accel, t_end) = (motion.rate(), motion.accel(), scene.solver.t_end);
-            let turned = rate * t_end + 0.5 * accel * t_end * t_end;
-            line(
-                w,
-                "",
-                &format!(
-                    "rate {} rad/s at t = 0, acceleration {} rad/s^2: {} turns by t_end",
-                    plain(rate),
-                    plain(accel),
-                    turns(turned / std::f64::consts::TAU)
-                ),
-            );
-            let point_b = motion.point_b();
-            if point_b == Vector3::zeros() {
-                line(
-                    w,
-                    "moment center",
-                    "C, the mass center, on the axis: H and M are about it",
-                );
-            } else {
-                line(
-                    w,
-                    "moment center",
-                    &format!(
-                        "the axis point {} m from C (body axes): H and M are about it",
-                        vec3(&point_b)
-                    ),
-                );
-                line(
-                    w,
-                    "",
-                    "C moves on a circle about the axis; the bearing force F = m a_C is in the F_s columns",
-                );
-            }
-            let s = motion.sample(0.0, frame);
-            line(
-                w,
-                "at t = 0",
-                &format!("omega = {} rad/s (body axes)", vec3(&s.omega_b)),
-            );
-            line(
-                w,
-                "",
-                &format!(
-                    "H = {} kg*m^2/s (body axes), |H| = {:.6e}",
-                    vec3(&s.h_b),
-                    s.h_b.norm()
-                ),
-            );
-            line(
-                w,
-                "",
-                &format!(
-                    "M = {} N*m (body axes), |M| = {:.6e}: the moment the bearings supply",
-                    vec3(&s.m_b),
-                    s.m_b.norm()
-                ),
-            );
-            if let Some(f) = s.f_s {
-                line(
-                    w,
-                    "",
-                    &format!("F = {} N (space axes), |F| = {:.6e}", vec3(&f), f.norm()),
-                );
-            }
-            line(w, "", &format!("kinetic energy {:.6e} J", s.energy));
-        }
+        None => line(
+            w,
+            "moment center",
+            "C, the mass center: H and M are about it",
+        ),
     }
-    if scene.attitude0.angle() != 0.0 {
-        let (axis, angle) = scene
-            .attitude0
-            .axis_angle()
-            .map_or((Vector3::z(), 0.0), |(a, angle)| (a.into_inner(), angle));
+    let h_b = free.inertia_b() * omega0_b;
+    let h_s = scene.attitude0 * h_b;
+    line(
+        w,
+        "at t = 0",
+        &format!("omega = {} rad/s (body axes)", vec3(omega0_b)),
+    );
+    line(
+        w,
+        "",
+        &format!(
+            "H = {} kg*m^2/s (body axes), {} (space axes), |H| = {:.6e}",
+            vec3(&h_b),
+            vec3(&h_s),
+            h_b.norm()
+        ),
+    );
+    line(
+        w,
+        "",
+        &format!("kinetic energy {:.6e} J", 0.5 * omega0_b.dot(&h_b)),
+    );
+}
+
+/// Prescribed fixed-axis motion: the axis and its tilt from the nearest principal axis, the rate, the moment
+/// center and the state at t = 0.
+fn fixed_axis_lines(w: &mut String, scene: &Scene, motion: &FixedAxis) {
+    let axis_b = motion.axis_b().into_inner();
+    let (tilt, nearest) = tilt_from_principal(scene.body.principal(), &axis_b);
+    line(
+        w,
+        "motion",
+        "prescribed rotation about an axis fixed in the body and in space; M is the moment it requires (M = dH/dt)",
+    );
+    line(
+        w,
+        "",
+        &format!(
+            "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
+            vec3(&axis_b),
+            if tilt < 1e-6 && motion.point_b() == Vector3::zeros() {
+                ": a principal axis, no moment is needed at a constant rate"
+            } else {
+                ""
+            }
+        ),
+    );
+    let (rate, accel, t_end) = (motion.rate(), motion.accel(), scene.solver.t_end);
+    let turned = rate * t_end + 0.5 * accel * t_end * t_end;
+    line(
+        w,
+        "",
+        &format!(
+            "rate {} rad/s at t = 0, acceleration {} rad/s^2: {} turns by t_end",
+            plain(rate),
+            plain(accel),
+            turns(turned / std::f64::consts::TAU)
+        ),
+    );
+    axis_point_lines(w, &motion.point_b());
+    fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.frame));
+}
+
+/// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
+fn axis_point_lines(w: &mut String, point_b: &Vector3<f64>) {
+    if *point_b == Vector3::zeros() {
+        line(
+            w,
+            "moment center",
+            "C, the mass center, on the axis: H and M are about it",
+        );
+    } else {
+        line(
+            w,
+            "moment center",
+            &format!(
+                "the axis point {} m from C (body axes): H and M are about it",
+                vec3(point_b)
+            ),
+        );
         line(
             w,
             "",
-            &format!(
-                "attitude: body axes turned {:.3} deg about {} from space axes",
-                angle.to_degrees(),
-                vec3(&axis)
-            ),
+            "C moves on a circle about the axis; the bearing force F = m a_C is in the F_s columns",
         );
     }
+}
 
-    // Effects.
+/// The state of fixed-axis motion at t = 0: ω, H, the moment the bearings supply, the force, the energy.
+fn fixed_axis_state_lines(w: &mut String, s: &Sample) {
+    line(
+        w,
+        "at t = 0",
+        &format!("omega = {} rad/s (body axes)", vec3(&s.omega_b)),
+    );
+    line(
+        w,
+        "",
+        &format!(
+            "H = {} kg*m^2/s (body axes), |H| = {:.6e}",
+            vec3(&s.h_b),
+            s.h_b.norm()
+        ),
+    );
+    line(
+        w,
+        "",
+        &format!(
+            "M = {} N*m (body axes), |M| = {:.6e}: the moment the bearings supply",
+            vec3(&s.m_b),
+            s.m_b.norm()
+        ),
+    );
+    if let Some(f) = s.f_s {
+        line(
+            w,
+            "",
+            &format!("F = {} N (space axes), |F| = {:.6e}", vec3(&f), f.norm()),
+        );
+    }
+    line(w, "", &format!("kinetic energy {:.6e} J", s.energy));
+}
+
+/// The initial attitude, when it is not the identity.
+fn attitude_line(w: &mut String, scene: &Scene) {
+    if scene.attitude0.angle() == 0.0 {
+        return;
+    }
+    let (axis, angle) = scene
+        .attitude0
+        .axis_angle()
+        .map_or((Vector3::z(), 0.0), |(a, angle)| (a.into_inner(), angle));
+    line(
+        w,
+        "",
+        &format!(
+            "attitude: body axes turned {:.3} deg about {} from space axes",
+            angle.to_degrees(),
+            vec3(&axis)
+        ),
+    );
+}
+
+/// The effects, one a line (or why there are none).
+fn effect_lines(w: &mut String, scene: &Scene) {
     if scene.effects.is_empty() {
         let none = match scene.motion {
             Motion::FixedAxis(_) => "none: the motion is prescribed",
@@ -392,8 +426,10 @@ pub fn describe(scene: &Scene) -> String {
     for (k, e) in scene.effects.iter().enumerate() {
         line(w, if k == 0 { "effects" } else { "" }, &effect_text(e));
     }
+}
 
-    // Equation, method, output, steps.
+/// The equation and the method with its step or tolerances; returns the estimate of the steps.
+fn method_lines(w: &mut String, scene: &Scene) -> String {
     let s = &scene.solver;
     let form = match s.frame {
         Form::Body => "body axes: I*omega' + omega x I*omega = M",
@@ -406,10 +442,9 @@ pub fn describe(scene: &Scene) -> String {
     } else {
         String::new()
     };
-    let rows = scene.schedule.len();
-    let intervals = rows.saturating_sub(1);
+    let intervals = scene.schedule.len().saturating_sub(1);
     let rate = characteristic_rate(scene);
-    let steps = if s.method.is_fixed_step() {
+    if s.method.is_fixed_step() {
         line(
             w,
             "method",
@@ -452,7 +487,13 @@ pub fn describe(scene: &Scene) -> String {
             ),
         );
         "no time steps".to_string()
-    };
+    }
+}
+
+/// The rows and columns of the output.
+fn output_lines(w: &mut String, scene: &Scene) {
+    let s = &scene.solver;
+    let rows = scene.schedule.len();
     let extra: Vec<&str> = simulate::columns(scene)
         .columns()
         .iter()
@@ -484,8 +525,6 @@ pub fn describe(scene: &Scene) -> String {
             )
         },
     );
-    line(w, "estimate", &steps);
-    out
 }
 
 #[cfg(test)]

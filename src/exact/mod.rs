@@ -11,10 +11,12 @@
 //! - [`symmetric`]: symmetric bodies: torque-free precession, constant axial torque, and the
 //!   heavy symmetric top in steady precession (Goldstein, *Classical Mechanics*, §§5.6–5.7).
 
+pub mod damped_spin;
 pub mod jacobi;
 pub mod symmetric;
 pub mod torque_free;
 
+pub use damped_spin::{DampedSpin, DampedSpinState};
 pub use jacobi::{JacobiElliptic, amplitude, sn_cn_dn};
 pub use symmetric::{
     AxialTorqueSymmetric, HeavySymmetricTop, PrecessionRoots, SteadyPrecession, SymmetricTorqueFree,

@@ -1,20 +1,35 @@
 //! Output files written atomically: into a temporary file in the destination's directory, renamed over the
 //! destination only when everything succeeded. On any failure (or drop before commit) the temporary file is
-//! removed and an existing destination is left untouched.
+//! removed and an existing destination is left untouched. Writes are buffered; [`AtomicFile::commit`] flushes,
+//! fsyncs the file's data (not the directory) and renames.
 
 use std::fs::File;
-use std::io;
+use std::io::{self, BufWriter, Write};
 use std::os::unix::fs::PermissionsExt;
 use std::path::{Path, PathBuf};
 
-use tempfile::NamedTempFile;
+use tempfile::TempPath;
 
 /// A file being written; becomes `path` on [`AtomicFile::commit`]. Its temporary file is registered with
 /// [`crate::app::interrupt`] so that an interrupt removes it (a file dropped without commit is removed by
-/// `NamedTempFile` and stays registered: removing it again on interrupt is a harmless no-op).
+/// its `TempPath` and stays registered: removing it again on interrupt is a harmless no-op).
 pub struct AtomicFile {
     path: PathBuf,
-    temp: NamedTempFile,
+    /// The temporary file, buffered (one JSON document would otherwise be a thousand small writes).
+    out: BufWriter<File>,
+    /// Removes the temporary file when dropped before [`AtomicFile::commit`].
+    temp_path: TempPath,
+}
+
+/// Why [`AtomicFile::write_and_commit`] failed; its message starts with the step (`cannot write: …`).
+#[derive(Debug, thiserror::Error)]
+pub enum CommitError {
+    /// The bytes could not be written.
+    #[error("cannot write: {0}")]
+    Write(io::Error),
+    /// The file could not be synced or renamed over its destination.
+    #[error("cannot save: {0}")]
+    Save(io::Error),
 }
 
 impl AtomicFile {
@@ -49,15 +64,17 @@ impl AtomicFile {
         temp.as_file()
             .set_permissions(std::fs::Permissions::from_mode(0o644))?;
         crate::app::interrupt::register(temp.path());
+        let (file, temp_path) = temp.into_parts();
         Ok(Self {
             path: path.to_path_buf(),
-            temp,
+            out: BufWriter::new(file),
+            temp_path,
         })
     }
 
-    /// The open temporary file, to write into.
-    pub fn file(&mut self) -> &mut File {
-        self.temp.as_file_mut()
+    /// The open temporary file (buffered), to write into.
+    pub fn file(&mut self) -> &mut BufWriter<File> {
+        &mut self.out
     }
 
     /// The destination path.
@@ -65,12 +82,68 @@ impl AtomicFile {
         &self.path
     }
 
-    /// Syncs the data and renames the temporary file over the destination.
+    /// Flushes the buffer, syncs the file's data and metadata (`fsync`) and renames the temporary file over the
+    /// destination. The directory is not synced: after a crash the destination holds the old file or the new one,
+    /// complete.
     pub fn commit(self) -> io::Result<()> {
-        self.temp.as_file().sync_all()?;
-        let temp_path = self.temp.path().to_path_buf();
-        let result = self.temp.persist(&self.path).map_err(|e| e.error);
+        let file = self.out.into_inner().map_err(|e| e.into_error())?;
+        file.sync_all()?;
+        let temp_path = self.temp_path.to_path_buf();
+        let result = self.temp_path.persist(&self.path).map_err(|e| e.error);
         crate::app::interrupt::unregister(&temp_path);
-        result.map(|_| ())
+        result
+    }
+
+    /// Writes `bytes` and commits: the whole file at once.
+    pub fn write_and_commit(mut self, bytes: &[u8]) -> Result<(), CommitError> {
+        self.out.write_all(bytes).map_err(CommitError::Write)?;
+        self.commit().map_err(CommitError::Save)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .expect("listing")
+            .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn the_destination_is_the_old_file_until_commit_and_the_new_one_after() {
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let out = dir.path().join("out.json");
+        std::fs::write(&out, "old").expect("written");
+        let mut file = AtomicFile::create(&out).expect("created");
+        for k in 0..1000 {
+            write!(file.file(), "{k},").expect("buffered");
+        }
+        assert_eq!(std::fs::read_to_string(&out).expect("read"), "old");
+        file.commit().expect("committed");
+        let text = std::fs::read_to_string(&out).expect("read");
+        assert!(text.starts_with("0,1,2,") && text.ends_with("998,999,"));
+        assert_eq!(names(dir.path()), ["out.json"]);
+    }
+
+    #[test]
+    fn a_file_dropped_before_commit_leaves_the_old_one_and_no_temporary_file() {
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let out = dir.path().join("out.csv");
+        std::fs::write(&out, "old").expect("written");
+        let mut file = AtomicFile::create(&out).expect("created");
+        file.file().write_all(b"new").expect("buffered");
+        drop(file);
+        assert_eq!(std::fs::read_to_string(&out).expect("read"), "old");
+        assert_eq!(names(dir.path()), ["out.csv"]);
+        AtomicFile::create(&out)
+            .expect("created")
+            .write_and_commit(b"new")
+            .expect("committed");
+        assert_eq!(std::fs::read_to_string(&out).expect("read"), "new");
     }
 }

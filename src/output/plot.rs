@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
@@ -37,7 +38,8 @@ const TITLE_HEIGHT: u32 = 44;
 /// Width of the legend column at the right of each panel.
 const LEGEND_WIDTH: i32 = 270;
 
-const FONT: &str = "sans-serif";
+/// The font family the SVG names (the viewer renders the text).
+pub(crate) const FONT: &str = "sans-serif";
 
 /// One panel of the figure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -267,6 +269,51 @@ pub struct RunSeries {
 }
 
 impl RunSeries {
+    /// No rows yet: a curve for each wanted column after t, and the drift curves when `panels` draw them.
+    fn new(file: &Path, wanted: &[&'static str], panels: &[Panel]) -> Self {
+        let drifts = if panels.contains(&Panel::Drift) {
+            Panel::Drift
+                .columns()
+                .iter()
+                .map(|&column| Drift {
+                    column,
+                    x0: None,
+                    points: Decimator::new(),
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Self {
+            file: file.to_path_buf(),
+            rows: 0,
+            t_range: (f64::INFINITY, f64::NEG_INFINITY),
+            columns: wanted[1..].iter().map(|&c| (c, Decimator::new())).collect(),
+            drifts,
+            subtitle: None,
+        }
+    }
+
+    /// Adds a row's `values` (t first, then the wanted columns); `drift_index[k]` is the value of drift k.
+    fn push(&mut self, values: &[f64], drift_index: &[usize]) {
+        let t = values[0];
+        self.t_range = (self.t_range.0.min(t), self.t_range.1.max(t));
+        for (k, (_, d)) in self.columns.iter_mut().enumerate() {
+            d.push(t, values[k + 1]);
+        }
+        for (drift, &k) in self.drifts.iter_mut().zip(drift_index) {
+            let x = values[k];
+            match drift.x0 {
+                None => drift.x0 = Some(x),
+                Some(x0) => {
+                    let change = (x - x0).abs();
+                    let value = if x0 == 0.0 { change } else { change / x0.abs() };
+                    drift.points.push(t, value);
+                }
+            }
+        }
+    }
+
     fn points(&self, column: &str) -> Vec<(f64, f64)> {
         self.columns
             .iter()
@@ -307,6 +354,38 @@ pub fn read_run_from(
         .has_headers(true)
         .trim(csv::Trim::All)
         .from_reader(reader);
+    let header = read_header(file, &mut csv)?;
+    let wanted = wanted_columns(panels);
+    let index = column_indices(file, &header, &wanted, panels)?;
+    let mut series = RunSeries::new(file, &wanted, panels);
+    let drift_index: Vec<usize> = series
+        .drifts
+        .iter()
+        .map(|d| wanted.iter().position(|&w| w == d.column).unwrap_or(0))
+        .collect();
+    let mut record = csv::ByteRecord::new();
+    let mut values = vec![0.0; wanted.len()];
+    loop {
+        match csv.read_byte_record(&mut record) {
+            Ok(false) => break,
+            Ok(true) => {}
+            Err(e) => return Err(PlotError::input(file, csv_problem(&e))),
+        }
+        series.rows += 1;
+        parse_row(file, &record, series.rows, &index, &wanted, &mut values)?;
+        series.push(&values, &drift_index);
+    }
+    if series.rows == 0 {
+        return Err(PlotError::input(
+            file,
+            "the file has a header but no data rows; nothing to plot",
+        ));
+    }
+    Ok(series)
+}
+
+/// The header's column names; an empty file is refused.
+fn read_header(file: &Path, csv: &mut csv::Reader<impl Read>) -> Result<Vec<String>, PlotError> {
     let header: Vec<String> = csv
         .byte_headers()
         .map_err(|e| PlotError::input(file, csv_problem(&e)))?
@@ -319,7 +398,11 @@ pub fn read_run_from(
             "the file is empty; expected a CSV written by `eulerdyn run` (header `t,q_w,q_x,...`, then one row per time)",
         ));
     }
-    // The columns to read: t, then those of every panel, each once; each with its index in the header.
+    Ok(header)
+}
+
+/// The columns to read: t, then those of every panel, each once.
+fn wanted_columns(panels: &[Panel]) -> Vec<&'static str> {
     let mut wanted: Vec<&'static str> = vec!["t"];
     for panel in panels {
         for &c in panel.columns() {
@@ -328,9 +411,19 @@ pub fn read_run_from(
             }
         }
     }
+    wanted
+}
+
+/// The index in `header` of each wanted column; a missing column is refused with the panels that need it.
+fn column_indices(
+    file: &Path,
+    header: &[String],
+    wanted: &[&'static str],
+    panels: &[Panel],
+) -> Result<Vec<usize>, PlotError> {
     let mut missing: Vec<(&str, Vec<&str>)> = Vec::new();
     let mut index = Vec::with_capacity(wanted.len());
-    for &name in &wanted {
+    for &name in wanted {
         match header.iter().position(|h| h == name) {
             Some(i) => index.push(i),
             None => {
@@ -347,111 +440,61 @@ pub fn read_run_from(
             }
         }
     }
-    if !missing.is_empty() {
-        let list: Vec<String> = missing
-            .iter()
-            .map(|(name, users)| format!("`{name}` (needed by {})", users.join(", ")))
-            .collect();
-        let mut shown = header.join(",");
-        if shown.chars().count() > 120 {
-            shown = shown.chars().take(117).collect::<String>() + "...";
-        }
-        let hint = if header.len() == 1 && (shown.contains(';') || shown.contains('\t')) {
-            " (the columns must be separated by commas)"
-        } else {
-            ""
-        };
-        return Err(PlotError::input(
-            file,
-            format!(
-                "no column {}; is it a CSV written by `eulerdyn run`? Its header is: {shown}{hint}. Choose other panels with --panels ({})",
-                list.join(", "),
-                Panel::names()
-            ),
-        ));
+    if missing.is_empty() {
+        return Ok(index);
     }
-
-    let mut columns: Vec<(&'static str, Decimator)> =
-        wanted[1..].iter().map(|&c| (c, Decimator::new())).collect();
-    let mut drifts: Vec<Drift> = if panels.contains(&Panel::Drift) {
-        Panel::Drift
-            .columns()
-            .iter()
-            .map(|&column| Drift {
-                column,
-                x0: None,
-                points: Decimator::new(),
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let drift_index: Vec<usize> = drifts
+    let list: Vec<String> = missing
         .iter()
-        .map(|d| wanted.iter().position(|&w| w == d.column).unwrap_or(0))
+        .map(|(name, users)| format!("`{name}` (needed by {})", users.join(", ")))
         .collect();
+    let mut shown = header.join(",");
+    if shown.chars().count() > 120 {
+        shown = shown.chars().take(117).collect::<String>() + "...";
+    }
+    let hint = if header.len() == 1 && (shown.contains(';') || shown.contains('\t')) {
+        " (the columns must be separated by commas)"
+    } else {
+        ""
+    };
+    Err(PlotError::input(
+        file,
+        format!(
+            "no column {}; is it a CSV written by `eulerdyn run`? Its header is: {shown}{hint}. Choose other panels with --panels ({})",
+            list.join(", "),
+            Panel::names()
+        ),
+    ))
+}
 
-    let mut record = csv::ByteRecord::new();
-    let mut values = vec![0.0; wanted.len()];
-    let mut rows = 0u64;
-    let mut t_range = (f64::INFINITY, f64::NEG_INFINITY);
-    loop {
-        match csv.read_byte_record(&mut record) {
-            Ok(false) => break,
-            Ok(true) => {}
-            Err(e) => return Err(PlotError::input(file, csv_problem(&e))),
-        }
-        rows += 1;
-        let line = record.position().map_or(rows + 1, |p| p.line());
-        for (k, (&i, &name)) in index.iter().zip(&wanted).enumerate() {
-            let cell = record.get(i).unwrap_or_default();
-            let text = String::from_utf8_lossy(cell);
-            let value = text.parse::<f64>().ok().filter(|v| v.is_finite());
-            values[k] = value.ok_or_else(|| {
-                let what = if text.is_empty() {
-                    "is empty".to_string()
-                } else if text.parse::<f64>().is_ok() {
-                    format!("`{text}` is not a finite number")
-                } else {
-                    format!("`{text}` is not a number")
-                };
-                PlotError::input(
-                    file,
-                    format!("row {rows} (line {line}), column `{name}`: {what}"),
-                )
-            })?;
-        }
-        let t = values[0];
-        t_range = (t_range.0.min(t), t_range.1.max(t));
-        for (k, (_, d)) in columns.iter_mut().enumerate() {
-            d.push(t, values[k + 1]);
-        }
-        for (drift, &k) in drifts.iter_mut().zip(&drift_index) {
-            let x = values[k];
-            match drift.x0 {
-                None => drift.x0 = Some(x),
-                Some(x0) => {
-                    let change = (x - x0).abs();
-                    let value = if x0 == 0.0 { change } else { change / x0.abs() };
-                    drift.points.push(t, value);
-                }
-            }
-        }
+/// Parses the wanted cells of data row `row` into `values`; a cell that is not a finite number is refused.
+fn parse_row(
+    file: &Path,
+    record: &csv::ByteRecord,
+    row: u64,
+    index: &[usize],
+    wanted: &[&str],
+    values: &mut [f64],
+) -> Result<(), PlotError> {
+    let line = record.position().map_or(row + 1, |p| p.line());
+    for (k, (&i, &name)) in index.iter().zip(wanted).enumerate() {
+        let cell = record.get(i).unwrap_or_default();
+        let text = String::from_utf8_lossy(cell);
+        let value = text.parse::<f64>().ok().filter(|v| v.is_finite());
+        values[k] = value.ok_or_else(|| {
+            let what = if text.is_empty() {
+                "is empty".to_string()
+            } else if text.parse::<f64>().is_ok() {
+                format!("`{text}` is not a finite number")
+            } else {
+                format!("`{text}` is not a number")
+            };
+            PlotError::input(
+                file,
+                format!("row {row} (line {line}), column `{name}`: {what}"),
+            )
+        })?;
     }
-    if rows == 0 {
-        return Err(PlotError::input(
-            file,
-            "the file has a header but no data rows; nothing to plot",
-        ));
-    }
-    Ok(RunSeries {
-        file: file.to_path_buf(),
-        rows,
-        t_range,
-        columns,
-        drifts,
-        subtitle: None,
-    })
+    Ok(())
 }
 
 /// A CSV reader error in words, with its line.
@@ -487,12 +530,12 @@ fn sidecar_subtitle(csv: &Path) -> Option<String> {
     Some(format!("scene {name}, {method} ({frame} form){version}"))
 }
 
-/// A curve to draw.
-struct Curve {
-    label: String,
-    color: RGBColor,
-    dashed: bool,
-    points: Vec<(f64, f64)>,
+/// A curve to draw: its legend label, colour, line style and points (x, y) in drawing order.
+pub(crate) struct Curve {
+    pub label: String,
+    pub color: RGBColor,
+    pub dashed: bool,
+    pub points: Vec<(f64, f64)>,
 }
 
 const RED: RGBColor = RGBColor(0xd6, 0x27, 0x28);
@@ -531,55 +574,23 @@ fn components(run: &RunSeries, prefix: &str, suffix: &str, dashed: bool) -> Vec<
         .collect()
 }
 
+/// What `panel` shows of `run`.
 fn panel_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
-    let norm = || Curve {
-        label: "|H| = H_norm".into(),
-        color: GREY,
-        dashed: true,
-        points: run.points("H_norm"),
-    };
     match panel {
-        Panel::HBody => PanelPlot {
-            title: "Moment of momentum H about the moment center, in body axes".into(),
-            y_label: "H (kg·m²/s)".into(),
-            curves: components(run, "H_b", "", false)
-                .into_iter()
-                .chain([norm()])
-                .collect(),
-            log: false,
-            notes: Vec::new(),
-        },
-        Panel::HSpace => PanelPlot {
-            title: "Moment of momentum H about the moment center, in space axes".into(),
-            y_label: "H (kg·m²/s)".into(),
-            curves: components(run, "H_s", "", false)
-                .into_iter()
-                .chain([norm()])
-                .collect(),
-            log: false,
-            notes: Vec::new(),
-        },
-        Panel::Moment => PanelPlot {
-            title: "Moment M about the moment center: body axes (solid), space axes (dashed)"
-                .into(),
-            y_label: "M (N·m)".into(),
-            curves: components(run, "M_b", " body", false)
-                .into_iter()
-                .chain(components(run, "M_s", " space", true))
-                .collect(),
-            log: false,
-            notes: Vec::new(),
-        },
-        Panel::Omega => PanelPlot {
-            title: "Angular velocity ω: body axes (solid), space axes (dashed)".into(),
-            y_label: "ω (rad/s)".into(),
-            curves: components(run, "omega_b", " body", false)
-                .into_iter()
-                .chain(components(run, "omega_s", " space", true))
-                .collect(),
-            log: false,
-            notes: Vec::new(),
-        },
+        Panel::HBody => h_panel(run, "H_b", "body"),
+        Panel::HSpace => h_panel(run, "H_s", "space"),
+        Panel::Moment => body_and_space_panel(
+            run,
+            "Moment M about the moment center: body axes (solid), space axes (dashed)",
+            "M (N·m)",
+            "M",
+        ),
+        Panel::Omega => body_and_space_panel(
+            run,
+            "Angular velocity ω: body axes (solid), space axes (dashed)",
+            "ω (rad/s)",
+            "omega",
+        ),
         Panel::Energy => PanelPlot {
             title: "Kinetic energy ½ ω·H".into(),
             y_label: "energy (J)".into(),
@@ -592,58 +603,94 @@ fn panel_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
             log: false,
             notes: Vec::new(),
         },
-        Panel::Drift => {
-            let mut notes = Vec::new();
-            let mut clamped = false;
-            let curves = run
-                .drifts
-                .iter()
-                .map(|d| {
-                    let (name, color, unit) = match d.column {
-                        "H_norm" => ("|H|", ORANGE, "kg·m²/s"),
-                        _ => ("energy", PURPLE, "J"),
-                    };
-                    let absolute = d.x0 == Some(0.0);
-                    let label = if absolute {
-                        format!("{name}: absolute ({unit}), as {name}(0) = 0")
+        Panel::Drift => drift_panel(run),
+    }
+}
+
+/// H in one set of axes (columns `{columns}_x` …), with |H| dashed.
+fn h_panel(run: &RunSeries, columns: &str, axes: &str) -> PanelPlot {
+    let norm = Curve {
+        label: "|H| = H_norm".into(),
+        color: GREY,
+        dashed: true,
+        points: run.points("H_norm"),
+    };
+    PanelPlot {
+        title: format!("Moment of momentum H about the moment center, in {axes} axes"),
+        y_label: "H (kg·m²/s)".into(),
+        curves: components(run, columns, "", false)
+            .into_iter()
+            .chain([norm])
+            .collect(),
+        log: false,
+        notes: Vec::new(),
+    }
+}
+
+/// A vector in body axes (`{quantity}_b_x` …, solid) and in space axes (`{quantity}_s_x` …, dashed).
+fn body_and_space_panel(run: &RunSeries, title: &str, y_label: &str, quantity: &str) -> PanelPlot {
+    PanelPlot {
+        title: title.into(),
+        y_label: y_label.into(),
+        curves: components(run, &format!("{quantity}_b"), " body", false)
+            .into_iter()
+            .chain(components(run, &format!("{quantity}_s"), " space", true))
+            .collect(),
+        log: false,
+        notes: Vec::new(),
+    }
+}
+
+/// The drift of |H| and of the energy on a log scale, values below [`DRIFT_FLOOR`] drawn at it.
+fn drift_panel(run: &RunSeries) -> PanelPlot {
+    let mut notes = Vec::new();
+    let mut clamped = false;
+    let curves = run
+        .drifts
+        .iter()
+        .map(|d| {
+            let (name, color, unit) = match d.column {
+                "H_norm" => ("|H|", ORANGE, "kg·m²/s"),
+                _ => ("energy", PURPLE, "J"),
+            };
+            let absolute = d.x0 == Some(0.0);
+            let label = if absolute {
+                format!("{name}: absolute ({unit}), as {name}(0) = 0")
+            } else {
+                format!("{name}: relative")
+            };
+            let points = d
+                .points
+                .points()
+                .into_iter()
+                .map(|(t, v)| {
+                    if v < DRIFT_FLOOR {
+                        clamped = true;
+                        (t, DRIFT_FLOOR)
                     } else {
-                        format!("{name}: relative")
-                    };
-                    let points = d
-                        .points
-                        .points()
-                        .into_iter()
-                        .map(|(t, v)| {
-                            if v < DRIFT_FLOOR {
-                                clamped = true;
-                                (t, DRIFT_FLOOR)
-                            } else {
-                                (t, v)
-                            }
-                        })
-                        .collect();
-                    Curve {
-                        label,
-                        color,
-                        dashed: false,
-                        points,
+                        (t, v)
                     }
                 })
                 .collect();
-            if clamped {
-                notes.push(format!("drift < {DRIFT_FLOOR:.0e} (e.g. 0)"));
-                notes.push(format!("is drawn at {DRIFT_FLOOR:.0e}"));
+            Curve {
+                label,
+                color,
+                dashed: false,
+                points,
             }
-            PanelPlot {
-                title:
-                    "Change of |H| and energy since t = 0 (their drift where they are invariants)"
-                        .into(),
-                y_label: "|x(t) − x(0)| / |x(0)|".into(),
-                curves,
-                log: true,
-                notes,
-            }
-        }
+        })
+        .collect();
+    if clamped {
+        notes.push(format!("drift < {DRIFT_FLOOR:.0e} (e.g. 0)"));
+        notes.push(format!("is drawn at {DRIFT_FLOOR:.0e}"));
+    }
+    PanelPlot {
+        title: "Change of |H| and energy since t = 0 (their drift where they are invariants)"
+            .into(),
+        y_label: "|x(t) − x(0)| / |x(0)|".into(),
+        curves,
+        log: true,
+        notes,
     }
 }
 
@@ -719,7 +766,8 @@ fn trim_zeros(number: &str) -> &str {
     }
 }
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+/// A region of an SVG figure.
+pub(crate) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
 fn draw_error(file: &Path, e: impl fmt::Display) -> PlotError {
     PlotError::Output {
@@ -759,7 +807,8 @@ pub fn render_svg(run: &RunSeries, panels: &[Panel], out_name: &Path) -> Result<
     Ok(svg)
 }
 
-type DrawResult = Result<(), DrawingAreaErrorKind<std::io::Error>>;
+/// What drawing into an [`Area`] gives.
+pub(crate) type DrawResult = Result<(), DrawingAreaErrorKind<std::io::Error>>;
 
 fn draw_panel(area: &Area<'_>, run: &RunSeries, plot: &PanelPlot) -> DrawResult {
     let (w, _) = area.dim_in_pixel();
@@ -827,19 +876,43 @@ fn draw_panel(area: &Area<'_>, run: &RunSeries, plot: &PanelPlot) -> DrawResult 
     }
     mesh.draw()?;
     for curve in curves {
-        let style = ShapeStyle::from(&curve.color).stroke_width(2);
-        if curve.dashed {
-            chart.draw_series(DashedLineSeries::new(
-                curve.points.iter().copied(),
-                7,
-                5,
-                style,
-            ))?;
-        } else {
-            chart.draw_series(LineSeries::new(curve.points.iter().copied(), style))?;
-        }
+        draw_curve(&mut chart, curve, 7)?;
     }
     draw_legend(&legend_area, plot)
+}
+
+/// A chart of an SVG figure, both axes linear in f64 (log scales are drawn as log10 of the values).
+pub(crate) type Chart<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// Draws `curve` as a line 2 px wide, solid or dashed (dashes of `dash` px, 5 px apart).
+pub(crate) fn draw_curve(chart: &mut Chart<'_, '_>, curve: &Curve, dash: u32) -> DrawResult {
+    let style = ShapeStyle::from(&curve.color).stroke_width(2);
+    let points = curve.points.iter().copied();
+    if curve.dashed {
+        chart.draw_series(DashedLineSeries::new(points, dash, 5, style))?;
+    } else {
+        chart.draw_series(LineSeries::new(points, style))?;
+    }
+    Ok(())
+}
+
+/// One line of a legend at height `y`: a sample of the curve's line (three dashes when dashed) and its label.
+pub(crate) fn draw_legend_entry(
+    area: &Area<'_>,
+    curve: &Curve,
+    y: i32,
+    text: &TextStyle<'_>,
+) -> DrawResult {
+    let style = ShapeStyle::from(&curve.color).stroke_width(2);
+    if curve.dashed {
+        for x in [6, 18, 30] {
+            area.draw(&PathElement::new(vec![(x, y), (x + 7, y)], style))?;
+        }
+    } else {
+        area.draw(&PathElement::new(vec![(6, y), (37, y)], style))?;
+    }
+    area.draw(&Text::new(curve.label.clone(), (46, y), text.clone()))
 }
 
 /// The legend, in its own column beside the chart so that it never hides a curve.
@@ -851,15 +924,7 @@ fn draw_legend(area: &Area<'_>, plot: &PanelPlot) -> DrawResult {
         .pos(Pos::new(HPos::Left, VPos::Center));
     let mut y = 52;
     for curve in &plot.curves {
-        let style = ShapeStyle::from(&curve.color).stroke_width(2);
-        if curve.dashed {
-            for x in [6, 18, 30] {
-                area.draw(&PathElement::new(vec![(x, y), (x + 7, y)], style))?;
-            }
-        } else {
-            area.draw(&PathElement::new(vec![(6, y), (37, y)], style))?;
-        }
-        area.draw(&Text::new(curve.label.clone(), (46, y), text.clone()))?;
+        draw_legend_entry(area, curve, y, &text)?;
         y += 24;
     }
     for line in &plot.notes {
@@ -897,19 +962,14 @@ pub fn plot_file(csv: &Path, out: &Path, panels: &[Panel]) -> Result<PlotSummary
 
 /// Writes `bytes` to `out` through a temporary file renamed over it.
 fn write_atomically(out: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    use std::io::Write;
-    let fail = |what: &str, e: std::io::Error| PlotError::Output {
-        file: out.to_path_buf(),
-        problem: format!("{what}: {e}"),
-    };
-    let mut file = super::AtomicFile::create(out).map_err(|e| PlotError::Input {
+    let file = super::AtomicFile::create(out).map_err(|e| PlotError::Input {
         file: out.to_path_buf(),
         problem: format!("cannot create the output file: {e}"),
     })?;
-    file.file()
-        .write_all(bytes)
-        .map_err(|e| fail("cannot write", e))?;
-    file.commit().map_err(|e| fail("cannot save", e))
+    file.write_and_commit(bytes).map_err(|e| PlotError::Output {
+        file: out.to_path_buf(),
+        problem: e.to_string(),
+    })
 }
 
 #[cfg(test)]

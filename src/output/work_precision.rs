@@ -6,11 +6,12 @@
 //! renders the text). Log scales are drawn as log10 of the values on linear axes, labelled at every decade.
 //! Failed runs are left out; an error of exactly 0 is drawn at [`ERROR_FLOOR`].
 
-use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::plot::{decade_label, decade_range};
+use super::plot::{
+    Area, Curve, DrawResult, FONT, decade_label, decade_range, draw_curve, draw_legend_entry,
+};
 use crate::analysis::study::{Study, TARGETS};
 use crate::frames::Form;
 
@@ -20,7 +21,6 @@ pub const ERROR_FLOOR: f64 = 1e-17;
 const WIDTH: u32 = 1200;
 const HEIGHT: u32 = 760;
 const LEGEND_WIDTH: i32 = 300;
-const FONT: &str = "sans-serif";
 
 /// Colours of the curves, by method, in the order methods appear.
 const PALETTE: [RGBColor; 10] = [
@@ -36,15 +36,7 @@ const PALETTE: [RGBColor; 10] = [
     RGBColor(23, 190, 207),
 ];
 
-/// One curve: a method in one form, its points (log10 wall time, log10 error) in run order.
-struct Curve {
-    label: String,
-    color: RGBColor,
-    dashed: bool,
-    points: Vec<(f64, f64)>,
-}
-
-/// The curves of a study, points sorted by time.
+/// The curves of a study, a method in one form each, points (log10 wall time, log10 error) sorted by time.
 fn curves(study: &Study) -> Vec<Curve> {
     let mut methods: Vec<&str> = Vec::new();
     let mut curves: Vec<Curve> = Vec::new();
@@ -79,9 +71,6 @@ fn curves(study: &Study) -> Vec<Curve> {
     }
     curves
 }
-
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type DrawResult = Result<(), DrawingAreaErrorKind<std::io::Error>>;
 
 /// The figure of `study`, as SVG text; the error says what could not be drawn.
 pub fn render_svg(study: &Study) -> Result<String, String> {
@@ -155,17 +144,7 @@ fn draw(root: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         }
     }
     for curve in curves {
-        let style = ShapeStyle::from(&curve.color).stroke_width(2);
-        if curve.dashed {
-            chart.draw_series(DashedLineSeries::new(
-                curve.points.iter().copied(),
-                8,
-                5,
-                style,
-            ))?;
-        } else {
-            chart.draw_series(LineSeries::new(curve.points.iter().copied(), style))?;
-        }
+        draw_curve(&mut chart, curve, 8)?;
         let marker = if curve.dashed {
             ShapeStyle::from(&curve.color).stroke_width(2)
         } else {
@@ -185,15 +164,7 @@ fn draw_legend(area: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         .pos(Pos::new(HPos::Left, VPos::Center));
     let mut y = 30;
     for curve in curves {
-        let style = ShapeStyle::from(&curve.color).stroke_width(2);
-        if curve.dashed {
-            for x in [6, 18, 30] {
-                area.draw(&PathElement::new(vec![(x, y), (x + 7, y)], style))?;
-            }
-        } else {
-            area.draw(&PathElement::new(vec![(6, y), (37, y)], style))?;
-        }
-        area.draw(&Text::new(curve.label.clone(), (46, y), text.clone()))?;
+        draw_legend_entry(area, curve, y, &text)?;
         y += 22;
     }
     y += 10;

@@ -1,0 +1,375 @@
+//! The work-precision study behind `eulerdyn accuracy`: what each digit of accuracy costs in time.
+//!
+//! Every method of [`Method::ALL`] that the scene accepts is run over a sweep (adaptive methods over relative
+//! tolerances, fixed-step methods over halved step sizes), each run's error measured against a reference (a closed
+//! form, or a tight DOP853 run), and its integration timed. The outcome is a [`Study`]: a table (one row per run,
+//! [`TABLE_COLUMNS`]), and a summary naming the cheapest method for each of [`TARGETS`]. How the sweep is chosen,
+//! what each measure means and how the time is taken: `docs/accuracy_study.md`.
+//!
+//! - this module: the options, the plan of runs, and [`accuracy`], which runs it;
+//! - `reference`: the closed form or reference run the errors are taken against;
+//! - `sweep`: one curve of runs, and one run: its scene, its errors, its timing;
+//! - `measure`: the errors of one run against the reference, row by row;
+//! - `timing`: the timed repeats of a run;
+//! - `table`, `summary`: the study as CSV and in words.
+
+mod measure;
+mod reference;
+mod summary;
+mod sweep;
+mod table;
+mod timing;
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use crate::frames::Form;
+use crate::method::{Backend, Method};
+use crate::scene::{self, Overrides, Scene, SceneError};
+
+pub use measure::Measure;
+pub use summary::{CurveCost, format_seconds};
+pub use table::TABLE_COLUMNS;
+
+/// The error levels the summary names the cheapest method for.
+pub const TARGETS: [f64; 3] = [1e-6, 1e-9, 1e-12];
+
+/// Most rows of a reference kept in memory.
+pub const REFERENCE_MAX_ROWS: usize = 1_000_000;
+
+/// How the study sweeps and times.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StudyOptions {
+    /// Relative tolerances of the adaptive methods, loosest first.
+    pub rtols: Vec<f64>,
+    /// Halvings of the fixed step after the first (10: 11 step sizes, the last 1/1024 of the first).
+    pub halvings: u32,
+    /// Timed repeats of a run (the median is reported); fewer for slow runs.
+    pub repeats: usize,
+    /// Backends swept; ode_solvers curves are labelled `method/ode_solvers`.
+    pub backends: Vec<Backend>,
+    /// Forms of Euler's equation swept.
+    pub frames: Vec<Form>,
+    /// Most steps of one fixed-step run.
+    pub max_fixed_steps: f64,
+    /// A curve stops refining once one of its runs took longer than this (s).
+    pub slow_curve_seconds: f64,
+}
+
+impl Default for StudyOptions {
+    /// rtol 1e-3 … 1e-13, 10 halvings, 5 repeats, both backends, both frames, ≤ 2·10⁷ fixed steps, 1 s.
+    fn default() -> Self {
+        Self {
+            rtols: (3..=13).map(|k| 10f64.powi(-k)).collect(),
+            halvings: 10,
+            repeats: 5,
+            backends: vec![Backend::Own, Backend::OdeSolvers],
+            frames: vec![Form::Body, Form::Space],
+            max_fixed_steps: 2e7,
+            slow_curve_seconds: 1.0,
+        }
+    }
+}
+
+impl StudyOptions {
+    /// A quick study for tests and previews: 4 tolerances (1e-4, 1e-6, 1e-8, 1e-10), 4 step sizes, 1 repeat, own
+    /// backend, body form.
+    pub fn quick() -> Self {
+        Self {
+            rtols: vec![1e-4, 1e-6, 1e-8, 1e-10],
+            halvings: 3,
+            repeats: 1,
+            backends: vec![Backend::Own],
+            frames: vec![Form::Body],
+            max_fixed_steps: 1e6,
+            slow_curve_seconds: 0.5,
+        }
+    }
+}
+
+/// One run of the study: a method at one tolerance or step size, in one frame, on one backend.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StudyRow {
+    /// The curve's label: the method's name, with `/ode_solvers` for that backend.
+    pub method: String,
+    pub method_name: Method,
+    pub backend: Backend,
+    pub frame: Form,
+    /// Relative tolerance (adaptive methods whose result depends on it).
+    pub rtol: Option<f64>,
+    /// Absolute tolerance used with `rtol`.
+    pub atol: Option<f64>,
+    /// Fixed step (fixed-step methods).
+    pub dt: Option<f64>,
+    /// Largest |ω_b − ω_b,ref| (rad/s); NaN for a failed run.
+    pub err_omega: f64,
+    /// Largest attitude angle to the reference (rad); `None` when the reference has no attitude.
+    pub err_attitude: Option<f64>,
+    /// Largest |E − E_ref| / max |E_ref|.
+    pub energy_drift: f64,
+    /// Largest ||H| − |H|_ref| / max |H|_ref.
+    pub h_drift: f64,
+    /// Largest |H_s − H_s,ref| (kg·m²/s); `None` when the reference has no H_s.
+    pub err_h_s: Option<f64>,
+    /// Median wall time of the integration (s).
+    pub wall_s: f64,
+    pub steps: u64,
+    pub rejected: u64,
+    pub evals: u64,
+    /// Timed repeats behind `wall_s`.
+    pub repeats: usize,
+    /// `None` for a completed run, else why it failed.
+    pub failure: Option<String>,
+}
+
+impl StudyRow {
+    /// The error the study ranks by, if the run completed.
+    pub fn error(&self, measure: Measure) -> Option<f64> {
+        if self.failure.is_some() {
+            return None;
+        }
+        match measure {
+            Measure::Omega => Some(self.err_omega),
+            Measure::HSpace => self.err_h_s,
+        }
+    }
+
+    /// `rtol 1e-8` or `dt 0.0625` (or `closed form`), for people.
+    pub fn setting(&self) -> String {
+        match (self.rtol, self.dt) {
+            (Some(r), _) => format!("rtol {}", summary::short(r)),
+            (None, Some(dt)) => format!("dt {} s", summary::short(dt)),
+            (None, None) => "no tolerance".into(),
+        }
+    }
+}
+
+/// The cheapest run reaching an error level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cheapest {
+    /// The error level.
+    pub target: f64,
+    /// Index into [`Study::rows`] of the fastest run with error ≤ target, if any.
+    pub row: Option<usize>,
+    /// The same among the methods that integrate (fixed-step or adaptive: not `exact`, which evaluates the closed
+    /// form at every row).
+    pub integrator: Option<usize>,
+}
+
+/// A method (or backend) the study did not sweep, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Skipped {
+    /// Method label (`exact`, `dop853/ode_solvers`, …).
+    pub method: String,
+    pub reason: String,
+}
+
+/// The outcome of [`accuracy`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Study {
+    /// The scene file, as given.
+    pub scene_path: PathBuf,
+    /// The scene's name.
+    pub scene_name: String,
+    pub t_end: f64,
+    /// Rows of every run.
+    pub rows_per_run: usize,
+    /// What the runs are compared with.
+    pub reference: String,
+    /// The same in a few words (for the figure).
+    pub reference_short: String,
+    /// The quantity runs are ranked by.
+    pub measure: Measure,
+    /// Every run, in the order run.
+    pub rows: Vec<StudyRow>,
+    /// The cheapest run for each of [`TARGETS`].
+    pub cheapest: Vec<Cheapest>,
+    /// What was not swept.
+    pub skipped: Vec<Skipped>,
+    /// Total wall time of the study (s).
+    pub study_seconds: f64,
+}
+
+/// Why the study could not be made.
+#[derive(Debug, thiserror::Error)]
+pub enum StudyError {
+    /// The scene is not valid.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// The scene cannot be studied (too many rows, t_end = 0, no applicable method).
+    #[error("{}: {problem}", file.display())]
+    Unsuitable { file: PathBuf, problem: String },
+    /// The reference run failed.
+    #[error("{}: the reference run failed: {problem}", file.display())]
+    Reference { file: PathBuf, problem: String },
+    /// An output file cannot be created (bad path: exit 2) or written (exit 1).
+    #[error("{}: {problem}", file.display())]
+    Output {
+        file: PathBuf,
+        problem: String,
+        /// Whether it is bad input (the path) rather than a failure to write.
+        input: bool,
+    },
+}
+
+impl StudyError {
+    /// The exit code for the command line: 2 for bad input (the scene, a scene the study cannot use, an output
+    /// path that cannot be created), 1 for a failure during the work (the reference run, writing a file).
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            StudyError::Scene(_) | StudyError::Unsuitable { .. } => 2,
+            StudyError::Output { input: true, .. } => 2,
+            StudyError::Reference { .. } | StudyError::Output { input: false, .. } => 1,
+        }
+    }
+}
+
+/// One planned curve: a method in one form on one backend, and how many runs it may take.
+#[derive(Debug, Clone, Copy)]
+struct Curve {
+    backend: Backend,
+    method: Method,
+    frame: Form,
+    planned: usize,
+}
+
+/// Every (backend, method, frame) curve and its planned number of runs. Other backends than the own one run the
+/// Runge–Kutta methods only.
+fn plan(options: &StudyOptions) -> Vec<Curve> {
+    let mut curves = Vec::new();
+    for &backend in &options.backends {
+        for method in Method::ALL {
+            if backend != Backend::Own && !method.is_runge_kutta() {
+                continue;
+            }
+            for &frame in &options.frames {
+                let planned = if method.is_fixed_step() {
+                    options.halvings as usize + 1
+                } else if method.is_adaptive() {
+                    options.rtols.len()
+                } else {
+                    1
+                };
+                curves.push(Curve {
+                    backend,
+                    method,
+                    frame,
+                    planned,
+                });
+            }
+        }
+    }
+    curves
+}
+
+/// The runs made so far, and the methods left out.
+#[derive(Debug, Default)]
+struct Runs {
+    rows: Vec<StudyRow>,
+    skipped: Vec<Skipped>,
+}
+
+impl Runs {
+    /// Records that `method` was not swept (once per method: its first reason).
+    fn skip(&mut self, method: String, reason: String) {
+        if !self.skipped.iter().any(|s| s.method == method) {
+            self.skipped.push(Skipped { method, reason });
+        }
+    }
+}
+
+/// The scene as written, refused when the study cannot use it (t_end = 0, too many rows for the reference).
+fn studied_scene(scene_path: &Path, text: &str) -> Result<Scene, StudyError> {
+    let base = scene::parse(scene_path, text, &Overrides::default())?;
+    let unsuitable = |problem: String| StudyError::Unsuitable {
+        file: scene_path.to_path_buf(),
+        problem,
+    };
+    let n_rows = base.schedule.len();
+    if base.solver.t_end <= 0.0 {
+        return Err(unsuitable(
+            "solver.t_end = 0: there is nothing to integrate; give t_end > 0".into(),
+        ));
+    }
+    if n_rows > REFERENCE_MAX_ROWS {
+        return Err(unsuitable(format!(
+            "the scene writes {n_rows} rows; the accuracy study keeps the reference at every row in memory and takes at most {REFERENCE_MAX_ROWS}: use a larger output.every (or --every)"
+        )));
+    }
+    Ok(base)
+}
+
+/// For each of [`TARGETS`], the fastest run reaching it, and the fastest among the methods that integrate.
+fn cheapest(rows: &[StudyRow], measure: Measure) -> Vec<Cheapest> {
+    let fastest = |target: f64, integrators_only: bool| {
+        rows.iter()
+            .enumerate()
+            .filter(|(_, r)| r.error(measure).is_some_and(|e| e <= target))
+            .filter(|(_, r)| {
+                !integrators_only || r.method_name.is_fixed_step() || r.method_name.is_adaptive()
+            })
+            .min_by(|a, b| a.1.wall_s.total_cmp(&b.1.wall_s))
+            .map(|(i, _)| i)
+    };
+    TARGETS
+        .iter()
+        .map(|&target| Cheapest {
+            target,
+            row: fastest(target, false),
+            integrator: fastest(target, true),
+        })
+        .collect()
+}
+
+/// Runs the work-precision study of the scene file `scene_path` whose text is `text`. `progress(done, total,
+/// what)` is called before every run (and once at the end with done = total); `total` is the planned number of
+/// runs, some of which a curve may skip (the count then jumps).
+pub fn accuracy(
+    scene_path: &Path,
+    text: &str,
+    options: &StudyOptions,
+    mut progress: impl FnMut(usize, usize, &str),
+) -> Result<Study, StudyError> {
+    let started = Instant::now();
+    let base = studied_scene(scene_path, text)?;
+    progress(0, 1, "reference");
+    let reference = reference::StudyReference::for_scene(&base, scene_path, text)?;
+    let sweep = sweep::Sweep::new(scene_path, text, &base, &reference, options);
+    let curves = plan(options);
+    let total: usize = curves.iter().map(|c| c.planned).sum();
+    let mut done = 0usize;
+    let mut runs = Runs::default();
+    for curve in curves {
+        sweep.curve(&curve, &mut runs, |ran, what| {
+            progress(done + ran, total, what)
+        });
+        done += curve.planned;
+    }
+    progress(total, total, "done");
+    if runs.rows.is_empty() {
+        return Err(StudyError::Unsuitable {
+            file: scene_path.to_path_buf(),
+            problem: format!(
+                "no method applies to this scene ({})",
+                runs.skipped
+                    .iter()
+                    .map(|s| format!("{}: {}", s.method, s.reason))
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            ),
+        });
+    }
+    Ok(Study {
+        scene_path: scene_path.to_path_buf(),
+        scene_name: base.name.clone(),
+        t_end: base.solver.t_end,
+        rows_per_run: base.schedule.len(),
+        cheapest: cheapest(&runs.rows, reference.measure),
+        reference: reference.description,
+        reference_short: reference.short,
+        measure: reference.measure,
+        rows: runs.rows,
+        skipped: runs.skipped,
+        study_seconds: started.elapsed().as_secs_f64(),
+    })
+}
