@@ -84,6 +84,7 @@ impl ExactFlow {
             theta: None,
             f_s: None,
             h_s_integrated: None,
+            support: None,
         }
     }
 

@@ -600,6 +600,7 @@ pub fn free_sample(
         theta: None,
         f_s: None,
         h_s_integrated: None,
+        support: None,
     }
 }
 

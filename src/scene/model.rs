@@ -9,6 +9,7 @@ use crate::integrate::Schedule;
 use crate::method::{Backend, Method};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
+use crate::motion::hinge::Hinge;
 
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -33,6 +34,8 @@ pub enum Motion {
     },
     /// Prescribed rotation about a fixed axis.
     FixedAxis(FixedAxis),
+    /// Rotation about a fixed axis driven by the effects (θ integrated from their moment about the axis).
+    Hinge(Hinge),
 }
 
 /// A validated scene.

@@ -114,6 +114,7 @@ pub struct ShapeSpec {
 pub enum MotionKind {
     Free,
     FixedAxis,
+    Hinge,
 }
 
 /// `[motion]`.
@@ -146,6 +147,16 @@ pub struct MotionSpec {
         skip_serializing_if = "Option::is_none"
     )]
     pub point: Option<[f64; 3]>,
+    /// θ at t = 0 (degrees), hinge only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle_deg: Option<f64>,
+    /// Axial positions [a, b] of bearings A and B from `point` along the axis (m), a ≠ b.
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub bearings: Option<[f64; 2]>,
 }
 
 /// `[initial]`.
@@ -500,6 +511,35 @@ impl MotionSpec {
             rate: Some(rate),
             ..Self::default()
         }
+    }
+
+    /// A hinge: rotation about the axis (0, −sin θ, cos θ) tilted `tilt_deg` from body z, not prescribed: θ
+    /// follows from the effects' moment about the axis, starting at `rate` (rad/s).
+    pub fn hinge_tilted(tilt_deg: f64, rate: f64) -> Self {
+        Self {
+            kind: Some(MotionKind::Hinge),
+            ..Self::fixed_axis_tilted(tilt_deg, rate)
+        }
+    }
+
+    /// A hinge about `axis_b` (body axes), starting at `rate` (rad/s).
+    pub fn hinge(axis_b: [f64; 3], rate: f64) -> Self {
+        Self {
+            kind: Some(MotionKind::Hinge),
+            ..Self::fixed_axis(axis_b, rate)
+        }
+    }
+
+    /// With bearings A and B at `a` and `b` metres from the axis point along the axis.
+    pub fn with_bearings(mut self, a: f64, b: f64) -> Self {
+        self.bearings = Some([a, b]);
+        self
+    }
+
+    /// With θ = `angle_deg` at t = 0 (a hinge).
+    pub fn with_angle_deg(mut self, angle_deg: f64) -> Self {
+        self.angle_deg = Some(angle_deg);
+        self
     }
 
     /// With a constant angular acceleration (rad/s²).

@@ -57,6 +57,8 @@ pub fn columns(scene: &Scene) -> ColumnSet {
             theta: true,
             force: motion.center_off_axis(),
             h_s_integrated: true,
+            support: true,
+            bearings: motion.bearings().is_some(),
         },
         Motion::Free { .. } => ColumnSet::default(),
     }

@@ -8,7 +8,9 @@ use super::{Checked, Invalid, KeyPath, finite, invalid, only_keys, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::FreeBody;
+use crate::motion::free::{EffectMoments, FreeBody};
+use crate::motion::hinge::Hinge;
+use crate::motion::support::Bearings;
 
 pub(super) fn validate_motion(
     doc: &SceneSpec,
@@ -18,38 +20,53 @@ pub(super) fn validate_motion(
 ) -> Checked<Motion> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
     let motion = || KeyPath::root().key("motion");
-    // The fixed-axis table, or `None` for free motion (no [motion] table, or type = "free").
-    let fixed_axis = match &doc.motion {
+    // The axis table, or `None` for free motion (no [motion] table, or type = "free").
+    let axis_motion = match &doc.motion {
         None => None,
         Some(m) => match m.kind {
             None => {
                 return invalid(
                     motion().key("type"),
-                    "missing: the motion needs `type` = \"free\" or \"fixed_axis\"",
+                    "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
                 );
             }
             Some(MotionKind::Free) => {
-                only_keys(
-                    &motion(),
-                    "motion type = \"free\"",
-                    &[],
-                    &[
-                        ("axis", m.axis.is_some()),
-                        ("tilt_deg", m.tilt_deg.is_some()),
-                        ("rate", m.rate.is_some()),
-                        ("accel", m.accel.is_some()),
-                        ("point", m.point.is_some()),
-                    ],
-                )?;
+                only_keys(&motion(), "motion type = \"free\"", &[], &given_keys(m))?;
                 None
             }
-            Some(MotionKind::FixedAxis) => Some(m),
+            Some(kind) => Some((m, kind)),
         },
     };
-    match fixed_axis {
+    match axis_motion {
         None => free_motion(doc, body, initial_omega, effects),
-        Some(m) => fixed_axis_motion(m, body, initial_omega.is_some(), attitude0),
+        Some((m, kind)) => {
+            if initial_omega.is_some() {
+                return invalid(
+                    KeyPath::root().key("initial").key("omega"),
+                    "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.omega",
+                );
+            }
+            let axis = axis_geometry(m, body, attitude0, effects)?;
+            if kind == MotionKind::Hinge {
+                hinge_motion(m, axis, body, effects)
+            } else {
+                Ok(Motion::FixedAxis(axis))
+            }
+        }
     }
+}
+
+/// Every optional key of `[motion]` and whether it is given.
+fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 7] {
+    [
+        ("axis", m.axis.is_some()),
+        ("tilt_deg", m.tilt_deg.is_some()),
+        ("rate", m.rate.is_some()),
+        ("accel", m.accel.is_some()),
+        ("point", m.point.is_some()),
+        ("angle_deg", m.angle_deg.is_some()),
+        ("bearings", m.bearings.is_some()),
+    ]
 }
 
 /// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect.
@@ -98,20 +115,27 @@ fn free_motion(
     })
 }
 
-/// Prescribed rotation about the axis of `[motion]`.
-fn fixed_axis_motion(
+/// The axis of a fixed-axis or hinge motion: its direction, rate, acceleration, point, bearings and the gravity
+/// its support carries.
+fn axis_geometry(
     m: &MotionSpec,
     body: &RigidBody,
-    initial_omega_given: bool,
     attitude0: &UnitQuaternion<f64>,
-) -> Checked<Motion> {
+    effects: &[Effect],
+) -> Checked<FixedAxis> {
     let motion = || KeyPath::root().key("motion");
-    if initial_omega_given {
-        return invalid(
-            KeyPath::root().key("initial").key("omega"),
-            "a fixed-axis motion sets ω from `motion.rate`; remove initial.omega",
-        );
-    }
+    let (kind_text, takes): (&str, &[&str]) = if m.kind == Some(MotionKind::Hinge) {
+        (
+            "motion type = \"hinge\"",
+            &["axis", "tilt_deg", "rate", "point", "angle_deg", "bearings"],
+        )
+    } else {
+        (
+            "motion type = \"fixed_axis\"",
+            &["axis", "tilt_deg", "rate", "accel", "point", "bearings"],
+        )
+    };
+    only_keys(&motion(), kind_text, takes, &given_keys(m))?;
     let axis_b = match (m.axis, m.tilt_deg) {
         (Some(_), Some(_)) => {
             return invalid(
@@ -154,15 +178,53 @@ fn fixed_axis_motion(
             ),
         );
     }
-    Ok(Motion::FixedAxis(FixedAxis::new(
-        body,
-        axis_b,
+    let point_b = match m.point {
+        None => Vector3::zeros(),
+        Some(p) => vector(motion().key("point"), p, "m")?,
+    };
+    let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, *attitude0);
+    if let Some(g_s) = effects.iter().find_map(|e| match e {
+        Effect::Gravity { g_s, .. } => Some(*g_s),
+        _ => None,
+    }) {
+        axis = axis.with_gravity(g_s);
+    }
+    if let Some([a, b]) = m.bearings {
+        let key = motion().key("bearings");
+        if !(a.is_finite() && b.is_finite()) || a == b {
+            return invalid(
+                key,
+                format!(
+                    "bearings = [{a}, {b}]: give two different finite positions (m) along the axis from `point`"
+                ),
+            );
+        }
+        axis = axis.with_bearings(Bearings { a, b });
+    }
+    Ok(axis)
+}
+
+/// A hinge on the axis: θ from `angle_deg`, θ̇ from `rate`, driven by the effects about the axis point.
+fn hinge_motion(
+    m: &MotionSpec,
+    axis: FixedAxis,
+    body: &RigidBody,
+    effects: &[Effect],
+) -> Checked<Motion> {
+    let key = KeyPath::root().key("motion").key("angle_deg");
+    let theta0 = finite(key, m.angle_deg.unwrap_or(0.0), "degrees")?.to_radians();
+    let i_uu = axis.axis_b().dot(&(axis.inertia_a_b() * axis.axis_b().into_inner()));
+    if !(i_uu > 0.0) {
+        return invalid(
+            KeyPath::root().key("motion").key("axis"),
+            "the body's moment of inertia about this axis is zero (a thin rod about its own line): a hinge cannot turn it",
+        );
+    }
+    let rate = axis.rate();
+    Ok(Motion::Hinge(Hinge::new(
+        axis,
+        EffectMoments::new(effects, body.mass()),
+        theta0,
         rate,
-        accel,
-        match m.point {
-            None => Vector3::zeros(),
-            Some(p) => vector(motion().key("point"), p, "m")?,
-        },
-        *attitude0,
     )))
 }
