@@ -191,11 +191,31 @@ const H_INT_COLUMNS: [Column; 3] = [
 
 const SUPPORT_COLUMNS: [Column; 6] = [
     col("theta_dot", "rad/s", "rate about the fixed axis"),
-    col("theta_ddot", "rad/s^2", "angular acceleration about the fixed axis"),
-    col("F_sup_s_x", "N", "force of the support on the body, space axes"),
-    col("F_sup_s_y", "N", "force of the support on the body, space axes"),
-    col("F_sup_s_z", "N", "force of the support on the body, space axes"),
-    col("M_drive", "N*m", "moment about the axis that the drive supplies"),
+    col(
+        "theta_ddot",
+        "rad/s^2",
+        "angular acceleration about the fixed axis",
+    ),
+    col(
+        "F_sup_s_x",
+        "N",
+        "force of the support on the body, space axes",
+    ),
+    col(
+        "F_sup_s_y",
+        "N",
+        "force of the support on the body, space axes",
+    ),
+    col(
+        "F_sup_s_z",
+        "N",
+        "force of the support on the body, space axes",
+    ),
+    col(
+        "M_drive",
+        "N*m",
+        "moment about the axis that the drive supplies",
+    ),
 ];
 
 /// One bearing force column: `R_{bearing}_{axes}_{component}`.

@@ -108,6 +108,7 @@ fn characteristic_rate(scene: &Scene) -> f64 {
             .rate()
             .abs()
             .max((m.rate() + m.accel() * scene.solver.t_end).abs()),
+        Motion::Hinge(h) => h.axis().rate().abs(),
     };
     scene
         .effects
@@ -276,6 +277,26 @@ pub fn describe(scene: &Scene) -> String {
                 &format!("kinetic energy {:.6e} J", 0.5 * omega0_b.dot(&h_b)),
             );
         }
+        Motion::Hinge(hinge) => {
+            let axis = hinge.axis();
+            line(
+                w,
+                "motion",
+                "a hinge: rotation about an axis fixed in the body and in space, theta from d/dt(I_uu theta') = M.u",
+            );
+            line(
+                w,
+                "",
+                &format!(
+                    "axis {} (body axes) through {} m from C; I_uu = {:.6e} kg*m^2; theta(0) = {} rad, rate {} rad/s",
+                    vec3(&axis.axis_b().into_inner()),
+                    vec3(&axis.point_b()),
+                    hinge.i_uu(),
+                    plain(hinge.theta0()),
+                    plain(axis.rate())
+                ),
+            );
+        }
         Motion::FixedAxis(motion) => {
             let axis_b = motion.axis_b().into_inner();
             let (tilt, nearest) = tilt_from_principal(principal, &axis_b);
@@ -385,6 +406,7 @@ pub fn describe(scene: &Scene) -> String {
     if scene.effects.is_empty() {
         let none = match scene.motion {
             Motion::FixedAxis(_) => "none: the motion is prescribed",
+            Motion::Hinge(_) => "none: the hinge turns at its initial rate",
             Motion::Free { .. } => "none: torque-free",
         };
         line(w, "effects", none);

@@ -22,7 +22,7 @@ pub type HingeState = SVector<f64, 2>;
 
 /// A body on a hinge: the axis geometry (with gravity and bearings), the moment of inertia about the axis and
 /// the effects' moments about the axis point.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Hinge {
     axis: FixedAxis,
     i_uu: f64,

@@ -598,6 +598,15 @@ impl EffectSpec {
         }
     }
 
+    /// Uniform gravity `g_s` (m/s², space axes) acting at C of a body on a fixed axis or hinge, whose axis point
+    /// is the moment center (no pivot).
+    pub fn weight(g_s: [f64; 3]) -> Self {
+        Self {
+            g: Some(g_s),
+            ..Self::of(EffectKind::Gravity)
+        }
+    }
+
     /// Viscous damping M = −c ω, `c` in N·m·s.
     pub fn damping(c: f64) -> Self {
         Self {

@@ -12,11 +12,11 @@ use nalgebra::Vector3;
 pub(super) fn validate_effects(doc: &SceneSpec, body: &RigidBody) -> Checked<Vec<Effect>> {
     let kind = doc.motion.as_ref().and_then(|m| m.kind);
     let axis_point = match doc.motion.as_ref() {
-        Some(m) if matches!(kind, Some(MotionKind::FixedAxis | MotionKind::Hinge)) => Some(
-            m.point.map_or(Ok(Vector3::zeros()), |p| {
+        Some(m) if matches!(kind, Some(MotionKind::FixedAxis | MotionKind::Hinge)) => {
+            Some(m.point.map_or(Ok(Vector3::zeros()), |p| {
                 vector(KeyPath::root().key("motion").key("point"), p, "m")
-            })?,
-        ),
+            })?)
+        }
         _ => None,
     };
     let effects = doc
@@ -142,7 +142,11 @@ fn validate_effect(
                     );
                 }
                 (Some(point_b), None) => *point_b,
-                (None, pivot) => vector(key("pivot"), required(key("pivot"), pivot, &kind_text)?, "m")?,
+                (None, pivot) => vector(
+                    key("pivot"),
+                    required(key("pivot"), pivot, &kind_text)?,
+                    "m",
+                )?,
             },
         },
         EffectKind::Damping => {

@@ -70,6 +70,15 @@ pub(super) fn validate_method(
     o: &Overrides,
 ) -> Checked<()> {
     let method = solver.method;
+    if matches!(motion, Motion::Hinge(_)) && !method.is_runge_kutta() {
+        return invalid(
+            key_of("solver", "method", o.method.is_some()),
+            format!(
+                "method \"{}\" does not run a hinge: split2/split4 split a free body's rotation into planar rotations and exact is the torque-free closed form, while a hinge has one degree of freedom, θ; use rk4, dopri5 or dop853",
+                method.name()
+            ),
+        );
+    }
     if solver.backend != Backend::Own && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "backend", o.backend.is_some()),
