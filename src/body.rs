@@ -255,6 +255,36 @@ impl RigidBody {
         &self.principal
     }
 
+    /// The body with point masses attached: `masses` are (m_k, p_k) with p_k from this body's mass center (body
+    /// axes). Returns the whole body — mass M = m + Σ m_k, inertia about its mass center C' — and the position c of
+    /// C' from this body's mass center: c = Σ m_k p_k / M, and by the parallel-axis theorem (eq. 8.4's I_A)
+    /// I_C' = I_C + m (|c|² E − c cᵀ) + Σ m_k (|p_k − c|² E − (p_k − c)(p_k − c)ᵀ).
+    ///
+    /// ```
+    /// use eulerdyn::body::RigidBody;
+    /// use nalgebra::Vector3;
+    /// let disk = RigidBody::from_principal(2.0, [0.045, 0.045, 0.09]).unwrap();
+    /// let (whole, c) = disk.with_point_masses(&[(0.5, Vector3::new(0.1, 0.0, 0.0))]).unwrap();
+    /// assert_eq!(whole.mass(), 2.5);
+    /// assert!((c - Vector3::new(0.02, 0.0, 0.0)).norm() < 1e-16);
+    /// ```
+    pub fn with_point_masses(
+        &self,
+        masses: &[(f64, Vector3<f64>)],
+    ) -> Result<(RigidBody, Vector3<f64>), InvalidBody> {
+        let total = self.mass + masses.iter().map(|(m, _)| m).sum::<f64>();
+        let c = masses.iter().map(|(m, p)| p * *m).sum::<Vector3<f64>>() / total;
+        let steiner = |m: f64, rho: &Vector3<f64>| {
+            (Matrix3::identity() * rho.norm_squared() - rho * rho.transpose()) * m
+        };
+        let inertia = masses
+            .iter()
+            .fold(self.inertia_c + steiner(self.mass, &c), |sum, (m, p)| {
+                sum + steiner(*m, &(p - c))
+            });
+        Ok((RigidBody::new(total, inertia)?, c))
+    }
+
     /// Inertia tensor about the body point A, by the parallel-axis theorem:
     /// I_A = I_C + m (|ρ|² E − ρ ρᵀ), ρ = r_C − r_A (Steiner; the notes' eq. 7.x, used in 8.4).
     /// `rho_c_b` is the position of C relative to A, in body axes.

@@ -12,6 +12,9 @@
 //!   problem 1, T = 4 √(l/g) K(sin(θ₀/2)) for the simple pendulum, with the compound pendulum's equivalent length
 //!   l = I_A/(m d); and its support force m(a_C − g) at every row (eq. 8.7).
 
+mod common;
+
+use common::{dir_entries, eulerdyn, write_file};
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::{BodySpec, EffectSpec, MotionSpec, SceneSpec, ShapeSpec};
 use eulerdyn::{Axes, Form, Method, simulate};
@@ -300,5 +303,281 @@ fn the_hinge_forms_agree() {
             b.t
         );
         assert!((b.h_s - s.h_s).norm() <= 1e-9, "t = {}", b.t);
+    }
+}
+
+#[test]
+fn balancing_the_skewed_disk_takes_the_notes_two_equal_opposite_masses() {
+    use eulerdyn::analysis::balance::{Planes, balance};
+    let planes = Planes {
+        a: -0.1,
+        b: 0.12,
+        radius: 0.25,
+    };
+    for tilt in [5.0, 30.0, 60.0] {
+        let spec = tilted_disk(tilt, Form::Body);
+        let result = balance(&spec, &planes).unwrap();
+        let theta = f64::to_radians(tilt);
+        // The notes' skewed disk: m_c = ¼ m R² sin θ cos θ / (R_c (b − a)), on opposite sides.
+        let expected =
+            0.25 * M * R * R * theta.sin() * theta.cos() / (planes.radius * (planes.b - planes.a));
+        let [c_a, c_b] = result.corrections;
+        close(c_a.mass, expected, 1e-12, "m_A");
+        close(c_b.mass, expected, 1e-12, "m_B");
+        let apart = (c_a.angle_deg - c_b.angle_deg).rem_euclid(360.0);
+        close(apart, 180.0, 1e-12, "opposite sides");
+        // The balanced rotor's bearings carry nothing at any rate: below 1e-9 of the unbalanced loads.
+        let before = rows(&spec);
+        let after = rows(&result.balanced);
+        let scale = before[0].support.unwrap().bearings.unwrap().r_a_s.norm();
+        for s in &after {
+            let b = s.support.unwrap().bearings.unwrap();
+            assert!(
+                b.r_a_s.norm().max(b.r_b_s.norm()) <= 1e-9 * scale,
+                "t = {}",
+                s.t
+            );
+        }
+        assert!(result.largest_reaction[1] <= 1e-9 * result.largest_reaction[0]);
+    }
+}
+
+#[test]
+fn balancing_an_offset_sphere_puts_half_its_static_imbalance_in_each_plane() {
+    use eulerdyn::analysis::balance::{Planes, balance};
+    let e = 0.01;
+    // A sphere whose axis (body z) passes e from C: static imbalance m e only.
+    let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::sphere(0.1)), 1.0, 0.1).with_motion(
+        MotionSpec::fixed_axis([0.0, 0.0, 1.0], OMEGA)
+            .with_point([e, 0.0, 0.0])
+            .with_bearings(-0.2, 0.2),
+    );
+    let planes = Planes {
+        a: -0.05,
+        b: 0.05,
+        radius: 0.08,
+    };
+    let result = balance(&spec, &planes).unwrap();
+    for c in result.corrections {
+        close(
+            c.mass,
+            M * e / (2.0 * planes.radius),
+            1e-12,
+            "m e / (2 R_c)",
+        );
+    }
+    let after = rows(&result.balanced);
+    for s in &after {
+        let f_sup = s.support.unwrap().f_sup_s;
+        assert!(
+            f_sup.norm() <= 1e-9 * M * e * OMEGA * OMEGA,
+            "C on the axis: {f_sup}"
+        );
+    }
+}
+
+#[test]
+fn point_masses_move_the_mass_center_and_positions_stay_from_the_reference_origin() {
+    // A point mass outside a sphere: C moves to m_p p / (m + m_p); the axis through the
+    // reference origin then has C off it by that much, and needs the force (m + m_p) |c| ω².
+    let (m_p, p) = (0.5, 0.1);
+    let spec = SceneSpec::new(
+        BodySpec::shape(M, ShapeSpec::sphere(0.1)).with_point_mass(m_p, [p, 0.0, 0.0]),
+        0.5,
+        0.1,
+    )
+    .with_motion(MotionSpec::fixed_axis([0.0, 0.0, 1.0], OMEGA));
+    let scene = spec.build().unwrap();
+    let c = m_p * p / (M + m_p);
+    assert!((scene.center_b - Vector3::new(c, 0.0, 0.0)).norm() <= 1e-16);
+    for s in rows(&spec) {
+        close(
+            s.support.unwrap().f_sup_s.norm(),
+            (M + m_p) * c * OMEGA * OMEGA,
+            1e-12,
+            "F",
+        );
+    }
+}
+
+/// A hinge scene with the lines `extra` appended to `[motion]`, and `tail` after it.
+fn hinge_text(extra: &str, tail: &str) -> String {
+    format!(
+        "[body]\nmass = 1.0\nshape = {{ type = \"thin_disk\", radius = 0.3 }}\n\
+         [motion]\ntype = \"hinge\"\naxis = [0.0, 0.0, 1.0]\nrate = 1.0\n{extra}\n\
+         {tail}\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n"
+    )
+}
+
+#[test]
+fn bad_invariant_axis_input_is_refused_with_the_file_and_key_and_writes_nothing() {
+    let cases = [
+        (
+            "pivot with a hinge",
+            hinge_text(
+                "",
+                "[[effect]]\ntype = \"gravity\"\npivot = [0.0, 0.0, 0.1]",
+            ),
+            "effect[0].pivot",
+        ),
+        (
+            "equal bearing positions",
+            hinge_text("bearings = [0.1, 0.1]", ""),
+            "motion.bearings",
+        ),
+        (
+            "a hinge with a splitting method",
+            hinge_text("", "").replace("t_end = 1.0", "t_end = 1.0\nmethod = \"split2\""),
+            "solver.method",
+        ),
+        (
+            "a fixed axis with a torque",
+            hinge_text("", "[[effect]]\ntype = \"torque\"\nvalue = [0.0, 0.0, 1.0]")
+                .replace("\"hinge\"", "\"fixed_axis\""),
+            "effect[0]",
+        ),
+        (
+            "a hinge with accel",
+            hinge_text("accel = 1.0", ""),
+            "motion.accel",
+        ),
+        (
+            "a point mass of zero mass",
+            hinge_text("", "").replace(
+                "[motion]",
+                "[[body.point_mass]]\nmass = 0.0\nat = [0.1, 0.0, 0.0]\n[motion]",
+            ),
+            "body.point_mass[0].mass",
+        ),
+        (
+            "a point mass at infinity",
+            hinge_text("", "").replace(
+                "[motion]",
+                "[[body.point_mass]]\nmass = 0.1\nat = [inf, 0.0, 0.0]\n[motion]",
+            ),
+            "body.point_mass[0].at",
+        ),
+    ];
+    for (name, text, key) in cases {
+        let dir = tempfile::tempdir().unwrap();
+        let scene = write_file(dir.path(), "scene.toml", &text);
+        let out_csv = dir.path().join("out.csv");
+        let out = eulerdyn([
+            "run",
+            scene.to_str().unwrap(),
+            "-o",
+            out_csv.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, Some(2), "{name}: {}", out.stderr);
+        assert!(
+            out.stderr.contains("scene.toml") && out.stderr.contains(key),
+            "{name}: the message names the file and `{key}`: {}",
+            out.stderr
+        );
+        assert_eq!(
+            dir_entries(dir.path()),
+            ["scene.toml"],
+            "{name}: nothing written"
+        );
+    }
+}
+
+#[test]
+fn balance_refuses_what_it_cannot_balance_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let free = write_file(
+        dir.path(),
+        "free.toml",
+        "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n",
+    );
+    let disk = write_file(dir.path(), "disk.toml", hinge_text("", ""));
+    let out = dir.path().join("balanced.toml");
+    let out = out.to_str().unwrap();
+    for (name, scene, planes, radius, expect) in [
+        (
+            "a free body",
+            &free,
+            "-0.1,0.1",
+            "0.2",
+            "fixed_axis or a hinge",
+        ),
+        ("A = B", &disk, "0.1,0.1", "0.2", "A != B"),
+        ("R = 0", &disk, "-0.1,0.1", "0", "radius"),
+        ("R < 0", &disk, "-0.1,0.1", "-1", "radius"),
+        ("one plane", &disk, "0.1", "0.2", "--planes"),
+    ] {
+        let result = eulerdyn([
+            "balance",
+            scene.to_str().unwrap(),
+            "--planes",
+            planes,
+            "--radius",
+            radius,
+            "-o",
+            out,
+        ]);
+        assert_eq!(result.code, Some(2), "{name}: {}", result.stderr);
+        assert!(result.stderr.contains(expect), "{name}: {}", result.stderr);
+        assert_eq!(
+            dir_entries(dir.path()),
+            ["disk.toml", "free.toml"],
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn balance_writes_a_scene_whose_run_shows_no_rotating_reaction() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("balanced.toml");
+    let result = eulerdyn([
+        "balance",
+        common::repo_path("scenarios/rotor_bearings.toml")
+            .to_str()
+            .unwrap(),
+        "--planes",
+        "-0.1,0.1",
+        "--radius",
+        "0.2",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    result.expect_code(0);
+    assert!(result.stdout.contains("plane A") && result.stdout.contains("before"));
+    let run = eulerdyn(["run", out.to_str().unwrap()]);
+    run.expect_code(0);
+    let (head, records) = common::read_csv(&run.stdout);
+    // With gravity the bearings still carry the weight, the same at every row: nothing rotates.
+    for name in [
+        "R_A_s_x", "R_A_s_y", "R_A_s_z", "R_B_s_x", "R_B_s_y", "R_B_s_z",
+    ] {
+        let column = common::column(&head, &records, name);
+        let spread = column
+            .iter()
+            .fold(0f64, |m, v| m.max((v - column[0]).abs()));
+        assert!(spread <= 1e-9 * 19.62, "{name} varies by {spread}");
+    }
+}
+
+#[test]
+fn a_motor_runs_the_hinge_up_to_the_steady_speed_against_viscous_friction() {
+    // I_uu θ̈ = M − c θ̇ from rest: θ̇(t) = (M/c)(1 − exp(−c t / I_uu)) (the first-order linear ODE's solution).
+    let text = std::fs::read_to_string(common::repo_path("scenarios/motor_runup.toml")).unwrap();
+    let scene =
+        eulerdyn::scene::parse_spec(std::path::Path::new("motor_runup.toml"), &text).unwrap();
+    let theta = 30f64.to_radians();
+    let i_uu = M * R * R * (0.25 * theta.sin().powi(2) + 0.5 * theta.cos().powi(2));
+    let (torque, c) = (0.5, 0.05);
+    for form in Form::ALL {
+        for s in rows(&scene.clone().with_form(form)) {
+            let expected = torque / c * (1.0 - (-c * s.t / i_uu).exp());
+            close(s.support.unwrap().theta_dot, expected, 1e-9, "θ̇");
+            close(
+                s.support.unwrap().m_drive,
+                0.0,
+                1e-12,
+                "no drive: the motor is an effect",
+            );
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! The command-line program: argument parsing, what `check` prints, the progress bar and Ctrl-C. Not a library
 //! interface: everything it does is reachable through the library's own functions.
 
+pub mod balance;
 pub mod cli;
 pub mod interrupt;
 pub mod progress;

@@ -296,6 +296,11 @@ pub fn describe(scene: &Scene) -> String {
                     plain(axis.rate())
                 ),
             );
+            line(
+                w,
+                "moment center",
+                "the axis point: H and M are about it; the bearings carry what the effects do not",
+            );
         }
         Motion::FixedAxis(motion) => {
             let axis_b = motion.axis_b().into_inner();

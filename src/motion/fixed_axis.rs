@@ -74,6 +74,18 @@ impl FixedAxis {
         }
     }
 
+    /// The same body, axis, point and initial attitude turning at the constant `rate` (rad/s), without gravity or
+    /// bearings.
+    pub fn new_like(other: &FixedAxis, rate: f64) -> Self {
+        Self {
+            rate,
+            accel: 0.0,
+            g_s: Vector3::zeros(),
+            bearings: None,
+            ..other.clone()
+        }
+    }
+
     /// With uniform gravity `g_s` (m/s², space axes) acting at C: the support then carries the weight.
     pub fn with_gravity(mut self, g_s: Vector3<f64>) -> Self {
         self.g_s = g_s;

@@ -41,6 +41,16 @@ impl std::error::Error for SceneError {}
 
 /// Reads and validates a scene file, applying command-line overrides.
 pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+    parse(path, &read(path)?, overrides)
+}
+
+/// Reads a scene file into its typed value, without validating it (to change it before [`SceneSpec::build`]).
+pub fn load_spec(path: &Path) -> Result<SceneSpec, SceneError> {
+    parse_spec(path, &read(path)?)
+}
+
+/// The text of a scene file.
+fn read(path: &Path) -> Result<String, SceneError> {
     let error = |problem: String| SceneError {
         file: path.to_path_buf(),
         key: None,
@@ -53,7 +63,7 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
         ));
     }
     let bytes = std::fs::read(path).map_err(|e| error(format!("cannot read the file: {e}")))?;
-    let text = String::from_utf8(bytes).map_err(|e| {
+    String::from_utf8(bytes).map_err(|e| {
         let offset = e.utf8_error().valid_up_to();
         let before = String::from_utf8_lossy(&e.as_bytes()[..offset]).into_owned();
         let map = SourceMap::new(&before);
@@ -61,8 +71,7 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
             location: Some(map.line_col(offset.min(before.len()))),
             ..error("the file is not valid UTF-8 text; a scene file is TOML".into())
         }
-    })?;
-    parse(path, &text, overrides)
+    })
 }
 
 /// Parses and validates scene text; `path` is used in messages only.
@@ -78,6 +87,17 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
 /// assert!(err.to_string().starts_with("inline.toml:2:1: key `body.mass`: must be a finite number > 0"));
 /// ```
 pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, SceneError> {
+    let doc = parse_spec(path, text)?;
+    doc.build_with(overrides).map_err(|inv| SceneError {
+        file: path.to_path_buf(),
+        location: SourceMap::new(text).locate(&inv.key),
+        key: Some(inv.key.to_string()),
+        problem: inv.problem,
+    })
+}
+
+/// Parses scene text into its typed value; errors name the key, line and column.
+pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
     let map = SourceMap::new(text);
     if text.trim().is_empty() {
         return Err(SceneError {
@@ -89,7 +109,7 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
                     .into(),
         });
     }
-    let doc: SceneSpec = toml::from_str(text).map_err(|e| {
+    toml::from_str(text).map_err(|e| {
         let span = e.span();
         let problem = e.message().trim().to_string();
         let file = path.to_path_buf();
@@ -138,12 +158,6 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
             location: span.map(|s| map.line_col(s.start)),
             problem,
         }
-    })?;
-    doc.build_with(overrides).map_err(|inv| SceneError {
-        file: path.to_path_buf(),
-        location: map.locate(&inv.key),
-        key: Some(inv.key.to_string()),
-        problem: inv.problem,
     })
 }
 

@@ -44,6 +44,9 @@ pub struct Scene {
     pub name: String,
     pub description: String,
     pub body: RigidBody,
+    /// The mass center C from the reference origin, body axes (m): zero without point masses. Every position
+    /// in a scene file is measured from the reference origin; every position in the validated scene from C.
+    pub center_b: Vector3<f64>,
     pub motion: Motion,
     /// Attitude at t = 0 (body → space).
     pub attitude0: UnitQuaternion<f64>,

@@ -53,6 +53,25 @@ pub struct BodySpec {
     /// The inertia about C in body axes (kg·m²), instead of a shape.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inertia: Option<InertiaSpec>,
+    /// `[[body.point_mass]]`: point masses rigidly attached.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub point_mass: Vec<PointMassSpec>,
+}
+
+/// One `[[body.point_mass]]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PointMassSpec {
+    /// kg, > 0.
+    pub mass: f64,
+    /// Position from the reference origin (the shape's center, or the point the given inertia is about), body
+    /// axes (m).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub at: Option<[f64; 3]>,
 }
 
 /// `body.inertia`: principal moments, or the full symmetric tensor.
@@ -397,6 +416,7 @@ impl BodySpec {
             mass,
             shape: Some(shape),
             inertia: None,
+            point_mass: Vec::new(),
         }
     }
 
@@ -406,6 +426,7 @@ impl BodySpec {
             mass,
             shape: None,
             inertia: Some(InertiaSpec::Principal(moments)),
+            point_mass: Vec::new(),
         }
     }
 
@@ -415,7 +436,14 @@ impl BodySpec {
             mass,
             shape: None,
             inertia: Some(InertiaSpec::Full(inertia_c_b)),
+            point_mass: Vec::new(),
         }
+    }
+
+    /// With a point mass of `mass` (kg) at `at` (m, body axes, from the reference origin).
+    pub fn with_point_mass(mut self, mass: f64, at: [f64; 3]) -> Self {
+        self.point_mass.push(PointMassSpec { mass, at: Some(at) });
+        self
     }
 }
 

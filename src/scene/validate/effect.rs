@@ -7,23 +7,27 @@ use crate::effects::{Effect, TorqueProfile};
 use crate::frames::Axes;
 use nalgebra::Vector3;
 
-/// Every `[[effect]]`, in order; a fixed-axis motion takes none, and at most one gravity (its pivot is the body's
-/// one fixed point).
-pub(super) fn validate_effects(doc: &SceneSpec, body: &RigidBody) -> Checked<Vec<Effect>> {
+/// Every `[[effect]]`, in order; a fixed-axis motion takes gravity only, and at most one gravity (its pivot is the
+/// body's one fixed point). Positions are turned from the reference origin to the mass center `center_b`.
+pub(super) fn validate_effects(
+    doc: &SceneSpec,
+    body: &RigidBody,
+    center_b: &Vector3<f64>,
+) -> Checked<Vec<Effect>> {
     let kind = doc.motion.as_ref().and_then(|m| m.kind);
     let axis_point = match doc.motion.as_ref() {
-        Some(m) if matches!(kind, Some(MotionKind::FixedAxis | MotionKind::Hinge)) => {
-            Some(m.point.map_or(Ok(Vector3::zeros()), |p| {
+        Some(m) if matches!(kind, Some(MotionKind::FixedAxis | MotionKind::Hinge)) => Some(
+            m.point.map_or(Ok(Vector3::zeros()), |p| {
                 vector(KeyPath::root().key("motion").key("point"), p, "m")
-            })?)
-        }
+            })? - center_b,
+        ),
         _ => None,
     };
     let effects = doc
         .effect
         .iter()
         .enumerate()
-        .map(|(i, e)| validate_effect(i, e, axis_point.as_ref()))
+        .map(|(i, e)| validate_effect(i, e, axis_point.as_ref(), center_b))
         .collect::<Checked<Vec<_>>>()?;
     let not_gravity = effects
         .iter()
@@ -87,6 +91,7 @@ fn validate_effect(
     index: usize,
     doc: &EffectSpec,
     axis_point: Option<&Vector3<f64>>,
+    center_b: &Vector3<f64>,
 ) -> Checked<Effect> {
     let table = KeyPath::root().key("effect").index(index);
     let key = |name: &str| table.clone().key(name);
@@ -142,11 +147,13 @@ fn validate_effect(
                     );
                 }
                 (Some(point_b), None) => *point_b,
-                (None, pivot) => vector(
-                    key("pivot"),
-                    required(key("pivot"), pivot, &kind_text)?,
-                    "m",
-                )?,
+                (None, pivot) => {
+                    vector(
+                        key("pivot"),
+                        required(key("pivot"), pivot, &kind_text)?,
+                        "m",
+                    )? - center_b
+                }
             },
         },
         EffectKind::Damping => {

@@ -73,10 +73,10 @@ impl SceneSpec {
 }
 
 fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
-    let body = body::validate_body(&doc.body)?;
+    let (body, center_b) = body::validate_body(&doc.body)?;
     let attitude0 = attitude(doc)?;
-    let effects = effect::validate_effects(doc, &body)?;
-    let motion = motion::validate_motion(doc, &body, &attitude0, &effects)?;
+    let effects = effect::validate_effects(doc, &body, &center_b)?;
+    let motion = motion::validate_motion(doc, &body, &attitude0, &effects, &center_b)?;
     let solver = solver::validate_solver(&doc.solver, overrides)?;
     solver::validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let schedule = solver::validate_schedule(doc, &solver, overrides)?;
@@ -92,6 +92,7 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         name: doc.name.clone().unwrap_or_default(),
         description: doc.description.clone().unwrap_or_default(),
         body,
+        center_b,
         motion,
         attitude0,
         effects,

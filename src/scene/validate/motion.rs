@@ -17,6 +17,7 @@ pub(super) fn validate_motion(
     body: &RigidBody,
     attitude0: &UnitQuaternion<f64>,
     effects: &[Effect],
+    center_b: &Vector3<f64>,
 ) -> Checked<Motion> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
     let motion = || KeyPath::root().key("motion");
@@ -46,7 +47,7 @@ pub(super) fn validate_motion(
                     "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.omega",
                 );
             }
-            let axis = axis_geometry(m, body, attitude0, effects)?;
+            let axis = axis_geometry(m, body, attitude0, effects, center_b)?;
             if kind == MotionKind::Hinge {
                 hinge_motion(m, axis, body, effects)
             } else {
@@ -122,6 +123,7 @@ fn axis_geometry(
     body: &RigidBody,
     attitude0: &UnitQuaternion<f64>,
     effects: &[Effect],
+    center_b: &Vector3<f64>,
 ) -> Checked<FixedAxis> {
     let motion = || KeyPath::root().key("motion");
     let (kind_text, takes): (&str, &[&str]) = if m.kind == Some(MotionKind::Hinge) {
@@ -181,7 +183,7 @@ fn axis_geometry(
     let point_b = match m.point {
         None => Vector3::zeros(),
         Some(p) => vector(motion().key("point"), p, "m")?,
-    };
+    } - center_b;
     let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, *attitude0);
     if let Some(g_s) = effects.iter().find_map(|e| match e {
         Effect::Gravity { g_s, .. } => Some(*g_s),
