@@ -53,7 +53,7 @@ impl Shape {
             } else {
                 Err(InvalidBody::new(
                     key,
-                    format!("must be a finite number > 0 (m), got {v}"),
+                    format!("must be a finite number > 0 (m), got {v:?}"),
                 ))
             }
         };
@@ -69,7 +69,7 @@ impl Shape {
                 if !(thickness.is_finite() && thickness >= 0.0) {
                     return Err(InvalidBody::new(
                         "shape.thickness",
-                        format!("must be a finite number >= 0 (m), got {thickness}"),
+                        format!("must be a finite number >= 0 (m), got {thickness:?}"),
                     ));
                 }
                 let t = mass * (3.0 * r * r + thickness * thickness) / 12.0;
@@ -163,7 +163,7 @@ impl RigidBody {
         if !(mass.is_finite() && mass > 0.0) {
             return Err(InvalidBody::new(
                 "mass",
-                format!("must be a finite number > 0 (kg), got {mass}"),
+                format!("must be a finite number > 0 (kg), got {mass:?}"),
             ));
         }
         if inertia_c.iter().any(|v| !v.is_finite()) {
@@ -229,7 +229,7 @@ impl RigidBody {
         if !(mass.is_finite() && mass > 0.0) {
             return Err(InvalidBody::new(
                 "mass",
-                format!("must be a finite number > 0 (kg), got {mass}"),
+                format!("must be a finite number > 0 (kg), got {mass:?}"),
             ));
         }
         Self::new(mass, shape.inertia_c(mass)?)

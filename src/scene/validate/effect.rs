@@ -161,7 +161,7 @@ fn validate_effect(
             if c < 0.0 {
                 return invalid(
                     key("c"),
-                    format!("must be >= 0 (N*m*s): a negative damping adds energy, got {c}"),
+                    format!("must be >= 0 (N*m*s): a negative damping adds energy, got {c:?}"),
                 );
             }
             Effect::Damping { c }
@@ -201,7 +201,7 @@ fn validate_torque(table: &KeyPath, doc: &EffectSpec, kind_text: &str) -> Checke
             };
             let f = finite(key("freq_hz"), f, "Hz")?;
             if f < 0.0 {
-                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f}"));
+                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f:?}"));
             }
             TorqueProfile::Sine {
                 freq_hz: f,
@@ -217,7 +217,7 @@ fn validate_torque(table: &KeyPath, doc: &EffectSpec, kind_text: &str) -> Checke
             if t_off.is_nan() || t_off <= t_on {
                 return invalid(
                     key("t_off"),
-                    format!("must be later than t_on = {t_on} s, got {t_off}"),
+                    format!("must be later than t_on = {t_on:?} s, got {t_off:?}"),
                 );
             }
             TorqueProfile::Step { t_on, t_off }

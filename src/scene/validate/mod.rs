@@ -167,7 +167,7 @@ pub(super) fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
-        invalid(key, format!("must be a finite number ({unit}), got {v}"))
+        invalid(key, format!("must be a finite number ({unit}), got {v:?}"))
     }
 }
 
@@ -177,7 +177,7 @@ pub(super) fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
     } else {
         invalid(
             key,
-            format!("must be a finite number > 0 ({unit}), got {v}"),
+            format!("must be a finite number > 0 ({unit}), got {v:?}"),
         )
     }
 }
