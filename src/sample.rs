@@ -29,6 +29,8 @@ pub struct Sample {
     pub h_s_integrated: Option<Vector3<f64>>,
     /// Rotation about a fixed axis: what the support (bearings and drive) supplies.
     pub support: Option<SupportLoads>,
+    /// With gravity: the potential energy V = −m g·r_C, r_C from the moment center in space axes (J).
+    pub potential: Option<f64>,
 }
 
 /// What the support of a body turning about a fixed axis supplies: the force F_sup = m a_C − Σ F_effects, the
@@ -70,6 +72,8 @@ pub struct ColumnSet {
     pub support: bool,
     /// `R_A_s_*,R_B_s_*,R_A_b_*,R_B_b_*`.
     pub bearings: bool,
+    /// `potential,energy_total`.
+    pub potential: bool,
 }
 
 /// A column's name, unit and meaning.
@@ -238,6 +242,15 @@ const BEARING_COLUMNS: [Column; 12] = [
     bearing("R_B_b_z", "force of bearing B on the body, body axes"),
 ];
 
+const POTENTIAL_COLUMNS: [Column; 2] = [
+    col(
+        "potential",
+        "J",
+        "potential energy of gravity -m g.r_C, r_C from the moment center",
+    ),
+    col("energy_total", "J", "kinetic plus potential energy"),
+];
+
 impl ColumnSet {
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
@@ -256,6 +269,9 @@ impl ColumnSet {
         }
         if self.bearings {
             cols.extend(BEARING_COLUMNS);
+        }
+        if self.potential {
+            cols.extend(POTENTIAL_COLUMNS);
         }
         cols
     }
@@ -298,6 +314,11 @@ impl ColumnSet {
             ] {
                 out.extend(v.iter());
             }
+        }
+        if self.potential {
+            let v = s.potential.unwrap_or(f64::NAN);
+            out.push(v);
+            out.push(s.energy + v);
         }
     }
 }

@@ -581,3 +581,69 @@ fn a_motor_runs_the_hinge_up_to_the_steady_speed_against_viscous_friction() {
         }
     }
 }
+
+#[test]
+fn attitudes_can_be_written_as_euler_angles_or_by_the_axis_in_space() {
+    use nalgebra::UnitQuaternion;
+    // Intrinsic z-y'-x'': R = R_z(ψ) R_y(θ) R_x(φ), for [ψ, θ, φ] = [30, 20, 10] degrees.
+    let body = BodySpec::principal(1.0, [1.0, 2.0, 3.0]);
+    let mut spec = SceneSpec::new(body, 1.0, 0.5);
+    spec.initial = Some(eulerdyn::scene::InitialSpec {
+        attitude_euler_deg: Some([30.0, 20.0, 10.0]),
+        ..Default::default()
+    });
+    let expected = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 30f64.to_radians())
+        * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 20f64.to_radians())
+        * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 10f64.to_radians());
+    assert!(spec.build().unwrap().attitude0.angle_to(&expected) <= 1e-15);
+    // The notes' disk with its shaft put on space z by `axis_in_space`: the attitude of tilted_disk.toml, written
+    // there as a quaternion (−30° about x).
+    let mut disk = tilted_disk(30.0, Form::Body);
+    disk.motion.as_mut().unwrap().axis_in_space = Some([0.0, 0.0, 1.0]);
+    let by_axis = rows(&disk);
+    let by_quaternion = rows(&tilted_disk(30.0, Form::Body).with_attitude([
+        0.9659258262890683,
+        -0.25881904510252074,
+        0.0,
+        0.0,
+    ]));
+    for (a, b) in by_axis.iter().zip(&by_quaternion) {
+        assert!(
+            a.q.angle_to(&b.q) <= 1e-15 && (a.h_s - b.h_s).norm() <= 1e-15,
+            "t = {}",
+            a.t
+        );
+    }
+    // Both ways at once is refused.
+    let both = disk
+        .with_attitude([1.0, 0.0, 0.0, 0.0])
+        .build()
+        .unwrap_err();
+    assert_eq!(both.key.to_string(), "motion.axis_in_space");
+}
+
+#[test]
+fn gravity_scenes_write_a_conserved_total_energy() {
+    // T + V with V = −m g·r_C is conserved when only gravity acts (eq. 8.7's work–energy consequence); T is not.
+    for form in Form::ALL {
+        let rows = rows(&rod_pendulum(75.0, form));
+        let total0 = rows[0].energy + rows[0].potential.unwrap();
+        // Released from rest at 75°: V(0) = −m g d cos 75°, T(0) = 0.
+        close(
+            total0,
+            -9.81 * 0.5 * 75f64.to_radians().cos(),
+            1e-15,
+            "V(0)",
+        );
+        let kinetic_swing = rows.iter().map(|s| s.energy).fold(0f64, f64::max);
+        assert!(kinetic_swing > 1.0, "T changes: {kinetic_swing}");
+        for s in &rows {
+            let total = s.energy + s.potential.unwrap();
+            assert!(
+                (total - total0).abs() <= 1e-10 * kinetic_swing,
+                "t = {}",
+                s.t
+            );
+        }
+    }
+}

@@ -85,6 +85,7 @@ impl ExactFlow {
             f_s: None,
             h_s_integrated: None,
             support: None,
+            potential: None,
         }
     }
 

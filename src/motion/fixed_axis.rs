@@ -281,6 +281,7 @@ impl FixedAxis {
             f_s: self.center_off_axis().then(|| self.force_s(&angle)),
             h_s_integrated: None,
             support: Some(self.support(&angle, &q, &m_s, m_eff_s)),
+            potential: None,
         }
     }
 }

@@ -601,6 +601,7 @@ pub fn free_sample(
         f_s: None,
         h_s_integrated: None,
         support: None,
+        potential: None,
     }
 }
 

@@ -38,6 +38,17 @@ pub enum Motion {
     Hinge(Hinge),
 }
 
+impl Scene {
+    /// The potential energy of the scene's gravity at the attitude `q`: V = −m g·r_C, with r_C = q ρ_C the
+    /// mass center from the moment center (the pivot or the axis point) in space axes; `None` without gravity.
+    pub fn gravity_potential(&self, q: &UnitQuaternion<f64>) -> Option<f64> {
+        self.effects.iter().find_map(|e| match e {
+            Effect::Gravity { g_s, pivot_b } => Some(-self.body.mass() * g_s.dot(&(q * -pivot_b))),
+            _ => None,
+        })
+    }
+}
+
 /// A validated scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {

@@ -176,6 +176,14 @@ pub struct MotionSpec {
         skip_serializing_if = "Option::is_none"
     )]
     pub bearings: Option<[f64; 2]>,
+    /// The axis's direction in space axes: the attitude at t = 0 is then the smallest rotation that puts the body
+    /// axis on it (instead of `initial.attitude`).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub axis_in_space: Option<[f64; 3]>,
 }
 
 /// `[initial]`.
@@ -196,6 +204,13 @@ pub struct InitialSpec {
         skip_serializing_if = "Option::is_none"
     )]
     pub attitude: Option<[f64; 4]>,
+    /// The attitude as intrinsic z-y'-x'' angles [z, y, x] in degrees (instead of `attitude`).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub attitude_euler_deg: Option<[f64; 3]>,
 }
 
 /// The `type` of an effect.

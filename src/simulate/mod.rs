@@ -53,13 +53,15 @@ pub enum RunError<E: std::error::Error + 'static> {
 
 /// The optional columns a scene's run writes.
 pub fn columns(scene: &Scene) -> ColumnSet {
-    match &scene.motion {
+    let potential = scene.gravity_potential(&scene.attitude0).is_some();
+    let motion_columns = match &scene.motion {
         Motion::FixedAxis(motion) => ColumnSet {
             theta: true,
             force: motion.center_off_axis(),
             h_s_integrated: true,
             support: true,
             bearings: motion.bearings().is_some(),
+            ..ColumnSet::default()
         },
         Motion::Hinge(hinge) => ColumnSet {
             theta: true,
@@ -67,8 +69,13 @@ pub fn columns(scene: &Scene) -> ColumnSet {
             h_s_integrated: false,
             support: true,
             bearings: hinge.axis().bearings().is_some(),
+            ..ColumnSet::default()
         },
         Motion::Free { .. } => ColumnSet::default(),
+    };
+    ColumnSet {
+        potential,
+        ..motion_columns
     }
 }
 
@@ -146,12 +153,19 @@ pub fn run<E: std::error::Error + 'static>(
     let start = Instant::now();
     let guard = DivergenceGuard::new(scene);
     let mut rows = 0u64;
+    let with_potential = scene.gravity_potential(&scene.attitude0).is_some();
     let deliver = |s: &Sample| -> Result<(), Stop<E>> {
         if let Some(guard) = &guard {
             guard.check(s).map_err(Stop::Diverged)?;
         }
         rows += 1;
-        sink(s).map_err(Stop::Sink)
+        if with_potential {
+            let mut s = *s;
+            s.potential = scene.gravity_potential(&s.q);
+            sink(&s).map_err(Stop::Sink)
+        } else {
+            sink(s).map_err(Stop::Sink)
+        }
     };
     let stats = match &scene.motion {
         Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),

@@ -58,7 +58,7 @@ pub(super) fn validate_motion(
 }
 
 /// Every optional key of `[motion]` and whether it is given.
-fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 7] {
+fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 8] {
     [
         ("axis", m.axis.is_some()),
         ("tilt_deg", m.tilt_deg.is_some()),
@@ -67,6 +67,7 @@ fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 7] {
         ("point", m.point.is_some()),
         ("angle_deg", m.angle_deg.is_some()),
         ("bearings", m.bearings.is_some()),
+        ("axis_in_space", m.axis_in_space.is_some()),
     ]
 }
 
@@ -129,44 +130,33 @@ fn axis_geometry(
     let (kind_text, takes): (&str, &[&str]) = if m.kind == Some(MotionKind::Hinge) {
         (
             "motion type = \"hinge\"",
-            &["axis", "tilt_deg", "rate", "point", "angle_deg", "bearings"],
+            &[
+                "axis",
+                "tilt_deg",
+                "rate",
+                "point",
+                "angle_deg",
+                "bearings",
+                "axis_in_space",
+            ],
         )
     } else {
         (
             "motion type = \"fixed_axis\"",
-            &["axis", "tilt_deg", "rate", "accel", "point", "bearings"],
+            &[
+                "axis",
+                "tilt_deg",
+                "rate",
+                "accel",
+                "point",
+                "bearings",
+                "axis_in_space",
+            ],
         )
     };
     only_keys(&motion(), kind_text, takes, &given_keys(m))?;
-    let axis_b = match (m.axis, m.tilt_deg) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                motion().key("tilt_deg"),
-                "give either `axis` or `tilt_deg`, not both",
-            );
-        }
-        (None, None) => {
-            return invalid(
-                motion(),
-                "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
-            );
-        }
-        (Some(a), None) => {
-            let a = vector(motion().key("axis"), a, "direction")?;
-            let norm = a.norm();
-            if !(norm > 1e-300 && norm.is_finite()) {
-                return invalid(
-                    motion().key("axis"),
-                    "the axis is the zero vector; give a nonzero direction in body axes",
-                );
-            }
-            a / norm
-        }
-        (None, Some(tilt)) => {
-            let tilt = finite(motion().key("tilt_deg"), tilt, "degrees")?.to_radians();
-            Vector3::new(0.0, -tilt.sin(), tilt.cos())
-        }
-    };
+    let axis_b = axis_direction(m)?;
+    let attitude0 = axis_attitude(m, &axis_b, attitude0)?;
     let rate = finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?;
     let accel = finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?;
     // The required moment M = I α + ω × I ω is of order I_max (ω² + |α|): it must be a number at t = 0.
@@ -184,7 +174,7 @@ fn axis_geometry(
         None => Vector3::zeros(),
         Some(p) => vector(motion().key("point"), p, "m")?,
     } - center_b;
-    let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, *attitude0);
+    let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, attitude0);
     if let Some(g_s) = effects.iter().find_map(|e| match e {
         Effect::Gravity { g_s, .. } => Some(*g_s),
         _ => None,
@@ -231,4 +221,70 @@ fn hinge_motion(
         theta0,
         rate,
     )))
+}
+
+/// The unit axis in body axes, from `axis` or `tilt_deg`.
+fn axis_direction(m: &MotionSpec) -> Checked<Vector3<f64>> {
+    let motion = || KeyPath::root().key("motion");
+    Ok(match (m.axis, m.tilt_deg) {
+        (Some(_), Some(_)) => {
+            return invalid(
+                motion().key("tilt_deg"),
+                "give either `axis` or `tilt_deg`, not both",
+            );
+        }
+        (None, None) => {
+            return invalid(
+                motion(),
+                "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
+            );
+        }
+        (Some(a), None) => {
+            let a = vector(motion().key("axis"), a, "direction")?;
+            let norm = a.norm();
+            if !(norm > 1e-300 && norm.is_finite()) {
+                return invalid(
+                    motion().key("axis"),
+                    "the axis is the zero vector; give a nonzero direction in body axes",
+                );
+            }
+            a / norm
+        }
+        (None, Some(tilt)) => {
+            let tilt = finite(motion().key("tilt_deg"), tilt, "degrees")?.to_radians();
+            Vector3::new(0.0, -tilt.sin(), tilt.cos())
+        }
+    })
+}
+
+/// The attitude at t = 0: with `axis_in_space`, the smallest rotation that puts the body axis `axis_b` on that
+/// space direction (a half turn about a body direction across the axis when they are opposite); else the
+/// scene's `initial.attitude`.
+fn axis_attitude(
+    m: &MotionSpec,
+    axis_b: &Vector3<f64>,
+    attitude0: &UnitQuaternion<f64>,
+) -> Checked<UnitQuaternion<f64>> {
+    let Some(direction) = m.axis_in_space else {
+        return Ok(*attitude0);
+    };
+    let key = KeyPath::root().key("motion").key("axis_in_space");
+    let axis_s = vector(key.clone(), direction, "direction")?;
+    if !(axis_s.norm() > 1e-300) {
+        return invalid(
+            key,
+            "the zero vector is no direction; give the axis in space axes",
+        );
+    }
+    Ok(
+        UnitQuaternion::rotation_between(axis_b, &axis_s).unwrap_or_else(|| {
+            let across = if axis_b.x.abs() < 0.9 {
+                Vector3::x()
+            } else {
+                Vector3::y()
+            };
+            let half_turn_axis = nalgebra::Unit::new_normalize(axis_b.cross(&across));
+            UnitQuaternion::from_axis_angle(&half_turn_axis, std::f64::consts::PI)
+        }),
+    )
 }
