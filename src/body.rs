@@ -53,7 +53,7 @@ impl Shape {
             } else {
                 Err(InvalidBody::new(
                     key,
-                    format!("must be a finite number > 0 (m), got {v}"),
+                    format!("must be a finite number > 0 (m), got {v:?}"),
                 ))
             }
         };
@@ -69,7 +69,7 @@ impl Shape {
                 if !(thickness.is_finite() && thickness >= 0.0) {
                     return Err(InvalidBody::new(
                         "shape.thickness",
-                        format!("must be a finite number >= 0 (m), got {thickness}"),
+                        format!("must be a finite number >= 0 (m), got {thickness:?}"),
                     ));
                 }
                 let t = mass * (3.0 * r * r + thickness * thickness) / 12.0;
@@ -163,7 +163,7 @@ impl RigidBody {
         if !(mass.is_finite() && mass > 0.0) {
             return Err(InvalidBody::new(
                 "mass",
-                format!("must be a finite number > 0 (kg), got {mass}"),
+                format!("must be a finite number > 0 (kg), got {mass:?}"),
             ));
         }
         if inertia_c.iter().any(|v| !v.is_finite()) {
@@ -229,7 +229,7 @@ impl RigidBody {
         if !(mass.is_finite() && mass > 0.0) {
             return Err(InvalidBody::new(
                 "mass",
-                format!("must be a finite number > 0 (kg), got {mass}"),
+                format!("must be a finite number > 0 (kg), got {mass:?}"),
             ));
         }
         Self::new(mass, shape.inertia_c(mass)?)
@@ -253,6 +253,36 @@ impl RigidBody {
     /// Principal moments and axes of I_C.
     pub fn principal(&self) -> &Principal {
         &self.principal
+    }
+
+    /// The body with point masses attached: `masses` are (m_k, p_k) with p_k from this body's mass center (body
+    /// axes). Returns the whole body — mass M = m + Σ m_k, inertia about its mass center C' — and the position c of
+    /// C' from this body's mass center: c = Σ m_k p_k / M, and by the parallel-axis theorem (eq. 8.4's I_A)
+    /// I_C' = I_C + m (|c|² E − c cᵀ) + Σ m_k (|p_k − c|² E − (p_k − c)(p_k − c)ᵀ).
+    ///
+    /// ```
+    /// use eulerdyn::body::RigidBody;
+    /// use nalgebra::Vector3;
+    /// let disk = RigidBody::from_principal(2.0, [0.045, 0.045, 0.09]).unwrap();
+    /// let (whole, c) = disk.with_point_masses(&[(0.5, Vector3::new(0.1, 0.0, 0.0))]).unwrap();
+    /// assert_eq!(whole.mass(), 2.5);
+    /// assert!((c - Vector3::new(0.02, 0.0, 0.0)).norm() < 1e-16);
+    /// ```
+    pub fn with_point_masses(
+        &self,
+        masses: &[(f64, Vector3<f64>)],
+    ) -> Result<(RigidBody, Vector3<f64>), InvalidBody> {
+        let total = self.mass + masses.iter().map(|(m, _)| m).sum::<f64>();
+        let c = masses.iter().map(|(m, p)| p * *m).sum::<Vector3<f64>>() / total;
+        let steiner = |m: f64, rho: &Vector3<f64>| {
+            (Matrix3::identity() * rho.norm_squared() - rho * rho.transpose()) * m
+        };
+        let inertia = masses
+            .iter()
+            .fold(self.inertia_c + steiner(self.mass, &c), |sum, (m, p)| {
+                sum + steiner(*m, &(p - c))
+            });
+        Ok((RigidBody::new(total, inertia)?, c))
     }
 
     /// Inertia tensor about the body point A, by the parallel-axis theorem:

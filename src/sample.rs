@@ -27,6 +27,36 @@ pub struct Sample {
     pub f_s: Option<Vector3<f64>>,
     /// Prescribed motion: H_s obtained by integrating Ḣ_s = M_s numerically (kg·m²/s, space axes).
     pub h_s_integrated: Option<Vector3<f64>>,
+    /// Rotation about a fixed axis: what the support (bearings and drive) supplies.
+    pub support: Option<SupportLoads>,
+    /// With gravity: the potential energy V = −m g·r_C, r_C from the moment center in space axes (J).
+    pub potential: Option<f64>,
+}
+
+/// What the support of a body turning about a fixed axis supplies: the force F_sup = m a_C − Σ F_effects, the
+/// moment about the axis M_drive = M_sup·u (M_sup = dH/dt − Σ M_effects), and, with two bearings, the force each
+/// applies to the body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SupportLoads {
+    /// θ̇ (rad/s).
+    pub theta_dot: f64,
+    /// θ̈ (rad/s²).
+    pub theta_ddot: f64,
+    /// Force the support applies to the body (N, space axes).
+    pub f_sup_s: Vector3<f64>,
+    /// Moment about the axis that the drive supplies (N·m).
+    pub m_drive: f64,
+    /// The bearings' forces on the body, where the scene places two bearings.
+    pub bearings: Option<BearingLoads>,
+}
+
+/// The forces bearings A and B apply to the body (N): R_A + R_B = F_sup, r_A × R_A + r_B × R_B = M_sup⊥.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BearingLoads {
+    pub r_a_s: Vector3<f64>,
+    pub r_b_s: Vector3<f64>,
+    pub r_a_b: Vector3<f64>,
+    pub r_b_b: Vector3<f64>,
 }
 
 /// Which optional columns a run writes (fixed for the whole run).
@@ -38,6 +68,12 @@ pub struct ColumnSet {
     pub force: bool,
     /// `H_s_int_x,H_s_int_y,H_s_int_z`.
     pub h_s_integrated: bool,
+    /// `theta_dot,theta_ddot,F_sup_s_x,F_sup_s_y,F_sup_s_z,M_drive`.
+    pub support: bool,
+    /// `R_A_s_*,R_B_s_*,R_A_b_*,R_B_b_*`.
+    pub bearings: bool,
+    /// `potential,energy_total`.
+    pub potential: bool,
 }
 
 /// A column's name, unit and meaning.
@@ -157,6 +193,64 @@ const H_INT_COLUMNS: [Column; 3] = [
     ),
 ];
 
+const SUPPORT_COLUMNS: [Column; 6] = [
+    col("theta_dot", "rad/s", "rate about the fixed axis"),
+    col(
+        "theta_ddot",
+        "rad/s^2",
+        "angular acceleration about the fixed axis",
+    ),
+    col(
+        "F_sup_s_x",
+        "N",
+        "force of the support on the body, space axes",
+    ),
+    col(
+        "F_sup_s_y",
+        "N",
+        "force of the support on the body, space axes",
+    ),
+    col(
+        "F_sup_s_z",
+        "N",
+        "force of the support on the body, space axes",
+    ),
+    col(
+        "M_drive",
+        "N*m",
+        "moment about the axis that the drive supplies",
+    ),
+];
+
+/// One bearing force column: `R_{bearing}_{axes}_{component}`.
+const fn bearing(name: &'static str, meaning: &'static str) -> Column {
+    col(name, "N", meaning)
+}
+
+const BEARING_COLUMNS: [Column; 12] = [
+    bearing("R_A_s_x", "force of bearing A on the body, space axes"),
+    bearing("R_A_s_y", "force of bearing A on the body, space axes"),
+    bearing("R_A_s_z", "force of bearing A on the body, space axes"),
+    bearing("R_B_s_x", "force of bearing B on the body, space axes"),
+    bearing("R_B_s_y", "force of bearing B on the body, space axes"),
+    bearing("R_B_s_z", "force of bearing B on the body, space axes"),
+    bearing("R_A_b_x", "force of bearing A on the body, body axes"),
+    bearing("R_A_b_y", "force of bearing A on the body, body axes"),
+    bearing("R_A_b_z", "force of bearing A on the body, body axes"),
+    bearing("R_B_b_x", "force of bearing B on the body, body axes"),
+    bearing("R_B_b_y", "force of bearing B on the body, body axes"),
+    bearing("R_B_b_z", "force of bearing B on the body, body axes"),
+];
+
+const POTENTIAL_COLUMNS: [Column; 2] = [
+    col(
+        "potential",
+        "J",
+        "potential energy of gravity -m g.r_C, r_C from the moment center",
+    ),
+    col("energy_total", "J", "kinetic plus potential energy"),
+];
+
 impl ColumnSet {
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
@@ -169,6 +263,15 @@ impl ColumnSet {
         }
         if self.h_s_integrated {
             cols.extend(H_INT_COLUMNS);
+        }
+        if self.support {
+            cols.extend(SUPPORT_COLUMNS);
+        }
+        if self.bearings {
+            cols.extend(BEARING_COLUMNS);
+        }
+        if self.potential {
+            cols.extend(POTENTIAL_COLUMNS);
         }
         cols
     }
@@ -192,6 +295,30 @@ impl ColumnSet {
         }
         if self.h_s_integrated {
             out.extend(s.h_s_integrated.unwrap_or(Vector3::repeat(f64::NAN)).iter());
+        }
+        let nan3 = Vector3::repeat(f64::NAN);
+        if self.support {
+            let support = s.support;
+            out.push(support.map_or(f64::NAN, |l| l.theta_dot));
+            out.push(support.map_or(f64::NAN, |l| l.theta_ddot));
+            out.extend(support.map_or(nan3, |l| l.f_sup_s).iter());
+            out.push(support.map_or(f64::NAN, |l| l.m_drive));
+        }
+        if self.bearings {
+            let loads = s.support.and_then(|l| l.bearings);
+            for v in [
+                loads.map_or(nan3, |b| b.r_a_s),
+                loads.map_or(nan3, |b| b.r_b_s),
+                loads.map_or(nan3, |b| b.r_a_b),
+                loads.map_or(nan3, |b| b.r_b_b),
+            ] {
+                out.extend(v.iter());
+            }
+        }
+        if self.potential {
+            let v = s.potential.unwrap_or(f64::NAN);
+            out.push(v);
+            out.push(s.energy + v);
         }
     }
 }

@@ -41,7 +41,19 @@ const CONTRACT_COLUMNS: [&str; 25] = [
 ];
 
 /// The tilted disk (prescribed motion, C on the axis) adds these after the contract's columns.
-const DISK_EXTRA_COLUMNS: [&str; 4] = ["theta", "H_s_int_x", "H_s_int_y", "H_s_int_z"];
+/// The prescribed motion's columns, then the support's (the contract's "Rotation about an invariant axis").
+const DISK_EXTRA_COLUMNS: [&str; 10] = [
+    "theta",
+    "H_s_int_x",
+    "H_s_int_y",
+    "H_s_int_z",
+    "theta_dot",
+    "theta_ddot",
+    "F_sup_s_x",
+    "F_sup_s_y",
+    "F_sup_s_z",
+    "M_drive",
+];
 
 fn tilted_disk() -> String {
     repo_path("scenarios/tilted_disk.toml")

@@ -37,6 +37,7 @@ impl Oracle {
     pub fn for_scene(scene: &Scene) -> Option<Oracle> {
         let omega0_b = match &scene.motion {
             Motion::FixedAxis(_) => return Some(Oracle::FixedAxis),
+            Motion::Hinge(_) => return None,
             Motion::Free { omega0_b, .. } => *omega0_b,
         };
         let principal = scene.body.principal();

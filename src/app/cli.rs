@@ -8,6 +8,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::app::balance::{BalanceArgs, balance_command};
 use crate::app::progress::{self, Progress};
 use crate::app::report;
 use crate::output::plot::{self, Panel, PlotError};
@@ -71,6 +72,12 @@ pub enum Command {
         after_help = "Example:\n  eulerdyn accuracy scenarios/asymmetric_free.toml -o table.csv --plot work_precision.svg\n\nWithout -o the table goes to stdout and the summary to stderr; with -o the summary goes to stdout."
     )]
     Accuracy(AccuracyArgs),
+    /// Two-plane balancing of a fixed-axis or hinge scene: the correction masses that remove the static and the
+    /// dynamic imbalance, so that the rotating bearing reactions vanish at every rate.
+    #[command(
+        after_help = "Example:\n  eulerdyn balance scenarios/rotor_bearings.toml --planes -0.1,0.1 --radius 0.2 -o balanced.toml"
+    )]
+    Balance(BalanceArgs),
 }
 
 #[derive(Debug, Args)]
@@ -161,6 +168,9 @@ pub fn main() -> ExitCode {
         Command::Compare { scene, method } => compare(&scene, method, quiet),
         Command::Plot(args) => plot_command(&args, quiet),
         Command::Accuracy(args) => accuracy_command(&args, quiet),
+        Command::Balance(args) => balance_command(&args)
+            .map_err(Failure::Input)
+            .and_then(|text| print_stdout(&text)),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

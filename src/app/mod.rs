@@ -2,6 +2,7 @@
 //! interface: everything it does is reachable through the library's own functions.
 
 pub mod accuracy;
+pub mod balance;
 pub mod cli;
 pub mod interrupt;
 pub mod progress;

@@ -13,6 +13,7 @@ use crate::frames::Form;
 use crate::method::Method;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
+use crate::motion::hinge::Hinge;
 use crate::sample::{BASE_COLUMNS, Sample};
 use crate::scene::{Motion, Scene};
 use crate::simulate;
@@ -110,6 +111,7 @@ fn characteristic_rate(scene: &Scene) -> f64 {
             .rate()
             .abs()
             .max((m.rate() + m.accel() * scene.solver.t_end).abs()),
+        Motion::Hinge(h) => h.axis().rate().abs(),
     };
     scene
         .effects
@@ -204,7 +206,9 @@ pub fn describe(scene: &Scene) -> String {
             body: free,
         } => free_motion_lines(w, scene, omega0_b, free),
         Motion::FixedAxis(motion) => fixed_axis_lines(w, scene, motion),
+        Motion::Hinge(hinge) => hinge_lines(w, hinge),
     }
+    support_lines(w, scene);
     attitude_line(w, scene);
     effect_lines(w, scene);
     let steps = method_lines(w, scene);
@@ -414,11 +418,83 @@ fn attitude_line(w: &mut String, scene: &Scene) {
     );
 }
 
+/// A hinge: its axis, I_uu and initial angle and rate.
+fn hinge_lines(w: &mut String, hinge: &Hinge) {
+    let axis = hinge.axis();
+    line(
+        w,
+        "motion",
+        "a hinge: rotation about an axis fixed in the body and in space, theta from d/dt(I_uu theta') = M.u",
+    );
+    line(
+        w,
+        "",
+        &format!(
+            "axis {} (body axes); I_uu = {:.6e} kg*m^2; theta(0) = {} rad, rate {} rad/s at t = 0",
+            vec3(&axis.axis_b().into_inner()),
+            hinge.i_uu(),
+            plain(hinge.theta0()),
+            plain(axis.rate())
+        ),
+    );
+    axis_point_lines(w, &axis.point_b());
+}
+
+/// Where C is (with point masses), and for an axis motion its bearings and its imbalance: static m·e (e the
+/// distance of C from the axis) and dynamic |I_A u − (u·I_A u) u| (the product of inertia about the axis).
+fn support_lines(w: &mut String, scene: &Scene) {
+    if scene.center_b != Vector3::zeros() {
+        line(
+            w,
+            "mass center",
+            &format!(
+                "C at {} m from the reference origin (body axes), the point masses included",
+                vec3(&scene.center_b)
+            ),
+        );
+    }
+    let axis = match &scene.motion {
+        Motion::FixedAxis(axis) => axis,
+        Motion::Hinge(hinge) => hinge.axis(),
+        Motion::Free { .. } => return,
+    };
+    let u_b = axis.axis_b().into_inner();
+    if let Some(b) = axis.bearings() {
+        let at = |z: f64| vec3(&(axis.point_b() + scene.center_b + u_b * z));
+        line(
+            w,
+            "bearings",
+            &format!(
+                "A at {} m along the axis ({} m from the reference origin), B at {} m ({})",
+                plain(b.a),
+                at(b.a),
+                plain(b.b),
+                at(b.b)
+            ),
+        );
+    }
+    let rho = axis.rho_c_b();
+    let e = (rho - u_b * rho.dot(&u_b)).norm();
+    let i_u = axis.inertia_a_b() * u_b;
+    let product = (i_u - u_b * i_u.dot(&u_b)).norm();
+    line(
+        w,
+        "imbalance",
+        &format!(
+            "static m*e = {:.6e} kg*m (C {:.6e} m from the axis); dynamic |I_A u - (u.I_A u) u| = {:.6e} kg*m^2",
+            axis.mass() * e,
+            e,
+            product
+        ),
+    );
+}
+
 /// The effects, one a line (or why there are none).
 fn effect_lines(w: &mut String, scene: &Scene) {
     if scene.effects.is_empty() {
         let none = match scene.motion {
             Motion::FixedAxis(_) => "none: the motion is prescribed",
+            Motion::Hinge(_) => "none: the hinge turns at its initial rate",
             Motion::Free { .. } => "none: torque-free",
         };
         line(w, "effects", none);

@@ -84,6 +84,8 @@ impl ExactFlow {
             theta: None,
             f_s: None,
             h_s_integrated: None,
+            support: None,
+            potential: None,
         }
     }
 

@@ -8,7 +8,8 @@ use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 use crate::body::RigidBody;
 use crate::frames::Form;
 use crate::kinetics::kinetic_energy;
-use crate::sample::Sample;
+use crate::motion::support::Bearings;
+use crate::sample::{BearingLoads, Sample, SupportLoads};
 
 /// Rotation about a fixed axis through the fixed point A: θ(t) = θ̇₀ t + ½ θ̈ t², attitude
 /// R(t) = Rot(a_s, θ(t))·R₀ with a_s = R₀ a_b, so that the axis a_b is fixed in the body and in space.
@@ -29,6 +30,10 @@ pub struct FixedAxis {
     rho_c_b: Vector3<f64>,
     /// Inertia about A in body axes (parallel-axis theorem).
     inertia_a_b: Matrix3<f64>,
+    /// Uniform gravity acting at C (m/s², space axes); zero without a gravity effect.
+    g_s: Vector3<f64>,
+    /// The two bearings, where the scene places them.
+    bearings: Option<Bearings>,
 }
 
 /// The angle turned about the axis and its derivatives at one time.
@@ -64,7 +69,48 @@ impl FixedAxis {
             q0,
             rho_c_b,
             inertia_a_b: body.inertia_about(&rho_c_b),
+            g_s: Vector3::zeros(),
+            bearings: None,
         }
+    }
+
+    /// The same body, axis, point and initial attitude turning at the constant `rate` (rad/s), without gravity or
+    /// bearings.
+    pub fn new_like(other: &FixedAxis, rate: f64) -> Self {
+        Self {
+            rate,
+            accel: 0.0,
+            g_s: Vector3::zeros(),
+            bearings: None,
+            ..other.clone()
+        }
+    }
+
+    /// With uniform gravity `g_s` (m/s², space axes) acting at C: the support then carries the weight.
+    pub fn with_gravity(mut self, g_s: Vector3<f64>) -> Self {
+        self.g_s = g_s;
+        self
+    }
+
+    /// With two bearings on the axis.
+    pub fn with_bearings(mut self, bearings: Bearings) -> Self {
+        self.bearings = Some(bearings);
+        self
+    }
+
+    /// The bearings, where the scene places them.
+    pub fn bearings(&self) -> Option<&Bearings> {
+        self.bearings.as_ref()
+    }
+
+    /// Gravity acting at C (m/s², space axes; zero when the scene has none).
+    pub fn g_s(&self) -> &Vector3<f64> {
+        &self.g_s
+    }
+
+    /// Mass (kg).
+    pub fn mass(&self) -> f64 {
+        self.mass
     }
 
     /// Unit axis in body axes.
@@ -193,6 +239,22 @@ impl FixedAxis {
     pub fn sample(&self, t: f64, frame: Form) -> Sample {
         let angle = self.angle(t);
         let q = self.attitude(angle.theta);
+        let weight_moment_s = (q * self.rho_c_b).cross(&(self.g_s * self.mass));
+        self.sample_at(t, &angle, frame, &weight_moment_s)
+    }
+
+    /// The kinetic state and the support's loads at time t and the angle `angle` (see [`Self::sample`] and
+    /// [`crate::motion::support`]), where the effects apply the moment `m_eff_s` about A (space axes) and
+    /// gravity its weight at C.
+    pub fn sample_at(
+        &self,
+        t: f64,
+        angle: &AxisAngle,
+        frame: Form,
+        m_eff_s: &Vector3<f64>,
+    ) -> Sample {
+        let angle = *angle;
+        let q = self.attitude(angle.theta);
         let omega_b = self.omega_b(&angle);
         let h_b = self.h_b(&angle);
         let (m_b, m_s) = match frame {
@@ -218,6 +280,40 @@ impl FixedAxis {
             theta: Some(angle.theta),
             f_s: self.center_off_axis().then(|| self.force_s(&angle)),
             h_s_integrated: None,
+            support: Some(self.support(&angle, &q, &m_s, m_eff_s)),
+            potential: None,
+        }
+    }
+}
+
+impl FixedAxis {
+    /// What the support supplies when the resultant moment about A is `m_s` and the effects' is `m_eff_s` (space
+    /// axes): F_sup = m a_C − m g, M_sup = m_s − m_eff_s, the drive's M_sup·u and, with bearings, their split (see
+    /// [`crate::motion::support`]).
+    fn support(
+        &self,
+        angle: &AxisAngle,
+        q: &UnitQuaternion<f64>,
+        m_s: &Vector3<f64>,
+        m_eff_s: &Vector3<f64>,
+    ) -> SupportLoads {
+        let f_sup_s = self.force_s(angle) - self.g_s * self.mass;
+        let m_sup_s = m_s - m_eff_s;
+        let u_s = self.axis_s.into_inner();
+        SupportLoads {
+            theta_dot: angle.theta_dot,
+            theta_ddot: angle.theta_ddot,
+            f_sup_s,
+            m_drive: m_sup_s.dot(&u_s),
+            bearings: self.bearings.map(|bearings| {
+                let (r_a_s, r_b_s) = bearings.split(&f_sup_s, &m_sup_s, &u_s);
+                BearingLoads {
+                    r_a_s,
+                    r_b_s,
+                    r_a_b: q.inverse_transform_vector(&r_a_s),
+                    r_b_b: q.inverse_transform_vector(&r_b_s),
+                }
+            }),
         }
     }
 }

@@ -63,7 +63,7 @@ impl AppliedMoment for TorqueFree {
 ///
 /// The effects are compiled once: the body-axis torques into one [`TorqueSum`], the space-axis torques into another
 /// (rotated into the body once per evaluation), so that only space torques and gravity need the attitude.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct EffectMoments {
     effects: Vec<Effect>,
     mass: f64,
@@ -75,7 +75,7 @@ pub struct EffectMoments {
 }
 
 /// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 struct GravityMoment {
     g_s: Vector3<f64>,
     rho_c_b: Vector3<f64>,
@@ -600,6 +600,8 @@ pub fn free_sample(
         theta: None,
         f_s: None,
         h_s_integrated: None,
+        support: None,
+        potential: None,
     }
 }
 

@@ -5,4 +5,6 @@
 pub mod exact_flow;
 pub mod fixed_axis;
 pub mod free;
+pub mod hinge;
 pub mod lie_poisson;
+pub mod support;

@@ -20,6 +20,7 @@ pub fn sidecar(
     let motion = match scene.motion {
         Motion::Free { .. } => "free",
         Motion::FixedAxis { .. } => "fixed_axis",
+        Motion::Hinge { .. } => "hinge",
     };
     json!({
         "eulerdyn_version": env!("CARGO_PKG_VERSION"),

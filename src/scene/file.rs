@@ -41,6 +41,16 @@ impl std::error::Error for SceneError {}
 
 /// Reads and validates a scene file, applying command-line overrides.
 pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+    parse(path, &read(path)?, overrides)
+}
+
+/// Reads a scene file into its typed value, without validating it (to change it before [`SceneSpec::build`]).
+pub fn load_spec(path: &Path) -> Result<SceneSpec, SceneError> {
+    parse_spec(path, &read(path)?)
+}
+
+/// The text of a scene file.
+fn read(path: &Path) -> Result<String, SceneError> {
     let error = |problem: String| SceneError {
         file: path.to_path_buf(),
         key: None,
@@ -53,7 +63,7 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
         ));
     }
     let bytes = std::fs::read(path).map_err(|e| error(format!("cannot read the file: {e}")))?;
-    let text = String::from_utf8(bytes).map_err(|e| {
+    String::from_utf8(bytes).map_err(|e| {
         let offset = e.utf8_error().valid_up_to();
         let before = String::from_utf8_lossy(&e.as_bytes()[..offset]).into_owned();
         let map = SourceMap::new(&before);
@@ -61,8 +71,7 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
             location: Some(map.line_col(offset.min(before.len()))),
             ..error("the file is not valid UTF-8 text; a scene file is TOML".into())
         }
-    })?;
-    parse(path, &text, overrides)
+    })
 }
 
 /// Parses and validates scene text; `path` is used in messages only.
@@ -78,6 +87,17 @@ pub fn load(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
 /// assert!(err.to_string().starts_with("inline.toml:2:1: key `body.mass`: must be a finite number > 0"));
 /// ```
 pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, SceneError> {
+    let doc = parse_spec(path, text)?;
+    doc.build_with(overrides).map_err(|inv| SceneError {
+        file: path.to_path_buf(),
+        location: SourceMap::new(text).locate(&inv.key),
+        key: Some(inv.key.to_string()),
+        problem: inv.problem,
+    })
+}
+
+/// Parses scene text into its typed value; errors name the key, line and column.
+pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
     let map = SourceMap::new(text);
     if text.trim().is_empty() {
         return Err(SceneError {
@@ -89,62 +109,104 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
                     .into(),
         });
     }
-    let doc: SceneSpec = toml::from_str(text).map_err(|e| {
-        let span = e.span();
-        let problem = e.message().trim().to_string();
-        let file = path.to_path_buf();
-        // serde names a missing key in its message; the span is then that of its table (empty for the root).
-        let missing = problem
-            .strip_prefix("missing field `")
-            .and_then(|rest| rest.split('`').next());
-        if let Some(name) = missing {
-            let table = span
-                .as_ref()
-                .map_or_else(KeyPath::root, |s| map.table_at(s));
-            return SceneError {
-                file,
-                location: if table.is_root() {
-                    None
-                } else {
-                    span.map(|s| map.line_col(s.start))
-                },
-                key: Some(table.key(name).to_string()),
-                problem: format!("missing: this key is required ({problem})"),
-            };
-        }
-        // The parser's "duplicate key" does not say which; its span does.
-        let duplicate = span
+    toml::from_str(text).map_err(|e| toml_error(path, text, &map, &e))
+}
+
+/// The parser's or serde's error as a scene error: the key (for a wrong value) or the line (for broken syntax)
+/// where it happened, in the user's words rather than Rust's.
+fn toml_error(path: &Path, text: &str, map: &SourceMap, e: &toml::de::Error) -> SceneError {
+    let span = e.span();
+    let problem = e.message().trim().to_string();
+    let file = path.to_path_buf();
+    // serde names a missing key in its message; the span is then that of its table (empty for the root).
+    let missing = problem
+        .strip_prefix("missing field `")
+        .and_then(|rest| rest.split('`').next());
+    if let Some(name) = missing {
+        let table = span
             .as_ref()
-            .and_then(|s| text.get(s.clone()))
-            .map(str::trim)
-            .filter(|name| problem == "duplicate key" && !name.is_empty() && !name.contains('\n'));
-        let problem = match duplicate {
-            Some(name) => {
-                format!("duplicate key `{name}`: each key and table may be given only once")
-            }
-            None => problem,
-        };
-        let key = span
-            .as_ref()
-            .and_then(|s| map.key_at(s.start).or_else(|| map.key_near(s.start)));
-        // Text that names no key at all: quote the line, so the message still says where.
-        let problem = match (&key, &span) {
-            (None, Some(s)) => format!("{problem}, in the line `{}`", map.line_text(s.start)),
-            _ => problem,
-        };
-        SceneError {
+            .map_or_else(KeyPath::root, |s| map.table_at(s));
+        return SceneError {
             file,
-            key: key.map(|k| k.to_string()),
-            location: span.map(|s| map.line_col(s.start)),
-            problem,
-        }
-    })?;
-    doc.build_with(overrides).map_err(|inv| SceneError {
-        file: path.to_path_buf(),
-        location: map.locate(&inv.key),
-        key: Some(inv.key.to_string()),
-        problem: inv.problem,
-    })
+            location: if table.is_root() {
+                None
+            } else {
+                span.map(|s| map.line_col(s.start))
+            },
+            key: Some(table.key(name).to_string()),
+            problem: format!("missing: this key is required ({problem})"),
+        };
+    }
+    // The parser's "duplicate key" does not say which; its span does.
+    let duplicate = span
+        .as_ref()
+        .and_then(|s| text.get(s.clone()))
+        .map(str::trim)
+        .filter(|name| problem == "duplicate key" && !name.is_empty() && !name.contains('\n'));
+    let problem = match duplicate {
+        Some(name) => format!("duplicate key `{name}`: each key and table may be given only once"),
+        None => problem,
+    };
+    // A value of the wrong kind belongs to its key; broken syntax (an unclosed `[table`, a key without `=`)
+    // belongs to its line, whatever key came before it.
+    let key = span
+        .as_ref()
+        .filter(|_| is_value_error(&problem))
+        .and_then(|s| map.key_at(s.start).or_else(|| map.key_near(s.start)));
+    let problem = match (&key, &span) {
+        (Some(key), _) => in_plain_words(&problem, key),
+        (None, Some(s)) => format!("{problem}, in the line `{}`", map.line_text(s.start)),
+        (None, None) => problem,
+    };
+    SceneError {
+        file,
+        key: key.map(|k| k.to_string()),
+        location: span.map(|s| map.line_col(s.start)),
+        problem,
+    }
+}
+
+/// Whether serde's message is about a value (its key is at fault) rather than the file's syntax.
+fn is_value_error(problem: &str) -> bool {
+    [
+        "invalid type",
+        "invalid value",
+        "invalid length",
+        "unknown field",
+        "unknown variant",
+        "unknown value",
+        "duplicate key",
+        "data did not match",
+        "principal moments",
+    ]
+    .iter()
+    .any(|prefix| problem.starts_with(prefix))
+}
+
+/// serde's wording for a value of the wrong kind, said for a scene file's author.
+fn in_plain_words(problem: &str, key: &KeyPath) -> String {
+    if let Some(given) = problem
+        .strip_prefix("invalid type: string ")
+        .and_then(|rest| rest.strip_suffix(", expected f64"))
+    {
+        return format!("expected a number in SI units, without a unit; got the string {given}");
+    }
+    let table_array = ["effect", "point_mass"]
+        .into_iter()
+        .find(|name| key.last_key() == *name);
+    if let (Some(name), true) = (table_array, problem.contains("expected a sequence")) {
+        let full = key.to_string();
+        return format!(
+            "[{full}] is one table, but `{name}` is a list of tables: write [[{full}]] for each entry"
+        );
+    }
+    match problem.strip_suffix(", expected f64") {
+        Some(what) => format!(
+            "expected a number, got {}",
+            what.trim_start_matches("invalid type: ")
+        ),
+        None => problem.to_string(),
+    }
 }
 
 /// The value a command-line flag names (`--method rk4`), or the error that names the scene file and the key it

@@ -7,10 +7,11 @@ pub mod source_map;
 mod spec;
 mod validate;
 
-pub use file::{SceneError, flag_value, load, parse};
+pub use file::{SceneError, flag_value, load, load_spec, parse, parse_spec};
 pub use model::{Motion, Scene, SolverConfig};
 pub use spec::{
     BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,
-    MotionSpec, OutputSpec, ProfileKind, SceneSpec, ShapeKind, ShapeSpec, SolverSpec,
+    MotionSpec, OutputSpec, PointMassSpec, ProfileKind, SceneSpec, ShapeKind, ShapeSpec,
+    SolverSpec,
 };
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -9,6 +9,7 @@ use crate::integrate::Schedule;
 use crate::method::{Backend, Method};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
+use crate::motion::hinge::Hinge;
 
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -33,6 +34,19 @@ pub enum Motion {
     },
     /// Prescribed rotation about a fixed axis.
     FixedAxis(FixedAxis),
+    /// Rotation about a fixed axis driven by the effects (θ integrated from their moment about the axis).
+    Hinge(Hinge),
+}
+
+impl Scene {
+    /// The potential energy of the scene's gravity at the attitude `q`: V = −m g·r_C, with r_C = q ρ_C the
+    /// mass center from the moment center (the pivot or the axis point) in space axes; `None` without gravity.
+    pub fn gravity_potential(&self, q: &UnitQuaternion<f64>) -> Option<f64> {
+        self.effects.iter().find_map(|e| match e {
+            Effect::Gravity { g_s, pivot_b } => Some(-self.body.mass() * g_s.dot(&(q * -pivot_b))),
+            _ => None,
+        })
+    }
 }
 
 /// A validated scene.
@@ -41,6 +55,9 @@ pub struct Scene {
     pub name: String,
     pub description: String,
     pub body: RigidBody,
+    /// The mass center C from the reference origin, body axes (m): zero without point masses. Every position
+    /// in a scene file is measured from the reference origin; every position in the validated scene from C.
+    pub center_b: Vector3<f64>,
     pub motion: Motion,
     /// Attitude at t = 0 (body → space).
     pub attitude0: UnitQuaternion<f64>,

@@ -53,6 +53,25 @@ pub struct BodySpec {
     /// The inertia about C in body axes (kg·m²), instead of a shape.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inertia: Option<InertiaSpec>,
+    /// `[[body.point_mass]]`: point masses rigidly attached.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub point_mass: Vec<PointMassSpec>,
+}
+
+/// One `[[body.point_mass]]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PointMassSpec {
+    /// kg, > 0.
+    pub mass: f64,
+    /// Position from the reference origin (the shape's center, or the point the given inertia is about), body
+    /// axes (m).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub at: Option<[f64; 3]>,
 }
 
 /// `body.inertia`: principal moments, or the full symmetric tensor.
@@ -114,6 +133,7 @@ pub struct ShapeSpec {
 pub enum MotionKind {
     Free,
     FixedAxis,
+    Hinge,
 }
 
 /// `[motion]`.
@@ -146,6 +166,24 @@ pub struct MotionSpec {
         skip_serializing_if = "Option::is_none"
     )]
     pub point: Option<[f64; 3]>,
+    /// θ at t = 0 (degrees), hinge only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle_deg: Option<f64>,
+    /// Axial positions [a, b] of bearings A and B from `point` along the axis (m), a ≠ b.
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub bearings: Option<[f64; 2]>,
+    /// The axis's direction in space axes: the attitude at t = 0 is then the smallest rotation that puts the body
+    /// axis on it (instead of `initial.attitude`).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub axis_in_space: Option<[f64; 3]>,
 }
 
 /// `[initial]`.
@@ -166,6 +204,13 @@ pub struct InitialSpec {
         skip_serializing_if = "Option::is_none"
     )]
     pub attitude: Option<[f64; 4]>,
+    /// The attitude as intrinsic z-y'-x'' angles [z, y, x] in degrees (instead of `attitude`).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub attitude_euler_deg: Option<[f64; 3]>,
 }
 
 /// The `type` of an effect.
@@ -386,6 +431,7 @@ impl BodySpec {
             mass,
             shape: Some(shape),
             inertia: None,
+            point_mass: Vec::new(),
         }
     }
 
@@ -395,6 +441,7 @@ impl BodySpec {
             mass,
             shape: None,
             inertia: Some(InertiaSpec::Principal(moments)),
+            point_mass: Vec::new(),
         }
     }
 
@@ -404,7 +451,14 @@ impl BodySpec {
             mass,
             shape: None,
             inertia: Some(InertiaSpec::Full(inertia_c_b)),
+            point_mass: Vec::new(),
         }
+    }
+
+    /// With a point mass of `mass` (kg) at `at` (m, body axes, from the reference origin).
+    pub fn with_point_mass(mut self, mass: f64, at: [f64; 3]) -> Self {
+        self.point_mass.push(PointMassSpec { mass, at: Some(at) });
+        self
     }
 }
 
@@ -502,6 +556,35 @@ impl MotionSpec {
         }
     }
 
+    /// A hinge: rotation about the axis (0, −sin θ, cos θ) tilted `tilt_deg` from body z, not prescribed: θ
+    /// follows from the effects' moment about the axis, starting at `rate` (rad/s).
+    pub fn hinge_tilted(tilt_deg: f64, rate: f64) -> Self {
+        Self {
+            kind: Some(MotionKind::Hinge),
+            ..Self::fixed_axis_tilted(tilt_deg, rate)
+        }
+    }
+
+    /// A hinge about `axis_b` (body axes), starting at `rate` (rad/s).
+    pub fn hinge(axis_b: [f64; 3], rate: f64) -> Self {
+        Self {
+            kind: Some(MotionKind::Hinge),
+            ..Self::fixed_axis(axis_b, rate)
+        }
+    }
+
+    /// With bearings A and B at `a` and `b` metres from the axis point along the axis.
+    pub fn with_bearings(mut self, a: f64, b: f64) -> Self {
+        self.bearings = Some([a, b]);
+        self
+    }
+
+    /// With θ = `angle_deg` at t = 0 (a hinge).
+    pub fn with_angle_deg(mut self, angle_deg: f64) -> Self {
+        self.angle_deg = Some(angle_deg);
+        self
+    }
+
     /// With a constant angular acceleration (rad/s²).
     pub fn with_accel(mut self, accel: f64) -> Self {
         self.accel = Some(accel);
@@ -554,6 +637,15 @@ impl EffectSpec {
         Self {
             g: Some(g_s),
             pivot: Some(pivot_b),
+            ..Self::of(EffectKind::Gravity)
+        }
+    }
+
+    /// Uniform gravity `g_s` (m/s², space axes) acting at C of a body on a fixed axis or hinge, whose axis point
+    /// is the moment center (no pivot).
+    pub fn weight(g_s: [f64; 3]) -> Self {
+        Self {
+            g: Some(g_s),
             ..Self::of(EffectKind::Gravity)
         }
     }

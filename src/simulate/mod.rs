@@ -15,6 +15,7 @@ use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, EffectMoments, FreeBody, SpaceForm, TorqueFree};
+use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme, run_fixed_step};
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::{Motion, Scene};
@@ -52,13 +53,29 @@ pub enum RunError<E: std::error::Error + 'static> {
 
 /// The optional columns a scene's run writes.
 pub fn columns(scene: &Scene) -> ColumnSet {
-    match &scene.motion {
+    let potential = scene.gravity_potential(&scene.attitude0).is_some();
+    let motion_columns = match &scene.motion {
         Motion::FixedAxis(motion) => ColumnSet {
             theta: true,
             force: motion.center_off_axis(),
             h_s_integrated: true,
+            support: true,
+            bearings: motion.bearings().is_some(),
+            ..ColumnSet::default()
+        },
+        Motion::Hinge(hinge) => ColumnSet {
+            theta: true,
+            force: hinge.axis().center_off_axis(),
+            h_s_integrated: false,
+            support: true,
+            bearings: hinge.axis().bearings().is_some(),
+            ..ColumnSet::default()
         },
         Motion::Free { .. } => ColumnSet::default(),
+    };
+    ColumnSet {
+        potential,
+        ..motion_columns
     }
 }
 
@@ -136,15 +153,23 @@ pub fn run<E: std::error::Error + 'static>(
     let start = Instant::now();
     let guard = DivergenceGuard::new(scene);
     let mut rows = 0u64;
+    let with_potential = scene.gravity_potential(&scene.attitude0).is_some();
     let deliver = |s: &Sample| -> Result<(), Stop<E>> {
         if let Some(guard) = &guard {
             guard.check(s).map_err(Stop::Diverged)?;
         }
         rows += 1;
-        sink(s).map_err(Stop::Sink)
+        if with_potential {
+            let mut s = *s;
+            s.potential = scene.gravity_potential(&s.q);
+            sink(&s).map_err(Stop::Sink)
+        } else {
+            sink(s).map_err(Stop::Sink)
+        }
     };
     let stats = match &scene.motion {
         Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),
+        Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver),
         Motion::Free { omega0_b, body } => {
             if scene.effects.is_empty() {
                 run_free(scene, body, omega0_b, TorqueFree, deliver)
@@ -301,4 +326,41 @@ fn run_fixed_axis<E>(
         Runner::RungeKutta(settings) => settings,
     };
     integrate::integrate(&mut system, h_s0, &scene.schedule, &settings, on_row)
+}
+
+/// A hinge: θ integrated from the effects' moment about the axis by the scene's Runge–Kutta method, in the form
+/// the scene's frame selects; every row is the axis kinematics at (θ, θ̇) with the support's loads. The splitting
+/// methods and `exact` do not apply (validation refuses them).
+fn run_hinge<E>(
+    scene: &Scene,
+    hinge: &Hinge,
+    mut sink: impl FnMut(&Sample) -> Result<(), E>,
+) -> Result<Stats, IntegrateError<E>> {
+    let form = scene.solver.frame;
+    let Runner::RungeKutta(settings) = runner(scene) else {
+        return Err(IntegrateError::InvalidSettings {
+            reason: format!(
+                "method \"{}\" does not run a hinge: use rk4, dopri5 or dop853",
+                scene.solver.method.name()
+            ),
+        });
+    };
+    let y0 = hinge.initial_state(form);
+    let on_row = |t: f64, y: &SVector<f64, 2>| sink(&hinge.sample(t, y, form));
+    match form {
+        Form::Body => integrate::integrate(
+            &mut HingeBodyForm(hinge),
+            y0,
+            &scene.schedule,
+            &settings,
+            on_row,
+        ),
+        Form::Space => integrate::integrate(
+            &mut HingeSpaceForm(hinge),
+            y0,
+            &scene.schedule,
+            &settings,
+            on_row,
+        ),
+    }
 }

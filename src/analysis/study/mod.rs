@@ -332,9 +332,11 @@ pub fn accuracy(
 ) -> Result<Study, StudyError> {
     let started = Instant::now();
     let base = studied_scene(scene_path, text)?;
+    // Every run changes the typed scene, parsed once (never the text).
+    let spec = scene::parse_spec(scene_path, text)?;
     progress(0, 1, "reference");
-    let reference = reference::StudyReference::for_scene(&base, scene_path, text)?;
-    let sweep = sweep::Sweep::new(scene_path, text, &base, &reference, options);
+    let reference = reference::StudyReference::for_scene(&base, scene_path, &spec)?;
+    let sweep = sweep::Sweep::new(&spec, &base, &reference, options);
     let curves = plan(options);
     let total: usize = curves.iter().map(|c| c.planned).sum();
     let mut done = 0usize;

@@ -11,7 +11,7 @@ use crate::analysis::compare::Oracle;
 use crate::frames::Form;
 use crate::method::{Backend, Method};
 use crate::sample::Sample;
-use crate::scene::{self, Overrides, Scene};
+use crate::scene::{Overrides, Scene, SceneSpec};
 use crate::simulate;
 
 use super::{Measure, StudyError};
@@ -52,8 +52,8 @@ pub(super) struct StudyReference {
 }
 
 impl StudyReference {
-    /// The reference for the scene `base` (read from `path`, whose text is `text`).
-    pub fn for_scene(base: &Scene, path: &Path, text: &str) -> Result<Self, StudyError> {
+    /// The reference for the scene `base` (read from `path` as `spec`).
+    pub fn for_scene(base: &Scene, path: &Path, spec: &SceneSpec) -> Result<Self, StudyError> {
         Ok(match &Oracle::for_scene(base) {
             Some(Oracle::FixedAxis) => Self {
                 reference: Reference::FixedAxis,
@@ -67,14 +67,14 @@ impl StudyReference {
                 short: "closed form".to_string(),
                 measure: Measure::Omega,
             },
-            None => Self::reference_runs(path, text)?,
+            None => Self::reference_runs(path, spec)?,
         })
     }
 
     /// No closed form: the reference run in the body form, its uncertainty from the same run in the space form.
-    fn reference_runs(path: &Path, text: &str) -> Result<Self, StudyError> {
-        let (rows, rtol, steps) = reference_run(path, text, Form::Body)?;
-        let (other, _, _) = reference_run(path, text, Form::Space)?;
+    fn reference_runs(path: &Path, spec: &SceneSpec) -> Result<Self, StudyError> {
+        let (rows, rtol, steps) = reference_run(path, spec, Form::Body)?;
+        let (other, _, _) = reference_run(path, spec, Form::Space)?;
         let spread = rows
             .iter()
             .zip(&other)
@@ -154,7 +154,7 @@ fn oracle_rows(scene: &Scene, oracle: &Oracle) -> Vec<RefRow> {
 /// its rtol and its steps.
 fn reference_run(
     path: &Path,
-    text: &str,
+    spec: &SceneSpec,
     frame: Form,
 ) -> Result<(Vec<RefRow>, f64, u64), StudyError> {
     let mut last_refusal = None;
@@ -167,7 +167,7 @@ fn reference_run(
             atol: Some(REFERENCE_ATOL),
             ..Overrides::default()
         };
-        let scene = match scene::parse(path, text, &overrides) {
+        let scene = match spec.build_with(&overrides) {
             Ok(s) => s,
             Err(e) => {
                 last_refusal = Some(e.to_string());

@@ -4,22 +4,19 @@
 //! methods run at dt₀ = every / 2^j, the largest such step with |ω|max·dt₀ ≤ 0.5, then halved, until the error is
 //! at round-off, a run would take too many steps, or a run was slow. A method with neither (`exact`) runs once.
 
-use std::path::Path;
-
 use crate::frames::Form;
 use crate::method::{Backend, Method};
 use crate::sample::Sample;
-use crate::scene::{self, Overrides, Scene};
+use crate::scene::{Overrides, Scene, SceneSpec};
 use crate::simulate;
 
 use super::measure::{Errors, RowMismatch};
 use super::reference::{Reference, StudyReference};
 use super::{Curve, Measure, Runs, StudyOptions, StudyRow, timing};
 
-/// What the runs of a study share: the scene's text, the reference, and the sweep's starting points.
+/// What the runs of a study share: the typed scene, the reference, and the sweep's starting points.
 pub(super) struct Sweep<'a> {
-    path: &'a Path,
-    text: &'a str,
+    spec: &'a SceneSpec,
     reference: &'a Reference,
     measure: Measure,
     options: &'a StudyOptions,
@@ -62,18 +59,16 @@ enum RunOutcome {
 }
 
 impl<'a> Sweep<'a> {
-    /// The sweep of the scene `base` (read from `path`, whose text is `text`) against `reference`.
+    /// The sweep of the scene `base` (`spec` validated) against `reference`.
     pub fn new(
-        path: &'a Path,
-        text: &'a str,
+        spec: &'a SceneSpec,
         base: &Scene,
         reference: &'a StudyReference,
         options: &'a StudyOptions,
     ) -> Self {
         let omega_max = reference.omega_scale(base);
         Self {
-            path,
-            text,
+            spec,
             reference: &reference.reference,
             measure: reference.measure,
             options,
@@ -185,7 +180,7 @@ impl<'a> Sweep<'a> {
         }
     }
 
-    /// The scene of one run: the scene's text with the method, form, backend, tolerances and step overridden.
+    /// The scene of one run: the typed scene with the method, form, backend, tolerances and step overridden.
     fn scene_for(&self, setting: &Setting) -> Result<Scene, String> {
         let overrides = Overrides {
             method: Some(setting.method),
@@ -196,7 +191,7 @@ impl<'a> Sweep<'a> {
             dt: setting.dt,
             ..Overrides::default()
         };
-        scene::parse(self.path, self.text, &overrides).map_err(|e| e.problem)
+        self.spec.build_with(&overrides).map_err(|e| e.problem)
     }
 
     /// Runs one setting: errors on a first streaming run, then the timed repeats.

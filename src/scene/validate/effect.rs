@@ -5,24 +5,37 @@ use super::{Checked, KeyPath, finite, invalid, only_keys, required, vector};
 use crate::body::RigidBody;
 use crate::effects::{Effect, TorqueProfile};
 use crate::frames::Axes;
+use nalgebra::Vector3;
 
-/// Every `[[effect]]`, in order; a fixed-axis motion takes none, and at most one gravity (its pivot is the body's
-/// one fixed point).
-pub(super) fn validate_effects(doc: &SceneSpec, body: &RigidBody) -> Checked<Vec<Effect>> {
+/// Every `[[effect]]`, in order; a fixed-axis motion takes gravity only, and at most one gravity (its pivot is the
+/// body's one fixed point). Positions are turned from the reference origin to the mass center `center_b`.
+pub(super) fn validate_effects(
+    doc: &SceneSpec,
+    body: &RigidBody,
+    center_b: &Vector3<f64>,
+) -> Checked<Vec<Effect>> {
+    let kind = doc.motion.as_ref().and_then(|m| m.kind);
+    let axis_point = match doc.motion.as_ref() {
+        Some(m) if matches!(kind, Some(MotionKind::FixedAxis | MotionKind::Hinge)) => Some(
+            m.point.map_or(Ok(Vector3::zeros()), |p| {
+                vector(KeyPath::root().key("motion").key("point"), p, "m")
+            })? - center_b,
+        ),
+        _ => None,
+    };
     let effects = doc
         .effect
         .iter()
         .enumerate()
-        .map(|(i, e)| validate_effect(i, e))
+        .map(|(i, e)| validate_effect(i, e, axis_point.as_ref(), center_b))
         .collect::<Checked<Vec<_>>>()?;
-    let fixed_axis = doc
-        .motion
-        .as_ref()
-        .is_some_and(|m| m.kind == Some(MotionKind::FixedAxis));
-    if fixed_axis && !effects.is_empty() {
+    let not_gravity = effects
+        .iter()
+        .position(|e| !matches!(e, Effect::Gravity { .. }));
+    if let (Some(MotionKind::FixedAxis), Some(index)) = (kind, not_gravity) {
         return invalid(
-            KeyPath::root().key("effect").index(0),
-            "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no effects; remove the [[effect]] tables or use free motion",
+            KeyPath::root().key("effect").index(index),
+            "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no torque or damping (only gravity, whose weight its bearings carry); remove the effect, or use type = \"hinge\" to let the effects drive the rotation",
         );
     }
     let second_gravity = doc
@@ -73,7 +86,13 @@ fn effect_moments_in_range(effects: &[Effect], mass: f64) -> Checked<()> {
     Ok(())
 }
 
-fn validate_effect(index: usize, doc: &EffectSpec) -> Checked<Effect> {
+/// One effect; `axis_point` is the axis point of a fixed-axis or hinge motion, which is gravity's moment center.
+fn validate_effect(
+    index: usize,
+    doc: &EffectSpec,
+    axis_point: Option<&Vector3<f64>>,
+    center_b: &Vector3<f64>,
+) -> Checked<Effect> {
     let table = KeyPath::root().key("effect").index(index);
     let key = |name: &str| table.clone().key(name);
     let Some(kind) = doc.kind else {
@@ -120,18 +139,29 @@ fn validate_effect(index: usize, doc: &EffectSpec) -> Checked<Effect> {
         EffectKind::Torque => validate_torque(&table, doc, &kind_text)?,
         EffectKind::Gravity => Effect::Gravity {
             g_s: vector(key("g"), doc.g.unwrap_or([0.0, 0.0, -9.81]), "m/s^2")?,
-            pivot_b: vector(
-                key("pivot"),
-                required(key("pivot"), doc.pivot, &kind_text)?,
-                "m",
-            )?,
+            pivot_b: match (axis_point, doc.pivot) {
+                (Some(_), Some(_)) => {
+                    return invalid(
+                        key("pivot"),
+                        "with a fixed axis or a hinge the moment center is the axis point (`motion.point`): remove `pivot`",
+                    );
+                }
+                (Some(point_b), None) => *point_b,
+                (None, pivot) => {
+                    vector(
+                        key("pivot"),
+                        required(key("pivot"), pivot, &kind_text)?,
+                        "m",
+                    )? - center_b
+                }
+            },
         },
         EffectKind::Damping => {
             let c = finite(key("c"), required(key("c"), doc.c, &kind_text)?, "N*m*s")?;
             if c < 0.0 {
                 return invalid(
                     key("c"),
-                    format!("must be >= 0 (N*m*s): a negative damping adds energy, got {c}"),
+                    format!("must be >= 0 (N*m*s): a negative damping adds energy, got {c:?}"),
                 );
             }
             Effect::Damping { c }
@@ -171,7 +201,7 @@ fn validate_torque(table: &KeyPath, doc: &EffectSpec, kind_text: &str) -> Checke
             };
             let f = finite(key("freq_hz"), f, "Hz")?;
             if f < 0.0 {
-                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f}"));
+                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f:?}"));
             }
             TorqueProfile::Sine {
                 freq_hz: f,
@@ -187,7 +217,7 @@ fn validate_torque(table: &KeyPath, doc: &EffectSpec, kind_text: &str) -> Checke
             if t_off.is_nan() || t_off <= t_on {
                 return invalid(
                     key("t_off"),
-                    format!("must be later than t_on = {t_on} s, got {t_off}"),
+                    format!("must be later than t_on = {t_on:?} s, got {t_off:?}"),
                 );
             }
             TorqueProfile::Step { t_on, t_off }

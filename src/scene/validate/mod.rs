@@ -11,7 +11,7 @@ use std::fmt;
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
-use super::model::Scene;
+use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
 use super::spec::SceneSpec;
 use crate::frames::Form;
@@ -73,10 +73,16 @@ impl SceneSpec {
 }
 
 fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
-    let body = body::validate_body(&doc.body)?;
+    let (body, center_b) = body::validate_body(&doc.body)?;
     let attitude0 = attitude(doc)?;
-    let effects = effect::validate_effects(doc, &body)?;
-    let motion = motion::validate_motion(doc, &body, &attitude0, &effects)?;
+    let effects = effect::validate_effects(doc, &body, &center_b)?;
+    let motion = motion::validate_motion(doc, &body, &attitude0, &effects, &center_b)?;
+    // An axis motion may set the attitude itself (`axis_in_space`, a hinge's `angle_deg`).
+    let attitude0 = match &motion {
+        Motion::FixedAxis(axis) => axis.attitude(0.0),
+        Motion::Hinge(hinge) => hinge.axis().attitude(hinge.theta0()),
+        Motion::Free { .. } => attitude0,
+    };
     let solver = solver::validate_solver(&doc.solver, overrides)?;
     solver::validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let schedule = solver::validate_schedule(doc, &solver, overrides)?;
@@ -92,6 +98,7 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         name: doc.name.clone().unwrap_or_default(),
         description: doc.description.clone().unwrap_or_default(),
         body,
+        center_b,
         motion,
         attitude0,
         effects,
@@ -101,9 +108,41 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     })
 }
 
-/// `initial.attitude`, normalised; the identity when absent.
+/// `initial.attitude`, normalised, or the rotation of `initial.attitude_euler_deg` = [z, y, x], intrinsic
+/// z-y'-x'' (R = R_z R_y' R_x''); the identity when neither is given.
 fn attitude(doc: &SceneSpec) -> Checked<UnitQuaternion<f64>> {
-    let Some(q) = doc.initial.as_ref().and_then(|i| i.attitude) else {
+    let initial = doc.initial.as_ref();
+    let key = |name: &str| KeyPath::root().key("initial").key(name);
+    let axis_in_space = doc
+        .motion
+        .as_ref()
+        .is_some_and(|m| m.axis_in_space.is_some());
+    let euler = initial.and_then(|i| i.attitude_euler_deg);
+    let given = initial.and_then(|i| i.attitude);
+    match (given.is_some(), euler.is_some(), axis_in_space) {
+        (true, true, _) => {
+            return invalid(
+                key("attitude_euler_deg"),
+                "give either `attitude` or `attitude_euler_deg`, not both",
+            );
+        }
+        (true, _, true) | (_, true, true) => {
+            return invalid(
+                KeyPath::root().key("motion").key("axis_in_space"),
+                "`motion.axis_in_space` sets the attitude at t = 0: remove initial.attitude / attitude_euler_deg",
+            );
+        }
+        _ => {}
+    }
+    if let Some(angles) = euler {
+        let [z, y, x] = vector(key("attitude_euler_deg"), angles, "degrees")?.into();
+        return Ok(UnitQuaternion::from_euler_angles(
+            x.to_radians(),
+            y.to_radians(),
+            z.to_radians(),
+        ));
+    }
+    let Some(q) = given else {
         return Ok(UnitQuaternion::identity());
     };
     let key = KeyPath::root().key("initial").key("attitude");
@@ -166,7 +205,7 @@ pub(super) fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
-        invalid(key, format!("must be a finite number ({unit}), got {v}"))
+        invalid(key, format!("must be a finite number ({unit}), got {v:?}"))
     }
 }
 
@@ -176,7 +215,7 @@ pub(super) fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
     } else {
         invalid(
             key,
-            format!("must be a finite number > 0 ({unit}), got {v}"),
+            format!("must be a finite number > 0 ({unit}), got {v:?}"),
         )
     }
 }

@@ -8,48 +8,67 @@ use super::{Checked, Invalid, KeyPath, finite, invalid, only_keys, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::FreeBody;
+use crate::motion::free::{EffectMoments, FreeBody};
+use crate::motion::hinge::Hinge;
+use crate::motion::support::Bearings;
 
 pub(super) fn validate_motion(
     doc: &SceneSpec,
     body: &RigidBody,
     attitude0: &UnitQuaternion<f64>,
     effects: &[Effect],
+    center_b: &Vector3<f64>,
 ) -> Checked<Motion> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
     let motion = || KeyPath::root().key("motion");
-    // The fixed-axis table, or `None` for free motion (no [motion] table, or type = "free").
-    let fixed_axis = match &doc.motion {
+    // The axis table, or `None` for free motion (no [motion] table, or type = "free").
+    let axis_motion = match &doc.motion {
         None => None,
         Some(m) => match m.kind {
             None => {
                 return invalid(
                     motion().key("type"),
-                    "missing: the motion needs `type` = \"free\" or \"fixed_axis\"",
+                    "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
                 );
             }
             Some(MotionKind::Free) => {
-                only_keys(
-                    &motion(),
-                    "motion type = \"free\"",
-                    &[],
-                    &[
-                        ("axis", m.axis.is_some()),
-                        ("tilt_deg", m.tilt_deg.is_some()),
-                        ("rate", m.rate.is_some()),
-                        ("accel", m.accel.is_some()),
-                        ("point", m.point.is_some()),
-                    ],
-                )?;
+                only_keys(&motion(), "motion type = \"free\"", &[], &given_keys(m))?;
                 None
             }
-            Some(MotionKind::FixedAxis) => Some(m),
+            Some(kind) => Some((m, kind)),
         },
     };
-    match fixed_axis {
+    match axis_motion {
         None => free_motion(doc, body, initial_omega, effects),
-        Some(m) => fixed_axis_motion(m, body, initial_omega.is_some(), attitude0),
+        Some((m, kind)) => {
+            if initial_omega.is_some() {
+                return invalid(
+                    KeyPath::root().key("initial").key("omega"),
+                    "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.omega",
+                );
+            }
+            let axis = axis_geometry(m, body, attitude0, effects, center_b)?;
+            if kind == MotionKind::Hinge {
+                hinge_motion(m, axis, body, effects)
+            } else {
+                Ok(Motion::FixedAxis(axis))
+            }
+        }
     }
+}
+
+/// Every optional key of `[motion]` and whether it is given.
+fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 8] {
+    [
+        ("axis", m.axis.is_some()),
+        ("tilt_deg", m.tilt_deg.is_some()),
+        ("rate", m.rate.is_some()),
+        ("accel", m.accel.is_some()),
+        ("point", m.point.is_some()),
+        ("angle_deg", m.angle_deg.is_some()),
+        ("bearings", m.bearings.is_some()),
+        ("axis_in_space", m.axis_in_space.is_some()),
+    ]
 }
 
 /// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect.
@@ -98,21 +117,116 @@ fn free_motion(
     })
 }
 
-/// Prescribed rotation about the axis of `[motion]`.
-fn fixed_axis_motion(
+/// The axis of a fixed-axis or hinge motion: its direction, rate, acceleration, point, bearings and the gravity
+/// its support carries.
+fn axis_geometry(
     m: &MotionSpec,
     body: &RigidBody,
-    initial_omega_given: bool,
     attitude0: &UnitQuaternion<f64>,
-) -> Checked<Motion> {
+    effects: &[Effect],
+    center_b: &Vector3<f64>,
+) -> Checked<FixedAxis> {
     let motion = || KeyPath::root().key("motion");
-    if initial_omega_given {
+    let (kind_text, takes): (&str, &[&str]) = if m.kind == Some(MotionKind::Hinge) {
+        (
+            "motion type = \"hinge\"",
+            &[
+                "axis",
+                "tilt_deg",
+                "rate",
+                "point",
+                "angle_deg",
+                "bearings",
+                "axis_in_space",
+            ],
+        )
+    } else {
+        (
+            "motion type = \"fixed_axis\"",
+            &[
+                "axis",
+                "tilt_deg",
+                "rate",
+                "accel",
+                "point",
+                "bearings",
+                "axis_in_space",
+            ],
+        )
+    };
+    only_keys(&motion(), kind_text, takes, &given_keys(m))?;
+    let axis_b = axis_direction(m)?;
+    let attitude0 = axis_attitude(m, &axis_b, attitude0)?;
+    let rate = finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?;
+    let accel = finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?;
+    // The required moment M = I α + ω × I ω is of order I_max (ω² + |α|): it must be a number at t = 0.
+    let inertia_max = body.inertia_c().abs().max();
+    if !(inertia_max * (rate * rate + accel.abs())).is_finite() {
         return invalid(
-            KeyPath::root().key("initial").key("omega"),
-            "a fixed-axis motion sets ω from `motion.rate`; remove initial.omega",
+            motion().key("rate"),
+            format!(
+                "rate {rate:e} rad/s with accel {accel:e} rad/s^2 is too large: the moment that keeps the \
+                 body on its axis, of order I·(ω² + |α|), is beyond the range of double precision"
+            ),
         );
     }
-    let axis_b = match (m.axis, m.tilt_deg) {
+    let point_b = match m.point {
+        None => Vector3::zeros(),
+        Some(p) => vector(motion().key("point"), p, "m")?,
+    } - center_b;
+    let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, attitude0);
+    if let Some(g_s) = effects.iter().find_map(|e| match e {
+        Effect::Gravity { g_s, .. } => Some(*g_s),
+        _ => None,
+    }) {
+        axis = axis.with_gravity(g_s);
+    }
+    if let Some([a, b]) = m.bearings {
+        let key = motion().key("bearings");
+        if !(a.is_finite() && b.is_finite()) || a == b {
+            return invalid(
+                key,
+                format!(
+                    "bearings = [{a}, {b}]: give two different finite positions (m) along the axis from `point`"
+                ),
+            );
+        }
+        axis = axis.with_bearings(Bearings { a, b });
+    }
+    Ok(axis)
+}
+
+/// A hinge on the axis: θ from `angle_deg`, θ̇ from `rate`, driven by the effects about the axis point.
+fn hinge_motion(
+    m: &MotionSpec,
+    axis: FixedAxis,
+    body: &RigidBody,
+    effects: &[Effect],
+) -> Checked<Motion> {
+    let key = KeyPath::root().key("motion").key("angle_deg");
+    let theta0 = finite(key, m.angle_deg.unwrap_or(0.0), "degrees")?.to_radians();
+    let i_uu = axis
+        .axis_b()
+        .dot(&(axis.inertia_a_b() * axis.axis_b().into_inner()));
+    if i_uu.is_nan() || i_uu <= 0.0 {
+        return invalid(
+            KeyPath::root().key("motion").key("axis"),
+            "the body's moment of inertia about this axis is zero (a thin rod about its own line): a hinge cannot turn it",
+        );
+    }
+    let rate = axis.rate();
+    Ok(Motion::Hinge(Hinge::new(
+        axis,
+        EffectMoments::new(effects, body.mass()),
+        theta0,
+        rate,
+    )))
+}
+
+/// The unit axis in body axes, from `axis` or `tilt_deg`.
+fn axis_direction(m: &MotionSpec) -> Checked<Vector3<f64>> {
+    let motion = || KeyPath::root().key("motion");
+    Ok(match (m.axis, m.tilt_deg) {
         (Some(_), Some(_)) => {
             return invalid(
                 motion().key("tilt_deg"),
@@ -140,29 +254,37 @@ fn fixed_axis_motion(
             let tilt = finite(motion().key("tilt_deg"), tilt, "degrees")?.to_radians();
             Vector3::new(0.0, -tilt.sin(), tilt.cos())
         }
+    })
+}
+
+/// The attitude at t = 0: with `axis_in_space`, the smallest rotation that puts the body axis `axis_b` on that
+/// space direction (a half turn about a body direction across the axis when they are opposite); else the
+/// scene's `initial.attitude`.
+fn axis_attitude(
+    m: &MotionSpec,
+    axis_b: &Vector3<f64>,
+    attitude0: &UnitQuaternion<f64>,
+) -> Checked<UnitQuaternion<f64>> {
+    let Some(direction) = m.axis_in_space else {
+        return Ok(*attitude0);
     };
-    let rate = finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?;
-    let accel = finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?;
-    // The required moment M = I α + ω × I ω is of order I_max (ω² + |α|): it must be a number at t = 0.
-    let inertia_max = body.inertia_c().abs().max();
-    if !(inertia_max * (rate * rate + accel.abs())).is_finite() {
+    let key = KeyPath::root().key("motion").key("axis_in_space");
+    let axis_s = vector(key.clone(), direction, "direction")?;
+    if axis_s.norm() <= 1e-300 {
         return invalid(
-            motion().key("rate"),
-            format!(
-                "rate {rate:e} rad/s with accel {accel:e} rad/s^2 is too large: the moment that keeps the \
-                 body on its axis, of order I·(ω² + |α|), is beyond the range of double precision"
-            ),
+            key,
+            "the zero vector is no direction; give the axis in space axes",
         );
     }
-    Ok(Motion::FixedAxis(FixedAxis::new(
-        body,
-        axis_b,
-        rate,
-        accel,
-        match m.point {
-            None => Vector3::zeros(),
-            Some(p) => vector(motion().key("point"), p, "m")?,
-        },
-        *attitude0,
-    )))
+    Ok(
+        UnitQuaternion::rotation_between(axis_b, &axis_s).unwrap_or_else(|| {
+            let across = if axis_b.x.abs() < 0.9 {
+                Vector3::x()
+            } else {
+                Vector3::y()
+            };
+            let half_turn_axis = nalgebra::Unit::new_normalize(axis_b.cross(&across));
+            UnitQuaternion::from_axis_angle(&half_turn_axis, std::f64::consts::PI)
+        }),
+    )
 }

@@ -27,7 +27,7 @@ pub(super) fn validate_solver(doc: &SolverSpec, o: &Overrides) -> Checked<Solver
         return invalid(
             rtol_key,
             format!(
-                "must be a finite number in [1e-14, 1) (relative tolerance; 1e-14 is the limit of double precision), got {rtol}"
+                "must be a finite number in [1e-14, 1) (relative tolerance; 1e-14 is the limit of double precision), got {rtol:?}"
             ),
         );
     }
@@ -35,7 +35,7 @@ pub(super) fn validate_solver(doc: &SolverSpec, o: &Overrides) -> Checked<Solver
     if !(atol.is_finite() && atol > 0.0) {
         return invalid(
             key_of("solver", "atol", o.atol.is_some()),
-            format!("must be a finite number > 0 (absolute tolerance), got {atol}"),
+            format!("must be a finite number > 0 (absolute tolerance), got {atol:?}"),
         );
     }
     let dt = positive(
@@ -46,7 +46,7 @@ pub(super) fn validate_solver(doc: &SolverSpec, o: &Overrides) -> Checked<Solver
     let t_end_key = key_of("solver", "t_end", o.t_end.is_some());
     let t_end = finite(t_end_key.clone(), o.t_end.unwrap_or(doc.t_end), "s")?;
     if t_end < 0.0 {
-        return invalid(t_end_key, format!("must be >= 0 (s), got {t_end}"));
+        return invalid(t_end_key, format!("must be >= 0 (s), got {t_end:?}"));
     }
     Ok(SolverConfig {
         method,
@@ -70,6 +70,15 @@ pub(super) fn validate_method(
     o: &Overrides,
 ) -> Checked<()> {
     let method = solver.method;
+    if matches!(motion, Motion::Hinge(_)) && !method.is_runge_kutta() {
+        return invalid(
+            key_of("solver", "method", o.method.is_some()),
+            format!(
+                "method \"{}\" does not run a hinge: split2/split4 split a free body's rotation into planar rotations and exact is the torque-free closed form, while a hinge has one degree of freedom, θ; use rk4, dopri5 or dop853",
+                method.name()
+            ),
+        );
+    }
     if solver.backend != Backend::Own && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "backend", o.backend.is_some()),
@@ -126,7 +135,7 @@ pub(super) fn validate_schedule(
         return invalid(
             every_key,
             format!(
-                "every = {every} s is longer than t_end = {} s: the run would have no rows between its ends; use every <= t_end",
+                "every = {every:?} s is longer than t_end = {:?} s: the run would have no rows between its ends; use every <= t_end",
                 solver.t_end
             ),
         );

@@ -1,0 +1,187 @@
+//! Two-plane balancing of a rigid rotor: the two correction masses that put the mass center on the axis and make
+//! the axis a principal axis of inertia at the axis point A, so that the rotating bearing reactions vanish at
+//! every rate.
+//!
+//! With u the axis, s = m ρ_C⊥ the static imbalance (ρ_C from A) and d = I_A u − (u·I_A u) u the dynamic one
+//! (the product of inertia about the axis), a point mass m_i at z_i u + r_i (r_i ⊥ u, |r_i| = R) adds m_i r_i to
+//! s and −m_i z_i r_i to d (parallel-axis theorem, eq. 8.4). Both vanish for v_i = m_i r_i with
+//!
+//! ```text
+//!   v_1 + v_2 = −s,   z_1 v_1 + z_2 v_2 = d   ⇒   v_2 = (d + z_1 s)/(z_2 − z_1),   v_1 = −s − v_2,
+//! ```
+//!
+//! m_i = |v_i|/R. For the notes' skewed disk (s = 0, |d| = ¼ m R² sin θ cos θ) this is two equal masses
+//! ¼ m R² sin θ cos θ / (R_c (z_2 − z_1)) on opposite sides.
+
+use nalgebra::{Unit, Vector3};
+
+use crate::motion::fixed_axis::FixedAxis;
+use crate::motion::support::Bearings;
+use crate::scene::{InvalidScene, Motion, PointMassSpec, SceneSpec};
+
+/// The correction planes: axial positions `a` and `b` from the axis point, and the radius of the masses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Planes {
+    /// Axial position of plane A (m).
+    pub a: f64,
+    /// Axial position of plane B (m), ≠ a.
+    pub b: f64,
+    /// Distance of the correction masses from the axis (m), > 0.
+    pub radius: f64,
+}
+
+/// One correction mass.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Correction {
+    /// Axial position of its plane (m).
+    pub z: f64,
+    /// Mass (kg); 0 when the plane needs none.
+    pub mass: f64,
+    /// Angle about the axis from the reference direction (degrees, right-handed about the axis).
+    pub angle_deg: f64,
+    /// Position from the reference origin, body axes (m) — the scene file's `at`.
+    pub at_b: Vector3<f64>,
+}
+
+/// The balance of a scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Balance {
+    /// The masses for planes A and B.
+    pub corrections: [Correction; 2],
+    /// The body direction angles are measured from: the body axis most nearly across the rotation axis, made
+    /// perpendicular to it.
+    pub reference_b: Vector3<f64>,
+    /// Its name, e.g. "body x".
+    pub reference_name: &'static str,
+    /// The rate the reactions below are computed at (rad/s): the scene's initial rate, or 1 when that is 0.
+    pub rate: f64,
+    /// The largest rotating bearing reaction (N) before and after balancing, at `rate` without effects.
+    pub largest_reaction: [f64; 2],
+    /// The scene with the correction masses added.
+    pub balanced: SceneSpec,
+}
+
+/// Why a scene cannot be balanced.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BalanceError {
+    /// The scene itself is invalid.
+    #[error(transparent)]
+    Scene(#[from] InvalidScene),
+    /// The scene or the planes do not allow balancing.
+    #[error("{0}")]
+    Unbalanceable(String),
+}
+
+/// The correction masses of `spec` (a fixed-axis or hinge scene) in `planes`.
+///
+/// ```
+/// use eulerdyn::analysis::balance::{Planes, balance};
+/// use eulerdyn::scene::{BodySpec, MotionSpec, SceneSpec, ShapeSpec};
+/// let disk = SceneSpec::new(BodySpec::shape(2.0, ShapeSpec::thin_disk(0.3)), 1.0, 0.1)
+///     .with_motion(MotionSpec::fixed_axis_tilted(30.0, 10.0).with_bearings(-0.1, 0.15));
+/// let result = balance(&disk, &Planes { a: -0.1, b: 0.1, radius: 0.2 }).unwrap();
+/// // The notes' skewed disk: two equal masses ¼ m R² sin θ cos θ / (R_c (b − a)) on opposite sides.
+/// let expected = 0.25 * 2.0 * 0.09 * 0.5 * 0.75f64.sqrt() / (0.2 * 0.2);
+/// assert!((result.corrections[0].mass - expected).abs() < 1e-12);
+/// assert!(result.largest_reaction[1] < 1e-9 * result.largest_reaction[0]);
+/// ```
+pub fn balance(spec: &SceneSpec, planes: &Planes) -> Result<Balance, BalanceError> {
+    let refuse = |why: &str| Err(BalanceError::Unbalanceable(why.to_string()));
+    if !(planes.a.is_finite() && planes.b.is_finite()) || planes.a == planes.b {
+        return refuse("the planes must be two different finite positions along the axis (A != B)");
+    }
+    if !(planes.radius.is_finite() && planes.radius > 0.0) {
+        return refuse("the radius must be a finite number > 0 (m)");
+    }
+    let scene = spec.build()?;
+    let Some(axis) = axis_of(&scene.motion) else {
+        return refuse(
+            "balancing needs an axis: the scene's motion must be a fixed_axis or a hinge (a free body has no bearings)",
+        );
+    };
+    let u_b = axis.axis_b().into_inner();
+    let rho_c_b = axis.rho_c_b();
+    let s = (rho_c_b - u_b * rho_c_b.dot(&u_b)) * axis.mass();
+    let i_u = axis.inertia_a_b() * u_b;
+    let d = i_u - u_b * i_u.dot(&u_b);
+    let v_b = (d + s * planes.a) / (planes.b - planes.a);
+    let v_a = -s - v_b;
+    let (reference_b, reference_name) = reference_direction(&u_b);
+    // Tiny vectors are round-off of a balanced rotor: no mass.
+    let negligible = 1e-14 * (s.norm() + d.norm() / planes.a.abs().max(planes.b.abs()));
+    let origin_b = axis.point_b() + scene.center_b;
+    let correction = |z: f64, v: Vector3<f64>| {
+        let (mass, r_b) = if v.norm() <= negligible {
+            (0.0, Vector3::zeros())
+        } else {
+            (v.norm() / planes.radius, v.normalize() * planes.radius)
+        };
+        let angle = u_b
+            .dot(&reference_b.cross(&r_b))
+            .atan2(reference_b.dot(&r_b));
+        Correction {
+            z,
+            mass,
+            angle_deg: angle.to_degrees(),
+            at_b: origin_b + u_b * z + r_b,
+        }
+    };
+    let corrections = [correction(planes.a, v_a), correction(planes.b, v_b)];
+    let mut balanced = spec.clone();
+    for c in corrections.iter().filter(|c| c.mass > 0.0) {
+        balanced.body.point_mass.push(PointMassSpec {
+            mass: c.mass,
+            at: Some(c.at_b.into()),
+        });
+    }
+    let bearings = axis.bearings().copied().unwrap_or(Bearings {
+        a: planes.a,
+        b: planes.b,
+    });
+    let rate = if axis.rate() == 0.0 { 1.0 } else { axis.rate() };
+    let after = balanced.build()?;
+    let Some(after_axis) = axis_of(&after.motion) else {
+        return refuse("the balanced scene lost its axis");
+    };
+    Ok(Balance {
+        corrections,
+        reference_b,
+        reference_name,
+        rate,
+        largest_reaction: [
+            rotating_reaction(axis, &bearings, rate),
+            rotating_reaction(after_axis, &bearings, rate),
+        ],
+        balanced,
+    })
+}
+
+/// The axis of a fixed-axis or hinge motion.
+fn axis_of(motion: &Motion) -> Option<&FixedAxis> {
+    match motion {
+        Motion::FixedAxis(axis) => Some(axis),
+        Motion::Hinge(hinge) => Some(hinge.axis()),
+        Motion::Free { .. } => None,
+    }
+}
+
+/// The body axis most nearly across `u_b`, made perpendicular to it, and its name.
+fn reference_direction(u_b: &Vector3<f64>) -> (Vector3<f64>, &'static str) {
+    let names = ["body x", "body y", "body z"];
+    let k = (0..3)
+        .min_by(|&i, &j| u_b[i].abs().total_cmp(&u_b[j].abs()))
+        .unwrap_or(0);
+    let e = Vector3::ith(k, 1.0);
+    let across = Unit::new_normalize(e - u_b * e.dot(u_b));
+    (across.into_inner(), names[k])
+}
+
+/// The larger of |R_A|, |R_B| for rotation at the constant `rate` (rad/s) about the axis, without effects: the
+/// rotating (speed-dependent) reaction.
+fn rotating_reaction(axis: &FixedAxis, bearings: &Bearings, rate: f64) -> f64 {
+    let spin = FixedAxis::new_like(axis, rate).with_bearings(*bearings);
+    let loads = spin.sample(0.0, crate::Form::Body).support;
+    loads
+        .and_then(|l| l.bearings)
+        .map_or(0.0, |b| b.r_a_s.norm().max(b.r_b_s.norm()))
+}
