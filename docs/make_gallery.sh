@@ -19,5 +19,9 @@ $eulerdyn plot "$work/tennis_racket.csv" -o docs/tennis_racket.svg --panels omeg
 $eulerdyn run scenarios/heavy_top.toml -o "$work/heavy_top.csv"
 $eulerdyn plot "$work/heavy_top.csv" -o docs/heavy_top.svg --panels h_space,energy
 
+# A motor runs the skewed disk up on its hinge: the rate rises to 10 rad/s, the bearings' couple with its square.
+$eulerdyn run scenarios/motor_runup.toml -o "$work/motor_runup.csv"
+$eulerdyn plot "$work/motor_runup.csv" -o docs/motor_runup_bearings.svg --panels omega,bearings
+
 # What accuracy costs: the work-precision study of the benchmark body (about 10 s).
 $eulerdyn accuracy scenarios/asymmetric_free.toml -o docs/work_precision.csv --plot docs/work_precision.svg

@@ -647,3 +647,53 @@ fn gravity_scenes_write_a_conserved_total_energy() {
         }
     }
 }
+
+#[test]
+fn plot_draws_the_bearings_panel_of_a_run_with_bearings() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("rotor.csv");
+    let svg = dir.path().join("rotor.svg");
+    eulerdyn([
+        "run",
+        common::repo_path("scenarios/rotor_bearings.toml")
+            .to_str()
+            .unwrap(),
+        "-o",
+        csv.to_str().unwrap(),
+    ])
+    .expect_code(0);
+    let out = eulerdyn([
+        "plot",
+        csv.to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+        "--panels",
+        "bearings",
+    ]);
+    out.expect_code(0);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for label in ["|R_A|", "|R_B|", "R_A_b_x (A)", "R_B_b_z (B)"] {
+        assert!(text.contains(label), "{label} in the legend");
+    }
+    // A free run has no bearings: the panel is refused with the columns it lacks.
+    let free_csv = dir.path().join("free.csv");
+    eulerdyn([
+        "run",
+        common::repo_path("scenarios/asymmetric_free.toml")
+            .to_str()
+            .unwrap(),
+        "-o",
+        free_csv.to_str().unwrap(),
+    ])
+    .expect_code(0);
+    let refused = eulerdyn([
+        "plot",
+        free_csv.to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+        "--panels",
+        "bearings",
+    ]);
+    assert_eq!(refused.code, Some(2), "{}", refused.stderr);
+    assert!(refused.stderr.contains("R_A_b_x"), "{}", refused.stderr);
+}

@@ -56,6 +56,9 @@ pub enum Panel {
     Energy,
     /// |x(t) − x(0)| / |x(0)| of |H| and of the energy, on a log scale.
     Drift,
+    /// The bearings' forces on the body: |R_A|, |R_B| and their components in body axes (A solid, B dashed).
+    /// Drawn when asked for (`--panels …,bearings`): only runs with bearings have its columns.
+    Bearings,
 }
 
 impl Panel {
@@ -78,6 +81,7 @@ impl Panel {
             Panel::Omega => "omega",
             Panel::Energy => "energy",
             Panel::Drift => "drift",
+            Panel::Bearings => "bearings",
         }
     }
 
@@ -97,6 +101,7 @@ impl Panel {
             ],
             Panel::Energy => &["energy"],
             Panel::Drift => &["H_norm", "energy"],
+            Panel::Bearings => &BEARING_COLUMNS,
         }
     }
 
@@ -127,7 +132,7 @@ impl Panel {
 
     /// Every panel name, comma-separated.
     pub fn names() -> String {
-        Panel::ALL.map(Panel::name).join(", ")
+        Panel::ALL.map(Panel::name).join(", ") + ", bearings (with bearings only)"
     }
 }
 
@@ -143,6 +148,7 @@ impl FromStr for Panel {
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         Panel::ALL
             .into_iter()
+            .chain([Panel::Bearings])
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }
@@ -264,6 +270,9 @@ pub struct RunSeries {
     /// Curves by column name.
     columns: Vec<(&'static str, Decimator)>,
     drifts: Vec<Drift>,
+    /// |R_A| and |R_B| per row (bearings panel): the index in a row's values of the bearing's first body
+    /// component, and the curve.
+    bearing_norms: Vec<(usize, Decimator)>,
     /// Scene and method from the run's sidecar, when there is one.
     subtitle: Option<String>,
 }
@@ -290,6 +299,15 @@ impl RunSeries {
             t_range: (f64::INFINITY, f64::NEG_INFINITY),
             columns: wanted[1..].iter().map(|&c| (c, Decimator::new())).collect(),
             drifts,
+            bearing_norms: if panels.contains(&Panel::Bearings) {
+                ["R_A_b_x", "R_B_b_x"]
+                    .iter()
+                    .filter_map(|x| wanted.iter().position(|c| c == x))
+                    .map(|index| (index, Decimator::new()))
+                    .collect()
+            } else {
+                Vec::new()
+            },
             subtitle: None,
         }
     }
@@ -300,6 +318,10 @@ impl RunSeries {
         self.t_range = (self.t_range.0.min(t), self.t_range.1.max(t));
         for (k, (_, d)) in self.columns.iter_mut().enumerate() {
             d.push(t, values[k + 1]);
+        }
+        for (index, norm) in &mut self.bearing_norms {
+            let r = &values[*index..*index + 3];
+            norm.push(t, (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt());
         }
         for (drift, &k) in self.drifts.iter_mut().zip(drift_index) {
             let x = values[k];
@@ -538,6 +560,11 @@ pub(crate) struct Curve {
     pub points: Vec<(f64, f64)>,
 }
 
+/// The columns of the bearings panel.
+const BEARING_COLUMNS: [&str; 6] = [
+    "R_A_b_x", "R_A_b_y", "R_A_b_z", "R_B_b_x", "R_B_b_y", "R_B_b_z",
+];
+
 const RED: RGBColor = RGBColor(0xd6, 0x27, 0x28);
 const GREEN: RGBColor = RGBColor(0x2c, 0xa0, 0x2c);
 const BLUE: RGBColor = RGBColor(0x1f, 0x77, 0xb4);
@@ -604,6 +631,32 @@ fn panel_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
             notes: Vec::new(),
         },
         Panel::Drift => drift_panel(run),
+        Panel::Bearings => bearings_panel(run),
+    }
+}
+
+/// The components of the bearings' forces on the body, body axes (A solid, B dashed), and their magnitudes.
+fn bearings_panel(run: &RunSeries) -> PanelPlot {
+    let norms = run
+        .bearing_norms
+        .iter()
+        .zip([("|R_A|", false), ("|R_B|", true)])
+        .map(|((_, norm), (label, dashed))| Curve {
+            label: label.into(),
+            color: GREY,
+            dashed,
+            points: norm.points(),
+        });
+    PanelPlot {
+        title: "Forces of bearings A (solid) and B (dashed) on the body, body axes".into(),
+        y_label: "R (N)".into(),
+        curves: components(run, "R_A_b", " (A)", false)
+            .into_iter()
+            .chain(components(run, "R_B_b", " (B)", true))
+            .chain(norms)
+            .collect(),
+        log: false,
+        notes: Vec::new(),
     }
 }
 
