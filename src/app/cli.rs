@@ -294,12 +294,14 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
         .map_err(io::Error::from)
         .and_then(|()| meta_file.file().write_all(b"\n"))
         .map_err(|e| Failure::Run(meta_error("cannot write", e)))?;
-    csv_file
-        .commit()
-        .map_err(|e| Failure::Run(file_error("cannot save", e)))?;
-    meta_file
-        .commit()
-        .map_err(|e| Failure::Run(meta_error("cannot save", e)))?;
+    // Both files on disk before either is renamed: the CSV first, then its sidecar.
+    AtomicFile::commit_both(csv_file, meta_file).map_err(|(which, e)| {
+        Failure::Run(if which == 0 {
+            file_error("cannot save", e)
+        } else {
+            meta_error("cannot save", e)
+        })
+    })?;
     if quiet {
         return Ok(());
     }

@@ -86,18 +86,57 @@ impl AtomicFile {
     /// destination. The directory is not synced: after a crash the destination holds the old file or the new one,
     /// complete.
     pub fn commit(self) -> io::Result<()> {
+        self.sync()?.rename()
+    }
+
+    /// Commits two files: both flushed and synced — at the same time, so that the file system can write both in
+    /// one journal commit — and only then renamed, `first` before `second`. An error says which file (0 or 1).
+    pub fn commit_both(first: AtomicFile, second: AtomicFile) -> Result<(), (usize, io::Error)> {
+        let (first, second) = std::thread::scope(|scope| {
+            let second = scope.spawn(|| second.sync());
+            let first = first.sync();
+            (
+                first,
+                second
+                    .join()
+                    .unwrap_or_else(|_| Err(io::Error::other("sync failed"))),
+            )
+        });
+        let (first, second) = (first.map_err(|e| (0, e))?, second.map_err(|e| (1, e))?);
+        first.rename().map_err(|e| (0, e))?;
+        second.rename().map_err(|e| (1, e))
+    }
+
+    /// Flushes the buffer and syncs the file's data and metadata (`fsync`).
+    fn sync(self) -> io::Result<Synced> {
         let file = self.out.into_inner().map_err(|e| e.into_error())?;
         file.sync_all()?;
-        let temp_path = self.temp_path.to_path_buf();
-        let result = self.temp_path.persist(&self.path).map_err(|e| e.error);
-        crate::app::interrupt::unregister(&temp_path);
-        result
+        Ok(Synced {
+            path: self.path,
+            temp_path: self.temp_path,
+        })
     }
 
     /// Writes `bytes` and commits: the whole file at once.
     pub fn write_and_commit(mut self, bytes: &[u8]) -> Result<(), CommitError> {
         self.out.write_all(bytes).map_err(CommitError::Write)?;
         self.commit().map_err(CommitError::Save)
+    }
+}
+
+/// A temporary file whose data is on disk, to be renamed over its destination.
+struct Synced {
+    path: PathBuf,
+    temp_path: TempPath,
+}
+
+impl Synced {
+    /// Renames the temporary file over the destination.
+    fn rename(self) -> io::Result<()> {
+        let temp_path = self.temp_path.to_path_buf();
+        let result = self.temp_path.persist(&self.path).map_err(|e| e.error);
+        crate::app::interrupt::unregister(&temp_path);
+        result
     }
 }
 
