@@ -82,7 +82,7 @@
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 use crate::frames::Form;
-use crate::integrate::{IntegrateError, Schedule, Stats, rk4_substeps};
+use crate::integrate::FixedStep;
 use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree, free_sample};
 use crate::sample::Sample;
 use crate::trig::small_sin_cos;
@@ -398,22 +398,6 @@ impl<K: KickMoment> LiePoisson<K> {
         [idx[0], idx[1], idx[2]]
     }
 
-    /// Replaces the sub-flow order (each index 0, 1, 2 once; anything else is ignored). For studies of the
-    /// splitting error; the default is [`Self::axis_order`].
-    pub fn with_order(mut self, order: [usize; 3]) -> Self {
-        let mut seen = [false; 3];
-        for &i in &order {
-            if i < 3 {
-                seen[i] = true;
-            }
-        }
-        if seen.iter().all(|&s| s) {
-            self.order = order;
-            self.fuse();
-        }
-        self
-    }
-
     /// The composition scheme.
     pub fn scheme(&self) -> Scheme {
         self.scheme
@@ -724,18 +708,6 @@ impl<K: KickMoment> LiePoisson<K> {
     }
 }
 
-/// A method that advances its state by steps of a given size (the splitting methods and the kick quadrature), run
-/// by [`run_fixed_step`].
-pub trait FixedStep {
-    /// The state.
-    type State: Copy;
-    /// Advances `y` from t to t_next = t + h (t_next is passed so that the last step of a row interval lands on the
-    /// row time exactly). Returns the number of sub-flow evaluations it took.
-    fn step(&mut self, t: f64, t_next: f64, h: f64, y: &mut Self::State) -> u64;
-    /// Whether every component of the state is finite.
-    fn is_finite(&self, y: &Self::State) -> bool;
-}
-
 impl<K: KickMoment> FixedStep for LiePoisson<K> {
     type State = SplitState;
 
@@ -800,66 +772,6 @@ impl<F: FnMut(f64) -> Vector3<f64>> FixedStep for KickQuadrature<F> {
     fn is_finite(&self, y: &Vector3<f64>) -> bool {
         y.iter().all(|v| v.is_finite())
     }
-}
-
-/// The fixed-step driver of [`FixedStep`] methods, with the row semantics of [`crate::integrate::integrate`]:
-/// `on_row(t_k, &y_k)` at every row time, starting with t = 0; between rows t_a < t_b it takes
-/// n = ⌈(t_b − t_a)/dt⌉ equal steps h = (t_b − t_a)/n at the times t_a + i·h (products, never a running sum), the
-/// last one landing on t_b exactly (the same steps as RK4). Errors: `InvalidSettings` for dt not positive and
-/// finite, `TooManySteps` past `max_steps`, `NonFinite` when the state stops being finite (no such state is ever
-/// reported), `Stopped` when `on_row` fails.
-#[inline(never)]
-pub fn run_fixed_step<S: FixedStep, E>(
-    method: &mut S,
-    y0: S::State,
-    schedule: &Schedule,
-    dt: f64,
-    max_steps: u64,
-    mut on_row: impl FnMut(f64, &S::State) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
-    if !(dt.is_finite() && dt > 0.0) {
-        return Err(IntegrateError::InvalidSettings {
-            reason: format!("dt = {dt} must be positive and finite"),
-        });
-    }
-    if !method.is_finite(&y0) {
-        return Err(IntegrateError::NonFinite { t: 0.0 });
-    }
-    on_row(0.0, &y0).map_err(|cause| IntegrateError::Stopped { t: 0.0, cause })?;
-    let mut stats = Stats::default();
-    let mut y = y0;
-    let mut t_a = 0.0;
-    for t_b in schedule.iter().skip(1) {
-        let delta = t_b - t_a;
-        let n = rk4_substeps(delta, dt);
-        let h = delta / n as f64;
-        // The steps work on a copy that nothing else sees (`on_row` takes a reference), so that it can stay in
-        // registers.
-        let mut y_steps = y;
-        for i in 0..n {
-            let t = t_a + i as f64 * h;
-            if stats.steps >= max_steps {
-                return Err(IntegrateError::TooManySteps {
-                    t,
-                    steps: stats.steps,
-                });
-            }
-            let t_next = if i + 1 == n {
-                t_b
-            } else {
-                t_a + (i + 1) as f64 * h
-            };
-            stats.evals += method.step(t, t_next, h, &mut y_steps);
-            stats.steps += 1;
-            if !method.is_finite(&y_steps) {
-                return Err(IntegrateError::NonFinite { t: t_next });
-            }
-        }
-        y = y_steps;
-        on_row(t_b, &y).map_err(|cause| IntegrateError::Stopped { t: t_b, cause })?;
-        t_a = t_b;
-    }
-    Ok(stats)
 }
 
 #[cfg(test)]
