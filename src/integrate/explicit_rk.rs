@@ -73,8 +73,27 @@ pub(crate) fn step<const N: usize, const S: usize, Sys: OdeSystem<N>>(
     RkStep { y_new, k, weighted }
 }
 
-/// base + Σ_{j<terms} (w_j·scale)·k_j, per component, the terms added to base in the order of j (the newest stage
-/// last: the older terms are summed while it is evaluated), zero weights skipped.
+/// Calls `$term!(j)` for every literal stage index j < [`MAX_STAGES`], so that stage indices are constants.
+macro_rules! for_each_stage {
+    ($term:ident) => {
+        $term!(0);
+        $term!(1);
+        $term!(2);
+        $term!(3);
+        $term!(4);
+        $term!(5);
+        $term!(6);
+        $term!(7);
+        $term!(8);
+        $term!(9);
+        $term!(10);
+        $term!(11);
+    };
+}
+
+/// base + Σ_{j<terms} (w_j·scale)·k_j, the terms added to base in the order of j (the newest stage last: the older
+/// terms are summed while it is evaluated), zero weights skipped; per component, each term for all components at
+/// once (the same operations per component as a loop over components with the terms inside).
 #[inline(always)]
 pub(crate) fn combine_onto<const N: usize, const S: usize>(
     base: &SVector<f64, N>,
@@ -84,18 +103,23 @@ pub(crate) fn combine_onto<const N: usize, const S: usize>(
     terms: usize,
 ) -> SVector<f64, N> {
     let mut out = *base;
-    for (i, o) in out.iter_mut().enumerate() {
-        for j in 0..terms {
-            if w[j] != 0.0 {
-                *o += (w[j] * scale) * k[j][i];
+    macro_rules! term {
+        ($j:literal) => {
+            if $j < terms && $j < S && w[$j] != 0.0 {
+                let c = w[$j] * scale;
+                let k_j = &k[$j];
+                for (o, v) in out.iter_mut().zip(k_j.iter()) {
+                    *o += c * v;
+                }
             }
-        }
+        };
     }
+    for_each_stage!(term);
     out
 }
 
-/// Σ_j (w_j·scale)·k_j, per component, summed from 0 in the order of j, zero weights skipped and runs of equal
-/// adjacent weights factored: w·k_j + w·k_{j+1} as w·(k_j + k_{j+1}) (RK4's 2(k2 + k3)).
+/// Σ_j (w_j·scale)·k_j, summed from 0 in the order of j, zero weights skipped and runs of equal adjacent weights
+/// factored: w·k_j + w·k_{j+1} as w·(k_j + k_{j+1}) (RK4's 2(k2 + k3)).
 #[inline(always)]
 pub(crate) fn weighted_sum<const N: usize, const S: usize>(
     w: &[f64; S],
@@ -103,22 +127,25 @@ pub(crate) fn weighted_sum<const N: usize, const S: usize>(
     k: &[SVector<f64, N>; S],
 ) -> SVector<f64, N> {
     let mut sum = SVector::<f64, N>::zeros();
-    for (i, s) in sum.iter_mut().enumerate() {
-        let mut run = 0.0;
-        for j in 0..S {
-            if w[j] == 0.0 {
-                continue;
+    let mut run = SVector::<f64, N>::zeros();
+    macro_rules! term {
+        ($j:literal) => {
+            if $j < S && w[$j] != 0.0 {
+                if $j > 0 && w[$j.max(1) - 1] == w[$j] {
+                    run += k[$j];
+                } else {
+                    run = k[$j];
+                }
+                if $j + 1 == S || w[($j + 1).min(S - 1)] != w[$j] {
+                    let c = w[$j] * scale;
+                    for (s, r) in sum.iter_mut().zip(run.iter()) {
+                        *s += c * r;
+                    }
+                }
             }
-            run = if j > 0 && w[j - 1] == w[j] {
-                run + k[j][i]
-            } else {
-                k[j][i]
-            };
-            if j + 1 == S || w[j + 1] != w[j] {
-                *s += (w[j] * scale) * run;
-            }
-        }
+        };
     }
+    for_each_stage!(term);
     sum
 }
 
