@@ -326,6 +326,7 @@ where
 
 #[cfg(test)]
 mod tests {
+    use super::super::dopri5::Dopri5;
     use super::*;
 
     struct Pair;
@@ -363,16 +364,6 @@ mod tests {
         assert_eq!(c.accept(1e-10, 0.2, 0.2, 10.0), 0.2);
     }
 
-    /// Pair with Hairer's DOPRI5 exponents, for the default `step_ratio`.
-    struct PiPair;
-    impl ControllerParams for PiPair {
-        const HINIT_ORDER: f64 = 5.0;
-        const EXPO1: f64 = 0.2 - 0.04 * 0.75;
-        const BETA: f64 = 0.04;
-        const FAC_MIN: f64 = 0.2;
-        const FAC_MAX: f64 = 10.0;
-    }
-
     #[test]
     fn step_ratio_is_hairers_factor() {
         // exp(ln SAFE + β·ln facold − (EXPO1/2)·ln err²) = 1/fac with Hairer's
@@ -380,8 +371,8 @@ mod tests {
         // (err ≤ 1 accepted, > 1 rejected; facold ∈ [1e-4, 1]).
         for err in [1e-150, 1e-30, 1e-12, 3.7e-5, 1e-4, 0.5, 1.0, 2.0, 1e6] {
             for fac_old in [1e-4, 2.5e-3, 0.3, 1.0] {
-                let fast = PiPair::step_ratio(err * err, f64::ln(fac_old));
-                let fac = err.powf(PiPair::EXPO1) / fac_old.powf(PiPair::BETA) / PiPair::SAFE;
+                let fast = Dopri5::step_ratio(err * err, f64::ln(fac_old));
+                let fac = err.powf(Dopri5::EXPO1) / fac_old.powf(Dopri5::BETA) / Dopri5::SAFE;
                 assert!(
                     (fast - 1.0 / fac).abs() <= 1e-14 / fac,
                     "err {err:e}, facold {fac_old:e}: {fast:e} vs {:e}",
@@ -389,9 +380,9 @@ mod tests {
                 );
             }
         }
-        assert_eq!(PiPair::step_ratio(0.0, 0.0), f64::INFINITY);
+        assert_eq!(Dopri5::step_ratio(0.0, 0.0), f64::INFINITY);
         // The controller's floor of facold, kept as a logarithm: ln max(err, 1e-4).
-        let mut c = Controller::<PiPair>::new();
+        let mut c = Controller::<Dopri5>::new();
         assert_eq!(c.ln_fac_old, f64::ln(1e-4));
         c.accept(1e-18, 0.1, 0.1, 10.0);
         assert_eq!(c.ln_fac_old, f64::ln(1e-4));
