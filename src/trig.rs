@@ -66,20 +66,19 @@ fn rem_pio2(x: f64) -> (i64, f64, f64) {
     let mut r = x - f_n * PIO2_1;
     let mut w = f_n * PIO2_1T;
     let mut y0 = r - w;
+    // One more round: r − n·(p + p_tail), the rounding of r − n·p carried into w.
+    let round = |r: f64, p: f64, p_tail: f64| {
+        let w = f_n * p;
+        let r_new = r - w;
+        let w = f_n * p_tail - ((r - r_new) - w);
+        (r_new, w, r_new - w)
+    };
     if exponent(x) - exponent(y0) > 16 {
         // The first round cancelled more than 16 bits: subtract the next 33 bits of π/2 (118 bits in all).
-        let t = r;
-        w = f_n * PIO2_2;
-        r = t - w;
-        w = f_n * PIO2_2T - ((t - r) - w);
-        y0 = r - w;
+        (r, w, y0) = round(r, PIO2_2, PIO2_2T);
         if exponent(x) - exponent(y0) > 49 {
             // And again (151 bits): covers every double below the limit.
-            let t = r;
-            w = f_n * PIO2_3;
-            r = t - w;
-            w = f_n * PIO2_3T - ((t - r) - w);
-            y0 = r - w;
+            (r, w, y0) = round(r, PIO2_3, PIO2_3T);
         }
     }
     let y1 = (r - y0) - w;

@@ -472,13 +472,12 @@ impl Elliptic {
     /// sn, cn, dn of τ (unreduced) and the half-period count j.
     fn functions(&self, tau: f64) -> (f64, f64, f64, f64) {
         if self.separatrix {
-            let sech = 1.0 / tau.cosh();
-            (tau.tanh(), sech, sech, 0.0)
-        } else {
-            let red = self.jac.reduce(tau);
-            let (s, c, d) = red.values();
-            (s, c, d, red.j)
+            // Nothing is reduced (j = 0).
+            return self.reduced(tau);
         }
+        let red = self.jac.reduce(tau);
+        let (s, c, d) = red.values();
+        (s, c, d, red.j)
     }
 
     /// sn, cn ≥ 0, dn of the reduced argument r (τ = 2jK + r) and j.

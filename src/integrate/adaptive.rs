@@ -6,6 +6,8 @@
 
 use nalgebra::SVector;
 
+use super::explicit_rk::{self, RkStep};
+use super::tableau::ButcherTableau;
 use super::{IntegrateError, OdeSystem, Schedule, Settings, Stats, all_finite, report, start};
 
 /// Tolerances of the error norm sc_i = atol + rtol·max(|y_i|, |ŷ_i|) (HNW I eq. (4.10)).
@@ -63,40 +65,8 @@ pub(crate) struct Trial<const N: usize> {
     pub f_new: Option<SVector<f64, N>>,
 }
 
-/// Stage argument y + Σ_j c_j·k_j with c_j = a_j·h (tableau weight times step), the terms added
-/// to y in the order given (the newest stage last: its result then waits on one multiplication
-/// and one addition, the older terms are summed while it is being evaluated). Per component, so
-/// the compiler emits straight-line code without vector temporaries.
-#[inline(always)]
-pub(crate) fn stage_arg<const N: usize, const M: usize>(
-    y: &SVector<f64, N>,
-    terms: [(f64, &SVector<f64, N>); M],
-) -> SVector<f64, N> {
-    let mut arg = *y;
-    for (i, a) in arg.iter_mut().enumerate() {
-        for (c, k) in terms {
-            *a += c * k[i];
-        }
-    }
-    arg
-}
-
-/// Σ_j c_j·k_j, summed in the order given (per component, as [`stage_arg`]).
-#[inline(always)]
-pub(crate) fn weighted_sum<const N: usize, const M: usize>(
-    terms: [(f64, &SVector<f64, N>); M],
-) -> SVector<f64, N> {
-    let mut sum = SVector::<f64, N>::zeros();
-    for (i, s) in sum.iter_mut().enumerate() {
-        for (c, k) in terms {
-            *s += c * k[i];
-        }
-    }
-    sum
-}
-
-/// An explicit embedded Runge–Kutta pair with Hairer's controller parameters.
-pub(crate) trait EmbeddedPair {
+/// Hairer's step-size controller parameters of an embedded pair.
+pub(crate) trait ControllerParams {
     /// Order used by `hinit` (IORD in Hairer's codes).
     const HINIT_ORDER: f64;
     /// Exponent of the error in the controller: EXPO1 = 1/(q+1) − β·(weight), Hairer's codes.
@@ -109,8 +79,6 @@ pub(crate) trait EmbeddedPair {
     const FAC_MAX: f64;
     /// Safety factor (SAFE).
     const SAFE: f64 = 0.9;
-    /// RHS evaluations per attempted step (not counting the post-acceptance FSAL evaluation).
-    const STAGE_EVALS: u64;
 
     /// Unclamped step ratio h_new/h = SAFE·facold^β / err^EXPO1 from err² and ln(facold): the
     /// reciprocal of Hairer's FAC = FAC11/FACOLD^β/SAFE (ln facold = 0 gives SAFE/err^EXPO1, the
@@ -123,16 +91,39 @@ pub(crate) trait EmbeddedPair {
     fn step_ratio(err_sq: f64, ln_fac_old: f64) -> f64 {
         (Self::SAFE.ln() + Self::BETA * ln_fac_old - 0.5 * Self::EXPO1 * err_sq.ln()).exp()
     }
+}
 
-    /// Attempts one step of size h from (t, y) with k1 = f(t, y).
-    fn attempt<const N: usize, S: OdeSystem<N>>(
-        sys: &mut S,
-        t: f64,
-        y: &SVector<f64, N>,
-        k1: &SVector<f64, N>,
-        h: f64,
-        tol: Tol,
-    ) -> Trial<N>;
+/// An explicit embedded Runge–Kutta pair with `S` stages: its tableau, its error estimate and Hairer's controller
+/// parameters.
+pub(crate) trait EmbeddedPair<const S: usize>: ControllerParams {
+    /// The tableau of the higher-order solution (local extrapolation).
+    const TABLEAU: &'static ButcherTableau<S>;
+
+    /// err², the square of the scaled error estimate of `step` from y with step size h, from the stages.
+    fn error_sq<const N: usize>(step: &RkStep<N, S>, y: &SVector<f64, N>, h: f64, tol: Tol) -> f64;
+}
+
+/// Attempts one step of the pair `P` of size h from (t, y) with k1 = f(t, y): s − 1 evaluations, + 1 with FSAL.
+// Always inlined into the driver (see explicit_rk::step).
+#[inline(always)]
+fn attempt<P, const S: usize, const N: usize, Sys>(
+    sys: &mut Sys,
+    t: f64,
+    y: &SVector<f64, N>,
+    k1: &SVector<f64, N>,
+    h: f64,
+    tol: Tol,
+) -> Trial<N>
+where
+    P: EmbeddedPair<S>,
+    Sys: OdeSystem<N>,
+{
+    let step = explicit_rk::step(sys, P::TABLEAU, t, t + h, y, k1, h);
+    Trial {
+        err_sq: P::error_sq(&step, y, h, tol),
+        y_new: step.y_new,
+        f_new: P::TABLEAU.fsal.then_some(step.k[S - 1]),
+    }
 }
 
 /// Hairer's starting step size (HNW I §II.4, "Starting step size"; function HINIT of
@@ -188,7 +179,7 @@ struct Controller<P> {
     _pair: std::marker::PhantomData<P>,
 }
 
-impl<P: EmbeddedPair> Controller<P> {
+impl<P: ControllerParams> Controller<P> {
     fn new() -> Self {
         Self {
             ln_fac_old: FAC_OLD_MIN.ln(),
@@ -202,7 +193,7 @@ impl<P: EmbeddedPair> Controller<P> {
     /// proposal.
     ///
     /// Hairer: fac = err^EXPO1 / facold^β / SAFE, h_new = h / clamp(fac, 1/FAC_MAX, 1/FAC_MIN),
-    /// computed as h·clamp(1/fac, FAC_MIN, FAC_MAX) ([`EmbeddedPair::step_ratio`]); after a
+    /// computed as h·clamp(1/fac, FAC_MIN, FAC_MAX) ([`ControllerParams::step_ratio`]); after a
     /// rejection h_new ≤ h; h_new ≤ hmax. Landing on a row must not shrink the step
     /// carried forward, so for a shortened step (h < h_prop) h_new = max(h_new, h_prop): the
     /// unclamped proposal is remembered. (If the error of the shortened step says h_prop is too
@@ -254,7 +245,7 @@ fn too_small(h: f64, t: f64) -> bool {
 /// derivative is reused unless `project` changed the state. Errors: `TooManySteps` when
 /// accepted + rejected reaches `max_steps`, `StepSizeTooSmall` when h_prop ≤ 16·ε·|t|,
 /// `NonFinite { t: 0 }` if f(0, y0) is non-finite.
-pub(crate) fn run<P, const N: usize, S, E, F>(
+pub(crate) fn run<P, const STAGES: usize, const N: usize, S, E, F>(
     sys: &mut S,
     y0: SVector<f64, N>,
     schedule: &Schedule,
@@ -262,7 +253,7 @@ pub(crate) fn run<P, const N: usize, S, E, F>(
     on_row: &mut F,
 ) -> Result<Stats, IntegrateError<E>>
 where
-    P: EmbeddedPair,
+    P: EmbeddedPair<STAGES>,
     S: OdeSystem<N>,
     F: FnMut(f64, &SVector<f64, N>) -> Result<(), E>,
 {
@@ -301,8 +292,8 @@ where
             } else {
                 (h_prop, t + h_prop)
             };
-            let trial = P::attempt(sys, t, &y, &k1, h, tol);
-            stats.evals += P::STAGE_EVALS;
+            let trial = attempt::<P, STAGES, N, S>(sys, t, &y, &k1, h, tol);
+            stats.evals += STAGES as u64 - 1;
 
             if trial.err_sq <= 1.0 && all_finite(&trial.y_new) {
                 let mut y_new = trial.y_new;
@@ -335,30 +326,16 @@ where
 
 #[cfg(test)]
 mod tests {
+    use super::super::dopri5::Dopri5;
     use super::*;
 
     struct Pair;
-    impl EmbeddedPair for Pair {
+    impl ControllerParams for Pair {
         const HINIT_ORDER: f64 = 5.0;
         const EXPO1: f64 = 0.2;
         const BETA: f64 = 0.0;
         const FAC_MIN: f64 = 0.2;
         const FAC_MAX: f64 = 10.0;
-        const STAGE_EVALS: u64 = 6;
-        fn attempt<const N: usize, S: OdeSystem<N>>(
-            _: &mut S,
-            _: f64,
-            y: &SVector<f64, N>,
-            _: &SVector<f64, N>,
-            _: f64,
-            _: Tol,
-        ) -> Trial<N> {
-            Trial {
-                y_new: *y,
-                err_sq: 0.0,
-                f_new: None,
-            }
-        }
     }
 
     #[test]
@@ -387,27 +364,6 @@ mod tests {
         assert_eq!(c.accept(1e-10, 0.2, 0.2, 10.0), 0.2);
     }
 
-    /// Pair with Hairer's DOPRI5 exponents, for the default `step_ratio`.
-    struct PiPair;
-    impl EmbeddedPair for PiPair {
-        const HINIT_ORDER: f64 = 5.0;
-        const EXPO1: f64 = 0.2 - 0.04 * 0.75;
-        const BETA: f64 = 0.04;
-        const FAC_MIN: f64 = 0.2;
-        const FAC_MAX: f64 = 10.0;
-        const STAGE_EVALS: u64 = 6;
-        fn attempt<const N: usize, S: OdeSystem<N>>(
-            sys: &mut S,
-            t: f64,
-            y: &SVector<f64, N>,
-            k1: &SVector<f64, N>,
-            h: f64,
-            tol: Tol,
-        ) -> Trial<N> {
-            Pair::attempt(sys, t, y, k1, h, tol)
-        }
-    }
-
     #[test]
     fn step_ratio_is_hairers_factor() {
         // exp(ln SAFE + β·ln facold − (EXPO1/2)·ln err²) = 1/fac with Hairer's
@@ -415,8 +371,8 @@ mod tests {
         // (err ≤ 1 accepted, > 1 rejected; facold ∈ [1e-4, 1]).
         for err in [1e-150, 1e-30, 1e-12, 3.7e-5, 1e-4, 0.5, 1.0, 2.0, 1e6] {
             for fac_old in [1e-4, 2.5e-3, 0.3, 1.0] {
-                let fast = PiPair::step_ratio(err * err, f64::ln(fac_old));
-                let fac = err.powf(PiPair::EXPO1) / fac_old.powf(PiPair::BETA) / PiPair::SAFE;
+                let fast = Dopri5::step_ratio(err * err, f64::ln(fac_old));
+                let fac = err.powf(Dopri5::EXPO1) / fac_old.powf(Dopri5::BETA) / Dopri5::SAFE;
                 assert!(
                     (fast - 1.0 / fac).abs() <= 1e-14 / fac,
                     "err {err:e}, facold {fac_old:e}: {fast:e} vs {:e}",
@@ -424,41 +380,14 @@ mod tests {
                 );
             }
         }
-        assert_eq!(PiPair::step_ratio(0.0, 0.0), f64::INFINITY);
+        assert_eq!(Dopri5::step_ratio(0.0, 0.0), f64::INFINITY);
         // The controller's floor of facold, kept as a logarithm: ln max(err, 1e-4).
-        let mut c = Controller::<PiPair>::new();
+        let mut c = Controller::<Dopri5>::new();
         assert_eq!(c.ln_fac_old, f64::ln(1e-4));
         c.accept(1e-18, 0.1, 0.1, 10.0);
         assert_eq!(c.ln_fac_old, f64::ln(1e-4));
         c.accept(0.25 * 0.25, 0.1, 0.1, 10.0);
         assert!((c.ln_fac_old - f64::ln(0.25)).abs() <= 1e-15);
-    }
-
-    #[test]
-    fn combinations_equal_the_vector_expressions() {
-        // stage_arg / weighted_sum against nalgebra's y + h·Σ a_j k_j: only the rounding differs
-        // (h folded into the weights, another summation order), so they agree to a few ulps of
-        // the largest magnitude involved, |y| + Σ|a_j h k_j| (≤ 2M + 2 roundings of it).
-        let y = SVector::<f64, 7>::from([1.0, -0.3, 2.5e-3, 0.7, -0.7, 1e-9, 0.1]);
-        let k1 = SVector::<f64, 7>::from([0.3, 1.7, -2.0, 0.01, 5.0, -1e-3, 0.0]);
-        let k2 = SVector::<f64, 7>::from([-0.9, 0.2, 3.0, -4.0, 1e-6, 2.0, -0.5]);
-        let k3 = SVector::<f64, 7>::from([2.2, -1.1, 0.4, 0.6, -0.8, 1.0, 3.3]);
-        let (a1, a2, a3, h) = (19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, 0.037);
-        let fast = stage_arg(&y, [(a1 * h, &k1), (a2 * h, &k2), (a3 * h, &k3)]);
-        let vector = y + (k1 * a1 + k2 * a2 + k3 * a3) * h;
-        let sum = weighted_sum([(a1 * h, &k1), (a2 * h, &k2), (a3 * h, &k3)]);
-        for i in 0..7 {
-            let terms = (a1 * k1[i]).abs() + (a2 * k2[i]).abs() + (a3 * k3[i]).abs();
-            let scale = y[i].abs() + h * terms;
-            assert!(
-                (fast[i] - vector[i]).abs() <= 8.0 * f64::EPSILON * scale,
-                "{i}"
-            );
-            assert!(
-                (y[i] + sum[i] - vector[i]).abs() <= 8.0 * f64::EPSILON * scale,
-                "{i}"
-            );
-        }
     }
 
     #[test]

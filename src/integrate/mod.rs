@@ -62,10 +62,13 @@ use thiserror::Error;
 mod adaptive;
 mod dop853;
 mod dopri5;
+mod explicit_rk;
+mod fixed;
 pub mod ode_solvers_path;
-mod rk4;
 mod schedule;
+mod tableau;
 
+pub use fixed::{FixedStep, run_fixed_step};
 pub use schedule::{Schedule, ScheduleError, ScheduleIter};
 
 use crate::method::defaults;
@@ -283,13 +286,22 @@ where
         .validate()
         .map_err(|reason| IntegrateError::InvalidSettings { reason })?;
     match (settings.backend, settings.method) {
-        (Backend::Own, Method::Rk4) => rk4::run(sys, y0, schedule, settings, &mut on_row),
+        (Backend::Own, Method::Rk4) => {
+            let mut y0 = y0;
+            sys.project(&mut y0);
+            let (dt, max_steps) = (settings.dt, settings.max_steps);
+            run_fixed_step(&mut fixed::Rk4 { sys }, y0, schedule, dt, max_steps, on_row)
+        }
         (Backend::Own, Method::Dopri5) => {
-            adaptive::run::<dopri5::Dopri5, N, S, E, F>(sys, y0, schedule, settings, &mut on_row)
+            adaptive::run::<dopri5::Dopri5, 7, N, S, E, F>(sys, y0, schedule, settings, &mut on_row)
         }
-        (Backend::Own, Method::Dop853) => {
-            adaptive::run::<dop853::Dop853, N, S, E, F>(sys, y0, schedule, settings, &mut on_row)
-        }
+        (Backend::Own, Method::Dop853) => adaptive::run::<dop853::Dop853, 12, N, S, E, F>(
+            sys,
+            y0,
+            schedule,
+            settings,
+            &mut on_row,
+        ),
         (Backend::OdeSolvers, _) => ode_solvers_path::run(sys, y0, schedule, settings, &mut on_row),
         (Backend::Own, other) => Err(IntegrateError::InvalidSettings {
             reason: not_runge_kutta(other),

@@ -32,6 +32,7 @@ use nalgebra::{DVector, SVector};
 use ode_solvers::dop_shared::{IntegrationError, Stats as OsStats};
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
 
+use super::adaptive::ControllerParams;
 use super::{
     IntegrateError, Method, OdeSystem, Schedule, Settings, Stats, all_finite, report, rk4_substeps,
     start,
@@ -114,6 +115,79 @@ pub(crate) fn rk4_step_for(delta: f64, n: u64) -> f64 {
     h
 }
 
+/// One row interval [t_a, t_b] for ode_solvers: the initial step (0: its `hinit`), the largest step and the step
+/// budget.
+struct Interval {
+    t_a: f64,
+    t_b: f64,
+    h_max: f64,
+    h_guess: f64,
+    budget: u32,
+}
+
+/// What one ode_solvers solve returns: its counters, the time of its first non-finite state (RK4 only) and its
+/// last state.
+type Solved = (OsStats, Option<f64>, Option<DVector<f64>>);
+
+/// Solves one row interval with `settings.method`: RK4 with the step of [`rk4_step_for`], the adaptive pairs with
+/// the controller parameters of the own implementations ([`ControllerParams`]) and sparse output.
+fn solve_interval<const N: usize, S: OdeSystem<N>, E>(
+    settings: &Settings,
+    adapter: Adapter<'_, '_, N, S>,
+    y_dyn: DVector<f64>,
+    iv: &Interval,
+) -> Result<Solved, IntegrateError<E>> {
+    // Dopri5 and Dop853 of ode_solvers are distinct types with the same constructor.
+    macro_rules! embedded_pair {
+        ($solver:ident, $params:ty) => {{
+            let mut solver = $solver::from_param(
+                adapter,
+                iv.t_a,
+                iv.t_b,
+                0.0,
+                y_dyn,
+                settings.rtol,
+                settings.atol,
+                <$params>::SAFE,
+                <$params>::BETA,
+                <$params>::FAC_MIN,
+                <$params>::FAC_MAX,
+                iv.h_max,
+                iv.h_guess,
+                iv.budget,
+                u32::MAX,
+                OutputType::Sparse,
+            );
+            let r = solver.integrate();
+            r.map(|s| (s, None, solver.y_out().last().cloned()))
+        }};
+    }
+    let outcome = match settings.method {
+        Method::Rk4 => {
+            let delta = iv.t_b - iv.t_a;
+            let h = rk4_step_for(delta, rk4_substeps(delta, settings.dt));
+            let mut solver = Rk4::new(adapter, iv.t_a, y_dyn, iv.t_b, h);
+            let r = solver.integrate();
+            // Report the first non-finite state, if any, at its own time.
+            let bad = solver
+                .x_out()
+                .iter()
+                .zip(solver.y_out())
+                .find(|(_, v)| !v.iter().all(|c| c.is_finite()))
+                .map(|(x, _)| *x);
+            r.map(|s| (s, bad, solver.y_out().last().cloned()))
+        }
+        Method::Dopri5 => embedded_pair!(Dopri5, super::dopri5::Dopri5),
+        Method::Dop853 => embedded_pair!(Dop853, super::dop853::Dop853),
+        other => {
+            return Err(IntegrateError::InvalidSettings {
+                reason: super::not_runge_kutta(other),
+            });
+        }
+    };
+    outcome.map_err(|e| map_err(e, settings.max_steps))
+}
+
 /// Runs `settings.method` through ode_solvers, one solve per row interval (see module docs).
 pub(crate) fn run<const N: usize, S, E, F>(
     sys: &mut S,
@@ -156,80 +230,14 @@ where
             N + usize::from(autonomous),
             y.iter().copied().chain(autonomous.then_some(t_a)),
         );
-        let outcome = match settings.method {
-            Method::Rk4 => {
-                let delta = t_b - t_a;
-                let h = rk4_step_for(delta, rk4_substeps(delta, settings.dt));
-                let mut solver = Rk4::new(adapter, t_a, y_dyn, t_b, h);
-                let r = solver.integrate();
-                // Report the first non-finite state, if any, at its own time.
-                let bad = solver
-                    .x_out()
-                    .iter()
-                    .zip(solver.y_out())
-                    .find(|(_, v)| !v.iter().all(|c| c.is_finite()))
-                    .map(|(x, _)| *x);
-                let y_end = solver.y_out().last().cloned();
-                r.map(|s| (s, bad, y_end))
-            }
-            Method::Dopri5 => {
-                let mut solver = Dopri5::from_param(
-                    adapter,
-                    t_a,
-                    t_b,
-                    0.0,
-                    y_dyn,
-                    settings.rtol,
-                    settings.atol,
-                    0.9,
-                    0.04,
-                    0.2,
-                    10.0,
-                    h_max,
-                    h_guess,
-                    budget,
-                    u32::MAX,
-                    OutputType::Sparse,
-                );
-                let r = solver.integrate();
-                let y_end = solver.y_out().last().cloned();
-                r.map(|s| (s, None, y_end))
-            }
-            Method::Dop853 => {
-                let mut solver = Dop853::from_param(
-                    adapter,
-                    t_a,
-                    t_b,
-                    0.0,
-                    y_dyn,
-                    settings.rtol,
-                    settings.atol,
-                    0.9,
-                    0.0,
-                    0.333,
-                    6.0,
-                    h_max,
-                    h_guess,
-                    budget,
-                    u32::MAX,
-                    OutputType::Sparse,
-                );
-                let r = solver.integrate();
-                let y_end = solver.y_out().last().cloned();
-                r.map(|s| (s, None, y_end))
-            }
-            other => {
-                return Err(IntegrateError::InvalidSettings {
-                    reason: super::not_runge_kutta(other),
-                });
-            }
+        let interval = Interval {
+            t_a,
+            t_b,
+            h_max,
+            h_guess,
+            budget,
         };
-        let (s, bad, y_end) = match outcome {
-            Ok(v) => v,
-            Err(e) => {
-                return Err(map_err(e, settings.max_steps));
-            }
-        };
+        let (s, bad, y_end) = solve_interval(settings, adapter, y_dyn, &interval)?;
         add(&mut stats, s);
         if let Some(t) = bad {
             return Err(IntegrateError::NonFinite { t });

@@ -1,88 +1,26 @@
-//! Lie–Poisson splitting of the free rigid body into exact planar rotations, with the applied moment as kicks:
-//! the methods `split2` (Strang, order 2) and `split4` (Suzuki's fractal composition, order 4).
-//!
-//! # The splitting
-//!
-//! About the moment center, in principal axes, the kinetic energy is T = Σᵢ Hᵢ²/(2Iᵢ) (McLachlan 1993, "Explicit
-//! Lie–Poisson integration and the Euler equations", Phys. Rev. Lett. 71, 3043; Touma & Wisdom 1994,
-//! "Lie–Poisson integrators for rigid body dynamics in the solar system", Astron. J. 107, 1189). A part kᵢHᵢ²/2
-//! alone has an exact, elementary flow: with ω⁽ⁱ⁾ = kᵢHᵢ eᵢ, Euler's equation Ḣ_p = H_p × ω⁽ⁱ⁾ (M = 0) keeps Hᵢ and
-//! turns H_p about the principal axis eᵢ by −kᵢHᵢτ, and the attitude equation q̇ = ½ q ⊗ (0, ω⁽ⁱ⁾) turns the body
-//! about eᵢ by +kᵢHᵢτ:
+//! Lie–Poisson splitting of the free rigid body into exact planar rotations, the applied moment as kicks: `split2`
+//! (Strang, order 2) and `split4` (Suzuki's fractal composition, order 4). Background, measurements and the work
+//! counters: docs/splitting.md.
 //!
 //! ```text
-//!   a = kᵢ·Hᵢ·τ,   (i, j, k) cyclic
-//!   H_j ← cos a · H_j + sin a · H_k,    H_k ← cos a · H_k − sin a · H_j
-//!   q_p ← q_p ⊗ (cos(a/2), sin(a/2)·eᵢ)
+//!   T = |H|²/(2I_r) + Σ_{i=a,c} kᵢHᵢ²/2,  kᵢ = 1/Iᵢ − 1/I_r      (Casimir splitting, the default)
+//!   T_i(τ): a = kᵢHᵢτ,  H_j ← cos a·H_j + sin a·H_k,  H_k ← cos a·H_k − sin a·H_j,
+//!           q_p ← q_p ⊗ (cos(a/2), sin(a/2)·eᵢ)                  ((i, j, k) cyclic)
+//!   C(τ): the body turns about H by |H|τ/I_r;   D(τ) = C(τ) T_a(τ/2) T_c(τ) T_a(τ/2)
+//!   K(τ): Hᵢ ← Hᵢ + (Aᵢ − (c/Iᵢ)Hᵢ)·τ·φ(−cτ/Iᵢ),  φ(x) = (eˣ − 1)/x,  M_b = P·A − c·ω
+//!   split2: S(h) = K(h/2) D(h) K(h/2);  split4: S(ph)² S((1 − 4p)h) S(ph)²,  p = 1/(4 − 4^{1/3})
 //! ```
 //!
-//! so H_s = q_p ⊗ H_p ⊗ q_p⁻¹ is unchanged by every sub-flow: torque-free, |H| and H_s are preserved up to
-//! round-off, whatever the step. The Casimir part |H|²/(2I_r) has ω = H/I_r: H_b stays, and the body turns about H
-//! by |H|τ/I_r; it changes neither H_b nor H_s, so its flow commutes with all the others.
-//!
-//! Two splittings are provided ([`Splitting`]); the default, [`Splitting::Casimir`], writes
-//! T = |H|²/(2I_r) + (1/I_a − 1/I_r)H_a²/2 + (1/I_c − 1/I_r)H_c²/2 with I_r the intermediate moment and a, c the
-//! axes of the smallest and largest, and takes the drift D(τ) = C(τ) T_a(τ/2) T_c(τ) T_a(τ/2) (4 sub-flows);
-//! [`Splitting::Planar`] takes T_a(τ/2) T_b(τ/2) T_c(τ) T_b(τ/2) T_a(τ/2) with kᵢ = 1/Iᵢ (5 sub-flows). Both are
-//! symmetric (Strang) compositions, Poisson maps of the Lie–Poisson system, of order 2, whose modified energy is
-//! conserved: the energy error stays bounded by O((|ω| dt)²) over any horizon instead of drifting. Measured on
-//! three asymmetric bodies with three initial states each (100 s, |ω|dt ≈ 0.04, ω and attitude error against the
-//! closed form), the Casimir splitting was 3–195× more accurate than the planar one in the order-4 composition,
-//! and in the order-2 one up to 26× more accurate in eight cases and 10× less in one; for a near-symmetric body
-//! (I₂ − I₁ = 10⁻³I₁) 10³–10⁶× more accurate — it integrates the symmetric limit exactly.
-//!
-//! # Effects as kicks
-//!
-//! The applied moment M_b(t, q, ω) = M_rest_b(t, q) − c·ω (torques and gravity, which do not depend on ω; viscous
-//! damping) is the flow K(τ): Ḣ = M with t and the attitude frozen. In principal axes, with A = Pᵀ M_rest_b:
-//!
-//! ```text
-//!   Hᵢ ← Hᵢ + (Aᵢ − (c/Iᵢ) Hᵢ) · τ · φ(−c τ/Iᵢ),    φ(x) = (eˣ − 1)/x,  φ(0) = 1
-//! ```
-//!
-//! the exact solution of this linear equation (so damping is unconditionally stable, whatever c·dt/I). Time is
-//! advanced by the drifts, so a time-dependent torque is sampled at the ends of each drift. One step of `split2`
-//! is S(h) = K(h/2) D(h) K(h/2). One step of `split4` is a symmetric composition of S with weights wₛ, Σwₛ = 1 and
-//! Σwₛ³ = 0, which makes it of order 4 ([`Scheme`]):
-//!
-//! * Suzuki's fractal S(ph) S(ph) S((1 − 4p)h) S(ph) S(ph), p = 1/(4 − 4^{1/3}) (Suzuki 1990, "Fractal
-//!   decomposition of exponential operators", Phys. Lett. A 146, 319) — the one `split4` uses;
-//! * Yoshida's triple jump S(w₁h) S(w₀h) S(w₁h), w₁ = 1/(2 − 2^{1/3}), w₀ = 1 − 2w₁ (Yoshida 1990, "Construction of
-//!   higher order symplectic integrators", Phys. Lett. A 150, 262).
-//!
-//! Both have a stage running backwards in time. Yoshida's goes back 0.35h before the start of the step, so its
-//! kicks sample a time-dependent effect outside the step — before t = 0 on the first step: a torque switched on at
-//! t_on = 0 was then missed and the method fell to order 1 (found by tests/geometric_methods.rs). Suzuki's stage
-//! times p, 2p, 1 − 2p, 1 − p (× h) all lie inside the step, so the kicks see only times the step covers; it costs
-//! five Strang steps instead of three, and its error constant is smaller: at equal work (the same number of
-//! sub-flows), on three asymmetric bodies with three initial states each over 60 s, its error was 1–10× smaller in
-//! eight cases and 1.8× larger in one.
-//!
-//! # Frames
-//!
-//! Body form: state (H_p, q_p), H in principal axes, turned by each sub-flow. Space form: state (H_s, q_p), H_s
-//! untouched by the sub-flows (so it is exactly constant torque-free), Hᵢ read as (R(q_p) eᵢ)·H_s. The two forms
-//! are the same map in exact arithmetic; their difference in `eulerdyn compare` is round-off. The attitude of the
-//! body axes is q_b = q_p ⊗ P⁻¹ with P the principal axes ([`FreeBody::principal_axes_b`]); q_p is renormalised
-//! after every step, so ||q| − 1| stays at a few ε.
-//!
-//! # Work counters
-//!
-//! [`Stats::steps`] counts steps of size h (a `split4` step, five Strang stages, counts once);
-//! [`Stats::evals`] counts sub-flows: every exact rotation (planar or about H) and every kick (kicks only when the
-//! scene has effects) of the composition as written above. Per step with three distinct moments, Casimir
-//! splitting: `split2` 4 rotations (+ 2 kicks), `split4` 20 rotations (+ 10 kicks); a symmetric body skips its
-//! zero-rate rotation (2 and 10). Torque-free, a step is computed with its sub-flows fused where that is exact —
-//! the Casimir rotations of all stages as one, adjacent rotations about the same axis as one, the last rotation of
-//! a step with the first of the next (`FusedStep`: 3 rotations per `split2` step, 11 per `split4` step) — which
-//! the counters do not show: they count the sub-flows the fused ones stand for. A fixed-axis motion (prescribed,
-//! so there is nothing to split) integrates Ḣ_s = M_s(t) with the kicks alone — the trapezoidal rule for `split2`
-//! and its composition for `split4` — and counts moment evaluations (2 per stage).
+//! Sources: McLachlan 1993, "Explicit Lie–Poisson integration and the Euler equations", Phys. Rev.
+//! Lett. 71, 3043; Touma & Wisdom 1994, "Lie–Poisson integrators for rigid body dynamics in the solar system",
+//! Astron. J. 107, 1189; Suzuki 1990, "Fractal decomposition of exponential operators", Phys. Lett. A 146, 319;
+//! Yoshida 1990, "Construction of higher order symplectic integrators", Phys. Lett. A 150, 262. Body form: state
+//! (H_p, q_p); space form: (H_s, q_p), Hᵢ read as (R(q_p) eᵢ)·H_s. q_b = q_p ⊗ P⁻¹ with P the principal axes.
 
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 use crate::frames::Form;
-use crate::integrate::{IntegrateError, Schedule, Stats, rk4_substeps};
+use crate::integrate::FixedStep;
 use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree, free_sample};
 use crate::sample::Sample;
 use crate::trig::small_sin_cos;
@@ -271,7 +209,7 @@ struct FusedStep {
     casimir: f64,
     /// Whether the last turn is left open and fused with the next step's first (same axis, at least two turns).
     carry: bool,
-    /// The sub-flows of the unfused composition per step: the work counter ([`Stats::evals`]).
+    /// The sub-flows of the unfused composition per step: the work counter ([`crate::integrate::Stats::evals`]).
     evals: u64,
 }
 
@@ -396,22 +334,6 @@ impl<K: KickMoment> LiePoisson<K> {
         let mut idx = [0usize, 1, 2];
         idx.sort_by(|&x, &y| moments_p[x].total_cmp(&moments_p[y]));
         [idx[0], idx[1], idx[2]]
-    }
-
-    /// Replaces the sub-flow order (each index 0, 1, 2 once; anything else is ignored). For studies of the
-    /// splitting error; the default is [`Self::axis_order`].
-    pub fn with_order(mut self, order: [usize; 3]) -> Self {
-        let mut seen = [false; 3];
-        for &i in &order {
-            if i < 3 {
-                seen[i] = true;
-            }
-        }
-        if seen.iter().all(|&s| s) {
-            self.order = order;
-            self.fuse();
-        }
-        self
     }
 
     /// The composition scheme.
@@ -724,18 +646,6 @@ impl<K: KickMoment> LiePoisson<K> {
     }
 }
 
-/// A method that advances its state by steps of a given size (the splitting methods and the kick quadrature), run
-/// by [`run_fixed_step`].
-pub trait FixedStep {
-    /// The state.
-    type State: Copy;
-    /// Advances `y` from t to t_next = t + h (t_next is passed so that the last step of a row interval lands on the
-    /// row time exactly). Returns the number of sub-flow evaluations it took.
-    fn step(&mut self, t: f64, t_next: f64, h: f64, y: &mut Self::State) -> u64;
-    /// Whether every component of the state is finite.
-    fn is_finite(&self, y: &Self::State) -> bool;
-}
-
 impl<K: KickMoment> FixedStep for LiePoisson<K> {
     type State = SplitState;
 
@@ -802,66 +712,6 @@ impl<F: FnMut(f64) -> Vector3<f64>> FixedStep for KickQuadrature<F> {
     }
 }
 
-/// The fixed-step driver of [`FixedStep`] methods, with the row semantics of [`crate::integrate::integrate`]:
-/// `on_row(t_k, &y_k)` at every row time, starting with t = 0; between rows t_a < t_b it takes
-/// n = ⌈(t_b − t_a)/dt⌉ equal steps h = (t_b − t_a)/n at the times t_a + i·h (products, never a running sum), the
-/// last one landing on t_b exactly (the same steps as RK4). Errors: `InvalidSettings` for dt not positive and
-/// finite, `TooManySteps` past `max_steps`, `NonFinite` when the state stops being finite (no such state is ever
-/// reported), `Stopped` when `on_row` fails.
-#[inline(never)]
-pub fn run_fixed_step<S: FixedStep, E>(
-    method: &mut S,
-    y0: S::State,
-    schedule: &Schedule,
-    dt: f64,
-    max_steps: u64,
-    mut on_row: impl FnMut(f64, &S::State) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
-    if !(dt.is_finite() && dt > 0.0) {
-        return Err(IntegrateError::InvalidSettings {
-            reason: format!("dt = {dt} must be positive and finite"),
-        });
-    }
-    if !method.is_finite(&y0) {
-        return Err(IntegrateError::NonFinite { t: 0.0 });
-    }
-    on_row(0.0, &y0).map_err(|cause| IntegrateError::Stopped { t: 0.0, cause })?;
-    let mut stats = Stats::default();
-    let mut y = y0;
-    let mut t_a = 0.0;
-    for t_b in schedule.iter().skip(1) {
-        let delta = t_b - t_a;
-        let n = rk4_substeps(delta, dt);
-        let h = delta / n as f64;
-        // The steps work on a copy that nothing else sees (`on_row` takes a reference), so that it can stay in
-        // registers.
-        let mut y_steps = y;
-        for i in 0..n {
-            let t = t_a + i as f64 * h;
-            if stats.steps >= max_steps {
-                return Err(IntegrateError::TooManySteps {
-                    t,
-                    steps: stats.steps,
-                });
-            }
-            let t_next = if i + 1 == n {
-                t_b
-            } else {
-                t_a + (i + 1) as f64 * h
-            };
-            stats.evals += method.step(t, t_next, h, &mut y_steps);
-            stats.steps += 1;
-            if !method.is_finite(&y_steps) {
-                return Err(IntegrateError::NonFinite { t: t_next });
-            }
-        }
-        y = y_steps;
-        on_row(t_b, &y).map_err(|cause| IntegrateError::Stopped { t: t_b, cause })?;
-        t_a = t_b;
-    }
-    Ok(stats)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -875,15 +725,19 @@ mod tests {
         .unwrap()
     }
 
+    /// Weights of an order-4 symmetric composition: Σ w = 1 (to 4e-16) and Σ w³ = 0 (to `cube_tol`).
+    fn assert_order_4(w: &[f64], cube_tol: f64) {
+        assert!((w.iter().sum::<f64>() - 1.0).abs() < 4e-16);
+        assert!(w.iter().map(|x| x * x * x).sum::<f64>().abs() < cube_tol);
+    }
+
     #[test]
     fn yoshida_weights() {
         let w = Scheme::Yoshida4.weights();
         // w₁ = 1/(2 − 2^{1/3}) = 1.3512071919596578…, w₀ = −1.7024143839193155…
         assert!((w[0] - 1.351_207_191_959_657_8).abs() < 4e-16);
         assert!((w[1] + 1.702_414_383_919_315_5).abs() < 4e-16);
-        assert!((w.iter().sum::<f64>() - 1.0).abs() < 4e-16);
-        // Order 4 needs Σ w³ = 0 as well.
-        assert!(w.iter().map(|x| x * x * x).sum::<f64>().abs() < 1e-14);
+        assert_order_4(&w, 1e-14);
     }
 
     #[test]
@@ -892,8 +746,7 @@ mod tests {
         // p = 1/(4 − 4^{1/3}) = 0.41449077179437573…, 1 − 4p = −0.65796308717750293…
         assert!((w[0] - 0.414_490_771_794_375_7).abs() < 4e-16);
         assert!((w[2] + 0.657_963_087_177_502_9).abs() < 4e-16);
-        assert!((w.iter().sum::<f64>() - 1.0).abs() < 4e-16);
-        assert!(w.iter().map(|x| x * x * x).sum::<f64>().abs() < 1e-15);
+        assert_order_4(&w, 1e-15);
         let mut t = 0.0;
         for x in w {
             t += x;

@@ -10,13 +10,13 @@ use std::time::Instant;
 use nalgebra::{SVector, Vector3};
 
 use crate::frames::Form;
-use crate::integrate::{self, IntegrateError, OdeSystem, Stats};
+use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, EffectMoments, FreeBody, SpaceForm, TorqueFree};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
-use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme, run_fixed_step};
+use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::{Motion, Scene};
 

@@ -1,0 +1,101 @@
+//! The fixed-step row driver, shared by RK4 and the splitting methods: between rows t_a < t_b it takes
+//! n = ⌈(t_b − t_a)/dt⌉ equal steps h = (t_b − t_a)/n ([`rk4_substeps`]) at t_a + i·h (products, never a running
+//! sum), the last one landing on t_b exactly.
+
+use nalgebra::SVector;
+
+use super::explicit_rk;
+use super::tableau::RK4;
+use super::{IntegrateError, OdeSystem, Schedule, Stats, all_finite, rk4_substeps};
+
+/// A method that advances its state by steps of a given size, run by [`run_fixed_step`].
+pub trait FixedStep {
+    /// The state.
+    type State: Copy;
+    /// Advances `y` from t to t_next = t + h (t_next is passed so that the last step of a row interval lands on the
+    /// row time exactly). Returns the number of evaluations (right-hand sides or sub-flows) it took.
+    fn step(&mut self, t: f64, t_next: f64, h: f64, y: &mut Self::State) -> u64;
+    /// Whether every component of the state is finite.
+    fn is_finite(&self, y: &Self::State) -> bool;
+}
+
+/// The fixed-step driver of [`FixedStep`] methods, with the row semantics of [`super::integrate`]:
+/// `on_row(t_k, &y_k)` at every row time, starting with t = 0, the steps described in the module docs. Errors:
+/// `InvalidSettings` for dt not positive and finite, `TooManySteps` past `max_steps`, `NonFinite` when the state
+/// stops being finite (no such state is ever reported), `Stopped` when `on_row` fails.
+#[inline(never)]
+pub fn run_fixed_step<S: FixedStep, E>(
+    method: &mut S,
+    y0: S::State,
+    schedule: &Schedule,
+    dt: f64,
+    max_steps: u64,
+    mut on_row: impl FnMut(f64, &S::State) -> Result<(), E>,
+) -> Result<Stats, IntegrateError<E>> {
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(IntegrateError::InvalidSettings {
+            reason: format!("dt = {dt} must be positive and finite"),
+        });
+    }
+    if !method.is_finite(&y0) {
+        return Err(IntegrateError::NonFinite { t: 0.0 });
+    }
+    on_row(0.0, &y0).map_err(|cause| IntegrateError::Stopped { t: 0.0, cause })?;
+    let mut stats = Stats::default();
+    let mut y = y0;
+    let mut t_a = 0.0;
+    for t_b in schedule.iter().skip(1) {
+        let delta = t_b - t_a;
+        let n = rk4_substeps(delta, dt);
+        let h = delta / n as f64;
+        // The steps work on a copy that nothing else sees (`on_row` takes a reference), so that it can stay in
+        // registers.
+        let mut y_steps = y;
+        for i in 0..n {
+            let t = t_a + i as f64 * h;
+            if stats.steps >= max_steps {
+                return Err(IntegrateError::TooManySteps {
+                    t,
+                    steps: stats.steps,
+                });
+            }
+            let t_next = if i + 1 == n {
+                t_b
+            } else {
+                t_a + (i + 1) as f64 * h
+            };
+            stats.evals += method.step(t, t_next, h, &mut y_steps);
+            stats.steps += 1;
+            if !method.is_finite(&y_steps) {
+                return Err(IntegrateError::NonFinite { t: t_next });
+            }
+        }
+        y = y_steps;
+        on_row(t_b, &y).map_err(|cause| IntegrateError::Stopped { t: t_b, cause })?;
+        t_a = t_b;
+    }
+    Ok(stats)
+}
+
+/// The classical RK4 method ([`RK4`]) on a system, with [`OdeSystem::project`] after every step.
+pub(crate) struct Rk4<'a, S, const N: usize> {
+    /// The system.
+    pub sys: &'a mut S,
+}
+
+impl<S: OdeSystem<N>, const N: usize> FixedStep for Rk4<'_, S, N> {
+    type State = SVector<f64, N>;
+
+    // Always inlined (see explicit_rk::step).
+    #[inline(always)]
+    fn step(&mut self, t: f64, t_next: f64, h: f64, y: &mut SVector<f64, N>) -> u64 {
+        let k1 = self.sys.rhs(t, y);
+        *y = explicit_rk::step(self.sys, &RK4, t, t_next, y, &k1, h).y_new;
+        self.sys.project(y);
+        4
+    }
+
+    fn is_finite(&self, y: &SVector<f64, N>) -> bool {
+        all_finite(y)
+    }
+}
