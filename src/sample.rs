@@ -254,24 +254,17 @@ const POTENTIAL_COLUMNS: [Column; 2] = [
 impl ColumnSet {
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
+        let groups: [(bool, &[Column]); 6] = [
+            (self.theta, &[THETA_COLUMN]),
+            (self.force, &FORCE_COLUMNS),
+            (self.h_s_integrated, &H_INT_COLUMNS),
+            (self.support, &SUPPORT_COLUMNS),
+            (self.bearings, &BEARING_COLUMNS),
+            (self.potential, &POTENTIAL_COLUMNS),
+        ];
         let mut cols = BASE_COLUMNS.to_vec();
-        if self.theta {
-            cols.push(THETA_COLUMN);
-        }
-        if self.force {
-            cols.extend(FORCE_COLUMNS);
-        }
-        if self.h_s_integrated {
-            cols.extend(H_INT_COLUMNS);
-        }
-        if self.support {
-            cols.extend(SUPPORT_COLUMNS);
-        }
-        if self.bearings {
-            cols.extend(BEARING_COLUMNS);
-        }
-        if self.potential {
-            cols.extend(POTENTIAL_COLUMNS);
+        for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
+            cols.extend_from_slice(group);
         }
         cols
     }
