@@ -61,3 +61,15 @@ fn a_tiny_tolerance_is_printed_in_exponent_form() {
     assert!(err.contains("got 1e-20"), "{err}");
     assert!(!err.contains("0.0000000000"), "{err}");
 }
+
+#[test]
+fn accuracy_help_lists_every_column_of_the_table() {
+    let help = eulerdyn(["accuracy", "--help"]);
+    help.expect_code(0);
+    let columns = eulerdyn::analysis::study::TABLE_COLUMNS.join(",");
+    assert!(
+        help.stdout.contains(&columns),
+        "{columns} in\n{}",
+        help.stdout
+    );
+}

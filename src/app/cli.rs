@@ -84,8 +84,10 @@ pub enum Command {
 pub struct AccuracyArgs {
     /// Scene file (TOML).
     pub scene: PathBuf,
-    /// Table CSV (columns method,frame,rtol,dt,err_omega,err_attitude,energy_drift,H_drift,wall_s,steps,rejected,
-    /// evals); `-` or absent: stdout.
+    /// Table CSV, a row per run, columns:
+    /// method,frame,rtol,dt,err_omega,err_attitude,energy_drift,H_drift,wall_s,steps,rejected,evals,err_H_s,atol,backend,repeats,status
+    ///
+    /// `-` or absent: stdout.
     #[arg(short = 'o', long = "output", value_name = "TABLE.csv")]
     pub output: Option<PathBuf>,
     /// Log-log SVG figure: error against wall time, a curve per method.
@@ -371,7 +373,7 @@ fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
                         progress::wanted(quiet),
                     )
                 })
-                .set(done as f64);
+                .update(done as f64, total as f64);
         },
     );
     if let Some(p) = progress {

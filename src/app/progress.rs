@@ -151,6 +151,17 @@ impl Progress {
         }
     }
 
+    /// Records `done` out of a whole that may have changed to `total` since the bar was made (a study plans its
+    /// runs after the reference run: the first call has total 1).
+    pub fn update(&mut self, done: f64, total: f64) {
+        if total != self.total && total.is_finite() && total > 0.0 && self.total > 0.0 {
+            self.total = total;
+            // Force the next `set` to redraw with the new whole.
+            self.position = u64::MAX;
+        }
+        self.set(done);
+    }
+
     /// Whether the bar is drawn now (false until the delay has passed, and always false when hidden).
     pub fn is_visible(&self) -> bool {
         !self.bar.is_hidden()
@@ -220,6 +231,19 @@ mod tests {
         assert_eq!(p.fraction(), 0.0);
         p.set(f64::NAN);
         assert_eq!(p.fraction(), 0.0);
+        p.finish();
+    }
+
+    #[test]
+    fn a_bar_follows_a_total_that_grows_after_it_was_made() {
+        // The accuracy study's first callback is the reference run (1 of 1); the planned runs come next. The bar
+        // used to stay at 100 % of 1 for the whole study.
+        let mut p = Progress::bar("accuracy", "run", 1.0, "runs", true);
+        p.update(0.0, 1.0);
+        p.update(1.0, 170.0);
+        assert!((p.fraction() - 1.0 / 170.0).abs() < 1e-3);
+        p.update(85.0, 170.0);
+        assert_eq!(p.fraction(), 0.5);
         p.finish();
     }
 
