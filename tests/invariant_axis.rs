@@ -697,3 +697,36 @@ fn plot_draws_the_bearings_panel_of_a_run_with_bearings() {
     assert_eq!(refused.code, Some(2), "{}", refused.stderr);
     assert!(refused.stderr.contains("R_A_b_x"), "{}", refused.stderr);
 }
+
+#[test]
+fn a_hinge_follows_a_sine_torque_given_in_space_axes() {
+    // I_uu θ̈ = M sin(2π f t) about the axis (space z = body z here) from rest:
+    // θ̇ = M/(I_uu ω_f) (1 − cos ω_f t), ω_f = 2π f (integrating the sine once). The torque's part across the axis
+    // (along space x) goes to the bearings.
+    let (torque, freq) = (0.3, 0.5);
+    let w_f = 2.0 * std::f64::consts::PI * freq;
+    let i_uu = 0.5 * M * R * R;
+    for form in Form::ALL {
+        let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::thin_disk(R)), 3.0, 0.05)
+            .with_motion(MotionSpec::hinge([0.0, 0.0, 1.0], 0.0).with_bearings(-0.1, 0.1))
+            .with_effect(EffectSpec::torque(Axes::Space, [0.2, 0.0, torque]).sine(freq, 0.0))
+            .with_tolerances(1e-12, 1e-14)
+            .with_form(form);
+        for s in rows(&spec) {
+            let loads = s.support.unwrap();
+            let expected = torque / (i_uu * w_f) * (1.0 - (w_f * s.t).cos());
+            close(loads.theta_dot, expected, 1e-9, "θ̇");
+            close(loads.m_drive, 0.0, 1e-12, "no drive");
+            // The bearings carry the cross-axis torque 0.2 sin(ω_f t) along space x as a couple.
+            let b = loads.bearings.unwrap();
+            let couple =
+                (Vector3::z() * -0.1).cross(&b.r_a_s) + (Vector3::z() * 0.1).cross(&b.r_b_s);
+            close(
+                couple.x,
+                -0.2 * (w_f * s.t).sin(),
+                1e-9,
+                "the bearings' couple",
+            );
+        }
+    }
+}
