@@ -100,10 +100,7 @@ pub fn balance(spec: &SceneSpec, planes: &Planes) -> Result<Balance, BalanceErro
         );
     };
     let u_b = axis.axis_b().into_inner();
-    let rho_c_b = axis.rho_c_b();
-    let s = (rho_c_b - u_b * rho_c_b.dot(&u_b)) * axis.mass();
-    let i_u = axis.inertia_a_b() * u_b;
-    let d = i_u - u_b * i_u.dot(&u_b);
+    let (s, d) = axis.imbalance();
     let v_b = (d + s * planes.a) / (planes.b - planes.a);
     let v_a = -s - v_b;
     let (reference_b, reference_name) = reference_direction(&u_b);

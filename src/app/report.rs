@@ -473,10 +473,9 @@ fn support_lines(w: &mut String, scene: &Scene) {
             ),
         );
     }
-    let rho = axis.rho_c_b();
-    let e = (rho - u_b * rho.dot(&u_b)).norm();
-    let i_u = axis.inertia_a_b() * u_b;
-    let product = (i_u - u_b * i_u.dot(&u_b)).norm();
+    let (static_imbalance, dynamic_imbalance) = axis.imbalance();
+    let e = static_imbalance.norm() / axis.mass();
+    let product = dynamic_imbalance.norm();
     line(
         w,
         "imbalance",

@@ -148,6 +148,25 @@ impl FixedAxis {
         &self.rho_c_b
     }
 
+    /// I_uu = u·I_A u, the moment of inertia about the axis (kg·m²).
+    pub fn i_uu(&self) -> f64 {
+        let u_b = self.axis_b.into_inner();
+        u_b.dot(&(self.inertia_a_b * u_b))
+    }
+
+    /// The imbalance about the axis, body axes: static s = m ρ_C⊥ (kg·m; C's offset from the axis times the mass)
+    /// and dynamic d = I_A u − (u·I_A u) u (kg·m², the product of inertia about the axis). Both vanish for a
+    /// balanced rotor, whose bearings then carry no rotating load.
+    pub fn imbalance(&self) -> (Vector3<f64>, Vector3<f64>) {
+        let u_b = self.axis_b.into_inner();
+        let rho = self.rho_c_b;
+        let i_u = self.inertia_a_b * u_b;
+        (
+            (rho - u_b * rho.dot(&u_b)) * self.mass,
+            i_u - u_b * i_u.dot(&u_b),
+        )
+    }
+
     /// Whether C lies off the axis (then C moves on a circle and a force is required).
     pub fn center_off_axis(&self) -> bool {
         self.rho_c_b.cross(&self.axis_b).norm() > 1e-12 * self.rho_c_b.norm()
@@ -240,21 +259,21 @@ impl FixedAxis {
         let angle = self.angle(t);
         let q = self.attitude(angle.theta);
         let weight_moment_s = (q * self.rho_c_b).cross(&(self.g_s * self.mass));
-        self.sample_at(t, &angle, frame, &weight_moment_s)
+        self.sample_at(t, &angle, &q, frame, &weight_moment_s)
     }
 
     /// The kinetic state and the support's loads at time t and the angle `angle` (see [`Self::sample`] and
     /// [`crate::motion::support`]), where the effects apply the moment `m_eff_s` about A (space axes) and
-    /// gravity its weight at C.
+    /// gravity its weight at C; `q` is [`Self::attitude`] at `angle.theta`, which the caller has computed.
     pub fn sample_at(
         &self,
         t: f64,
         angle: &AxisAngle,
+        q: &UnitQuaternion<f64>,
         frame: Form,
         m_eff_s: &Vector3<f64>,
     ) -> Sample {
-        let angle = *angle;
-        let q = self.attitude(angle.theta);
+        let (angle, q) = (*angle, *q);
         let omega_b = self.omega_b(&angle);
         let h_b = self.h_b(&angle);
         let (m_b, m_s) = match frame {

@@ -35,8 +35,7 @@ impl Hinge {
     /// A hinge about `axis` (its rate and acceleration are not used), starting at θ = `theta0` (rad), θ̇ =
     /// `rate0` (rad/s), driven by `moments` (gravity's pivot the axis point).
     pub fn new(axis: FixedAxis, moments: EffectMoments, theta0: f64, rate0: f64) -> Self {
-        let u_b = axis.axis_b().into_inner();
-        let i_uu = u_b.dot(&(axis.inertia_a_b() * u_b));
+        let i_uu = axis.i_uu();
         Self {
             axis,
             i_uu,
@@ -99,7 +98,7 @@ impl Hinge {
             theta_dot,
             theta_ddot: self.axis.axis_b().dot(&m_eff_b) / self.i_uu,
         };
-        self.axis.sample_at(t, &angle, form, &(q * m_eff_b))
+        self.axis.sample_at(t, &angle, &q, form, &(q * m_eff_b))
     }
 }
 

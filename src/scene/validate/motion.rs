@@ -205,9 +205,7 @@ fn hinge_motion(
 ) -> Checked<Motion> {
     let key = KeyPath::root().key("motion").key("angle_deg");
     let theta0 = finite(key, m.angle_deg.unwrap_or(0.0), "degrees")?.to_radians();
-    let i_uu = axis
-        .axis_b()
-        .dot(&(axis.inertia_a_b() * axis.axis_b().into_inner()));
+    let i_uu = axis.i_uu();
     if i_uu.is_nan() || i_uu <= 0.0 {
         return invalid(
             KeyPath::root().key("motion").key("axis"),
