@@ -252,6 +252,16 @@ const POTENTIAL_COLUMNS: [Column; 2] = [
 ];
 
 impl ColumnSet {
+    /// Every optional column.
+    pub const ALL: ColumnSet = ColumnSet {
+        theta: true,
+        force: true,
+        h_s_integrated: true,
+        support: true,
+        bearings: true,
+        potential: true,
+    };
+
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
         let groups: [(bool, &[Column]); 6] = [

@@ -11,6 +11,7 @@ use clap::{Args, Parser, Subcommand};
 use crate::app::balance::{BalanceArgs, balance_command};
 use crate::app::progress::{self, Progress};
 use crate::app::report;
+use crate::app::sweep::{SweepArgs, SweepFailure, sweep_command};
 use crate::output::plot::{self, Panel, PlotError};
 use crate::output::{AtomicFile, CsvWriter, meta};
 use crate::sample::ColumnSet;
@@ -78,6 +79,12 @@ pub enum Command {
         after_help = "Example:\n  eulerdyn balance scenarios/rotor_bearings.toml --planes -0.1,0.1 --radius 0.2 -o balanced.toml"
     )]
     Balance(BalanceArgs),
+    /// Sweeps and Monte Carlo: many runs of a base scene with numeric keys set from grids or random draws, run in
+    /// parallel, one results row per run (largest loads, drifts, final omega, cost).
+    #[command(
+        after_help = "Examples:\n  eulerdyn sweep scenarios/sweeps/disk_bearing_map.toml -o map.csv\n  eulerdyn sweep scenarios/sweeps/tumble_monte_carlo.toml -o mc.csv --jobs 2\n  eulerdyn sweep SWEEP.toml -o part_3.csv --shard 3/8       one of 8 independent processes\n\nExit codes: 0 all runs ok, 1 some runs failed or were invalid (the table is complete), 2 a bad sweep file."
+    )]
+    Sweep(SweepArgs),
 }
 
 #[derive(Debug, Args)]
@@ -173,6 +180,7 @@ pub fn main() -> ExitCode {
         Command::Balance(args) => balance_command(&args)
             .map_err(Failure::Input)
             .and_then(|text| print_stdout(&text)),
+        Command::Sweep(args) => sweep(&args, quiet),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -184,6 +192,20 @@ pub fn main() -> ExitCode {
             eprintln!("error: {msg}");
             ExitCode::from(1)
         }
+    }
+}
+
+fn sweep(args: &SweepArgs, quiet: bool) -> Result<(), Failure> {
+    match sweep_command(args, quiet) {
+        Ok((account, true)) => {
+            if !quiet {
+                eprintln!("wrote {account}");
+            }
+            Ok(())
+        }
+        Ok((account, false)) => Err(Failure::Run(format!("not every run was ok: {account}"))),
+        Err(SweepFailure::Input(m)) => Err(Failure::Input(m)),
+        Err(SweepFailure::Run(m)) => Err(Failure::Run(m)),
     }
 }
 

@@ -49,8 +49,8 @@ pub fn load_spec(path: &Path) -> Result<SceneSpec, SceneError> {
     parse_spec(path, &read(path)?)
 }
 
-/// The text of a scene file.
-fn read(path: &Path) -> Result<String, SceneError> {
+/// The text of a scene file (or another TOML input file: the messages name it).
+pub(crate) fn read(path: &Path) -> Result<String, SceneError> {
     let error = |problem: String| SceneError {
         file: path.to_path_buf(),
         key: None,
@@ -98,7 +98,6 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
 
 /// Parses scene text into its typed value; errors name the key, line and column.
 pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
-    let map = SourceMap::new(text);
     if text.trim().is_empty() {
         return Err(SceneError {
             file: path.to_path_buf(),
@@ -109,7 +108,16 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
                     .into(),
         });
     }
-    toml::from_str(text).map_err(|e| toml_error(path, text, &map, &e))
+    parse_toml(path, text)
+}
+
+/// Parses TOML text into any typed value with the scene file's messages (file, key, line and column, in plain
+/// words); for input files that are not scenes, e.g. a sweep file.
+pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(
+    path: &Path,
+    text: &str,
+) -> Result<T, SceneError> {
+    toml::from_str(text).map_err(|e| toml_error(path, text, &SourceMap::new(text), &e))
 }
 
 /// The parser's or serde's error as a scene error: the key (for a wrong value) or the line (for broken syntax)

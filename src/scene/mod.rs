@@ -5,13 +5,16 @@ mod file;
 mod model;
 pub mod source_map;
 mod spec;
+mod template;
 mod validate;
 
 pub use file::{SceneError, flag_value, load, load_spec, parse, parse_spec};
+pub(crate) use file::{parse_toml, read};
 pub use model::{Motion, Scene, SolverConfig};
 pub use spec::{
     BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,
     MotionSpec, OutputSpec, PointMassSpec, ProfileKind, SceneSpec, ShapeKind, ShapeSpec,
     SolverSpec,
 };
+pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -7,7 +7,7 @@ use toml::de::{DeTable, DeValue};
 
 /// One step of a key path.
 #[derive(Debug, Clone, PartialEq, Eq)]
-enum Segment {
+pub(crate) enum Segment {
     Key(String),
     Index(usize),
 }
@@ -52,6 +52,32 @@ impl KeyPath {
     /// Whether this is the document root.
     pub fn is_root(&self) -> bool {
         self.segments.is_empty()
+    }
+
+    /// A dotted key as a sweep writes it: `motion.tilt_deg`, `initial.omega.2`, `effect.0.c` (a segment of digits
+    /// is an array index). `None` when a segment is empty.
+    ///
+    /// ```
+    /// use eulerdyn::scene::source_map::KeyPath;
+    /// assert_eq!(KeyPath::dotted("effect.0.c").unwrap().to_string(), "effect[0].c");
+    /// assert!(KeyPath::dotted("motion..rate").is_none());
+    /// ```
+    pub fn dotted(text: &str) -> Option<Self> {
+        text.split('.').try_fold(Self::root(), |path, segment| {
+            let segment = segment.trim();
+            if segment.is_empty() {
+                None
+            } else if segment.bytes().all(|b| b.is_ascii_digit()) {
+                segment.parse().ok().map(|i| path.index(i))
+            } else {
+                Some(path.key(segment))
+            }
+        })
+    }
+
+    /// The steps of the path, from the root.
+    pub(crate) fn segments(&self) -> &[Segment] {
+        &self.segments
     }
 
     /// Marks the value as given by a command-line flag instead of the file.
