@@ -26,7 +26,7 @@ use crate::simulate::{self, RunError, RunReport};
     version,
     about,
     long_about = None,
-    after_help = "Examples:\n  eulerdyn check scenarios/tilted_disk.toml              what will be simulated\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv    the CSV time series (and disk.csv.meta.json)\n  eulerdyn plot disk.csv -o disk.svg                     H in body and space axes, M, omega, energy, drift\n  eulerdyn compare scenarios/asymmetric_free.toml        both forms against the closed form\n  eulerdyn accuracy scenarios/asymmetric_free.toml -o t.csv --plot t.svg   what each digit of accuracy costs\n\nData goes to stdout, messages to stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input, 130 interrupted."
+    after_help = "Examples:\n  eulerdyn check scenarios/tilted_disk.toml              what will be simulated\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv    the CSV time series (and disk.csv.meta.json)\n  eulerdyn plot disk.csv -o disk.svg                     H in body and space axes, M, omega, energy, drift\n  eulerdyn compare scenarios/asymmetric_free.toml        both forms against the closed form\n  eulerdyn accuracy scenarios/asymmetric_free.toml -o t.csv --plot t.svg   what each digit of accuracy costs\n  eulerdyn sweep scenarios/sweeps/disk_bearing_map.toml -o map.csv   many runs, one row each\n\nData goes to stdout, messages to stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input, 130 interrupted."
 )]
 pub struct Cli {
     /// No progress bar and no messages on stderr except errors.
