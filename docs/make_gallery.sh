@@ -1,27 +1,31 @@
 #!/bin/sh
 # Makes the gallery of the README (docs/*.svg) with eulerdyn itself. Run from the repository root:
 #   sh docs/make_gallery.sh
-# The CSV files go to a temporary directory; only the figures are kept.
+# The CSV files go to a temporary directory; only the figures are kept. tests/gallery.rs runs this script with
+# EULERDYN (the binary), GALLERY_DIR (where the figures go) and GALLERY_FIGURES_ONLY=1 (no timed study) set, and
+# checks that it remakes the committed figures byte for byte.
 set -eu
-eulerdyn="cargo run --quiet --release --"
+eulerdyn=${EULERDYN:-"cargo run --quiet --release --"}
+out=${GALLERY_DIR:-docs}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # The tilted disk: H constant in body axes, turning about the spin axis in space axes.
 $eulerdyn run scenarios/tilted_disk.toml -o "$work/tilted_disk.csv"
-$eulerdyn plot "$work/tilted_disk.csv" -o docs/tilted_disk_h.svg --panels h_body,h_space
+$eulerdyn plot "$work/tilted_disk.csv" -o "$out/tilted_disk_h.svg" --panels h_body,h_space
 
 # The tennis-racket flip: omega in body and space axes, and the drift of |H| and energy.
 $eulerdyn run scenarios/tennis_racket.toml -o "$work/tennis_racket.csv"
-$eulerdyn plot "$work/tennis_racket.csv" -o docs/tennis_racket.svg --panels omega,drift
+$eulerdyn plot "$work/tennis_racket.csv" -o "$out/tennis_racket.svg" --panels omega,drift
 
 # The heavy top: H about the pivot precessing (with nutation) in space; kinetic energy traded with potential.
 $eulerdyn run scenarios/heavy_top.toml -o "$work/heavy_top.csv"
-$eulerdyn plot "$work/heavy_top.csv" -o docs/heavy_top.svg --panels h_space,energy
+$eulerdyn plot "$work/heavy_top.csv" -o "$out/heavy_top.svg" --panels h_space,energy
 
 # A motor runs the skewed disk up on its hinge: the rate rises to 10 rad/s, the bearings' couple with its square.
 $eulerdyn run scenarios/motor_runup.toml -o "$work/motor_runup.csv"
-$eulerdyn plot "$work/motor_runup.csv" -o docs/motor_runup_bearings.svg --panels omega,bearings
+$eulerdyn plot "$work/motor_runup.csv" -o "$out/motor_runup_bearings.svg" --panels omega,bearings
 
-# What accuracy costs: the work-precision study of the benchmark body (about 10 s).
+# What accuracy costs: the work-precision study of the benchmark body (about 10 s; its times differ run to run).
+[ -n "${GALLERY_FIGURES_ONLY:-}" ] && exit 0
 $eulerdyn accuracy scenarios/asymmetric_free.toml -o docs/work_precision.csv --plot docs/work_precision.svg

@@ -235,3 +235,148 @@ fn plot_and_compare_are_quiet_with_quiet() {
         out.stdout
     );
 }
+
+/// Asserts that `text` contains every one of `parts`.
+fn contains_all(text: &str, parts: &[&str]) {
+    for part in parts {
+        assert!(text.contains(part), "no {part:?} in\n{text}");
+    }
+}
+
+/// The sidecar of a run written to `csv`.
+fn sidecar_of(csv: &Path) -> serde_json::Value {
+    let text =
+        std::fs::read_to_string(format!("{}.meta.json", csv.display())).expect("the sidecar");
+    serde_json::from_str(&text).expect("the sidecar is JSON")
+}
+
+#[test]
+fn a_fixed_step_too_coarse_for_the_motion_is_reported_and_warned() {
+    // The heavy top spins at 150 rad/s; `--dt 0.05` is capped at the row spacing (every = 0.01 s), so each RK4
+    // step turns the body by 1.5 rad, and T + V, conserved by a top on a fixed pivot, drifts by about 8 %.
+    let dir = tempfile::tempdir().unwrap();
+    let coarse = dir.path().join("coarse.csv");
+    let out = eulerdyn([
+        "run",
+        &scenario("heavy_top"),
+        "--method",
+        "rk4",
+        "--dt",
+        "0.05",
+        "-o",
+        text(&coarse),
+    ]);
+    out.expect_code(0);
+    contains_all(
+        &out.stderr,
+        &[
+            "warning: a fixed step of 0.01 s turns the body by 1.5 rad",
+            "warning: the energy T + V",
+            "500 steps of 0.01 s",
+        ],
+    );
+    let meta = sidecar_of(&coarse);
+    assert_eq!(meta["solver"]["dt"], 0.05);
+    assert_eq!(meta["solver"]["step_used"], 0.01);
+    assert_eq!(meta["warnings"].as_array().map(Vec::len), Some(2), "{meta}");
+    let drift = meta["statistics"]["energy_drift"].as_f64().unwrap();
+    assert!(drift > 0.01, "energy drift {drift}");
+
+    // A step of 0.5 ms turns it by 0.075 rad: no warning, and the energy holds.
+    let fine = dir.path().join("fine.csv");
+    let out = eulerdyn([
+        "run",
+        &scenario("heavy_top"),
+        "--method",
+        "rk4",
+        "--dt",
+        "0.0005",
+        "-o",
+        text(&fine),
+    ]);
+    out.expect_code(0);
+    assert!(!out.stderr.contains("warning"), "{}", out.stderr);
+    let meta = sidecar_of(&fine);
+    assert_eq!(meta["warnings"].as_array().map(Vec::len), Some(0));
+    assert!(meta["statistics"]["energy_drift"].as_f64().unwrap() < 1e-3);
+
+    // `check` reports the step taken and warns before the run.
+    let scene = std::fs::read_to_string(scenario("heavy_top"))
+        .unwrap()
+        .replace("method = \"dop853\"", "method = \"rk4\"\ndt = 0.05");
+    let path = write_file(dir.path(), "rk4_top.toml", scene);
+    let out = eulerdyn(["check", text(&path)]);
+    out.expect_code(0);
+    contains_all(
+        &out.stdout,
+        &[
+            "fixed step dt = 0.05 s",
+            "steps of 0.01 s are taken",
+            "500 steps of 0.01 s",
+            "warning",
+        ],
+    );
+}
+
+#[test]
+fn no_bundled_scenario_is_warned_of_but_the_tennis_racket() {
+    for entry in std::fs::read_dir(repo_path("scenarios")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let out = eulerdyn(["check", text(&path)]);
+            out.expect_code(0);
+            // Only the tennis racket is warned of, by design: it starts near the separatrix.
+            let warnings: Vec<&str> = out
+                .stdout
+                .lines()
+                .filter(|l| l.starts_with("warning"))
+                .collect();
+            let expected = usize::from(path.ends_with("tennis_racket.toml"));
+            assert_eq!(
+                warnings.len(),
+                expected,
+                "{}:\n{}",
+                path.display(),
+                out.stdout
+            );
+        }
+    }
+}
+
+#[test]
+fn check_warns_of_values_that_look_like_unit_slips() {
+    let dir = tempfile::tempdir().unwrap();
+    let disk = std::fs::read_to_string(scenario("tilted_disk")).unwrap();
+    let cases = [
+        (
+            disk.replace("radius = 0.3 }", "radius = 300.0 }"),
+            "body.shape.radius = 300 m: a body over 100 m across; if millimetres were meant, write 0.3 m",
+        ),
+        (
+            disk.replace("tilt_deg = 30 ", "tilt_deg = 0.5 "),
+            "motion.tilt_deg = 0.5 is 0.5 degrees; if radians were meant, that is 28.6 degrees",
+        ),
+    ];
+    for (k, (scene_text, warning)) in cases.iter().enumerate() {
+        assert_ne!(scene_text, &disk, "case {k}: the scene was not changed");
+        let path = write_file(dir.path(), &format!("slip{k}.toml"), scene_text);
+        let out = eulerdyn(["check", path.to_str().unwrap()]);
+        out.expect_code(0);
+        assert!(out.stdout.contains(warning), "{}", out.stdout);
+    }
+    // The notes' disk as written: no warning.
+    let out = eulerdyn(["check", &scenario("tilted_disk")]);
+    assert!(!out.stdout.contains("warning"), "{}", out.stdout);
+}
+
+#[test]
+fn check_warns_of_an_initial_omega_near_the_separatrix() {
+    // The tennis racket: I = (1, 2, 3), ω0 = (0.001, 2, 0.001): H² − 2E·I₂ = 2e-6, 2E·(I₃ − I₁) = 16.000008, so
+    // δ = 1.25e-7 (Landau & Lifshitz §37: the separatrix is H² = 2E·I₂).
+    let out = eulerdyn(["check", &scenario("tennis_racket")]);
+    out.expect_code(0);
+    contains_all(&out.stdout, &["near the separatrix", "= 1.25e-7"]);
+    // The benchmark body, ω0 = (0.3, 0, 2): δ = (36.09 − 24.18)/(12.09·2) = 0.49, far from it.
+    let out = eulerdyn(["check", &scenario("asymmetric_free")]);
+    assert!(!out.stdout.contains("separatrix"), "{}", out.stdout);
+}

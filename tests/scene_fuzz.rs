@@ -21,7 +21,9 @@ fn cases() -> u32 {
 fn scenarios() -> Vec<String> {
     let mut out: Vec<String> = std::fs::read_dir("scenarios")
         .unwrap()
-        .map(|e| std::fs::read_to_string(e.unwrap().path()).unwrap())
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .map(|p| std::fs::read_to_string(p).unwrap())
         .collect();
     out.sort();
     out
@@ -29,7 +31,8 @@ fn scenarios() -> Vec<String> {
 
 /// Parses, validates and describes: the whole of `eulerdyn check` but the printing.
 fn check(text: &str) -> Result<String, SceneError> {
-    scene::parse(Path::new("fuzz.toml"), text, &Overrides::default()).map(|s| report::describe(&s))
+    scene::parse(Path::new("fuzz.toml"), text, &Overrides::default())
+        .map(|s| report::describe(&s, &[]))
 }
 
 fn assert_says_where(text: &str, result: &Result<String, SceneError>) {

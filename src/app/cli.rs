@@ -211,7 +211,9 @@ fn sweep(args: &SweepArgs, quiet: bool) -> Result<(), Failure> {
 
 fn check(path: &Path) -> Result<(), Failure> {
     let scene = scene::load(path, &Overrides::default())?;
-    print_stdout(&report::describe(&scene))
+    let spec = scene::load_spec(path)?;
+    let warnings = scene::advice::warnings(&spec, &scene);
+    print_stdout(&report::describe(&scene, &warnings))
 }
 
 /// Writes `text` to stdout. A closed pipe (`| head`) is not an error; any other failure (a full disk) is a failed
@@ -264,6 +266,9 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
         every: args.every,
     };
     let scene_model = scene::load(&args.scene, &overrides)?;
+    if let Some(coarse) = simulate::CoarseStep::of(&scene_model) {
+        eprintln!("{}: warning: {coarse}", args.scene.display());
+    }
     let columns = simulate::columns(&scene_model);
     let mut progress = Progress::bar(
         "run",
@@ -274,12 +279,30 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     );
     let output = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let Some(out_path) = output else {
-        return match write_csv(&scene_model, columns, io::stdout().lock(), &mut progress) {
+        return match write_csv(
+            &args.scene,
+            &scene_model,
+            columns,
+            io::stdout().lock(),
+            &mut progress,
+        ) {
             Ok(_) => Ok(()),
             Err(RunError::Sink(e)) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
             Err(e) => Err(run_failure(&args.scene, Path::new("stdout"), e)),
         };
     };
+    run_to_file(args, &scene_model, out_path, progress, quiet)
+}
+
+/// `run -o FILE`: the CSV and its sidecar written atomically (both synced, then renamed), then the "wrote …" line.
+fn run_to_file(
+    args: &RunArgs,
+    scene_model: &Scene,
+    out_path: &Path,
+    mut progress: Progress,
+    quiet: bool,
+) -> Result<(), Failure> {
+    let columns = simulate::columns(scene_model);
     let file_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", out_path.display());
     if same_file(&args.scene, out_path) {
         return Err(Failure::Input(format!(
@@ -293,20 +316,26 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
             .write(true)
             .open(out_path)
             .map_err(|e| Failure::Input(file_error("cannot open", e)))?;
-        write_csv(&scene_model, columns, file, &mut progress)
+        write_csv(&args.scene, scene_model, columns, file, &mut progress)
             .map_err(|e| run_failure(&args.scene, out_path, e))?;
         return Ok(());
     }
     let mut csv_file = AtomicFile::create(out_path)
         .map_err(|e| Failure::Input(file_error("cannot create the output file", e)))?;
-    let (report, _) = write_csv(&scene_model, columns, csv_file.file(), &mut progress)
-        .map_err(|e| run_failure(&args.scene, out_path, e))?;
+    let (report, _) = write_csv(
+        &args.scene,
+        scene_model,
+        columns,
+        csv_file.file(),
+        &mut progress,
+    )
+    .map_err(|e| run_failure(&args.scene, out_path, e))?;
     progress.finish();
     let scene_text = std::fs::read_to_string(&args.scene).unwrap_or_default();
     let sidecar = meta::sidecar(
         &args.scene.display().to_string(),
         &scene_text,
-        &scene_model,
+        scene_model,
         &report,
         &columns.columns(),
     );
@@ -329,8 +358,9 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     if quiet {
         return Ok(());
     }
+    let step = simulate::fixed_step(scene_model).map_or(String::new(), |h| format!(" of {h} s"));
     eprintln!(
-        "wrote {} rows to {} ({} steps, {} rejected, {} right-hand-side evaluations, {:.3} s)",
+        "wrote {} rows to {} ({} steps{step}, {} rejected, {} right-hand-side evaluations, {:.3} s)",
         report.rows,
         out_path.display(),
         report.stats.steps,
@@ -344,6 +374,7 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
 /// Runs the scene, streaming its rows as CSV into `out` and its time into `progress`; returns the report and the
 /// flushed writer.
 fn write_csv<W: Write>(
+    scene_path: &Path,
     scene: &Scene,
     columns: ColumnSet,
     out: W,
@@ -355,6 +386,9 @@ fn write_csv<W: Write>(
         writer.write(s)
     })?;
     let out = writer.finish().map_err(RunError::Sink)?;
+    if let Some(drift) = simulate::drift_warning(report.energy_drift) {
+        eprintln!("{}: warning: {drift}", scene_path.display());
+    }
     Ok((report, out))
 }
 

@@ -194,8 +194,9 @@ fn effect_text(e: &Effect) -> String {
 }
 
 /// A multi-line description of the scene: body, principal moments and axes, motion and moment center, the state
-/// at t = 0, effects, method and tolerances, rows and an estimate of the steps.
-pub fn describe(scene: &Scene) -> String {
+/// at t = 0, effects, method and tolerances, rows and an estimate of the steps; then `warnings` and a fixed step
+/// too coarse for the motion ([`simulate::CoarseStep`]), one `warning` line each.
+pub fn describe(scene: &Scene, warnings: &[String]) -> String {
     let mut out = String::new();
     let w = &mut out;
     scene_lines(w, scene);
@@ -214,6 +215,10 @@ pub fn describe(scene: &Scene) -> String {
     let steps = method_lines(w, scene);
     output_lines(w, scene);
     line(w, "estimate", &steps);
+    let coarse = simulate::CoarseStep::of(scene).map(|c| c.to_string());
+    for warning in warnings.iter().chain(&coarse) {
+        line(w, "warning", warning);
+    }
     out
 }
 
@@ -529,8 +534,23 @@ fn method_lines(w: &mut String, scene: &Scene) -> String {
                 plain(s.dt)
             ),
         );
-        let steps = (s.t_end / s.dt).ceil().max(intervals as f64);
-        format!("{} steps of dt (t_end / dt)", plain(steps))
+        let h = simulate::fixed_step(scene).unwrap_or(s.dt);
+        if h < s.dt {
+            line(
+                w,
+                "",
+                &format!(
+                    "steps of {} s are taken: each row interval in equal steps of at most dt",
+                    plain(h)
+                ),
+            );
+        }
+        let steps = (s.t_end / h).round().max(intervals as f64);
+        if h < s.dt {
+            format!("{} steps of {} s", plain(steps), plain(h))
+        } else {
+            format!("{} steps of dt (t_end / dt)", plain(steps))
+        }
     } else if let Some(estimate) = adaptive_steps_estimate(scene, rate) {
         line(
             w,

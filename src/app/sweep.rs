@@ -28,7 +28,7 @@ pub struct SweepArgs {
     /// Run only the runs with run % N == K - 1 (1 <= K <= N), for N processes that split a sweep.
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
-    /// Also write each run's time series, DIR/run_<run>.csv (the directory is created).
+    /// Also write each run's time series, DIR/run_N.csv for run N (the directory is created).
     #[arg(long, value_name = "DIR")]
     pub series: Option<PathBuf>,
 }
@@ -177,7 +177,7 @@ fn refuse_inputs(sweep: &Sweep, out: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// Writes one run's rows as DIR/run_<run>.csv, atomically.
+/// Writes one run's rows as `DIR/run_<run>.csv`, atomically.
 fn write_series(dir: &Path, run: u64, columns: ColumnSet, rows: &[Sample]) -> Result<(), String> {
     let path = dir.join(format!("run_{run:06}.csv"));
     let fail = |e: io::Error| format!("{}: {e}", path.display());

@@ -112,6 +112,29 @@ impl Schedule {
         }
     }
 
+    /// The largest step a fixed-step driver takes when asked for steps of `dt`: each row interval Δ is cut into
+    /// n = ⌈Δ/dt⌉ equal steps Δ/n (see [`super::run_fixed_step`]), so the step is at most min(dt, every).
+    ///
+    /// ```
+    /// use eulerdyn::integrate::Schedule;
+    /// let schedule = Schedule::new(0.01, 5.0).unwrap();
+    /// assert_eq!(schedule.largest_fixed_step(0.05), 0.01); // capped at the row spacing
+    /// assert_eq!(schedule.largest_fixed_step(0.004), 0.01 / 3.0);
+    /// ```
+    pub fn largest_fixed_step(&self, dt: f64) -> f64 {
+        let step = |delta: f64| delta / super::rk4_substeps(delta, dt) as f64;
+        let rows = self.len();
+        if rows < 2 {
+            return 0.0;
+        }
+        let last = self.t_end - self.time(rows - 2);
+        if rows > 2 {
+            step(self.every).max(step(last))
+        } else {
+            step(last)
+        }
+    }
+
     /// Iterator over the row times, in increasing order.
     pub fn iter(&self) -> ScheduleIter {
         ScheduleIter {

@@ -45,6 +45,11 @@ impl Hinge {
         }
     }
 
+    /// The initial rate θ̇(0) (rad/s).
+    pub fn rate0(&self) -> f64 {
+        self.rate0
+    }
+
     /// The axis geometry.
     pub fn axis(&self) -> &FixedAxis {
         &self.axis

@@ -4,7 +4,7 @@
 use serde_json::{Value, json};
 
 use crate::scene::{Motion, Scene};
-use crate::simulate::RunReport;
+use crate::simulate::{self, RunReport};
 
 use crate::sample::Column;
 
@@ -40,6 +40,7 @@ pub fn sidecar(
             "atol": s.atol,
             "dt": s.dt,
             "fixed_step": s.method.is_fixed_step(),
+            "step_used": simulate::fixed_step(scene),
             "t_end": s.t_end,
             "every": scene.schedule.every(),
         },
@@ -49,7 +50,9 @@ pub fn sidecar(
             "rhs_evaluations": report.stats.evals,
             "rows": report.rows,
             "wall_seconds": report.wall_seconds,
+            "energy_drift": report.energy_drift,
         },
+        "warnings": simulate::warnings(scene, report.energy_drift),
         "columns": columns.iter().map(|c| json!({"name": c.name, "unit": c.unit, "meaning": c.meaning})).collect::<Vec<_>>(),
     })
 }

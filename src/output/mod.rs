@@ -4,6 +4,7 @@ pub mod atomic;
 pub mod csv_writer;
 pub mod meta;
 pub mod plot;
+mod ticks;
 pub mod work_precision;
 
 pub use atomic::AtomicFile;

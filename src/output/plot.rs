@@ -23,6 +23,8 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::ticks::LinearTicks;
+
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
 /// legend says so.
 pub const DRIFT_FLOOR: f64 = 1e-17;
@@ -787,38 +789,6 @@ pub(crate) fn decade_label(v: f64) -> String {
     }
 }
 
-/// Tick labels for a linear axis spanning [lo, hi]: as many decimals as the tick spacing may need (trailing
-/// zeros dropped), scientific notation for very large or small values, and an exact "0".
-fn tick_label(v: f64, lo: f64, hi: f64) -> String {
-    // Ticks are at least a hundredth of the span apart.
-    let resolution = ((hi - lo) / 100.0).abs().max(f64::MIN_POSITIVE);
-    if v.abs() < resolution * 1e-3 {
-        return "0".into();
-    }
-    let resolution_exp = resolution.log10().floor() as i32;
-    let magnitude = v.abs().log10().floor() as i32;
-    if magnitude >= 5 || magnitude <= -4 {
-        let digits = (magnitude - resolution_exp).clamp(0, 12) as usize;
-        let text = format!("{v:.digits$e}");
-        match text.split_once('e') {
-            Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa)),
-            None => text,
-        }
-    } else {
-        let decimals = (-resolution_exp).clamp(0, 15) as usize;
-        trim_zeros(&format!("{v:.decimals$}")).to_string()
-    }
-}
-
-/// "2.50" -> "2.5", "3.000" -> "3"; integers unchanged.
-fn trim_zeros(number: &str) -> &str {
-    if number.contains('.') {
-        number.trim_end_matches('0').trim_end_matches('.')
-    } else {
-        number
-    }
-}
-
 /// A region of an SVG figure.
 pub(crate) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
@@ -897,13 +867,20 @@ fn draw_panel(area: &Area<'_>, run: &RunSeries, plot: &PanelPlot) -> DrawResult 
         let (lo, hi) = y_extent(curves).unwrap_or((-1.0, 1.0));
         linear_range(lo, hi)
     };
-    let x_fmt = move |v: &f64| tick_label(*v, t0, t1);
-    let y_fmt = move |v: &f64| {
+    let x_ticks = LinearTicks::new(t0, t1);
+    let y_ticks = LinearTicks::new(lo, hi);
+    let x_fmt = |v: &f64| x_ticks.label(*v);
+    let y_fmt = |v: &f64| {
         if plot.log {
             decade_label(*v)
         } else {
-            tick_label(*v, lo, hi)
+            y_ticks.label(*v)
         }
+    };
+    let y_desc = if plot.log {
+        plot.y_label.clone()
+    } else {
+        y_ticks.title(&plot.y_label)
     };
     let mut chart = ChartBuilder::on(&chart_area)
         .caption(&plot.title, (FONT, 18).into_font())
@@ -913,8 +890,8 @@ fn draw_panel(area: &Area<'_>, run: &RunSeries, plot: &PanelPlot) -> DrawResult 
         .y_label_area_size(80)
         .build_cartesian_2d(t0..t1, lo..hi)?;
     let mut mesh = chart.configure_mesh();
-    mesh.x_desc("t (s)")
-        .y_desc(plot.y_label.as_str())
+    mesh.x_desc(x_ticks.title("t (s)"))
+        .y_desc(y_desc)
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
         .bold_line_style(BLACK.mix(0.15))
@@ -1072,17 +1049,6 @@ mod tests {
             "{e}"
         );
         assert!(Panel::parse_list("h_body,").is_err());
-    }
-
-    #[test]
-    fn tick_labels_use_the_digits_the_spacing_needs() {
-        assert_eq!(tick_label(0.5, 0.0, 1.0), "0.5");
-        assert_eq!(tick_label(3.95, 3.7, 4.2), "3.95");
-        assert_eq!(tick_label(1e-18, -1.0, 1.0), "0");
-        assert_eq!(tick_label(2.5e-6, 0.0, 1e-5), "2.5e-6");
-        assert_eq!(tick_label(30.0, 0.0, 60.0), "30");
-        assert_eq!(tick_label(-0.3000000000000001, -1.0, 1.0), "-0.3");
-        assert_eq!(tick_label(2e5, 0.0, 1e6), "2e5");
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! Scenes: a scene as a typed value ([`SceneSpec`], built in code or read from TOML by [`load`] and [`parse`]),
 //! its validation ([`SceneSpec::build`]) and the validated [`Scene`] a run needs.
 
+pub mod advice;
 mod file;
 mod model;
 pub mod source_map;

@@ -79,6 +79,10 @@ fn set_number(table: &mut Table, key: &KeyPath, value: f64) -> Result<(), String
         let so_far = || prefix(key, i + 1);
         here = match (here, segment) {
             (Here::Table(t), Segment::Key(name)) => {
+                let next = key.segments().get(i + 1);
+                if !t.contains_key(name) && matches!(next, Some(Segment::Index(_))) {
+                    return Err(out_of_range(&so_far(), 0));
+                }
                 let entry = t
                     .entry(name.clone())
                     .or_insert_with(|| Value::Table(Table::new()));

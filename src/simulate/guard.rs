@@ -86,7 +86,7 @@ impl std::error::Error for Divergence {}
 enum Accuracy {
     /// Adaptive: rtol + atol / (scale of the state).
     Tolerance(f64),
-    /// Fixed step dt of order p: (Ω dt)^p.
+    /// Fixed step h of order p: (Ω h)^p, h the step taken ([`super::fixed_step`]).
     Step { dt: f64, order: i32 },
     /// The closed form: round-off.
     RoundOff,
@@ -156,7 +156,7 @@ impl DivergenceGuard {
                 Accuracy::Tolerance(s.rtol + s.atol / scale)
             }
             Method::Rk4 | Method::Split2 | Method::Split4 => Accuracy::Step {
-                dt: s.dt,
+                dt: super::fixed_step(scene).unwrap_or(s.dt),
                 order: s.method.order().map_or(1, |p| p as i32),
             },
             Method::Exact => Accuracy::RoundOff,

@@ -20,8 +20,13 @@ use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme}
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::{Motion, Scene};
 
+mod advice;
 mod guard;
 
+pub use advice::{
+    CoarseStep, EnergyWatch, MAX_ENERGY_DRIFT, MAX_TURN_PER_STEP, drift_warning, fixed_step,
+    warnings,
+};
 pub use guard::{Divergence, DivergenceGuard, GuardedQuantity};
 
 /// What a finished run did.
@@ -34,6 +39,8 @@ pub struct RunReport {
     pub rows: u64,
     /// Wall time of the run (s).
     pub wall_seconds: f64,
+    /// The largest relative drift of the energy T + V where the scene conserves it ([`EnergyWatch`]).
+    pub energy_drift: Option<f64>,
 }
 
 /// Why a run stopped early.
@@ -154,18 +161,20 @@ pub fn run<E: std::error::Error + 'static>(
     let guard = DivergenceGuard::new(scene);
     let mut rows = 0u64;
     let with_potential = scene.gravity_potential(&scene.attitude0).is_some();
+    let mut watch = EnergyWatch::of(scene);
     let deliver = |s: &Sample| -> Result<(), Stop<E>> {
         if let Some(guard) = &guard {
             guard.check(s).map_err(Stop::Diverged)?;
         }
         rows += 1;
+        let mut s = *s;
         if with_potential {
-            let mut s = *s;
             s.potential = scene.gravity_potential(&s.q);
-            sink(&s).map_err(Stop::Sink)
-        } else {
-            sink(s).map_err(Stop::Sink)
         }
+        if let Some(watch) = &mut watch {
+            watch.add(&s);
+        }
+        sink(&s).map_err(Stop::Sink)
     };
     let stats = match &scene.motion {
         Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),
@@ -184,6 +193,7 @@ pub fn run<E: std::error::Error + 'static>(
         stats,
         rows,
         wall_seconds: start.elapsed().as_secs_f64(),
+        energy_drift: watch.map(|w| w.drift()),
     })
 }
 

@@ -102,6 +102,9 @@ impl Axis {
     /// `normal = { mean, sd }`: sd ≥ 0.
     pub fn normal(mean: f64, sd: f64) -> Result<Self, String> {
         let (mean, sd) = (finite("mean", mean)?, finite("sd", sd)?);
+        if sd < 0.0 {
+            return Err(format!("sd must be ≥ 0, got {sd}"));
+        }
         Normal::new(mean, sd)
             .map(Self::Normal)
             .map_err(|_| format!("sd must be ≥ 0, got {sd}"))
