@@ -4,6 +4,8 @@ pub mod atomic;
 pub mod csv_writer;
 pub mod meta;
 pub mod plot;
+pub mod run_csv;
+pub mod view;
 pub mod work_precision;
 
 pub use atomic::AtomicFile;
