@@ -159,10 +159,12 @@ fn body_json(spec: &SceneSpec, reference_o: &Vector3<f64>, notes: &mut Vec<Strin
     })
 }
 
-/// A shape from the scene file, with its center.
+/// A shape from the scene file (`kind`: its `type`, and its dimensions), with its center.
 fn shape_json(shape: &ShapeSpec, center: Value) -> Value {
     let mut value = serde_json::to_value(shape).unwrap_or_else(|_| json!({}));
     if let Value::Object(map) = &mut value {
+        let kind = map.remove("type").unwrap_or(Value::Null);
+        map.insert("kind".into(), kind);
         map.insert("center".into(), center);
     }
     value
