@@ -69,9 +69,9 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
 
   const camera = new THREE.PerspectiveCamera(40, 1, size / 100, size * 100);
   camera.up.set(0, 0, 1);
-  camera.position.set(3.3 * size, -2.8 * size, 2.4 * size);
+  camera.position.set(4.3 * size, -3.6 * size, 2.6 * size);
   const controls = new OrbitControls(camera, canvas);
-  controls.target.set(0, 0, 0.45 * size);
+  controls.target.set(0, 0, 0.6 * size);
   controls.update();
 
   document.getElementById('show-trail').addEventListener('change', (e) => {
