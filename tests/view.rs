@@ -308,3 +308,26 @@ fn a_body_given_by_inertia_is_the_box_of_equal_moments_and_a_free_run_has_the_po
     assert!((size[2] - 0.02 * 24f64.sqrt()).abs() < 1e-12, "{size:?}");
     assert_eq!(g["inertia_p"], serde_json::json!([1.0, 2.0, 3.0]));
 }
+
+#[test]
+fn a_csv_on_stdin_is_shown_without_a_sidecar() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let csv = run(dir.path(), "scenarios/tilted_disk.toml", "disk");
+    let out = dir.path().join("stdin.html");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_eulerdyn"))
+        .args([
+            "view".as_ref(),
+            "-".as_ref(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ])
+        .stdin(std::fs::File::open(&csv).expect("the CSV"))
+        .output()
+        .expect("runs");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("came from stdin"), "{stderr}");
+    let data = page_data(&std::fs::read_to_string(&out).expect("page"));
+    assert_eq!(data["rows_in_run"], 101);
+    assert_eq!(data["geometry"]["body"]["kind"], "unknown");
+}

@@ -281,6 +281,10 @@ function makePolhode(THREE, api, geometry) {
   camera.position.set(2.6 * reach, -3.4 * reach, 2.2 * reach);
   camera.lookAt(0, 0, 0);
   const frame = document.getElementById('polhode-frame');
+  if ((geometry.effects || []).length > 0) {
+    frame.querySelector('.caption').textContent += '; with ' + geometry.effects.join(', ') +
+      ' acting T changes, and the ellipsoid is the first row\'s';
+  }
   const toggle = document.getElementById('show-polhode');
   document.getElementById('polhode-toggle').hidden = false;
   frame.hidden = false;

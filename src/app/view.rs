@@ -40,12 +40,12 @@ fn messages(summary: &ViewSummary, out: &std::path::Path) -> Vec<String> {
         .iter()
         .map(|n| format!("warning: {n}"))
         .collect();
-    let rows = if summary.rows_drawn as u64 == summary.rows_in_run {
+    let rows = if summary.stride == 1 {
         format!("{} rows", summary.rows_in_run)
     } else {
         format!(
-            "{} of {} rows, decimated: every row whose index is a multiple of a power of two, and the last",
-            summary.rows_drawn, summary.rows_in_run
+            "{} of {} rows: every {}th from the first, and the last",
+            summary.rows_drawn, summary.rows_in_run, summary.stride
         )
     };
     lines.push(format!(

@@ -41,11 +41,15 @@ pub fn read_geometry(sidecar: &Path) -> Geometry {
             ));
         }
     };
-    match geometry_of_sidecar(&text) {
+    read_geometry_text(&sidecar.display().to_string(), &text)
+}
+
+/// The geometry of the sidecar document `text`, read from the file named `name`.
+fn read_geometry_text(name: &str, text: &str) -> Geometry {
+    match geometry_of_sidecar(text) {
         Ok(geometry) => geometry,
         Err(problem) => Geometry::unknown(format!(
-            "{}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode",
-            sidecar.display()
+            "{name}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode"
         )),
     }
 }
@@ -118,6 +122,7 @@ fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
             "name": scene.name,
             "description": scene.description,
             "motion": motion,
+            "effects": scene.effects.iter().map(|e| e.kind()).collect::<Vec<_>>(),
             "body": body,
             "point_masses": point_masses,
             "mass_center": vec3(&rho_c_b),
@@ -208,6 +213,63 @@ mod tests {
         for k in 0..3 {
             assert!((back[k] - moments[k]).abs() < 1e-12, "{back:?}");
         }
+    }
+
+    /// A sidecar document whose scene is `scene_text`.
+    fn sidecar(scene_text: &str) -> String {
+        json!({ "scene": { "path": "s.toml", "motion": "free", "text": scene_text } }).to_string()
+    }
+
+    #[test]
+    fn positions_are_from_the_moment_center_the_pivot_here() {
+        // The heavy top: the pivot 0.05 m below C on the symmetry axis, so C is 0.05 m above O.
+        let text = "[body]\nmass = 0.5\nshape = { type = \"cylinder\", radius = 0.04, height = 0.02 }\n\
+                    [initial]\nomega = [0.0, 0.0, 150.0]\n[[effect]]\ntype = \"gravity\"\ng = [0.0, 0.0, -9.81]\n\
+                    pivot = [0.0, 0.0, -0.05]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        assert_eq!(g.json["body"]["kind"], "cylinder");
+        assert_eq!(g.json["body"]["height"], 0.02);
+        assert_eq!(g.json["body"]["center"], json!([0.0, 0.0, 0.05]));
+        assert_eq!(g.json["mass_center"], json!([0.0, 0.0, 0.05]));
+        assert_eq!(g.json["effects"], json!(["gravity"]));
+        // The inertia about the pivot: I_C + m d² about x and y (parallel-axis theorem).
+        let i_xx = 0.5 * (3.0 * 0.04f64.powi(2) + 0.02f64.powi(2)) / 12.0 + 0.5 * 0.05f64.powi(2);
+        let moments = g.json["inertia_p"].as_array().expect("moments");
+        assert!((moments[0].as_f64().expect("I1") - i_xx).abs() < 1e-15);
+        assert!(g.notes.is_empty());
+    }
+
+    #[test]
+    fn point_masses_are_placed_from_the_moment_center() {
+        // A 1 kg sphere with 1 kg at x = 0.2 m from its center: C is at x = 0.1, and O = C for free motion.
+        let text = "[body]\nmass = 1.0\nshape = { type = \"sphere\", radius = 0.1 }\n\
+                    [[body.point_mass]]\nmass = 1.0\nat = [0.2, 0.0, 0.0]\n\
+                    [initial]\nomega = [0.0, 0.0, 1.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        let close = |v: &Value, want: [f64; 3]| {
+            (0..3).all(|k| (v[k].as_f64().expect("a number") - want[k]).abs() < 1e-15)
+        };
+        assert!(
+            close(&g.json["body"]["center"], [-0.1, 0.0, 0.0]),
+            "{}",
+            g.json
+        );
+        assert!(
+            close(&g.json["point_masses"][0]["at"], [0.1, 0.0, 0.0]),
+            "{}",
+            g.json
+        );
+    }
+
+    #[test]
+    fn a_sidecar_whose_scene_is_invalid_is_named_with_the_key() {
+        let g = read_geometry_text("x.meta.json", &sidecar("[body]\nmass = -1.0\n"));
+        assert_eq!(g.json["body"]["kind"], "unknown");
+        assert!(
+            g.notes[0].contains("x.meta.json: the sidecar's scene"),
+            "{:?}",
+            g.notes
+        );
     }
 
     #[test]

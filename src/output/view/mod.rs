@@ -115,6 +115,8 @@ pub struct ViewSummary {
     pub rows_in_run: u64,
     /// Rows the page carries.
     pub rows_drawn: usize,
+    /// The decimation's stride: every `stride`th row is kept (and the last); 1 when all are.
+    pub stride: u64,
     /// Bytes written.
     pub bytes: usize,
     /// What could not be drawn, in words (from [`Geometry::notes`]).
@@ -138,6 +140,7 @@ pub fn view_file(csv: &Path, out: &Path) -> Result<ViewSummary, ViewError> {
     Ok(ViewSummary {
         rows_in_run: run.rows.rows_in_run,
         rows_drawn: run.rows.len(),
+        stride: run.rows.stride,
         bytes: html.len(),
         notes: run.geometry.notes,
     })
