@@ -1,4 +1,4 @@
-//! The command line: `run`, `check`, `compare`, `plot`. Data goes to stdout, messages (and the progress bar) to
+//! The command line: `run`, `check`, `compare`, `plot`, `view`, …. Data goes to stdout, messages (and the progress bar) to
 //! stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input.
 
 use std::fs::File;
@@ -12,7 +12,9 @@ use crate::app::balance::{BalanceArgs, balance_command};
 use crate::app::progress::{self, Progress};
 use crate::app::report;
 use crate::app::sweep::{SweepArgs, SweepFailure, sweep_command};
+use crate::app::view::{ViewArgs, view_command};
 use crate::output::plot::{self, Panel, PlotError};
+use crate::output::view::ViewError;
 use crate::output::{AtomicFile, CsvWriter, meta};
 use crate::sample::ColumnSet;
 use crate::scene::Scene;
@@ -85,6 +87,12 @@ pub enum Command {
         after_help = "Examples:\n  eulerdyn sweep scenarios/sweeps/disk_bearing_map.toml -o map.csv\n  eulerdyn sweep scenarios/sweeps/tumble_monte_carlo.toml -o mc.csv --jobs 2\n  eulerdyn sweep SWEEP.toml -o part_3.csv --shard 3/8       one of 8 independent processes\n\nExit codes: 0 all runs ok, 1 some runs failed or were invalid (the table is complete), 2 a bad sweep file."
     )]
     Sweep(SweepArgs),
+    /// Show a run in 3D: one self-contained HTML page (no network request) with the body, its axes, ω, H and M,
+    /// the trail of H, play/pause, a time slider and speed control.
+    #[command(
+        after_help = "Example:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn view disk.csv -o disk.html     then open disk.html in a browser\n\nThe body's shape comes from the sidecar disk.csv.meta.json; without it the body is drawn as a cube.\nRuns of more than 10000 rows are decimated for the page (the page and the README say which rows are kept)."
+    )]
+    View(ViewArgs),
 }
 
 #[derive(Debug, Args)]
@@ -181,6 +189,7 @@ pub fn main() -> ExitCode {
             .map_err(Failure::Input)
             .and_then(|text| print_stdout(&text)),
         Command::Sweep(args) => sweep(&args, quiet),
+        Command::View(args) => view(&args, quiet),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -193,6 +202,20 @@ pub fn main() -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// `eulerdyn view`: writes the page; warnings and what was written on stderr unless `quiet`.
+fn view(args: &ViewArgs, quiet: bool) -> Result<(), Failure> {
+    let lines = view_command(args).map_err(|e| match e {
+        ViewError::Input { .. } => Failure::Input(e.to_string()),
+        ViewError::Output { .. } => Failure::Run(e.to_string()),
+    })?;
+    if !quiet {
+        for line in lines {
+            eprintln!("{line}");
+        }
+    }
+    Ok(())
 }
 
 fn sweep(args: &SweepArgs, quiet: bool) -> Result<(), Failure> {

@@ -8,3 +8,4 @@ pub mod interrupt;
 pub mod progress;
 pub mod report;
 pub mod sweep;
+pub mod view;

@@ -4,7 +4,9 @@ pub mod atomic;
 pub mod csv_writer;
 pub mod meta;
 pub mod plot;
+pub mod run_csv;
 mod ticks;
+pub mod view;
 pub mod work_precision;
 
 pub use atomic::AtomicFile;

@@ -23,6 +23,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::run_csv::{CsvInputError, RunCsvReader, sidecar_path};
 use super::ticks::LinearTicks;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
@@ -165,6 +166,15 @@ pub enum PlotError {
     /// The figure could not be drawn or written.
     #[error("{}: {problem}", file.display())]
     Output { file: PathBuf, problem: String },
+}
+
+impl From<CsvInputError> for PlotError {
+    fn from(e: CsvInputError) -> Self {
+        PlotError::Input {
+            file: e.file,
+            problem: e.problem,
+        }
+    }
 }
 
 impl PlotError {
@@ -349,22 +359,12 @@ impl RunSeries {
 
 /// Reads the CSV file `path` (or stdin when `path` is `-`) for `panels`.
 pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
-    let mut series = if path.as_os_str() == "-" {
-        read_run_from(Path::new("stdin"), std::io::stdin().lock(), panels)?
-    } else {
-        if path.is_dir() {
-            return Err(PlotError::input(
-                path,
-                "is a directory; give the CSV file written by `eulerdyn run`",
-            ));
-        }
-        let file = std::fs::File::open(path)
-            .map_err(|e| PlotError::input(path, format!("cannot read the file: {e}")))?;
-        read_run_from(path, file, panels)?
-    };
-    if path.as_os_str() != "-" {
-        series.subtitle = sidecar_subtitle(path);
+    if path.as_os_str() == "-" {
+        let reader = RunCsvReader::new(Path::new("stdin"), std::io::stdin().lock())?;
+        return read_rows(reader, panels);
     }
+    let mut series = read_rows(RunCsvReader::open(path)?, panels)?;
+    series.subtitle = sidecar_subtitle(path);
     Ok(series)
 }
 
@@ -374,55 +374,32 @@ pub fn read_run_from(
     reader: impl Read,
     panels: &[Panel],
 ) -> Result<RunSeries, PlotError> {
-    let mut csv = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .trim(csv::Trim::All)
-        .from_reader(reader);
-    let header = read_header(file, &mut csv)?;
+    read_rows(RunCsvReader::new(file, reader)?, panels)
+}
+
+/// Reads the data rows of `csv` (its header read) into the curves of `panels`.
+fn read_rows(mut csv: RunCsvReader<impl Read>, panels: &[Panel]) -> Result<RunSeries, PlotError> {
+    let file = csv.file().to_path_buf();
     let wanted = wanted_columns(panels);
-    let index = column_indices(file, &header, &wanted, panels)?;
-    let mut series = RunSeries::new(file, &wanted, panels);
+    let index = column_indices(&csv, &wanted, panels)?;
+    let mut series = RunSeries::new(&file, &wanted, panels);
     let drift_index: Vec<usize> = series
         .drifts
         .iter()
         .map(|d| wanted.iter().position(|&w| w == d.column).unwrap_or(0))
         .collect();
-    let mut record = csv::ByteRecord::new();
     let mut values = vec![0.0; wanted.len()];
-    loop {
-        match csv.read_byte_record(&mut record) {
-            Ok(false) => break,
-            Ok(true) => {}
-            Err(e) => return Err(PlotError::input(file, csv_problem(&e))),
-        }
+    while csv.next_row(&index, &wanted, &mut values)? {
         series.rows += 1;
-        parse_row(file, &record, series.rows, &index, &wanted, &mut values)?;
         series.push(&values, &drift_index);
     }
     if series.rows == 0 {
         return Err(PlotError::input(
-            file,
+            &file,
             "the file has a header but no data rows; nothing to plot",
         ));
     }
     Ok(series)
-}
-
-/// The header's column names; an empty file is refused.
-fn read_header(file: &Path, csv: &mut csv::Reader<impl Read>) -> Result<Vec<String>, PlotError> {
-    let header: Vec<String> = csv
-        .byte_headers()
-        .map_err(|e| PlotError::input(file, csv_problem(&e)))?
-        .iter()
-        .map(|name| String::from_utf8_lossy(name).into_owned())
-        .collect();
-    if header.is_empty() || header.iter().all(String::is_empty) {
-        return Err(PlotError::input(
-            file,
-            "the file is empty; expected a CSV written by `eulerdyn run` (header `t,q_w,q_x,...`, then one row per time)",
-        ));
-    }
-    Ok(header)
 }
 
 /// The columns to read: t, then those of every panel, each once.
@@ -438,17 +415,16 @@ fn wanted_columns(panels: &[Panel]) -> Vec<&'static str> {
     wanted
 }
 
-/// The index in `header` of each wanted column; a missing column is refused with the panels that need it.
+/// The index in the header of each wanted column; a missing column is refused with the panels that need it.
 fn column_indices(
-    file: &Path,
-    header: &[String],
+    csv: &RunCsvReader<impl Read>,
     wanted: &[&'static str],
     panels: &[Panel],
 ) -> Result<Vec<usize>, PlotError> {
     let mut missing: Vec<(&str, Vec<&str>)> = Vec::new();
     let mut index = Vec::with_capacity(wanted.len());
     for &name in wanted {
-        match header.iter().position(|h| h == name) {
+        match csv.index_of(name) {
             Some(i) => index.push(i),
             None => {
                 let users: Vec<&str> = if name == "t" {
@@ -471,17 +447,14 @@ fn column_indices(
         .iter()
         .map(|(name, users)| format!("`{name}` (needed by {})", users.join(", ")))
         .collect();
-    let mut shown = header.join(",");
-    if shown.chars().count() > 120 {
-        shown = shown.chars().take(117).collect::<String>() + "...";
-    }
-    let hint = if header.len() == 1 && (shown.contains(';') || shown.contains('\t')) {
+    let shown = csv.header_shown();
+    let hint = if csv.header().len() == 1 && (shown.contains(';') || shown.contains('\t')) {
         " (the columns must be separated by commas)"
     } else {
         ""
     };
     Err(PlotError::input(
-        file,
+        csv.file(),
         format!(
             "no column {}; is it a CSV written by `eulerdyn run`? Its header is: {shown}{hint}. Choose other panels with --panels ({})",
             list.join(", "),
@@ -490,58 +463,9 @@ fn column_indices(
     ))
 }
 
-/// Parses the wanted cells of data row `row` into `values`; a cell that is not a finite number is refused.
-fn parse_row(
-    file: &Path,
-    record: &csv::ByteRecord,
-    row: u64,
-    index: &[usize],
-    wanted: &[&str],
-    values: &mut [f64],
-) -> Result<(), PlotError> {
-    let line = record.position().map_or(row + 1, |p| p.line());
-    for (k, (&i, &name)) in index.iter().zip(wanted).enumerate() {
-        let cell = record.get(i).unwrap_or_default();
-        let text = String::from_utf8_lossy(cell);
-        let value = text.parse::<f64>().ok().filter(|v| v.is_finite());
-        values[k] = value.ok_or_else(|| {
-            let what = if text.is_empty() {
-                "is empty".to_string()
-            } else if text.parse::<f64>().is_ok() {
-                format!("`{text}` is not a finite number")
-            } else {
-                format!("`{text}` is not a number")
-            };
-            PlotError::input(
-                file,
-                format!("row {row} (line {line}), column `{name}`: {what}"),
-            )
-        })?;
-    }
-    Ok(())
-}
-
-/// A CSV reader error in words, with its line.
-fn csv_problem(e: &csv::Error) -> String {
-    let line = e
-        .position()
-        .map(|p| format!("line {}: ", p.line()))
-        .unwrap_or_default();
-    match e.kind() {
-        csv::ErrorKind::UnequalLengths {
-            expected_len, len, ..
-        } => format!(
-            "{line}the row has {len} fields but the header has {expected_len}; every row of a run's CSV has one value per column"
-        ),
-        csv::ErrorKind::Io(io) => format!("cannot read the file: {io}"),
-        _ => format!("{line}not a valid CSV file: {e}"),
-    }
-}
-
 /// "scene tilted-disk, dop853 (space form)" from `FILE.meta.json`, if the run left one next to the CSV.
 fn sidecar_subtitle(csv: &Path) -> Option<String> {
-    let meta = PathBuf::from(format!("{}.meta.json", csv.display()));
-    let text = std::fs::read_to_string(meta).ok()?;
+    let text = std::fs::read_to_string(sidecar_path(csv)).ok()?;
     let doc: serde_json::Value = serde_json::from_str(&text).ok()?;
     let name = doc.pointer("/scene/name")?.as_str()?;
     let method = doc.pointer("/solver/method")?.as_str()?;

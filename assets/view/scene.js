@@ -1,0 +1,308 @@
+// eulerdyn view: the 3D scene. Space axes are three.js world axes with z up; the moment center O is the origin.
+// The body group turns by the run's attitude q (body -> space) and holds the body's shape, point masses and body
+// axes, all placed in body axes from O. Vectors are drawn in space axes from O (bearing forces from the bearings).
+'use strict';
+
+window.eulerdynScene = function (THREE, OrbitControls, api) {
+  const geometry = api.geometry;
+  const canvas = document.getElementById('scene');
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(window.devicePixelRatio || 1);
+  renderer.setClearColor(0xf4f5f7, 1);
+  renderer.autoClear = false;
+  const scene = new THREE.Scene();
+  scene.add(new THREE.AmbientLight(0xffffff, 1.2));
+  const sun = new THREE.DirectionalLight(0xffffff, 2.0);
+  sun.position.set(3, -2, 5);
+  scene.add(sun);
+
+  const v3 = (a) => new THREE.Vector3(a[0], a[1], a[2]);
+  const quat = (q) => new THREE.Quaternion(q[1], q[2], q[3], q[0]);
+
+  const body = new THREE.Group();
+  scene.add(body);
+  const shape = makeShape(THREE, geometry);
+  body.add(shape);
+  const bodyRadius = Math.max(1e-6, new THREE.Box3().setFromObject(shape).getBoundingSphere(new THREE.Sphere()).radius +
+    v3(geometry.body.center || [0, 0, 0]).length());
+  for (const p of geometry.point_masses || []) {
+    const ball = new THREE.Mesh(new THREE.SphereGeometry(0.07 * bodyRadius, 20, 12),
+      new THREE.MeshStandardMaterial({ color: 0x333844, roughness: 0.4 }));
+    ball.position.copy(v3(p.at));
+    body.add(ball);
+  }
+  const bodyBox = new THREE.Box3().setFromObject(body);
+  const size = Math.max(bodyBox.getBoundingSphere(new THREE.Sphere()).radius + bodyBox.getCenter(new THREE.Vector3()).length(), 1e-6);
+
+  // Body axes at C, turning with the body; space axes at O.
+  const c = v3(geometry.mass_center || [0, 0, 0]);
+  body.add(axesLines(THREE, 1.3 * size, c, 0.7, ['x_b', 'y_b', 'z_b']));
+  scene.add(axesLines(THREE, 2.1 * size, new THREE.Vector3(), 1.0, ['x_s', 'y_s', 'z_s']));
+
+  const q0 = quat(api.rows[0].q);
+  const bearings = addAxisAndBearings(THREE, scene, geometry, q0, size);
+
+  // One arrow per vector; each kind scaled so that its longest value over the run is 1.8 body sizes long.
+  const arrows = {};
+  const longest = {};
+  for (const name of api.vectors) {
+    const look = window.eulerdynVectors[name];
+    if (!look) continue;
+    let max = 0;
+    for (const row of api.rows) max = Math.max(max, Math.hypot(...row[name]));
+    longest[look.kind] = Math.max(longest[look.kind] || 0, max);
+    const arrow = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, look.color);
+    arrow.line.material.linewidth = 2;
+    if (name === 'R_A_s' && bearings) arrow.position.copy(bearings[0]);
+    if (name === 'R_B_s' && bearings) arrow.position.copy(bearings[1]);
+    scene.add(arrow);
+    arrows[name] = arrow;
+  }
+  const scaleOf = (name) => {
+    const max = longest[window.eulerdynVectors[name].kind];
+    return max > 0 ? (1.8 * size) / max : 0;
+  };
+
+  const trail = makeTrail(THREE, api, scaleOf);
+  if (trail) scene.add(trail);
+  const polhode = makePolhode(THREE, api, geometry);
+
+  const camera = new THREE.PerspectiveCamera(40, 1, size / 100, size * 100);
+  camera.up.set(0, 0, 1);
+  camera.position.set(4.3 * size, -3.6 * size, 2.6 * size);
+  const controls = new OrbitControls(camera, canvas);
+  controls.target.set(0, 0, 0.6 * size);
+  controls.update();
+
+  document.getElementById('show-trail').addEventListener('change', (e) => {
+    if (trail) trail.visible = e.target.checked;
+    draw();
+  });
+
+  let state = api.state();
+  function draw() {
+    const width = canvas.clientWidth;
+    const height = canvas.clientHeight;
+    if (canvas.width !== Math.floor(width * renderer.getPixelRatio()) ||
+        canvas.height !== Math.floor(height * renderer.getPixelRatio())) {
+      renderer.setSize(width, height, false);
+      camera.aspect = width / Math.max(1, height);
+      camera.updateProjectionMatrix();
+    }
+    body.quaternion.copy(quat(state.q));
+    for (const name of Object.keys(arrows)) setArrow(arrows[name], v3(state[name]).multiplyScalar(scaleOf(name)), size);
+    if (trail) trail.geometry.setDrawRange(0, trailCount(api, state.t));
+    renderer.setViewport(0, 0, width, height);
+    renderer.setScissorTest(false);
+    renderer.clear();
+    renderer.render(scene, camera);
+    if (polhode) polhode.draw(renderer, state, width, height);
+    api.drawn = true;
+  }
+  api.onTime((s) => { state = s; draw(); });
+  controls.addEventListener('change', draw);
+  window.addEventListener('resize', draw);
+  api.redraw = draw;
+  draw();
+};
+
+/** The body's shape in body axes from O (a group): its mesh, edges and a marker on its +x side. */
+function makeShape(THREE, geometry) {
+  const b = geometry.body || { kind: 'unknown' };
+  let g;
+  let marker;
+  switch (b.kind) {
+    case 'thin_disk':
+    case 'disk':
+    case 'cylinder': {
+      const r = b.radius;
+      const h = b.kind === 'thin_disk' ? r / 25 : b.kind === 'disk' ? b.thickness : b.height;
+      g = new THREE.CylinderGeometry(r, r, h, 64).rotateX(Math.PI / 2);
+      marker = new THREE.BoxGeometry(r, r / 12, h * 1.06 + r / 200).translate(r / 2, 0, 0);
+      break;
+    }
+    case 'thin_rod': {
+      const l = b.length;
+      g = new THREE.CylinderGeometry(l / 60, l / 60, l, 24).rotateZ(Math.PI / 2);
+      marker = new THREE.SphereGeometry(l / 35, 16, 8).translate(l / 2, 0, 0);
+      break;
+    }
+    case 'sphere': {
+      g = new THREE.SphereGeometry(b.radius, 48, 24);
+      marker = new THREE.TorusGeometry(b.radius * 1.005, b.radius / 40, 8, 64).rotateX(Math.PI / 2);
+      break;
+    }
+    case 'box':
+    case 'inertia_box': {
+      const s = b.size;
+      g = new THREE.BoxGeometry(s[0], s[1], s[2]);
+      marker = new THREE.BoxGeometry(s[0] * 0.02 + 1e-6, s[1] * 0.6, s[2] * 0.6).translate(s[0] / 2, 0, 0);
+      break;
+    }
+    default:
+      g = new THREE.BoxGeometry(1, 1, 1);
+      marker = new THREE.BoxGeometry(0.02, 0.6, 0.6).translate(0.5, 0, 0);
+  }
+  const group = new THREE.Group();
+  // Translucent, so that the vectors drawn from O inside the body stay visible.
+  const material = new THREE.MeshStandardMaterial({ color: 0x7d93b8, roughness: 0.55, metalness: 0.1,
+    transparent: true, opacity: b.kind === 'unknown' ? 0.45 : 0.72, depthWrite: false });
+  group.add(new THREE.Mesh(g, material));
+  group.add(new THREE.LineSegments(new THREE.EdgesGeometry(g, 25), new THREE.LineBasicMaterial({ color: 0x40506e })));
+  group.add(new THREE.Mesh(marker, new THREE.MeshStandardMaterial({ color: 0xf0c419, roughness: 0.5 })));
+  if (b.kind === 'inertia_box' && b.axes_b) {
+    const [e1, e2, e3] = b.axes_b.map((a) => new THREE.Vector3(a[0], a[1], a[2]));
+    group.quaternion.setFromRotationMatrix(new THREE.Matrix4().makeBasis(e1, e2, e3));
+  }
+  if (b.center) group.position.set(b.center[0], b.center[1], b.center[2]);
+  return group;
+}
+
+/** Three axis lines from `origin`, of `length`, coloured x red, y green, z blue (lighter by `strength` < 1), with
+ * labels. */
+function axesLines(THREE, length, origin, strength, labels) {
+  const group = new THREE.Group();
+  const colors = [0xdd3333, 0x22aa22, 0x3366cc];
+  for (let k = 0; k < 3; k++) {
+    const dir = new THREE.Vector3();
+    dir.setComponent(k, length);
+    const color = new THREE.Color(colors[k]).lerp(new THREE.Color(0xffffff), 1 - strength);
+    const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([origin.clone(), origin.clone().add(dir)]),
+      new THREE.LineBasicMaterial({ color }));
+    group.add(line);
+    const label = textSprite(THREE, labels[k], '#' + color.getHexString(), length * 0.09);
+    label.position.copy(origin.clone().add(dir.multiplyScalar(1.07)));
+    group.add(label);
+  }
+  return group;
+}
+
+/** A text label facing the camera, `height` tall, drawn on a canvas (no font file). */
+function textSprite(THREE, text, color, height) {
+  const canvas = document.createElement('canvas');
+  canvas.width = 128;
+  canvas.height = 64;
+  const ctx = canvas.getContext('2d');
+  ctx.font = 'bold 40px sans-serif';
+  ctx.fillStyle = color;
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  ctx.fillText(text, 64, 32);
+  const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: new THREE.CanvasTexture(canvas), depthTest: false }));
+  sprite.scale.set(height * 2, height, 1);
+  return sprite;
+}
+
+/** The fixed axis (a line through O, fixed in space) and the bearings (rings on it); returns the bearings'
+ * positions in space, or null. */
+function addAxisAndBearings(THREE, scene, geometry, q0, size) {
+  if (!geometry.axis_b) return null;
+  const u = new THREE.Vector3(...geometry.axis_b).applyQuaternion(q0).normalize();
+  const reach = Math.max(2 * size, ...(geometry.bearings || []).map((a) => 1.3 * Math.abs(a)));
+  const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([u.clone().multiplyScalar(-reach), u.clone().multiplyScalar(reach)]),
+    new THREE.LineDashedMaterial({ color: 0x222222, dashSize: size / 10, gapSize: size / 20 }));
+  line.computeLineDistances();
+  scene.add(line);
+  if (!geometry.bearings) return null;
+  const along = new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 0, 1), u);
+  return geometry.bearings.map((a, k) => {
+    const at = u.clone().multiplyScalar(a);
+    const ring = new THREE.Mesh(new THREE.TorusGeometry(size * 0.12, size * 0.035, 12, 40),
+      new THREE.MeshStandardMaterial({ color: 0x555a66, roughness: 0.35, metalness: 0.5 }));
+    ring.quaternion.copy(along);
+    ring.position.copy(at);
+    scene.add(ring);
+    const label = textSprite(THREE, k === 0 ? 'A' : 'B', '#333844', size * 0.12);
+    label.position.copy(at.clone().add(new THREE.Vector3(0, 0, size * 0.22)));
+    scene.add(label);
+    return at;
+  });
+}
+
+/** Points `v` (space axes, already scaled) from the arrow's origin; hidden when v is 0. */
+function setArrow(arrow, v, size) {
+  const length = v.length();
+  arrow.visible = length > 1e-12 * size;
+  if (!arrow.visible) return;
+  arrow.setDirection(v.clone().divideScalar(length));
+  const head = Math.min(0.25 * length, 0.12 * size);
+  arrow.setLength(length, head, 0.5 * head);
+}
+
+/** The trail of H's tip in space over the kept rows, drawn up to the current time. */
+function makeTrail(THREE, api, scaleOf) {
+  if (!api.vectors.includes('H_s')) return null;
+  const scale = scaleOf('H_s');
+  const points = new Float32Array(api.rows.length * 3);
+  api.rows.forEach((row, k) => {
+    for (let i = 0; i < 3; i++) points[3 * k + i] = row.H_s[i] * scale;
+  });
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(points, 3));
+  return new THREE.Line(g, new THREE.LineBasicMaterial({ color: 0xd0309a, transparent: true, opacity: 0.55 }));
+}
+
+/** The number of kept rows at or before t, at least 1. */
+function trailCount(api, t) {
+  let lo = 0;
+  let hi = api.rows.length;
+  while (lo < hi) {
+    const mid = (lo + hi) >> 1;
+    if (api.rows[mid].t <= t) lo = mid + 1; else hi = mid;
+  }
+  return Math.max(1, lo);
+}
+
+/** For free motion with a known inertia: the polhode inset — ω in principal axes on the energy ellipsoid
+ * ω·I·ω = 2T of the first row — drawn into the lower right corner; null otherwise. */
+function makePolhode(THREE, api, geometry) {
+  if (geometry.motion !== 'free' || !geometry.inertia_p || !api.vectors.includes('omega_b')) return null;
+  const inertia = geometry.inertia_p;
+  const axes = geometry.axes_p_b;
+  const toPrincipal = (w) => axes.map((a) => a[0] * w[0] + a[1] * w[1] + a[2] * w[2]);
+  const path = api.rows.map((r) => toPrincipal(r.omega_b));
+  const twoT = path[0].reduce((sum, w, i) => sum + inertia[i] * w * w, 0);
+  if (!(twoT > 0) || inertia.some((i) => !(i > 0))) return null;
+  const semi = inertia.map((i) => Math.sqrt(twoT / i));
+  const reach = Math.max(...semi);
+  const scene = new THREE.Scene();
+  const ellipsoid = new THREE.Mesh(new THREE.SphereGeometry(1, 36, 18),
+    new THREE.MeshBasicMaterial({ color: 0x8fa3c4, wireframe: true, transparent: true, opacity: 0.35 }));
+  ellipsoid.scale.set(semi[0], semi[1], semi[2]);
+  scene.add(ellipsoid);
+  const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(path.map((w) => new THREE.Vector3(...w))),
+    new THREE.LineBasicMaterial({ color: 0xe8a000 }));
+  scene.add(line);
+  const dot = new THREE.Mesh(new THREE.SphereGeometry(reach * 0.05, 16, 8), new THREE.MeshBasicMaterial({ color: 0xc0392b }));
+  scene.add(dot);
+  scene.add(axesLines(THREE, reach * 1.3, new THREE.Vector3(), 1.0, ['1', '2', '3']));
+  const camera = new THREE.PerspectiveCamera(35, 1, reach / 100, reach * 100);
+  camera.up.set(0, 0, 1);
+  camera.position.set(2.6 * reach, -3.4 * reach, 2.2 * reach);
+  camera.lookAt(0, 0, 0);
+  const frame = document.getElementById('polhode-frame');
+  if ((geometry.effects || []).length > 0) {
+    frame.querySelector('.caption').textContent += '; with ' + geometry.effects.join(', ') +
+      ' acting T changes, and the ellipsoid is the first row\'s';
+  }
+  const toggle = document.getElementById('show-polhode');
+  document.getElementById('polhode-toggle').hidden = false;
+  frame.hidden = false;
+  toggle.addEventListener('change', () => { frame.hidden = !toggle.checked; api.redraw(); });
+  return {
+    draw(renderer, state, width, height) {
+      if (!toggle.checked) return;
+      dot.position.copy(new THREE.Vector3(...toPrincipal(state.omega_b)));
+      const side = Math.floor(Math.min(240, width / 3, height / 2));
+      frame.style.width = frame.style.height = side + 'px';
+      renderer.setScissorTest(true);
+      renderer.setScissor(width - side - 8, 8, side, side);
+      renderer.setViewport(width - side - 8, 8, side, side);
+      renderer.setClearColor(0xffffff, 1);
+      renderer.clear();
+      renderer.render(scene, camera);
+      renderer.setClearColor(0xf4f5f7, 1);
+      renderer.setScissorTest(false);
+    },
+  };
+}

@@ -1,0 +1,141 @@
+// eulerdyn view: the run's rows, the state between them, the clock and the controls. No three.js here: this part
+// works (and window.eulerdyn answers) even where WebGL does not.
+'use strict';
+(function () {
+  const data = JSON.parse(document.getElementById('eulerdyn-data').textContent);
+  const columns = data.columns;
+  const table = data.rows;
+  const geometry = data.geometry || {};
+
+  /** Indices of the columns `prefix_x, prefix_y, prefix_z` (or of the names given), or null if absent. */
+  function indices(names) {
+    const ix = names.map((n) => columns.indexOf(n));
+    return ix.every((i) => i >= 0) ? ix : null;
+  }
+  const xyz = (p) => indices([p + '_x', p + '_y', p + '_z']);
+  const vectorIndex = {
+    omega_s: xyz('omega_s'),
+    omega_b: xyz('omega_b'),
+    H_s: xyz('H_s'),
+    M_s: xyz('M_s'),
+    R_A_s: xyz('R_A_s'),
+    R_B_s: xyz('R_B_s'),
+  };
+  const qIndex = indices(['q_w', 'q_x', 'q_y', 'q_z']);
+  const vectorNames = Object.keys(vectorIndex).filter((k) => vectorIndex[k] !== null);
+
+  /** The state of kept row k: its values exactly as embedded. */
+  function rowState(k) {
+    const row = table[k];
+    const s = { t: row[0], q: qIndex.map((i) => row[i]) };
+    for (const name of vectorNames) s[name] = vectorIndex[name].map((i) => row[i]);
+    return s;
+  }
+
+  /** The largest k with t_k <= t (0 when t is before the first row). */
+  function locate(t) {
+    let lo = 0;
+    let hi = table.length - 1;
+    if (t >= table[hi][0]) return hi;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (table[mid][0] <= t) lo = mid; else hi = mid;
+    }
+    return lo;
+  }
+
+  /** a + s (b − a), componentwise. */
+  function lerp(a, b, s) {
+    return a.map((x, i) => x + s * (b[i] - x));
+  }
+
+  /** The attitude a fraction s of the way from qa to qb along the shorter great arc (slerp). */
+  function slerp(qa, qb, s) {
+    let dot = qa[0] * qb[0] + qa[1] * qb[1] + qa[2] * qb[2] + qa[3] * qb[3];
+    const b = dot < 0 ? qb.map((x) => -x) : qb;
+    dot = Math.abs(dot);
+    if (dot > 0.9999999) {
+      const q = lerp(qa, b, s);
+      const n = Math.hypot(q[0], q[1], q[2], q[3]);
+      return q.map((x) => x / n);
+    }
+    const theta = Math.acos(Math.min(1, dot));
+    const wa = Math.sin((1 - s) * theta) / Math.sin(theta);
+    const wb = Math.sin(s * theta) / Math.sin(theta);
+    return qa.map((x, i) => wa * x + wb * b[i]);
+  }
+
+  const t0 = table[0][0];
+  const tEnd = table[table.length - 1][0];
+
+  /** The state at time t (clamped to the run): a kept row's values exactly at its time, else interpolated —
+   * the attitude by slerp, the vectors linearly. */
+  function stateAt(t) {
+    const tc = Math.min(Math.max(t, t0), tEnd);
+    const k = locate(tc);
+    if (table[k][0] === tc || k === table.length - 1) return rowState(k);
+    const a = rowState(k);
+    const b = rowState(k + 1);
+    const s = (tc - a.t) / (b.t - a.t);
+    const out = { t: tc, q: slerp(a.q, b.q, s) };
+    for (const name of vectorNames) out[name] = lerp(a[name], b[name], s);
+    return out;
+  }
+
+  // The clock: the time shown, playing or not, and the speed (simulated seconds per wall-clock second).
+  const clock = { t: t0, playing: false, speed: 1, last: null };
+  const listeners = [];
+  let current = stateAt(t0);
+
+  function show() {
+    current = stateAt(clock.t);
+    for (const f of listeners) f(current, clock.t);
+  }
+
+  /** Jumps to time t and pauses. */
+  function setTime(t) {
+    clock.playing = false;
+    clock.t = Math.min(Math.max(Number(t), t0), tEnd);
+    show();
+  }
+
+  const api = {
+    rows: table.map((_, k) => rowState(k)),
+    t_end: tEnd,
+    t_start: t0,
+    rows_in_run: data.rows_in_run,
+    stride: data.stride,
+    rows_note: data.rows_note,
+    columns: columns,
+    geometry: geometry,
+    notes: data.notes,
+    vectors: vectorNames,
+    drawn: false,
+    setTime: setTime,
+    state: () => current,
+    stateAt: stateAt,
+    onTime: (f) => { listeners.push(f); f(current, clock.t); },
+    play: () => { if (clock.t >= tEnd) clock.t = t0; clock.playing = true; clock.last = null; show(); },
+    pause: () => { clock.playing = false; show(); },
+    clock: clock,
+  };
+  window.eulerdyn = api;
+
+  // Playback: advance the clock by the wall-clock time since the last frame times the speed.
+  function frame(now) {
+    if (clock.playing) {
+      if (clock.last !== null) {
+        clock.t = Math.min(tEnd, clock.t + ((now - clock.last) / 1000) * clock.speed);
+        if (clock.t >= tEnd) clock.playing = false;
+        show();
+      }
+      clock.last = now;
+    } else {
+      clock.last = null;
+    }
+    requestAnimationFrame(frame);
+  }
+  requestAnimationFrame(frame);
+
+  window.eulerdynControls(api, data);
+})();

@@ -1,0 +1,281 @@
+//! What the page draws besides the rows: the body's shape, its point masses, the fixed axis and the bearings, the
+//! inertia for the polhode — all read from the run's sidecar (`RUN.csv.meta.json`), whose `scene.text` is the scene
+//! file the run was made from. Without a usable sidecar the page draws what the CSV allows, and says what is missing.
+//!
+//! Every position is given in body axes from the moment center O (C, the gravity pivot, or the fixed axis's
+//! point), which the page puts at the origin of space.
+
+use std::path::Path;
+
+use nalgebra::{Matrix3, Vector3};
+use serde_json::{Value, json};
+
+use crate::body::Principal;
+use crate::scene::{self, Motion, Overrides, SceneSpec, ShapeSpec};
+
+/// The page's picture of the body and its supports, and notes on what could not be drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Geometry {
+    /// The JSON object the page's script reads (`body`, `point_masses`, `axis_b`, `bearings`, `inertia_p`, …).
+    pub json: Value,
+    /// What is missing or approximate, in words (printed on stderr and shown in the page).
+    pub notes: Vec<String>,
+}
+
+/// The geometry of the run whose sidecar is `sidecar`: the sidecar's scene, or, when the sidecar is missing or
+/// unusable, an unknown body with a note saying why.
+pub fn read_geometry(sidecar: &Path) -> Geometry {
+    let text = match std::fs::read_to_string(sidecar) {
+        Ok(text) => text,
+        Err(e) => {
+            let why = if e.kind() == std::io::ErrorKind::NotFound {
+                "there is no sidecar".to_string()
+            } else {
+                format!("the sidecar cannot be read ({e})")
+            };
+            return Geometry::unknown(format!(
+                "{why} {}: the body's shape, inertia and supports are unknown, so the body is drawn as a unit \
+                 cube (not to scale), with no fixed axis, bearings or polhode; the vectors and the attitude are \
+                 the CSV's",
+                sidecar.display()
+            ));
+        }
+    };
+    read_geometry_text(&sidecar.display().to_string(), &text)
+}
+
+/// The geometry of the sidecar document `text`, read from the file named `name`.
+fn read_geometry_text(name: &str, text: &str) -> Geometry {
+    match geometry_of_sidecar(text) {
+        Ok(geometry) => geometry,
+        Err(problem) => Geometry::unknown(format!(
+            "{name}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode"
+        )),
+    }
+}
+
+impl Geometry {
+    /// An unknown body (drawn as a unit cube), with `note` saying why.
+    pub fn unknown(note: String) -> Geometry {
+        Geometry {
+            json: json!({ "source": "csv", "body": { "kind": "unknown" }, "point_masses": [] }),
+            notes: vec![note],
+        }
+    }
+}
+
+/// The geometry from the sidecar document `text`.
+fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
+    let doc: Value =
+        serde_json::from_str(text).map_err(|e| format!("the sidecar is not valid JSON ({e})"))?;
+    let scene_text = doc
+        .pointer("/scene/text")
+        .and_then(Value::as_str)
+        .ok_or("the sidecar has no scene text (`scene.text`)")?;
+    let scene_path = doc
+        .pointer("/scene/path")
+        .and_then(Value::as_str)
+        .unwrap_or("scene");
+    let path = Path::new(scene_path);
+    let spec = scene::parse_spec(path, scene_text)
+        .map_err(|e| format!("the sidecar's scene cannot be read ({e})"))?;
+    let scene = spec.build_with(&Overrides::default()).map_err(|e| {
+        format!(
+            "the sidecar's scene is not valid ({}: {})",
+            e.key, e.problem
+        )
+    })?;
+    let (rho_c_b, inertia_o_b, axis) = match &scene.motion {
+        Motion::Free { body, .. } => (*body.rho_c_b(), *body.inertia_b(), None),
+        Motion::FixedAxis(fixed) => (*fixed.rho_c_b(), *fixed.inertia_a_b(), Some(fixed)),
+        Motion::Hinge(hinge) => (
+            *hinge.axis().rho_c_b(),
+            *hinge.axis().inertia_a_b(),
+            Some(hinge.axis()),
+        ),
+    };
+    // The reference origin (shape center) from O: from C it is −center_b, and C is at ρ_C from O.
+    let reference_o = rho_c_b - scene.center_b;
+    let mut notes = Vec::new();
+    let body = body_json(&spec, &reference_o, &mut notes);
+    let point_masses: Vec<Value> = spec
+        .body
+        .point_mass
+        .iter()
+        .map(|p| {
+            let at = Vector3::from(p.at.unwrap_or_default()) + reference_o;
+            json!({ "mass": p.mass, "at": vec3(&at) })
+        })
+        .collect();
+    let principal = Principal::of(&inertia_o_b);
+    let motion = doc.pointer("/scene/motion").and_then(Value::as_str);
+    let units: serde_json::Map<String, Value> = doc
+        .pointer("/columns")
+        .and_then(Value::as_array)
+        .into_iter()
+        .flatten()
+        .filter_map(|c| Some((c.get("name")?.as_str()?.to_string(), c.get("unit")?.clone())))
+        .collect();
+    Ok(Geometry {
+        json: json!({
+            "source": "sidecar",
+            "name": scene.name,
+            "description": scene.description,
+            "motion": motion,
+            "effects": scene.effects.iter().map(|e| e.kind()).collect::<Vec<_>>(),
+            "body": body,
+            "point_masses": point_masses,
+            "mass_center": vec3(&rho_c_b),
+            "axis_b": axis.map(|a| vec3(a.axis_b())),
+            "bearings": axis.and_then(|a| a.bearings()).map(|b| [b.a, b.b]),
+            "inertia_p": vec3(&principal.moments),
+            "axes_p_b": columns(principal.axes_b.matrix()),
+            "units": units,
+        }),
+        notes,
+    })
+}
+
+/// The body's shape as the page draws it: its kind, dimensions (m) and center (the reference origin, from O);
+/// a body given by its inertia is the box of equal principal moments, turned to its principal axes.
+fn body_json(spec: &SceneSpec, reference_o: &Vector3<f64>, notes: &mut Vec<String>) -> Value {
+    let center = vec3(reference_o);
+    if let Some(shape) = &spec.body.shape {
+        return shape_json(shape, json!(center));
+    }
+    let mass = spec.body.mass;
+    let inertia = match spec.body.inertia {
+        Some(scene::InertiaSpec::Principal(m)) => Matrix3::from_diagonal(&Vector3::from(m)),
+        Some(scene::InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
+        None => Matrix3::identity() * mass,
+    };
+    let principal = Principal::of(&inertia);
+    let size = equal_moment_box(mass, &principal.moments);
+    notes.push(format!(
+        "the body is given by its inertia only: drawn as the uniform box of the same mass and principal moments \
+         ({:.4} x {:.4} x {:.4} m along its principal axes)",
+        size[0], size[1], size[2]
+    ));
+    json!({
+        "kind": "inertia_box",
+        "size": size,
+        "center": center,
+        "axes_b": columns(principal.axes_b.matrix()),
+    })
+}
+
+/// A shape from the scene file (`kind`: its `type`, and its dimensions), with its center.
+fn shape_json(shape: &ShapeSpec, center: Value) -> Value {
+    let mut value = serde_json::to_value(shape).unwrap_or_else(|_| json!({}));
+    if let Value::Object(map) = &mut value {
+        let kind = map.remove("type").unwrap_or(Value::Null);
+        map.insert("kind".into(), kind);
+        map.insert("center".into(), center);
+    }
+    value
+}
+
+/// The edges (a, b, c) of the uniform box of mass `m` whose principal moments are `moments`:
+/// I₁ = m(b² + c²)/12 and cyclically, so a² = 6(I₂ + I₃ − I₁)/m. An edge the moments make zero or negative (a
+/// flat or thin body) is drawn at 2 % of the longest.
+pub fn equal_moment_box(m: f64, moments: &Vector3<f64>) -> [f64; 3] {
+    let [i1, i2, i3] = [moments[0], moments[1], moments[2]];
+    let squares = [i2 + i3 - i1, i1 + i3 - i2, i1 + i2 - i3].map(|s| 6.0 * s / m);
+    let edges = squares.map(|s| s.max(0.0).sqrt());
+    let longest = edges.iter().cloned().fold(0.0, f64::max).max(1e-9);
+    edges.map(|e| e.max(0.02 * longest))
+}
+
+/// `[x, y, z]`.
+fn vec3(v: &Vector3<f64>) -> [f64; 3] {
+    [v[0], v[1], v[2]]
+}
+
+/// The columns of `m`, each `[x, y, z]`.
+fn columns(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
+    [0, 1, 2].map(|j| [m[(0, j)], m[(1, j)], m[(2, j)]])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_equal_moment_box_has_the_given_principal_moments() {
+        let m = 2.0;
+        let moments = Vector3::new(1.0, 2.0, 2.5);
+        let [a, b, c] = equal_moment_box(m, &moments);
+        let back = [
+            m * (b * b + c * c) / 12.0,
+            m * (a * a + c * c) / 12.0,
+            m * (a * a + b * b) / 12.0,
+        ];
+        for k in 0..3 {
+            assert!((back[k] - moments[k]).abs() < 1e-12, "{back:?}");
+        }
+    }
+
+    /// A sidecar document whose scene is `scene_text`.
+    fn sidecar(scene_text: &str) -> String {
+        json!({ "scene": { "path": "s.toml", "motion": "free", "text": scene_text } }).to_string()
+    }
+
+    #[test]
+    fn positions_are_from_the_moment_center_the_pivot_here() {
+        // The heavy top: the pivot 0.05 m below C on the symmetry axis, so C is 0.05 m above O.
+        let text = "[body]\nmass = 0.5\nshape = { type = \"cylinder\", radius = 0.04, height = 0.02 }\n\
+                    [initial]\nomega = [0.0, 0.0, 150.0]\n[[effect]]\ntype = \"gravity\"\ng = [0.0, 0.0, -9.81]\n\
+                    pivot = [0.0, 0.0, -0.05]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        assert_eq!(g.json["body"]["kind"], "cylinder");
+        assert_eq!(g.json["body"]["height"], 0.02);
+        assert_eq!(g.json["body"]["center"], json!([0.0, 0.0, 0.05]));
+        assert_eq!(g.json["mass_center"], json!([0.0, 0.0, 0.05]));
+        assert_eq!(g.json["effects"], json!(["gravity"]));
+        // The inertia about the pivot: I_C + m d² about x and y (parallel-axis theorem).
+        let i_xx = 0.5 * (3.0 * 0.04f64.powi(2) + 0.02f64.powi(2)) / 12.0 + 0.5 * 0.05f64.powi(2);
+        let moments = g.json["inertia_p"].as_array().expect("moments");
+        assert!((moments[0].as_f64().expect("I1") - i_xx).abs() < 1e-15);
+        assert!(g.notes.is_empty());
+    }
+
+    #[test]
+    fn point_masses_are_placed_from_the_moment_center() {
+        // A 1 kg sphere with 1 kg at x = 0.2 m from its center: C is at x = 0.1, and O = C for free motion.
+        let text = "[body]\nmass = 1.0\nshape = { type = \"sphere\", radius = 0.1 }\n\
+                    [[body.point_mass]]\nmass = 1.0\nat = [0.2, 0.0, 0.0]\n\
+                    [initial]\nomega = [0.0, 0.0, 1.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        let close = |v: &Value, want: [f64; 3]| {
+            (0..3).all(|k| (v[k].as_f64().expect("a number") - want[k]).abs() < 1e-15)
+        };
+        assert!(
+            close(&g.json["body"]["center"], [-0.1, 0.0, 0.0]),
+            "{}",
+            g.json
+        );
+        assert!(
+            close(&g.json["point_masses"][0]["at"], [0.1, 0.0, 0.0]),
+            "{}",
+            g.json
+        );
+    }
+
+    #[test]
+    fn a_sidecar_whose_scene_is_invalid_is_named_with_the_key() {
+        let g = read_geometry_text("x.meta.json", &sidecar("[body]\nmass = -1.0\n"));
+        assert_eq!(g.json["body"]["kind"], "unknown");
+        assert!(
+            g.notes[0].contains("x.meta.json: the sidecar's scene"),
+            "{:?}",
+            g.notes
+        );
+    }
+
+    #[test]
+    fn a_missing_sidecar_gives_an_unknown_body_and_a_note_naming_it() {
+        let g = read_geometry(Path::new("/nonexistent/run.csv.meta.json"));
+        assert_eq!(g.json["body"]["kind"], "unknown");
+        assert!(g.notes[0].contains("there is no sidecar /nonexistent/run.csv.meta.json"));
+    }
+}

@@ -1,0 +1,378 @@
+"""`eulerdyn view` pages in a real browser: Debian's Chromium, headless, driven by Playwright.
+
+Each page is opened from disk with every network request blocked; a test fails on any request other than the
+page itself and the blob:/data: URLs the page makes, on any console error and on any uncaught exception. The
+page's `window.eulerdyn.state()` is checked against the run's CSV at the row times, the drawing against a blank
+canvas, and two times against each other.
+
+Run by `.ci/browser-tests` (which builds the binary and makes the venv). Environment:
+  EULERDYN_BIN                the eulerdyn binary (default: target/debug/eulerdyn)
+  CHROMIUM                    the browser (default: /usr/bin/chromium)
+  EULERDYN_VIEW_SCREENSHOT    if set, the tilted disk's screenshot is written there (docs/tilted_disk_view.png)
+  EULERDYN_VIEW_REPORT        if set, page sizes and open times are appended there (measurements, not checks)
+"""
+
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+from playwright.sync_api import sync_playwright
+
+ROOT = Path(__file__).resolve().parents[2]
+BIN = Path(os.environ.get("EULERDYN_BIN", ROOT / "target" / "debug" / "eulerdyn"))
+CHROMIUM = Path(os.environ.get("CHROMIUM", "/usr/bin/chromium"))
+# WebGL without a GPU: Chromium's software renderer.
+CHROMIUM_ARGS = ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist"]
+VIEWPORT = {"width": 1200, "height": 800}
+# The canvas's clear colour (view.css and scene.js): #f4f5f7.
+BACKGROUND = (0xF4, 0xF5, 0xF7)
+
+
+def eulerdyn(*args):
+    """Runs the binary; returns the completed process (stdout, stderr as text)."""
+    return subprocess.run([str(BIN), *map(str, args)], capture_output=True, text=True, check=False)
+
+
+def read_csv(path):
+    """The CSV's rows as dicts of floats (Python's float() is correctly rounded, as JSON.parse is)."""
+    with open(path, newline="") as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def report(line):
+    """Appends a measurement to $EULERDYN_VIEW_REPORT (and prints it: pytest -s shows it)."""
+    print(line)
+    if os.environ.get("EULERDYN_VIEW_REPORT"):
+        with open(os.environ["EULERDYN_VIEW_REPORT"], "a") as f:
+            f.write(line + "\n")
+
+
+@pytest.fixture(scope="session")
+def work(tmp_path_factory):
+    assert BIN.is_file(), f"{BIN} is missing: build it first (cargo build)"
+    return tmp_path_factory.mktemp("view")
+
+
+def make_page(work, scenario, name, *run_args):
+    """Runs `scenario` and writes its page; returns (csv path, html path, view's stderr)."""
+    csv_path = work / f"{name}.csv"
+    html_path = work / f"{name}.html"
+    run = eulerdyn("run", ROOT / "scenarios" / scenario, "-o", csv_path, *run_args)
+    assert run.returncode == 0, run.stderr
+    view = eulerdyn("view", csv_path, "-o", html_path)
+    assert view.returncode == 0, view.stderr
+    return csv_path, html_path, view.stderr
+
+
+@pytest.fixture(scope="session")
+def disk(work):
+    return make_page(work, "tilted_disk.toml", "disk")
+
+
+@pytest.fixture(scope="session")
+def racket(work):
+    return make_page(work, "tennis_racket.toml", "racket")
+
+
+@pytest.fixture(scope="session")
+def browser():
+    assert CHROMIUM.is_file(), f"{CHROMIUM} is missing: install Debian's chromium (apt-get install -y chromium)"
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
+        yield b
+        b.close()
+
+
+class Page:
+    """An open page with its requests and console errors recorded; network requests are blocked."""
+
+    def __init__(self, browser, html_path):
+        self.url = html_path.resolve().as_uri()
+        self.context = browser.new_context(viewport=VIEWPORT)
+        self.page = self.context.new_page()
+        self.requests = []
+        self.errors = []
+        self.page.on("request", lambda r: self.requests.append(r.url))
+        self.page.on("console", lambda m: m.type == "error" and self.errors.append(f"console: {m.text}"))
+        self.page.on("pageerror", lambda e: self.errors.append(f"pageerror: {e}"))
+        self.context.route("**/*", self._route)
+        started = time.monotonic()
+        self.page.goto(self.url)
+        self.wait_drawn()
+        self.open_seconds = time.monotonic() - started
+
+    def _route(self, route):
+        if route.request.url == self.url:
+            route.continue_()
+        else:
+            route.abort()
+
+    def wait_drawn(self, timeout=60.0):
+        """Waits for the first frame. (Polled from here: the page's CSP forbids the eval that
+        wait_for_function would need.)"""
+        end = time.monotonic() + timeout
+        while not self.page.evaluate("!!(window.eulerdyn && window.eulerdyn.drawn)"):
+            assert not self.errors, self.errors
+            assert time.monotonic() < end, "the page never drew a frame"
+            time.sleep(0.05)
+
+    def js(self, expression, arg=None):
+        return self.page.evaluate(expression, arg)
+
+    def check_clean(self):
+        """No request but the page and blob:/data: URLs; no console error or exception."""
+        foreign = [u for u in self.requests if u != self.url and not u.startswith(("blob:", "data:"))]
+        assert not foreign, f"the page made network requests: {foreign}"
+        assert self.url in self.requests
+        assert not self.errors, self.errors
+
+    def canvas_pixels(self):
+        """The canvas read back in the page: its size, how many pixels are not the background, and how many differ
+        from the previous call's (all of them on the first call)."""
+        return self.js("""(bg) => {
+            const c = document.getElementById('scene');
+            const copy = document.createElement('canvas');
+            copy.width = c.width; copy.height = c.height;
+            const ctx = copy.getContext('2d');
+            ctx.drawImage(c, 0, 0);
+            const px = ctx.getImageData(0, 0, c.width, c.height).data;
+            const prev = window.__testPixels;
+            let drawn = 0, changed = 0;
+            for (let k = 0; k < px.length; k += 4) {
+                if (Math.abs(px[k] - bg[0]) + Math.abs(px[k + 1] - bg[1]) + Math.abs(px[k + 2] - bg[2]) > 24) drawn++;
+                if (!prev || prev[k] !== px[k] || prev[k + 1] !== px[k + 1] || prev[k + 2] !== px[k + 2]) changed++;
+            }
+            window.__testPixels = px;
+            return { width: c.width, height: c.height, drawn: drawn, changed: changed };
+        }""", list(BACKGROUND))
+
+    def close(self):
+        self.check_clean()
+        self.context.close()
+
+
+@pytest.fixture
+def open_page(browser):
+    pages = []
+
+    def opener(html_path):
+        p = Page(browser, html_path)
+        pages.append(p)
+        return p
+
+    yield opener
+    for p in pages:
+        p.close()
+
+
+def states_at(page, times):
+    """state() after setTime(t) for each t, in one call."""
+    return page.js("(ts) => ts.map((t) => { window.eulerdyn.setTime(t); return window.eulerdyn.state(); })", times)
+
+
+def check_rows(page, rows):
+    """state() at every row time equals the row's H_s and q: to 1e-9, and in fact bit for bit."""
+    states = states_at(page, [r["t"] for r in rows])
+    for row, s in zip(rows, states):
+        expected_h = [row["H_s_x"], row["H_s_y"], row["H_s_z"]]
+        expected_q = [row["q_w"], row["q_x"], row["q_y"], row["q_z"]]
+        assert s["t"] == row["t"]
+        for got, want in zip(s["H_s"] + s["q"], expected_h + expected_q):
+            assert abs(got - want) <= 1e-9, (row["t"], s, row)
+        assert s["H_s"] == expected_h and s["q"] == expected_q, (row["t"], s, row)
+        assert s["omega_s"] == [row["omega_s_x"], row["omega_s_y"], row["omega_s_z"]]
+        assert s["M_s"] == [row["M_s_x"], row["M_s_y"], row["M_s_z"]]
+
+
+@pytest.mark.parametrize("fixture", ["disk", "racket"])
+def test_the_page_opens_offline_and_matches_the_csv_at_every_row(fixture, request, open_page):
+    csv_path, html_path, _ = request.getfixturevalue(fixture)
+    rows = read_csv(csv_path)
+    page = open_page(html_path)
+    report(f"{fixture}: {len(rows)} rows, page {html_path.stat().st_size / 1e6:.2f} MB, "
+           f"opened and drawn in {page.open_seconds:.2f} s")
+    api = page.js("() => ({ n: window.eulerdyn.rows.length, t_end: window.eulerdyn.t_end, "
+                  "keys: Object.keys(window.eulerdyn) })")
+    assert api["n"] == len(rows)
+    assert api["t_end"] == rows[-1]["t"]
+    for key in ("rows", "t_end", "setTime", "state"):
+        assert key in api["keys"]
+    check_rows(page, rows)
+    page.check_clean()
+
+
+@pytest.mark.parametrize("fixture", ["disk", "racket"])
+def test_between_rows_the_state_is_interpolated(fixture, request, open_page):
+    csv_path, html_path, _ = request.getfixturevalue(fixture)
+    rows = read_csv(csv_path)
+    page = open_page(html_path)
+    a, b = rows[10], rows[11]
+    mid = states_at(page, [(a["t"] + b["t"]) / 2])[0]
+    for axis in "xyz":
+        want = (a[f"H_s_{axis}"] + b[f"H_s_{axis}"]) / 2
+        assert abs(mid["H_s"]["xyz".index(axis)] - want) <= 1e-12 * max(1.0, abs(want))
+    q = mid["q"]
+    assert abs(math.fsum(x * x for x in q) - 1) < 1e-12
+    qa = [a[f"q_{c}"] for c in "wxyz"]
+    qb = [b[f"q_{c}"] for c in "wxyz"]
+    # The slerp midpoint is equally far from both ends (angles between unit quaternions, up to sign).
+    da = abs(sum(x * y for x, y in zip(q, qa)))
+    db = abs(sum(x * y for x, y in zip(q, qb)))
+    assert abs(da - db) < 1e-9 and da < 1.0
+    # Outside the run, the first and last rows.
+    first, last = states_at(page, [-5.0, rows[-1]["t"] + 5.0])
+    assert first["q"] == [rows[0][f"q_{c}"] for c in "wxyz"]
+    assert last["t"] == rows[-1]["t"]
+
+
+@pytest.mark.parametrize("fixture", ["disk", "racket"])
+def test_the_drawing_is_not_blank_and_moves_with_time(fixture, request, open_page):
+    csv_path, html_path, _ = request.getfixturevalue(fixture)
+    rows = read_csv(csv_path)
+    page = open_page(html_path)
+    t1, t2 = rows[0]["t"], rows[len(rows) * 2 // 5]["t"]
+    page.js("(t) => window.eulerdyn.setTime(t)", t1)
+    first = page.canvas_pixels()
+    shot1 = page.page.screenshot()
+    page.js("(t) => window.eulerdyn.setTime(t)", t2)
+    second = page.canvas_pixels()
+    shot2 = page.page.screenshot()
+    width, height = first["width"], first["height"]
+    assert width > 0 and height > 0
+    # A blank canvas has no pixel but the background; the body, axes and arrows cover some thousands.
+    assert first["drawn"] > 2000, f"only {first['drawn']} drawn pixels of {width * height}"
+    assert second["drawn"] > 2000, f"only {second['drawn']} drawn pixels of {width * height}"
+    assert second["changed"] > 500, f"the drawing did not change between two times: {second}"
+    assert shot1 != shot2
+    if fixture == "disk" and os.environ.get("EULERDYN_VIEW_SCREENSHOT"):
+        page.js("(t) => window.eulerdyn.setTime(t)", 0.3)
+        page.page.screenshot(path=os.environ["EULERDYN_VIEW_SCREENSHOT"])
+
+
+def test_controls_play_and_the_slider_move_the_time(disk, open_page):
+    _, html_path, _ = disk
+    page = open_page(html_path)
+    page.js("() => window.eulerdyn.setTime(0)")
+    page.page.click("#play")
+    page.page.wait_for_timeout(400)
+    t = page.js("() => window.eulerdyn.state().t")
+    assert 0 < t <= 1.0, t
+    page.page.click("#play")  # pause
+    # The slider's middle: t = 0.5 of 1.0.
+    page.js("() => { const s = document.getElementById('time'); s.value = '50000'; "
+            "s.dispatchEvent(new Event('input')); }")
+    assert abs(page.js("() => window.eulerdyn.state().t") - 0.5) < 1e-9
+    readout = page.page.inner_text("#readout")
+    assert "t = 0.5000" in readout and "H_s" in readout and "kg*m^2/s" in readout
+    assert page.js("() => document.getElementById('polhode-toggle').hidden"), "a fixed-axis run has no polhode"
+
+
+def test_a_free_run_shows_the_polhode_and_a_fixed_axis_run_its_axis(racket, disk, open_page):
+    page = open_page(racket[1])
+    assert page.js("() => !document.getElementById('polhode-frame').hidden")
+    assert page.js("() => window.eulerdyn.geometry.motion") == "free"
+    page = open_page(disk[1])
+    geometry = page.js("() => window.eulerdyn.geometry")
+    assert geometry["motion"] == "fixed_axis" and geometry["body"]["kind"] == "thin_disk"
+    assert geometry["body"]["radius"] == 0.3
+    assert len(geometry["axis_b"]) == 3
+
+
+def test_bearing_forces_are_drawn_where_the_run_has_them(work, open_page):
+    csv_path, html_path, _ = make_page(work, "rotor_bearings.toml", "rotor", "--t-end", "0.5")
+    page = open_page(html_path)
+    vectors = page.js("() => window.eulerdyn.vectors")
+    assert "R_A_s" in vectors and "R_B_s" in vectors
+    rows = read_csv(csv_path)
+    s = states_at(page, [rows[3]["t"]])[0]
+    assert s["R_A_s"] == [rows[3]["R_A_s_x"], rows[3]["R_A_s_y"], rows[3]["R_A_s_z"]]
+    assert "R_A" in page.page.inner_text("#legend")
+
+
+def test_without_the_sidecar_the_page_draws_the_csv_and_says_what_is_missing(disk, work, open_page):
+    csv_path = work / "lonely.csv"
+    shutil.copy(disk[0], csv_path)
+    html_path = work / "lonely.html"
+    view = eulerdyn("view", csv_path, "-o", html_path)
+    assert view.returncode == 0, view.stderr
+    assert "no sidecar" in view.stderr and "lonely.csv.meta.json" in view.stderr
+    page = open_page(html_path)
+    notes = page.page.inner_text("#notes")
+    assert "no sidecar" in notes and "unit cube" in notes
+    check_rows(page, read_csv(csv_path)[:20])
+
+
+def synthetic_disk_rows(template, n, every):
+    """n rows of the tilted disk turning at 10 rad/s about space z, from the first row of a real run: q, ω_s, H_s
+    and M_s turn about z; the body-axes columns are constant."""
+    head = list(template.keys())
+    omega = 10.0
+    q0 = [template[f"q_{c}"] for c in "wxyz"]
+    h0 = [template["H_s_x"], template["H_s_y"], template["H_s_z"]]
+    lines = [",".join(head)]
+    for k in range(n):
+        t = k * every
+        th = omega * t
+        c, s = math.cos(th), math.sin(th)
+        cz, sz = math.cos(th / 2), math.sin(th / 2)
+        # q = (cos θ/2, 0, 0, sin θ/2) ⊗ q0
+        w0, x0, y0, z0 = q0
+        q = [cz * w0 - sz * z0, cz * x0 - sz * y0, cz * y0 + sz * x0, cz * z0 + sz * w0]
+        h = [c * h0[0] - s * h0[1], s * h0[0] + c * h0[1], h0[2]]
+        m = [-omega * h[1], omega * h[0], 0.0]
+        row = dict(template)
+        row.update(t=t, q_w=q[0], q_x=q[1], q_y=q[2], q_z=q[3], omega_s_x=0.0, omega_s_y=0.0, omega_s_z=omega,
+                   H_s_x=h[0], H_s_y=h[1], H_s_z=h[2], M_s_x=m[0], M_s_y=m[1], M_s_z=m[2])
+        lines.append(",".join(repr(row[k2]) for k2 in head))
+    return "\n".join(lines) + "\n"
+
+
+def test_a_run_of_a_million_rows_is_decimated_by_the_stated_rule(disk, work, open_page):
+    n = 1_000_001
+    template = read_csv(disk[0])[0]
+    csv_path = work / "million.csv"
+    csv_path.write_text(synthetic_disk_rows(template, n, 0.01))
+    shutil.copy(str(disk[0]) + ".meta.json", str(csv_path) + ".meta.json")
+    html_path = work / "million.html"
+    started = time.monotonic()
+    view = eulerdyn("view", csv_path, "-o", html_path)
+    view_seconds = time.monotonic() - started
+    assert view.returncode == 0, view.stderr
+    page = open_page(html_path)
+    report(f"million: {n} rows, csv {csv_path.stat().st_size / 1e6:.0f} MB, view {view_seconds:.1f} s, "
+           f"page {html_path.stat().st_size / 1e6:.2f} MB, opened and drawn in {page.open_seconds:.2f} s")
+    api = page.js("() => ({ n: window.eulerdyn.rows.length, stride: window.eulerdyn.stride, "
+                  "in_run: window.eulerdyn.rows_in_run, note: window.eulerdyn.rows_note })")
+    # ceil(1000001 / 64) > 10000 >= ceil(1000001 / 128): every 128th row, plus the last.
+    assert api["stride"] == 128 and api["in_run"] == n
+    assert api["n"] == len(range(0, n, 128)) + 1
+    assert "every 128th row" in api["note"]
+    assert "every 128th row" in page.page.inner_text("#notes")
+    rows = read_csv_rows_at(csv_path, [0, 128, 256 * 1000, 128 * 7812, n - 1])
+    check_rows(page, rows)
+    assert page.js("() => window.eulerdyn.t_end") == rows[-1]["t"]
+
+
+def read_csv_rows_at(path, indices):
+    """The data rows at `indices` (0-based) of a CSV, as dicts of floats."""
+    wanted = set(indices)
+    out = {}
+    with open(path, newline="") as f:
+        for k, row in enumerate(csv.DictReader(f)):
+            if k in wanted:
+                out[k] = {key: float(v) for key, v in row.items()}
+    return [out[k] for k in indices]
+
+
+def test_the_page_embeds_everything_and_names_its_three_js(disk):
+    html = disk[1].read_text()
+    assert "Content-Security-Policy" in html and "default-src 'none'" in html
+    for tag in ("<link", "src=\"http", "src='http", "@import", "url(http"):
+        assert tag not in html, tag
+    assert json.loads(html.split('id="eulerdyn-data">', 1)[1].split("</script>", 1)[0])["columns"][0] == "t"
