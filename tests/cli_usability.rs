@@ -255,18 +255,14 @@ fn a_fixed_step_too_coarse_for_the_motion_is_reported_and_warned() {
     // The heavy top spins at 150 rad/s; `--dt 0.05` is capped at the row spacing (every = 0.01 s), so each RK4
     // step turns the body by 1.5 rad, and T + V, conserved by a top on a fixed pivot, drifts by about 8 %.
     let dir = tempfile::tempdir().unwrap();
+    let top_with_rk4 = |dt: &str, csv: &Path| {
+        let top = scenario("heavy_top");
+        let out = eulerdyn(["run", &top, "--method", "rk4", "--dt", dt, "-o", text(csv)]);
+        out.expect_code(0);
+        out
+    };
     let coarse = dir.path().join("coarse.csv");
-    let out = eulerdyn([
-        "run",
-        &scenario("heavy_top"),
-        "--method",
-        "rk4",
-        "--dt",
-        "0.05",
-        "-o",
-        text(&coarse),
-    ]);
-    out.expect_code(0);
+    let out = top_with_rk4("0.05", &coarse);
     contains_all(
         &out.stderr,
         &[
@@ -284,17 +280,7 @@ fn a_fixed_step_too_coarse_for_the_motion_is_reported_and_warned() {
 
     // A step of 0.5 ms turns it by 0.075 rad: no warning, and the energy holds.
     let fine = dir.path().join("fine.csv");
-    let out = eulerdyn([
-        "run",
-        &scenario("heavy_top"),
-        "--method",
-        "rk4",
-        "--dt",
-        "0.0005",
-        "-o",
-        text(&fine),
-    ]);
-    out.expect_code(0);
+    let out = top_with_rk4("0.0005", &fine);
     assert!(!out.stderr.contains("warning"), "{}", out.stderr);
     let meta = sidecar_of(&fine);
     assert_eq!(meta["warnings"].as_array().map(Vec::len), Some(0));
