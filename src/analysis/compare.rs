@@ -236,6 +236,19 @@ impl Differences {
     }
 }
 
+/// One quantity of [`Comparison::table`]: relative differences (the attitude's absolute, in rad).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ComparisonRow {
+    /// The quantity's name, e.g. `H_s` or `attitude angle (rad)`.
+    pub quantity: &'static str,
+    /// Body form against space form.
+    pub body_vs_space: f64,
+    /// Body form against the closed form, when it gives this quantity.
+    pub body_vs_exact: Option<f64>,
+    /// Space form against the closed form, when it gives this quantity.
+    pub space_vs_exact: Option<f64>,
+}
+
 /// The outcome of `compare`.
 pub struct Comparison {
     pub body_vs_space: Differences,
@@ -257,6 +270,24 @@ impl Comparison {
         self.body_vs_space.worst().max(exact_worst) <= self.tolerance
     }
 
+    /// The relative differences per quantity (those compared between the forms), with the closed form's where it
+    /// gives that quantity.
+    pub fn table(&self) -> Vec<ComparisonRow> {
+        let exact_rows = self.exact.as_ref().map(|(_, b, s)| (b.rows(), s.rows()));
+        let lookup =
+            |rows: &[(&str, f64)], name: &str| rows.iter().find(|r| r.0 == name).map(|r| r.1);
+        self.body_vs_space
+            .rows()
+            .into_iter()
+            .map(|(quantity, body_vs_space)| ComparisonRow {
+                quantity,
+                body_vs_space,
+                body_vs_exact: exact_rows.as_ref().and_then(|(b, _)| lookup(b, quantity)),
+                space_vs_exact: exact_rows.as_ref().and_then(|(_, s)| lookup(s, quantity)),
+            })
+            .collect()
+    }
+
     /// A table for people: one line per quantity.
     pub fn report(&self) -> String {
         let mut out = String::new();
@@ -276,17 +307,15 @@ impl Comparison {
             "{:<22} {:>14} {:>14} {:>14}\n",
             "quantity", "body vs space", "body vs exact", "space vs exact"
         ));
-        let exact_rows = self.exact.as_ref().map(|(_, b, s)| (b.rows(), s.rows()));
-        for (name, diff) in self.body_vs_space.rows() {
-            let lookup = |rows: &Vec<(&str, f64)>| {
-                rows.iter()
-                    .find(|r| r.0 == name)
-                    .map_or("-".to_string(), |r| format!("{:.3e}", r.1))
-            };
-            let (b, s) = exact_rows
-                .as_ref()
-                .map_or(("-".into(), "-".into()), |(b, s)| (lookup(b), lookup(s)));
-            out.push_str(&format!("{name:<22} {diff:>14.3e} {b:>14} {s:>14}\n"));
+        let cell = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.3e}"));
+        for row in self.table() {
+            out.push_str(&format!(
+                "{:<22} {:>14.3e} {:>14} {:>14}\n",
+                row.quantity,
+                row.body_vs_space,
+                cell(row.body_vs_exact),
+                cell(row.space_vs_exact)
+            ));
         }
         out.push_str(&format!(
             "tolerance {:e}: {}\n",

@@ -8,16 +8,16 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::analysis::describe;
 use crate::app::balance::{BalanceArgs, balance_command};
 use crate::app::progress::{self, Progress};
-use crate::app::report;
 use crate::app::sweep::{SweepArgs, SweepFailure, sweep_command};
 use crate::output::plot::{self, Panel, PlotError};
 use crate::output::{AtomicFile, CsvWriter, meta};
 use crate::sample::ColumnSet;
 use crate::scene::Scene;
 use crate::scene::{self, Overrides, SceneError};
-use crate::simulate::{self, RunError, RunReport};
+use crate::simulate::{self, RunError, RunFailed, RunReport};
 
 /// Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes.
 #[derive(Debug, Parser)]
@@ -211,7 +211,7 @@ fn sweep(args: &SweepArgs, quiet: bool) -> Result<(), Failure> {
 
 fn check(path: &Path) -> Result<(), Failure> {
     let scene = scene::load(path, &Overrides::default())?;
-    print_stdout(&report::describe(&scene))
+    print_stdout(&describe::describe(&scene).text())
 }
 
 /// Writes `text` to stdout. A closed pipe (`| head`) is not an error; any other failure (a full disk) is a failed
@@ -238,8 +238,7 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
     );
     let comparison = crate::analysis::compare::compare(&scene);
     spinner.finish();
-    let comparison =
-        comparison.map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
+    let comparison = comparison.map_err(|e| Failure::Run(RunFailed::new(path, &e).to_string()))?;
     print_stdout(&comparison.report())?;
     if comparison.passes() {
         Ok(())
@@ -369,7 +368,7 @@ fn same_file(a: &Path, b: &Path) -> bool {
 fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
     match e {
         e @ (RunError::Integrate(_) | RunError::Diverged(_)) => {
-            Failure::Run(format!("{}: the run failed: {e}", scene.display()))
+            Failure::Run(RunFailed::new(scene, &e).to_string())
         }
         RunError::Sink(e) => Failure::Run(format!("{}: cannot write: {e}", out.display())),
     }

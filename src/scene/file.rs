@@ -49,8 +49,9 @@ pub fn load_spec(path: &Path) -> Result<SceneSpec, SceneError> {
     parse_spec(path, &read(path)?)
 }
 
-/// The text of a scene file (or another TOML input file: the messages name it).
-pub(crate) fn read(path: &Path) -> Result<String, SceneError> {
+/// The text of a scene file (or another TOML input file: the messages name it): a directory, an unreadable file
+/// and text that is not UTF-8 are errors naming the file.
+pub fn read(path: &Path) -> Result<String, SceneError> {
     let error = |problem: String| SceneError {
         file: path.to_path_buf(),
         key: None,

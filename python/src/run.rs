@@ -1,0 +1,174 @@
+//! `run`: a scene's rows as the command line's CSV columns, row-major float64 bytes; the GIL released meanwhile,
+//! with Ctrl-C looked for a few times a second.
+
+use std::fmt;
+use std::time::{Duration, Instant};
+
+use eulerdyn::sample::NonFinite;
+use eulerdyn::scene::{self, Overrides};
+use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
+use eulerdyn::{Backend, Form, Method};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyDict};
+
+use crate::errors::{no_panic, run_error};
+use crate::input::SceneInput;
+
+/// How often a run looks for Ctrl-C (reacquiring the GIL to run Python's signal handlers).
+const SIGNAL_INTERVAL: Duration = Duration::from_millis(50);
+
+/// Why the Python sink stopped a run: a non-finite value (as the CSV writer refuses it) or a Python exception
+/// raised by a signal handler (KeyboardInterrupt).
+#[derive(Debug)]
+pub enum Stop {
+    NonFinite(NonFinite),
+    Python(PyErr),
+}
+
+impl fmt::Display for Stop {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Stop::NonFinite(e) => write!(f, "{e}"),
+            Stop::Python(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for Stop {}
+
+/// Calls `check` (with the GIL) at most every [`SIGNAL_INTERVAL`]: Python's signal handlers run there, and the
+/// KeyboardInterrupt a Ctrl-C raises stops the run.
+pub struct SignalCheck {
+    last: Instant,
+}
+
+impl SignalCheck {
+    pub fn new() -> Self {
+        Self {
+            last: Instant::now(),
+        }
+    }
+
+    /// Runs Python's signal handlers if the interval has passed; their exception, if any.
+    pub fn poll(&mut self) -> Result<(), PyErr> {
+        if self.last.elapsed() < SIGNAL_INTERVAL {
+            return Ok(());
+        }
+        self.last = Instant::now();
+        Python::attach(|py| py.check_signals())
+    }
+}
+
+/// The command line's `run` flags, as keyword arguments.
+pub struct RunFlags {
+    pub method: Option<String>,
+    pub frame: Option<String>,
+    pub backend: Option<String>,
+    pub rtol: Option<f64>,
+    pub atol: Option<f64>,
+    pub dt: Option<f64>,
+    pub t_end: Option<f64>,
+    pub every: Option<f64>,
+}
+
+impl RunFlags {
+    /// The overrides, with the command line's messages for a bad name (`solver.method (from --method)`).
+    fn overrides(&self, py: Python<'_>, input: &SceneInput) -> PyResult<Overrides> {
+        let path = &input.path;
+        let flag = |e| input.error(py, e);
+        Ok(Overrides {
+            method: scene::flag_value::<Method>(path, "solver", "method", self.method.as_deref())
+                .map_err(flag)?,
+            frame: scene::flag_value::<Form>(path, "solver", "frame", self.frame.as_deref())
+                .map_err(flag)?,
+            backend: scene::flag_value::<Backend>(
+                path,
+                "solver",
+                "backend",
+                self.backend.as_deref(),
+            )
+            .map_err(flag)?,
+            rtol: self.rtol,
+            atol: self.atol,
+            dt: self.dt,
+            t_end: self.t_end,
+            every: self.every,
+        })
+    }
+}
+
+/// The run's report as a dict: rows, steps, rejected, evals, wall_seconds.
+fn report_dict<'py>(py: Python<'py>, report: &RunReport) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("rows", report.rows)?;
+    d.set_item("steps", report.stats.steps)?;
+    d.set_item("rejected", report.stats.rejected)?;
+    d.set_item("evals", report.stats.evals)?;
+    d.set_item("wall_seconds", report.wall_seconds)?;
+    Ok(d)
+}
+
+/// Simulates a scene (a path or a dict) with the command line's `run` flags. Returns the CSV's column names, the
+/// rows as native-endian float64 bytes (row-major), and the run's report (rows, steps, rejected, evals,
+/// wall_seconds). Raises SceneError for bad input, RunError for a failed run, KeyboardInterrupt on Ctrl-C.
+#[pyfunction]
+#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None))]
+#[allow(clippy::too_many_arguments)]
+#[allow(clippy::type_complexity)]
+pub fn run<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+    method: Option<String>,
+    frame: Option<String>,
+    backend: Option<String>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    dt: Option<f64>,
+    t_end: Option<f64>,
+    every: Option<f64>,
+) -> PyResult<(Vec<&'static str>, Bound<'py, PyBytes>, Bound<'py, PyDict>)> {
+    let flags = RunFlags {
+        method,
+        frame,
+        backend,
+        rtol,
+        atol,
+        dt,
+        t_end,
+        every,
+    };
+    no_panic(|| {
+        let input = SceneInput::from_py(scene)?;
+        let scene_model = input.scene(py, &flags.overrides(py, &input)?)?;
+        let columns = simulate::columns(&scene_model);
+        let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
+        let (result, bytes) = py.detach(|| {
+            let mut bytes: Vec<u8> =
+                Vec::with_capacity(scene_model.schedule.len() * names.len() * 8);
+            let mut values = Vec::with_capacity(names.len());
+            let mut signals = SignalCheck::new();
+            let result = simulate::run(&scene_model, |s| {
+                columns
+                    .finite_values(s, &mut values)
+                    .map_err(Stop::NonFinite)?;
+                bytes.extend(values.iter().flat_map(|v| v.to_ne_bytes()));
+                signals.poll().map_err(Stop::Python)
+            });
+            (result, bytes)
+        });
+        let report = match result {
+            Ok(report) => report,
+            Err(RunError::Sink(Stop::Python(e))) => return Err(e),
+            Err(RunError::Sink(Stop::NonFinite(e))) => {
+                let failed = RunFailed {
+                    scene: input.path.clone(),
+                    t: Some(e.t),
+                    reason: e.to_string(),
+                };
+                return Err(run_error(py, &failed));
+            }
+            Err(e) => return Err(run_error(py, &RunFailed::new(&input.path, &e))),
+        };
+        Ok((names, PyBytes::new(py, &bytes), report_dict(py, &report)?))
+    })
+}
