@@ -3,12 +3,11 @@
 use std::ops::ControlFlow;
 use std::path::PathBuf;
 
-use eulerdyn::Method;
 use eulerdyn::analysis::balance::{Planes, balance_scene};
 use eulerdyn::analysis::compare::{Comparison, compare as compare_forms};
 use eulerdyn::analysis::describe::describe;
 use eulerdyn::analysis::study::{self, StudyError, StudyOptions};
-use eulerdyn::scene::{self, Motion, Overrides, Scene, SceneError};
+use eulerdyn::scene::{Flags, Motion, Overrides, Scene, SceneError};
 use eulerdyn::simulate::{self, RunFailed};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -112,13 +111,13 @@ pub fn compare<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     no_panic(|| {
         let input = SceneInput::from_py(scene)?;
-        let method =
-            scene::flag_value::<Method>(&input.path, "solver", "method", method.as_deref())
-                .map_err(|e| input.error(py, e))?;
-        let overrides = Overrides {
-            method,
-            ..Overrides::default()
+        let flags = Flags {
+            method: method.as_deref(),
+            ..Flags::default()
         };
+        let overrides = flags
+            .overrides(&input.path)
+            .map_err(|e| input.error(py, e))?;
         let s = input.scene(py, &overrides)?;
         let comparison = py
             .detach(|| compare_forms(&s))

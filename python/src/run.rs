@@ -5,9 +5,8 @@ use std::fmt;
 use std::time::{Duration, Instant};
 
 use eulerdyn::sample::NonFinite;
-use eulerdyn::scene::{self, Overrides};
+use eulerdyn::scene::Flags;
 use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
-use eulerdyn::{Backend, Form, Method};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict};
 
@@ -59,44 +58,6 @@ impl SignalCheck {
     }
 }
 
-/// The command line's `run` flags, as keyword arguments.
-pub struct RunFlags {
-    pub method: Option<String>,
-    pub frame: Option<String>,
-    pub backend: Option<String>,
-    pub rtol: Option<f64>,
-    pub atol: Option<f64>,
-    pub dt: Option<f64>,
-    pub t_end: Option<f64>,
-    pub every: Option<f64>,
-}
-
-impl RunFlags {
-    /// The overrides, with the command line's messages for a bad name (`solver.method (from --method)`).
-    fn overrides(&self, py: Python<'_>, input: &SceneInput) -> PyResult<Overrides> {
-        let path = &input.path;
-        let flag = |e| input.error(py, e);
-        Ok(Overrides {
-            method: scene::flag_value::<Method>(path, "solver", "method", self.method.as_deref())
-                .map_err(flag)?,
-            frame: scene::flag_value::<Form>(path, "solver", "frame", self.frame.as_deref())
-                .map_err(flag)?,
-            backend: scene::flag_value::<Backend>(
-                path,
-                "solver",
-                "backend",
-                self.backend.as_deref(),
-            )
-            .map_err(flag)?,
-            rtol: self.rtol,
-            atol: self.atol,
-            dt: self.dt,
-            t_end: self.t_end,
-            every: self.every,
-        })
-    }
-}
-
 /// The run's report as a dict: rows, steps, rejected, evals, wall_seconds.
 fn report_dict<'py>(py: Python<'py>, report: &RunReport) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -127,10 +88,10 @@ pub fn run<'py>(
     t_end: Option<f64>,
     every: Option<f64>,
 ) -> PyResult<(Vec<&'static str>, Bound<'py, PyBytes>, Bound<'py, PyDict>)> {
-    let flags = RunFlags {
-        method,
-        frame,
-        backend,
+    let flags = Flags {
+        method: method.as_deref(),
+        frame: frame.as_deref(),
+        backend: backend.as_deref(),
         rtol,
         atol,
         dt,
@@ -139,7 +100,10 @@ pub fn run<'py>(
     };
     no_panic(|| {
         let input = SceneInput::from_py(scene)?;
-        let scene_model = input.scene(py, &flags.overrides(py, &input)?)?;
+        let overrides = flags
+            .overrides(&input.path)
+            .map_err(|e| input.error(py, e))?;
+        let scene_model = input.scene(py, &overrides)?;
         let columns = simulate::columns(&scene_model);
         let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
         let (result, bytes) = py.detach(|| {

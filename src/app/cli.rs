@@ -16,7 +16,7 @@ use crate::output::plot::{self, Panel, PlotError};
 use crate::output::{AtomicFile, CsvWriter, meta};
 use crate::sample::ColumnSet;
 use crate::scene::Scene;
-use crate::scene::{self, Overrides, SceneError};
+use crate::scene::{self, Flags, Overrides, SceneError};
 use crate::simulate::{self, RunError, RunFailed, RunReport};
 
 /// Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes.
@@ -226,10 +226,11 @@ fn print_stdout(text: &str) -> Result<(), Failure> {
 }
 
 fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failure> {
-    let overrides = Overrides {
-        method: scene::flag_value(path, "solver", "method", method.as_deref())?,
-        ..Overrides::default()
-    };
+    let overrides = Flags {
+        method: method.as_deref(),
+        ..Flags::default()
+    }
+    .overrides(path)?;
     let scene = scene::load(path, &overrides)?;
     let spinner = Progress::spinner(
         "compare",
@@ -252,16 +253,17 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
 }
 
 fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
-    let overrides = Overrides {
-        method: scene::flag_value(&args.scene, "solver", "method", args.method.as_deref())?,
-        frame: scene::flag_value(&args.scene, "solver", "frame", args.frame.as_deref())?,
-        backend: scene::flag_value(&args.scene, "solver", "backend", args.backend.as_deref())?,
+    let overrides = Flags {
+        method: args.method.as_deref(),
+        frame: args.frame.as_deref(),
+        backend: args.backend.as_deref(),
         rtol: args.rtol,
         atol: args.atol,
         dt: args.dt,
         t_end: args.t_end,
         every: args.every,
-    };
+    }
+    .overrides(&args.scene)?;
     let scene_model = scene::load(&args.scene, &overrides)?;
     let columns = simulate::columns(&scene_model);
     let mut progress = Progress::bar(

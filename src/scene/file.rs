@@ -242,3 +242,35 @@ pub fn flag_value<T: Named>(
         problem,
     })
 }
+
+/// The command line's overriding flags as given (`--method rk4 --dt 0.01`; the Python module's keyword arguments),
+/// before their names are checked.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Flags<'a> {
+    pub method: Option<&'a str>,
+    pub frame: Option<&'a str>,
+    pub backend: Option<&'a str>,
+    pub rtol: Option<f64>,
+    pub atol: Option<f64>,
+    pub dt: Option<f64>,
+    pub t_end: Option<f64>,
+    pub every: Option<f64>,
+}
+
+impl Flags<'_> {
+    /// The overrides the flags give for the scene `file`; a bad name is an error naming the file and the key it
+    /// overrides, e.g. `solver.method (from --method)` (see [`flag_value`]). The numbers are checked with the
+    /// scene ([`SceneSpec::build_with`]).
+    pub fn overrides(&self, file: &Path) -> Result<Overrides, SceneError> {
+        Ok(Overrides {
+            method: flag_value(file, "solver", "method", self.method)?,
+            frame: flag_value(file, "solver", "frame", self.frame)?,
+            backend: flag_value(file, "solver", "backend", self.backend)?,
+            rtol: self.rtol,
+            atol: self.atol,
+            dt: self.dt,
+            t_end: self.t_end,
+            every: self.every,
+        })
+    }
+}

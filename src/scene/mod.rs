@@ -9,7 +9,7 @@ mod template;
 mod validate;
 
 pub(crate) use file::parse_toml;
-pub use file::{SceneError, flag_value, load, load_spec, parse, parse_spec, read};
+pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SolverConfig};
 pub use spec::{
     BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,
