@@ -17,7 +17,9 @@ and Ctrl-C (KeyboardInterrupt) stops them.
 
 from __future__ import annotations
 
+import csv
 import io
+import math
 import os
 from typing import Any, Dict, Mapping, Optional, Tuple, Union
 
@@ -162,9 +164,32 @@ def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
         KeyboardInterrupt: Ctrl-C (the study stops before its next run).
     """
     table, summary = _eulerdyn.accuracy(_scene(scene), quick=quick)
-    df = pd.read_csv(io.StringIO(table), float_precision="round_trip")
+    df = _table(table)
     df.attrs["summary"] = summary
     return df
+
+
+def _table(text: str) -> pd.DataFrame:
+    """A CSV table as a DataFrame, each number read by Python's float (correctly rounded: the f64 the table was
+    written from). A column of numbers and empty cells is float (NaN for empty), of whole numbers int, else str."""
+    reader = csv.reader(io.StringIO(text))
+    header = next(reader)
+    rows = list(reader)
+    columns: Dict[str, Any] = {}
+    for k, name in enumerate(header):
+        cells = [row[k] for row in rows]
+        columns[name] = _column(cells)
+    return pd.DataFrame(columns, columns=header)
+
+
+def _column(cells: "list[str]") -> Any:
+    """The cells of one column as ints, floats or strings (see :func:`_table`)."""
+    if cells and all(c.isdigit() for c in cells):
+        return np.array([int(c) for c in cells], dtype=np.int64)
+    try:
+        return np.array([float(c) if c else math.nan for c in cells], dtype=np.float64)
+    except ValueError:
+        return cells
 
 
 def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:

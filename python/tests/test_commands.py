@@ -50,13 +50,28 @@ def test_compare_is_what_the_cli_prints(scenario):
     assert (differences.max() <= 1e-8).all()
 
 
-def test_compare_with_a_method_that_exceeds_the_tolerance(scenario):
-    path = scenario("asymmetric_free.toml")
-    result = eulerdyn.compare(path, method="rk4")
-    cli = run_cli("compare", str(path), "--method", "rk4", expect=1)
+def test_compare_of_a_dict_that_exceeds_the_tolerance(tmp_path):
+    """RK4 at a coarse step against the closed form: the command exits 1, the module says passes = False."""
+    text = (
+        "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.3, 0.0, 2.0]\n"
+        '[solver]\nmethod = "rk4"\ndt = 0.05\nt_end = 10.0\n[output]\nevery = 0.5\n[compare]\ntolerance = 1e-8\n'
+    )
+    path = tmp_path / "coarse.toml"
+    path.write_text(text)
+    scene = {
+        "body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]},
+        "initial": {"omega": [0.3, 0.0, 2.0]},
+        "solver": {"method": "rk4", "dt": 0.05, "t_end": 10.0},
+        "output": {"every": 0.5},
+        "compare": {"tolerance": 1e-8},
+    }
+    result = eulerdyn.compare(scene)
+    cli = run_cli("compare", str(path), expect=1)
     assert result["text"] == cli.stdout
     assert result["passes"] is False
     assert result["differences"].to_numpy().max() > result["tolerance"]
+    # With dop853 (the flag) it passes.
+    assert eulerdyn.compare(scene, method="dop853")["passes"] is True
 
 
 def test_accuracy_quick_study_of_a_dict():
@@ -73,7 +88,13 @@ def test_accuracy_quick_study_of_a_dict():
     # Against the closed form, dop853 at rtol 1e-10 is far better than at 1e-4.
     dop853 = table[table["method"] == "dop853"].set_index("rtol")["err_omega"]
     assert dop853[1e-10] < 1e-3 * dop853[1e-4]
-    assert "cheapest" in table.attrs["summary"] or "error" in table.attrs["summary"]
+    # The command's cells, typed: counts as ints, numbers as floats (NaN for an empty cell), names as str.
+    assert str(table["steps"].dtype) == "int64" and str(table["repeats"].dtype) == "int64"
+    assert table["rtol"].dtype == float and table["dt"].dtype == float
+    assert table[table["method"] == "rk4"]["rtol"].isna().all()
+    assert table[table["method"] == "rk4"]["dt"].notna().all()
+    assert set(table["frame"]) == {"body"} and set(table["backend"]) == {"own"}
+    assert "dop853" in table.attrs["summary"]
 
 
 def test_accuracy_refuses_a_scene_it_cannot_study():
