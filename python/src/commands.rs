@@ -1,10 +1,9 @@
 //! `check`, `compare`, `accuracy` and `balance`: the commands of the same names, as dicts and CSV text.
 
-use std::ops::ControlFlow;
 use std::path::PathBuf;
 
 use eulerdyn::analysis::balance::{Planes, balance_scene};
-use eulerdyn::analysis::compare::{Comparison, compare as compare_forms};
+use eulerdyn::analysis::compare::{Comparison, compare_until};
 use eulerdyn::analysis::describe::describe;
 use eulerdyn::analysis::study::{self, StudyError, StudyOptions};
 use eulerdyn::scene::{Flags, Motion, Overrides, Scene, SceneError};
@@ -15,7 +14,7 @@ use pyo3::types::{PyDict, PyList};
 use crate::convert::{toml_to_py, vec3};
 use crate::errors::{no_panic, run_error, run_error_message};
 use crate::input::SceneInput;
-use crate::run::SignalCheck;
+use crate::run::{SignalCheck, stop_on};
 
 /// The motion's kind as the scene file names it (`motion.kind`; `free` without a `[motion]`).
 fn motion_kind(scene: &Scene) -> &'static str {
@@ -119,9 +118,16 @@ pub fn compare<'py>(
             .overrides(&input.path)
             .map_err(|e| input.error(py, e))?;
         let s = input.scene(py, &overrides)?;
-        let comparison = py
-            .detach(|| compare_forms(&s))
-            .map_err(|e| run_error(py, &RunFailed::new(&input.path, &e)))?;
+        let (result, interrupted) = py.detach(|| {
+            let mut signals = SignalCheck::new();
+            let mut interrupted = None;
+            let result = compare_until(&s, || stop_on(signals.poll(), &mut interrupted));
+            (result, interrupted)
+        });
+        if let Some(interrupt) = interrupted {
+            return Err(interrupt);
+        }
+        let comparison = result.map_err(|e| run_error(py, &RunFailed::new(&input.path, &e)))?;
         comparison_dict(py, &comparison)
     })
 }
@@ -182,14 +188,9 @@ pub fn accuracy(
         let result = py.detach(|| {
             let mut signals = SignalCheck::new();
             let mut interrupted = None;
-            let study =
-                study::accuracy_until(&path, text, &options, |_, _, _| match signals.poll() {
-                    Ok(()) => ControlFlow::Continue(()),
-                    Err(e) => {
-                        interrupted = Some(e);
-                        ControlFlow::Break(())
-                    }
-                });
+            let study = study::accuracy_until(&path, text, &options, |_, _, _| {
+                stop_on(signals.poll(), &mut interrupted)
+            });
             (study, interrupted)
         });
         match result {

@@ -2,6 +2,7 @@
 //! with Ctrl-C looked for a few times a second.
 
 use std::fmt;
+use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
 use eulerdyn::sample::NonFinite;
@@ -55,6 +56,18 @@ impl SignalCheck {
         }
         self.last = Instant::now();
         Python::attach(|py| py.check_signals())
+    }
+}
+
+/// A poll's answer for a library function that stops when it breaks: the exception (KeyboardInterrupt) is kept in
+/// `interrupted`, to raise once the function has returned.
+pub fn stop_on(polled: Result<(), PyErr>, interrupted: &mut Option<PyErr>) -> ControlFlow<()> {
+    match polled {
+        Ok(()) => ControlFlow::Continue(()),
+        Err(e) => {
+            *interrupted = Some(e);
+            ControlFlow::Break(())
+        }
     }
 }
 

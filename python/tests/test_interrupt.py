@@ -7,6 +7,8 @@ import textwrap
 import threading
 import time
 
+import pytest
+
 import eulerdyn
 
 # About 5·10⁹ RK4 steps with a row every 10⁵ steps: minutes of computing, far longer than the watchdog below.
@@ -17,30 +19,49 @@ LONG = {
     "output": {"every": 0.01},
 }
 
-CHILD = textwrap.dedent(
-    f"""
-    import sys, eulerdyn
-    print("started", flush=True)
-    try:
-        eulerdyn.run({LONG!r})
-    except KeyboardInterrupt:
-        print("KeyboardInterrupt", flush=True)
-        sys.exit(3)
-    print("finished", flush=True)
-    """
+# A full work-precision study of a long torque-free run: hundreds of runs, minutes in all.
+STUDY = {
+    "body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]},
+    "initial": {"omega": [0.3, 0.0, 2.0]},
+    "solver": {"t_end": 2000.0},
+    "output": {"every": 0.1},
+}
+
+
+def child_code(call: str) -> str:
+    return textwrap.dedent(
+        f"""
+        import sys, eulerdyn
+        print("started", flush=True)
+        try:
+            {call}
+        except KeyboardInterrupt:
+            print("KeyboardInterrupt", flush=True)
+            sys.exit(3)
+        print("finished", flush=True)
+        """
+    )
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        f"eulerdyn.run({LONG!r})",
+        f"eulerdyn.compare({LONG!r})",
+        f"eulerdyn.accuracy({STUDY!r})",
+    ],
+    ids=["run", "compare", "accuracy"],
 )
-
-
-def test_ctrl_c_interrupts_a_long_run():
+def test_ctrl_c_interrupts_a_long_command(call):
     child = subprocess.Popen(
-        [sys.executable, "-c", CHILD], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+        [sys.executable, "-c", child_code(call)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
     )
     try:
         assert child.stdout.readline().strip() == "started"
         # Let the child get into the run (parsing the scene takes microseconds), then press Ctrl-C.
         time.sleep(1.0)
         child.send_signal(signal.SIGINT)
-        # A generous watchdog: the run itself would take minutes.
+        # A generous watchdog: the command itself would take minutes.
         out, err = child.communicate(timeout=120)
     finally:
         child.kill()

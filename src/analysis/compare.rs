@@ -2,6 +2,7 @@
 //! where one applies. The two runs stream in lockstep (the space form on a second thread), so memory does not grow
 //! with the number of rows.
 
+use std::ops::ControlFlow;
 use std::sync::mpsc;
 use std::thread;
 
@@ -353,6 +354,15 @@ pub struct HandOver;
 
 /// Runs the scene in both frames (in lockstep) and against its closed form.
 pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
+    compare_until(scene, || ControlFlow::Continue(()))
+}
+
+/// [`compare`], with `poll` called at every row of the body-form run: once it breaks, both runs stop and the
+/// result is `Err(RunError::Sink(HandOver))` (the Python module's Ctrl-C).
+pub fn compare_until(
+    scene: &Scene,
+    mut poll: impl FnMut() -> ControlFlow<()>,
+) -> Result<Comparison, RunError<HandOver>> {
     let mut body_scene = scene.clone();
     body_scene.solver.frame = Form::Body;
     let mut space_scene = scene.clone();
@@ -367,6 +377,9 @@ pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
     let mut space_vs_exact = Differences::default();
     let mut rows = 0;
     let body_result = simulate::run(&body_scene, |b: &Sample| {
+        if poll().is_break() {
+            return Err(HandOver);
+        }
         let Ok(s) = receiver.recv() else {
             // The space run stopped early; its own result says why.
             return Err(HandOver);
