@@ -17,18 +17,35 @@ use crate::input::SceneInput;
 /// How often a run looks for Ctrl-C (reacquiring the GIL to run Python's signal handlers).
 const SIGNAL_INTERVAL: Duration = Duration::from_millis(50);
 
-/// Why the Python sink stopped a run: a non-finite value (as the CSV writer refuses it) or a Python exception
-/// raised by a signal handler (KeyboardInterrupt).
+/// Why the Python sink stopped a run: a non-finite value (as the CSV writer refuses it), rows that do not fit in
+/// memory, or a Python exception raised by a signal handler (KeyboardInterrupt).
 #[derive(Debug)]
 pub enum Stop {
     NonFinite(NonFinite),
+    OutOfMemory { t: f64 },
     Python(PyErr),
+}
+
+impl Stop {
+    /// The row time the run stopped at, when known.
+    fn time(&self) -> Option<f64> {
+        match self {
+            Stop::NonFinite(e) => Some(e.t),
+            Stop::OutOfMemory { t } => Some(*t),
+            Stop::Python(_) => None,
+        }
+    }
 }
 
 impl fmt::Display for Stop {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Stop::NonFinite(e) => write!(f, "{e}"),
+            Stop::OutOfMemory { t } => write!(
+                f,
+                "the rows up to t = {t} fill the memory: use a larger output.every (every=) or a shorter t_end, \
+                 or the command line, which streams them to a file"
+            ),
             Stop::Python(e) => write!(f, "{e}"),
         }
     }
@@ -120,14 +137,19 @@ pub fn run<'py>(
         let columns = simulate::columns(&scene_model);
         let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
         let (result, bytes) = py.detach(|| {
-            let mut bytes: Vec<u8> =
-                Vec::with_capacity(scene_model.schedule.len() * names.len() * 8);
+            let row_bytes = names.len() * size_of::<f64>();
+            let mut bytes: Vec<u8> = Vec::new();
+            // At most a million rows up front; more as they come, refused (not aborted) when memory runs out.
+            let _ = bytes.try_reserve(scene_model.schedule.len().min(1 << 20) * row_bytes);
             let mut values = Vec::with_capacity(names.len());
             let mut signals = SignalCheck::new();
             let result = simulate::run(&scene_model, |s| {
                 columns
                     .finite_values(s, &mut values)
                     .map_err(Stop::NonFinite)?;
+                bytes
+                    .try_reserve(row_bytes)
+                    .map_err(|_| Stop::OutOfMemory { t: s.t })?;
                 bytes.extend(values.iter().flat_map(|v| v.to_ne_bytes()));
                 signals.poll().map_err(Stop::Python)
             });
@@ -136,11 +158,11 @@ pub fn run<'py>(
         let report = match result {
             Ok(report) => report,
             Err(RunError::Sink(Stop::Python(e))) => return Err(e),
-            Err(RunError::Sink(Stop::NonFinite(e))) => {
+            Err(RunError::Sink(stop)) => {
                 let failed = RunFailed {
                     scene: input.path.clone(),
-                    t: Some(e.t),
-                    reason: e.to_string(),
+                    t: stop.time(),
+                    reason: stop.to_string(),
                 };
                 return Err(run_error(py, &failed));
             }
