@@ -450,4 +450,51 @@ mod tests {
             assert!((e_k - Vector3::ith(k, 1.0)).norm() < 1e-12, "axis {k}");
         }
     }
+
+    fn free_scene() -> Scene {
+        crate::scene::SceneSpec::new(
+            crate::scene::BodySpec::principal(1.0, [1.0, 2.0, 3.0]),
+            2.0,
+            0.5,
+        )
+        .with_omega([0.3, 0.0, 2.0])
+        .build()
+        .unwrap()
+    }
+
+    #[test]
+    fn the_table_is_the_report_s_rows() {
+        let c = compare(&free_scene()).unwrap();
+        let table = c.table();
+        assert_eq!(table.len(), c.body_vs_space.rows().len());
+        // The torque-free body has a closed form for every quantity compared.
+        assert!(
+            table
+                .iter()
+                .all(|r| r.body_vs_exact.is_some() && r.space_vs_exact.is_some())
+        );
+        for r in &table {
+            let line = c
+                .report()
+                .lines()
+                .find(|l| l.starts_with(r.quantity))
+                .map(str::to_string);
+            assert!(line.is_some_and(|l| l.contains(&format!("{:.3e}", r.body_vs_space))));
+        }
+    }
+
+    #[test]
+    fn a_poll_that_breaks_stops_both_runs() {
+        let mut polls = 0;
+        let result = compare_until(&free_scene(), || {
+            polls += 1;
+            if polls > 2 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        });
+        assert!(matches!(result, Err(RunError::Sink(HandOver))));
+        assert_eq!(polls, 3);
+    }
 }

@@ -669,6 +669,28 @@ mod tests {
     }
 
     #[test]
+    fn the_items_gather_the_lines_under_their_labels() {
+        let mut d = Description::default();
+        line(&mut d, "body", "mass 1 kg");
+        line(&mut d, "", "row 1");
+        line(&mut d, "method", "rk4");
+        assert_eq!(
+            d.items(),
+            vec![
+                ("body", vec!["mass 1 kg", "row 1"]),
+                ("method", vec!["rk4"])
+            ]
+        );
+        assert_eq!(
+            d.text(),
+            format!(
+                "{:<LABEL$}mass 1 kg\n{:<LABEL$}row 1\n{:<LABEL$}rk4\n",
+                "body", "", "method"
+            )
+        );
+    }
+
+    #[test]
     fn every_axis_of_a_sphere_is_principal() {
         let sphere = principal([2.0, 2.0, 2.0]);
         let (angle, _) = tilt_from_principal(&sphere, &Vector3::new(1.0, 2.0, 3.0));

@@ -274,3 +274,34 @@ impl Flags<'_> {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::method::Method;
+
+    #[test]
+    fn flags_become_overrides_or_name_the_key_they_override() {
+        let file = Path::new("s.toml");
+        let flags = Flags {
+            method: Some("rk4"),
+            dt: Some(0.5),
+            ..Flags::default()
+        };
+        let o = flags.overrides(file).unwrap();
+        assert_eq!(
+            (o.method, o.dt, o.frame),
+            (Some(Method::Rk4), Some(0.5), None)
+        );
+        let bad = Flags {
+            frame: Some("lab"),
+            ..Flags::default()
+        };
+        let e = bad.overrides(file).unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("solver.frame (from --frame)"));
+        assert!(
+            e.to_string()
+                .starts_with("s.toml: key `solver.frame (from --frame)`: ")
+        );
+    }
+}
