@@ -324,4 +324,29 @@ impl ColumnSet {
             out.push(s.energy + v);
         }
     }
+    /// The values of one row, in column order, refusing a non-finite one (the CSV writer and the Python module
+    /// write only finite rows: the simulation must stop before it produces another).
+    pub fn finite_values(&self, s: &Sample, out: &mut Vec<f64>) -> Result<(), NonFinite> {
+        self.values(s, out);
+        match out.iter().position(|v| !v.is_finite()) {
+            None => Ok(()),
+            Some(i) => Err(NonFinite {
+                column: self.columns()[i].name,
+                value: out[i],
+                t: s.t,
+            }),
+        }
+    }
+}
+
+/// A row with a non-finite value: its column, the value and the row's time.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("non-finite value {value} in column {column} at t = {t}")]
+pub struct NonFinite {
+    /// The column's name.
+    pub column: &'static str,
+    /// The value (NaN or infinite).
+    pub value: f64,
+    /// The row's time (s).
+    pub t: f64,
 }

@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use eulerdyn::app::report;
+use eulerdyn::analysis::describe::describe;
 use eulerdyn::scene::{self, Overrides, SceneError};
 use proptest::prelude::*;
 
@@ -32,7 +32,7 @@ fn scenarios() -> Vec<String> {
 /// Parses, validates and describes: the whole of `eulerdyn check` but the printing.
 fn check(text: &str) -> Result<String, SceneError> {
     scene::parse(Path::new("fuzz.toml"), text, &Overrides::default())
-        .map(|s| report::describe(&s, &[]))
+        .map(|s| describe(&s, &[]).text())
 }
 
 fn assert_says_where(text: &str, result: &Result<String, SceneError>) {

@@ -405,3 +405,28 @@ fn accuracy_command_writes_the_contract_table_and_the_figure() {
         .unwrap();
     assert_eq!(bad.status.code(), Some(2));
 }
+
+#[test]
+fn a_progress_that_breaks_stops_the_study_before_its_next_run() {
+    let mut calls = Vec::new();
+    let e = study::accuracy_until(
+        Path::new("test.toml"),
+        FREE,
+        &StudyOptions::quick(),
+        |done, _, what| {
+            calls.push((done, what.to_string()));
+            if calls.len() > 3 {
+                std::ops::ControlFlow::Break(())
+            } else {
+                std::ops::ControlFlow::Continue(())
+            }
+        },
+    )
+    .expect_err("interrupted");
+    assert!(matches!(e, StudyError::Interrupted { .. }), "{e}");
+    assert_eq!(e.to_string(), "test.toml: the study was interrupted");
+    assert_eq!(e.exit_code(), 1);
+    // The reference, then the runs up to the one it was stopped before; no "done".
+    assert_eq!(calls.len(), 4);
+    assert!(calls.iter().all(|(_, what)| what != "done"));
+}

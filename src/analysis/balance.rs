@@ -13,11 +13,13 @@
 //! m_i = |v_i|/R. For the notes' skewed disk (s = 0, |d| = ¼ m R² sin θ cos θ) this is two equal masses
 //! ¼ m R² sin θ cos θ / (R_c (z_2 − z_1)) on opposite sides.
 
+use std::path::Path;
+
 use nalgebra::{Unit, Vector3};
 
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::support::Bearings;
-use crate::scene::{InvalidScene, Motion, PointMassSpec, SceneSpec};
+use crate::scene::{self, InvalidScene, Motion, Overrides, PointMassSpec, SceneError, SceneSpec};
 
 /// The correction planes: axial positions `a` and `b` from the axis point, and the radius of the masses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,6 +72,57 @@ pub enum BalanceError {
     /// The scene or the planes do not allow balancing.
     #[error("{0}")]
     Unbalanceable(String),
+}
+
+/// Balances the scene file `path` whose text is `text` (`eulerdyn balance`): validated first, for the scene's
+/// messages with line and column; a scene that cannot be balanced is an error naming the file
+/// (`FILE: cannot balance: …`).
+pub fn balance_scene(path: &Path, text: &str, planes: &Planes) -> Result<Balance, SceneError> {
+    scene::parse(path, text, &Overrides::default())?;
+    let spec = scene::parse_spec(path, text)?;
+    balance(&spec, planes).map_err(|e| SceneError {
+        file: path.to_path_buf(),
+        key: None,
+        location: None,
+        problem: format!("cannot balance: {e}"),
+    })
+}
+
+impl Balance {
+    /// What `eulerdyn balance` prints: the reference direction, each plane's mass and where it goes, and the
+    /// largest rotating bearing reaction before and after.
+    pub fn report(&self) -> String {
+        let mut text = String::new();
+        let r = &self.reference_b;
+        text += &format!(
+            "angles about the axis from {} across it: ({:.6}, {:.6}, {:.6}) in body axes\n",
+            self.reference_name, r.x, r.y, r.z
+        );
+        for (name, c) in ["A", "B"].iter().zip(&self.corrections) {
+            if c.mass == 0.0 {
+                text += &format!("plane {name} at {} m: mass 0 kg (none needed)\n", c.z);
+            } else {
+                text += &format!(
+                    "plane {name} at {} m: mass {:.9e} kg at {:.6} deg, at = [{:e}, {:e}, {:e}] m (body axes, from the reference origin)\n",
+                    c.z, c.mass, c.angle_deg, c.at_b.x, c.at_b.y, c.at_b.z
+                );
+            }
+        }
+        text += &format!(
+            "largest rotating bearing reaction at {} rad/s without effects: {:.6e} N before, {:.6e} N after\n",
+            self.rate, self.largest_reaction[0], self.largest_reaction[1]
+        );
+        text
+    }
+
+    /// The balanced scene as a scene file (TOML), with a header line saying where it came from.
+    pub fn balanced_toml(&self) -> Result<String, String> {
+        let text =
+            toml::to_string(&self.balanced).map_err(|e| format!("cannot write the scene: {e}"))?;
+        Ok(format!(
+            "# Written by `eulerdyn balance`: the scene with its two correction masses ([[body.point_mass]]).\n{text}"
+        ))
+    }
 }
 
 /// The correction masses of `spec` (a fixed-axis or hinge scene) in `planes`.

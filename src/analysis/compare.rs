@@ -2,6 +2,7 @@
 //! where one applies. The two runs stream in lockstep (the space form on a second thread), so memory does not grow
 //! with the number of rows.
 
+use std::ops::ControlFlow;
 use std::sync::mpsc;
 use std::thread;
 
@@ -236,6 +237,19 @@ impl Differences {
     }
 }
 
+/// One quantity of [`Comparison::table`]: relative differences (the attitude's absolute, in rad).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ComparisonRow {
+    /// The quantity's name, e.g. `H_s` or `attitude angle (rad)`.
+    pub quantity: &'static str,
+    /// Body form against space form.
+    pub body_vs_space: f64,
+    /// Body form against the closed form, when it gives this quantity.
+    pub body_vs_exact: Option<f64>,
+    /// Space form against the closed form, when it gives this quantity.
+    pub space_vs_exact: Option<f64>,
+}
+
 /// The outcome of `compare`.
 pub struct Comparison {
     pub body_vs_space: Differences,
@@ -257,6 +271,24 @@ impl Comparison {
         self.body_vs_space.worst().max(exact_worst) <= self.tolerance
     }
 
+    /// The relative differences per quantity (those compared between the forms), with the closed form's where it
+    /// gives that quantity.
+    pub fn table(&self) -> Vec<ComparisonRow> {
+        let exact_rows = self.exact.as_ref().map(|(_, b, s)| (b.rows(), s.rows()));
+        let lookup =
+            |rows: &[(&str, f64)], name: &str| rows.iter().find(|r| r.0 == name).map(|r| r.1);
+        self.body_vs_space
+            .rows()
+            .into_iter()
+            .map(|(quantity, body_vs_space)| ComparisonRow {
+                quantity,
+                body_vs_space,
+                body_vs_exact: exact_rows.as_ref().and_then(|(b, _)| lookup(b, quantity)),
+                space_vs_exact: exact_rows.as_ref().and_then(|(_, s)| lookup(s, quantity)),
+            })
+            .collect()
+    }
+
     /// A table for people: one line per quantity.
     pub fn report(&self) -> String {
         let mut out = String::new();
@@ -276,17 +308,15 @@ impl Comparison {
             "{:<22} {:>14} {:>14} {:>14}\n",
             "quantity", "body vs space", "body vs exact", "space vs exact"
         ));
-        let exact_rows = self.exact.as_ref().map(|(_, b, s)| (b.rows(), s.rows()));
-        for (name, diff) in self.body_vs_space.rows() {
-            let lookup = |rows: &Vec<(&str, f64)>| {
-                rows.iter()
-                    .find(|r| r.0 == name)
-                    .map_or("-".to_string(), |r| format!("{:.3e}", r.1))
-            };
-            let (b, s) = exact_rows
-                .as_ref()
-                .map_or(("-".into(), "-".into()), |(b, s)| (lookup(b), lookup(s)));
-            out.push_str(&format!("{name:<22} {diff:>14.3e} {b:>14} {s:>14}\n"));
+        let cell = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.3e}"));
+        for row in self.table() {
+            out.push_str(&format!(
+                "{:<22} {:>14.3e} {:>14} {:>14}\n",
+                row.quantity,
+                row.body_vs_space,
+                cell(row.body_vs_exact),
+                cell(row.space_vs_exact)
+            ));
         }
         out.push_str(&format!(
             "tolerance {:e}: {}\n",
@@ -324,6 +354,15 @@ pub struct HandOver;
 
 /// Runs the scene in both frames (in lockstep) and against its closed form.
 pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
+    compare_until(scene, || ControlFlow::Continue(()))
+}
+
+/// [`compare`], with `poll` called at every row of the body-form run: once it breaks, both runs stop and the
+/// result is `Err(RunError::Sink(HandOver))` (the Python module's Ctrl-C).
+pub fn compare_until(
+    scene: &Scene,
+    mut poll: impl FnMut() -> ControlFlow<()>,
+) -> Result<Comparison, RunError<HandOver>> {
     let mut body_scene = scene.clone();
     body_scene.solver.frame = Form::Body;
     let mut space_scene = scene.clone();
@@ -338,6 +377,9 @@ pub fn compare(scene: &Scene) -> Result<Comparison, RunError<HandOver>> {
     let mut space_vs_exact = Differences::default();
     let mut rows = 0;
     let body_result = simulate::run(&body_scene, |b: &Sample| {
+        if poll().is_break() {
+            return Err(HandOver);
+        }
         let Ok(s) = receiver.recv() else {
             // The space run stopped early; its own result says why.
             return Err(HandOver);
@@ -407,5 +449,52 @@ mod tests {
             let e_k = r_bp.inverse_transform_vector(&axis_b);
             assert!((e_k - Vector3::ith(k, 1.0)).norm() < 1e-12, "axis {k}");
         }
+    }
+
+    fn free_scene() -> Scene {
+        crate::scene::SceneSpec::new(
+            crate::scene::BodySpec::principal(1.0, [1.0, 2.0, 3.0]),
+            2.0,
+            0.5,
+        )
+        .with_omega([0.3, 0.0, 2.0])
+        .build()
+        .unwrap()
+    }
+
+    #[test]
+    fn the_table_is_the_report_s_rows() {
+        let c = compare(&free_scene()).unwrap();
+        let table = c.table();
+        assert_eq!(table.len(), c.body_vs_space.rows().len());
+        // The torque-free body has a closed form for every quantity compared.
+        assert!(
+            table
+                .iter()
+                .all(|r| r.body_vs_exact.is_some() && r.space_vs_exact.is_some())
+        );
+        for r in &table {
+            let line = c
+                .report()
+                .lines()
+                .find(|l| l.starts_with(r.quantity))
+                .map(str::to_string);
+            assert!(line.is_some_and(|l| l.contains(&format!("{:.3e}", r.body_vs_space))));
+        }
+    }
+
+    #[test]
+    fn a_poll_that_breaks_stops_both_runs() {
+        let mut polls = 0;
+        let result = compare_until(&free_scene(), || {
+            polls += 1;
+            if polls > 2 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        });
+        assert!(matches!(result, Err(RunError::Sink(HandOver))));
+        assert_eq!(polls, 3);
     }
 }

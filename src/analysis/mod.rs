@@ -1,7 +1,9 @@
-//! What is computed from runs: the comparison of forms and closed forms (`compare`), the work-precision study
-//! (`accuracy`), balancing (`balance`), and sweeps and Monte Carlo over many scenes (`sweep`).
+//! What is computed from scenes and runs: what a scene will simulate (`describe`), the comparison of forms and
+//! closed forms (`compare`), the work-precision study (`accuracy`), balancing (`balance`), and sweeps and Monte
+//! Carlo over many scenes (`sweep`).
 
 pub mod balance;
 pub mod compare;
+pub mod describe;
 pub mod study;
 pub mod sweep;

@@ -6,9 +6,9 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use crate::analysis::balance::{Balance, Planes, balance};
+use crate::analysis::balance::{Balance, Planes, balance_scene};
 use crate::output::AtomicFile;
-use crate::scene::{self, Overrides};
+use crate::scene;
 
 #[derive(Debug, Args)]
 pub struct BalanceArgs {
@@ -28,10 +28,7 @@ pub struct BalanceArgs {
 /// Runs the command; `Err` is bad input (exit 2) with its message.
 pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
     let path = &args.scene;
-    let in_file = |problem: String| format!("{}: {problem}", path.display());
-    // Validate first, for messages with line and column; then balance the typed scene.
-    scene::load(path, &Overrides::default()).map_err(|e| e.to_string())?;
-    let spec = scene::load_spec(path).map_err(|e| e.to_string())?;
+    let text = scene::read(path).map_err(|e| e.to_string())?;
     let planes: Vec<Result<f64, _>> = args
         .planes
         .split(',')
@@ -43,58 +40,26 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
             args.planes
         ));
     };
-    let result = balance(
-        &spec,
-        &Planes {
-            a,
-            b,
-            radius: args.radius,
-        },
-    )
-    .map_err(|e| in_file(format!("cannot balance: {e}")))?;
+    let planes = Planes {
+        a,
+        b,
+        radius: args.radius,
+    };
+    let result = balance_scene(path, &text, &planes).map_err(|e| e.to_string())?;
+    let mut report = result.report();
     if let Some(out) = &args.output {
         write_scene(out, &result).map_err(|e| format!("{}: {e}", out.display()))?;
+        report += &format!("wrote the balanced scene to {}\n", out.display());
     }
-    Ok(report(&result, args.output.as_deref()))
+    Ok(report)
 }
 
 /// The balanced scene as TOML, written atomically.
 fn write_scene(out: &Path, result: &Balance) -> Result<(), String> {
-    let text =
-        toml::to_string(&result.balanced).map_err(|e| format!("cannot write the scene: {e}"))?;
+    let text = result.balanced_toml()?;
     let mut file = AtomicFile::create(out).map_err(|e| format!("cannot create the file: {e}"))?;
-    let header = "# Written by `eulerdyn balance`: the scene with its two correction masses ([[body.point_mass]]).\n";
     file.file()
-        .write_all(header.as_bytes())
-        .and_then(|()| file.file().write_all(text.as_bytes()))
+        .write_all(text.as_bytes())
         .map_err(|e| format!("cannot write: {e}"))?;
     file.commit().map_err(|e| format!("cannot write: {e}"))
-}
-
-/// What `balance` prints.
-fn report(result: &Balance, out: Option<&Path>) -> String {
-    let mut text = String::new();
-    let r = &result.reference_b;
-    text += &format!(
-        "angles about the axis from {} across it: ({:.6}, {:.6}, {:.6}) in body axes\n",
-        result.reference_name, r.x, r.y, r.z
-    );
-    for (name, c) in ["A", "B"].iter().zip(&result.corrections) {
-        if c.mass == 0.0 {
-            text += &format!("plane {name} at {} m: mass 0 kg (none needed)\n", c.z);
-        } else {
-            text += &format!(
-                "plane {name} at {} m: mass {:.9e} kg at {:.6} deg, at = [{:e}, {:e}, {:e}] m (body axes, from the reference origin)\n",
-                c.z, c.mass, c.angle_deg, c.at_b.x, c.at_b.y, c.at_b.z
-            );
-        }
-    }
-    text += &format!(
-        "largest rotating bearing reaction at {} rad/s without effects: {:.6e} N before, {:.6e} N after\n",
-        result.rate, result.largest_reaction[0], result.largest_reaction[1]
-    );
-    if let Some(out) = out {
-        text += &format!("wrote the balanced scene to {}\n", out.display());
-    }
-    text
 }

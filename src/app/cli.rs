@@ -8,9 +8,9 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::analysis::describe;
 use crate::app::balance::{BalanceArgs, balance_command};
 use crate::app::progress::{self, Progress};
-use crate::app::report;
 use crate::app::sweep::{SweepArgs, SweepFailure, sweep_command};
 use crate::app::view::{ViewArgs, view_command};
 use crate::output::plot::{self, Panel, PlotError};
@@ -18,8 +18,8 @@ use crate::output::view::ViewError;
 use crate::output::{AtomicFile, CsvWriter, meta};
 use crate::sample::ColumnSet;
 use crate::scene::Scene;
-use crate::scene::{self, Overrides, SceneError};
-use crate::simulate::{self, RunError, RunReport};
+use crate::scene::{self, Flags, Overrides, SceneError};
+use crate::simulate::{self, RunError, RunFailed, RunReport};
 
 /// Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes.
 #[derive(Debug, Parser)]
@@ -236,7 +236,7 @@ fn check(path: &Path) -> Result<(), Failure> {
     let scene = scene::load(path, &Overrides::default())?;
     let spec = scene::load_spec(path)?;
     let warnings = scene::advice::warnings(&spec, &scene);
-    print_stdout(&report::describe(&scene, &warnings))
+    print_stdout(&describe::describe(&scene, &warnings).text())
 }
 
 /// Writes `text` to stdout. A closed pipe (`| head`) is not an error; any other failure (a full disk) is a failed
@@ -251,10 +251,11 @@ fn print_stdout(text: &str) -> Result<(), Failure> {
 }
 
 fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failure> {
-    let overrides = Overrides {
-        method: scene::flag_value(path, "solver", "method", method.as_deref())?,
-        ..Overrides::default()
-    };
+    let overrides = Flags {
+        method: method.as_deref(),
+        ..Flags::default()
+    }
+    .overrides(path)?;
     let scene = scene::load(path, &overrides)?;
     let spinner = Progress::spinner(
         "compare",
@@ -263,8 +264,7 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
     );
     let comparison = crate::analysis::compare::compare(&scene);
     spinner.finish();
-    let comparison =
-        comparison.map_err(|e| Failure::Run(format!("{}: the run failed: {e}", path.display())))?;
+    let comparison = comparison.map_err(|e| Failure::Run(RunFailed::new(path, &e).to_string()))?;
     print_stdout(&comparison.report())?;
     if comparison.passes() {
         Ok(())
@@ -278,16 +278,17 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
 }
 
 fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
-    let overrides = Overrides {
-        method: scene::flag_value(&args.scene, "solver", "method", args.method.as_deref())?,
-        frame: scene::flag_value(&args.scene, "solver", "frame", args.frame.as_deref())?,
-        backend: scene::flag_value(&args.scene, "solver", "backend", args.backend.as_deref())?,
+    let overrides = Flags {
+        method: args.method.as_deref(),
+        frame: args.frame.as_deref(),
+        backend: args.backend.as_deref(),
         rtol: args.rtol,
         atol: args.atol,
         dt: args.dt,
         t_end: args.t_end,
         every: args.every,
-    };
+    }
+    .overrides(&args.scene)?;
     let scene_model = scene::load(&args.scene, &overrides)?;
     if let Some(coarse) = simulate::CoarseStep::of(&scene_model) {
         eprintln!("{}: warning: {coarse}", args.scene.display());
@@ -426,7 +427,7 @@ fn same_file(a: &Path, b: &Path) -> bool {
 fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
     match e {
         e @ (RunError::Integrate(_) | RunError::Diverged(_)) => {
-            Failure::Run(format!("{}: the run failed: {e}", scene.display()))
+            Failure::Run(RunFailed::new(scene, &e).to_string())
         }
         RunError::Sink(e) => Failure::Run(format!("{}: cannot write: {e}", out.display())),
     }

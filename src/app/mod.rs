@@ -1,4 +1,4 @@
-//! The command-line program: argument parsing, what `check` prints, the progress bar and Ctrl-C. Not a library
+//! The command-line program: argument parsing, the progress bar and Ctrl-C. Not a library
 //! interface: everything it does is reachable through the library's own functions.
 
 pub mod accuracy;
@@ -6,6 +6,5 @@ pub mod balance;
 pub mod cli;
 pub mod interrupt;
 pub mod progress;
-pub mod report;
 pub mod sweep;
 pub mod view;

@@ -32,15 +32,10 @@ impl<W: Write> CsvWriter<W> {
     /// Appends one row. A non-finite value is refused (an `InvalidData` error naming the column): the simulation
     /// must stop before it produces one.
     pub fn write(&mut self, sample: &Sample) -> io::Result<()> {
-        self.columns.values(sample, &mut self.values);
+        self.columns
+            .finite_values(sample, &mut self.values)
+            .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?;
         for (i, v) in self.values.iter().enumerate() {
-            if !v.is_finite() {
-                let name = self.columns.columns()[i].name;
-                return Err(io::Error::new(
-                    io::ErrorKind::InvalidData,
-                    format!("non-finite value {v} in column {name} at t = {}", sample.t),
-                ));
-            }
             if i > 0 {
                 self.out.write_all(b",")?;
             }

@@ -49,8 +49,9 @@ pub fn load_spec(path: &Path) -> Result<SceneSpec, SceneError> {
     parse_spec(path, &read(path)?)
 }
 
-/// The text of a scene file (or another TOML input file: the messages name it).
-pub(crate) fn read(path: &Path) -> Result<String, SceneError> {
+/// The text of a scene file (or another TOML input file: the messages name it): a directory, an unreadable file
+/// and text that is not UTF-8 are errors naming the file.
+pub fn read(path: &Path) -> Result<String, SceneError> {
     let error = |problem: String| SceneError {
         file: path.to_path_buf(),
         key: None,
@@ -240,4 +241,67 @@ pub fn flag_value<T: Named>(
         location: None,
         problem,
     })
+}
+
+/// The command line's overriding flags as given (`--method rk4 --dt 0.01`; the Python module's keyword arguments),
+/// before their names are checked.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Flags<'a> {
+    pub method: Option<&'a str>,
+    pub frame: Option<&'a str>,
+    pub backend: Option<&'a str>,
+    pub rtol: Option<f64>,
+    pub atol: Option<f64>,
+    pub dt: Option<f64>,
+    pub t_end: Option<f64>,
+    pub every: Option<f64>,
+}
+
+impl Flags<'_> {
+    /// The overrides the flags give for the scene `file`; a bad name is an error naming the file and the key it
+    /// overrides, e.g. `solver.method (from --method)` (see [`flag_value`]). The numbers are checked with the
+    /// scene ([`SceneSpec::build_with`]).
+    pub fn overrides(&self, file: &Path) -> Result<Overrides, SceneError> {
+        Ok(Overrides {
+            method: flag_value(file, "solver", "method", self.method)?,
+            frame: flag_value(file, "solver", "frame", self.frame)?,
+            backend: flag_value(file, "solver", "backend", self.backend)?,
+            rtol: self.rtol,
+            atol: self.atol,
+            dt: self.dt,
+            t_end: self.t_end,
+            every: self.every,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::method::Method;
+
+    #[test]
+    fn flags_become_overrides_or_name_the_key_they_override() {
+        let file = Path::new("s.toml");
+        let flags = Flags {
+            method: Some("rk4"),
+            dt: Some(0.5),
+            ..Flags::default()
+        };
+        let o = flags.overrides(file).unwrap();
+        assert_eq!(
+            (o.method, o.dt, o.frame),
+            (Some(Method::Rk4), Some(0.5), None)
+        );
+        let bad = Flags {
+            frame: Some("lab"),
+            ..Flags::default()
+        };
+        let e = bad.overrides(file).unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("solver.frame (from --frame)"));
+        assert!(
+            e.to_string()
+                .starts_with("s.toml: key `solver.frame (from --frame)`: ")
+        );
+    }
 }

@@ -9,8 +9,8 @@ mod spec;
 mod template;
 mod validate;
 
-pub use file::{SceneError, flag_value, load, load_spec, parse, parse_spec};
-pub(crate) use file::{parse_toml, read};
+pub(crate) use file::parse_toml;
+pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SolverConfig};
 pub use spec::{
     BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,

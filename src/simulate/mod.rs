@@ -5,6 +5,7 @@
 //! that showed it is never written.
 
 use std::convert::Infallible;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use nalgebra::{SVector, Vector3};
@@ -56,6 +57,40 @@ pub enum RunError<E: std::error::Error + 'static> {
     /// The sink refused a row (e.g. a write error).
     #[error(transparent)]
     Sink(E),
+}
+
+impl<E: std::error::Error + 'static> RunError<E> {
+    /// The time (s) at which the run stopped, when known.
+    pub fn time(&self) -> Option<f64> {
+        match self {
+            RunError::Integrate(e) => e.time(),
+            RunError::Diverged(d) => Some(d.t),
+            RunError::Sink(_) => None,
+        }
+    }
+}
+
+/// A failed run of a scene, as the command line and the Python module report it: `SCENE: the run failed: REASON`.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}: the run failed: {reason}", scene.display())]
+pub struct RunFailed {
+    /// The scene file (or what stands for it, e.g. `<dict>`).
+    pub scene: PathBuf,
+    /// The time (s) at which the run stopped, when known.
+    pub t: Option<f64>,
+    /// Why it stopped.
+    pub reason: String,
+}
+
+impl RunFailed {
+    /// The failure of the run of `scene` that stopped with `e`.
+    pub fn new<E: std::error::Error + 'static>(scene: &Path, e: &RunError<E>) -> Self {
+        Self {
+            scene: scene.to_path_buf(),
+            t: e.time(),
+            reason: e.to_string(),
+        }
+    }
 }
 
 /// The optional columns a scene's run writes.

@@ -20,6 +20,7 @@ mod sweep;
 mod table;
 mod timing;
 
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -202,6 +203,9 @@ pub enum StudyError {
     /// The reference run failed.
     #[error("{}: the reference run failed: {problem}", file.display())]
     Reference { file: PathBuf, problem: String },
+    /// The study was stopped before it finished ([`accuracy_until`]).
+    #[error("{}: the study was interrupted", file.display())]
+    Interrupted { file: PathBuf },
     /// An output file cannot be created (bad path: exit 2) or written (exit 1).
     #[error("{}: {problem}", file.display())]
     Output {
@@ -219,7 +223,9 @@ impl StudyError {
         match self {
             StudyError::Scene(_) | StudyError::Unsuitable { .. } => 2,
             StudyError::Output { input: true, .. } => 2,
-            StudyError::Reference { .. } | StudyError::Output { input: false, .. } => 1,
+            StudyError::Reference { .. }
+            | StudyError::Interrupted { .. }
+            | StudyError::Output { input: false, .. } => 1,
         }
     }
 }
@@ -330,24 +336,50 @@ pub fn accuracy(
     options: &StudyOptions,
     mut progress: impl FnMut(usize, usize, &str),
 ) -> Result<Study, StudyError> {
+    accuracy_until(scene_path, text, options, |done, total, what| {
+        progress(done, total, what);
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`accuracy`], stopped before the next run with [`StudyError::Interrupted`] once `progress` breaks (the Python
+/// module's Ctrl-C).
+pub fn accuracy_until(
+    scene_path: &Path,
+    text: &str,
+    options: &StudyOptions,
+    mut progress: impl FnMut(usize, usize, &str) -> ControlFlow<()>,
+) -> Result<Study, StudyError> {
     let started = Instant::now();
     let base = studied_scene(scene_path, text)?;
     // Every run changes the typed scene, parsed once (never the text).
     let spec = scene::parse_spec(scene_path, text)?;
-    progress(0, 1, "reference");
+    let interrupted = || StudyError::Interrupted {
+        file: scene_path.to_path_buf(),
+    };
+    if progress(0, 1, "reference").is_break() {
+        return Err(interrupted());
+    }
     let reference = reference::StudyReference::for_scene(&base, scene_path, &spec)?;
     let sweep = sweep::Sweep::new(&spec, &base, &reference, options);
     let curves = plan(options);
     let total: usize = curves.iter().map(|c| c.planned).sum();
     let mut done = 0usize;
     let mut runs = Runs::default();
+    let mut stopped = false;
     for curve in curves {
         sweep.curve(&curve, &mut runs, |ran, what| {
-            progress(done + ran, total, what)
+            let flow = progress(done + ran, total, what);
+            stopped |= flow.is_break();
+            flow
         });
+        if stopped {
+            return Err(interrupted());
+        }
         done += curve.planned;
     }
-    progress(total, total, "done");
+    // The end is reported; the study is complete whatever the answer.
+    let _ = progress(total, total, "done");
     if runs.rows.is_empty() {
         return Err(StudyError::Unsuitable {
             file: scene_path.to_path_buf(),

@@ -9,6 +9,7 @@ use crate::method::{Backend, Method};
 use crate::sample::Sample;
 use crate::scene::{Overrides, Scene, SceneSpec};
 use crate::simulate;
+use std::ops::ControlFlow;
 
 use super::measure::{Errors, RowMismatch};
 use super::reference::{Reference, StudyReference};
@@ -80,8 +81,13 @@ impl<'a> Sweep<'a> {
     }
 
     /// Runs one curve into `runs`; `progress(ran, what)` is called before each run, `ran` counting the curve's
-    /// runs so far.
-    pub fn curve(&self, curve: &Curve, runs: &mut Runs, mut progress: impl FnMut(usize, &str)) {
+    /// runs so far, and stops the curve (before that run) when it breaks.
+    pub fn curve(
+        &self,
+        curve: &Curve,
+        runs: &mut Runs,
+        mut progress: impl FnMut(usize, &str) -> ControlFlow<()>,
+    ) {
         let name = label(curve.method, curve.backend);
         let what = |setting: &str| format!("{name} ({} form) {setting}", curve.frame.name());
         if curve.method.is_fixed_step() {
@@ -94,7 +100,9 @@ impl<'a> Sweep<'a> {
             });
         } else {
             // No step and no tolerance (`exact`): one run.
-            progress(0, &what("(no tolerance)"));
+            if progress(0, &what("(no tolerance)")).is_break() {
+                return;
+            }
             match self.run(&Setting::of(curve, None, None)) {
                 RunOutcome::Row(row) => runs.rows.push(row),
                 RunOutcome::Refused(reason) => runs.skip(name, reason),
@@ -109,7 +117,7 @@ impl<'a> Sweep<'a> {
         curve: &Curve,
         name: &str,
         runs: &mut Runs,
-        mut progress: impl FnMut(usize, &str),
+        mut progress: impl FnMut(usize, &str) -> ControlFlow<()>,
     ) {
         let mut previous: Option<f64> = None;
         for k in 0..=self.options.halvings {
@@ -117,7 +125,9 @@ impl<'a> Sweep<'a> {
             if self.t_end / dt > self.options.max_fixed_steps {
                 break;
             }
-            progress(k as usize, &format!("dt {dt:e} s"));
+            if progress(k as usize, &format!("dt {dt:e} s")).is_break() {
+                break;
+            }
             let row = match self.run(&Setting::of(curve, None, Some(dt))) {
                 RunOutcome::Row(row) => row,
                 RunOutcome::Refused(reason) => {
@@ -152,11 +162,13 @@ impl<'a> Sweep<'a> {
         curve: &Curve,
         name: &str,
         runs: &mut Runs,
-        mut progress: impl FnMut(usize, &str),
+        mut progress: impl FnMut(usize, &str) -> ControlFlow<()>,
     ) {
         let curve_start = runs.rows.len();
         for (ran, &rtol) in self.options.rtols.iter().enumerate() {
-            progress(ran, &format!("rtol {rtol:e}"));
+            if progress(ran, &format!("rtol {rtol:e}")).is_break() {
+                break;
+            }
             // Rounded to 12 digits, so that 1e-6 × 1e-2 is written 1e-8, not 1.0000000000000001e-8.
             let atol = format!("{:.11e}", rtol * self.atol_ratio)
                 .parse()

@@ -1,7 +1,8 @@
-//! What a scene will simulate, in a form a person reads at a glance (`eulerdyn check`): the body with its principal
-//! moments and axes, the motion (for a fixed axis, its tilt from the nearest principal axis), the moment center
-//! that H and M are taken about, the state at t = 0, the effects, the equation, method and tolerances, the rows and
-//! an estimate of the steps.
+//! What a scene will simulate, in a form a person reads at a glance (`eulerdyn check`, `eulerdyn.check` in Python):
+//! the body with its principal moments and axes, the motion (for a fixed axis, its tilt from the nearest principal
+//! axis), the moment center that H and M are taken about, the state at t = 0, the effects, the equation, method and
+//! tolerances, the rows and an estimate of the steps. [`describe`] gives it as labelled items ([`Description`]),
+//! [`Description::text`] as the command line prints it.
 
 use std::fmt::Write;
 
@@ -52,9 +53,39 @@ fn vec3(v: &Vector3<f64>) -> String {
     format!("({}, {}, {})", fixed(v[0]), fixed(v[1]), fixed(v[2]))
 }
 
+/// What a scene will simulate: labelled lines in the order `eulerdyn check` prints them.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Description {
+    /// (label, text) per line; a blank label continues the item above it (e.g. a tensor's rows).
+    pub lines: Vec<(String, String)>,
+}
+
+impl Description {
+    /// The items: each label with its lines (the continuation lines gathered under the label above them).
+    pub fn items(&self) -> Vec<(&str, Vec<&str>)> {
+        let mut items: Vec<(&str, Vec<&str>)> = Vec::new();
+        for (label, text) in &self.lines {
+            match items.last_mut() {
+                Some((_, texts)) if label.is_empty() => texts.push(text),
+                _ => items.push((label, vec![text])),
+            }
+        }
+        items
+    }
+
+    /// The text `eulerdyn check` prints: the labels in a column, then the text.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        for (label, text) in &self.lines {
+            let _ = writeln!(out, "{label:<LABEL$}{text}");
+        }
+        out
+    }
+}
+
 /// Appends `text` under `label` (a blank label continues the previous item).
-fn line(out: &mut String, label: &str, text: &str) {
-    let _ = writeln!(out, "{label:<LABEL$}{text}");
+fn line(out: &mut Description, label: &str, text: &str) {
+    out.lines.push((label.to_string(), text.to_string()));
 }
 
 /// The angle (degrees) between `axis` and the nearest principal direction of `principal`, and the number (1-based)
@@ -126,7 +157,7 @@ fn characteristic_rate(scene: &Scene) -> f64 {
         .fold(motion_rate, f64::max)
 }
 
-fn principal_lines(out: &mut String, principal: &Principal, about: &str) {
+fn principal_lines(out: &mut Description, principal: &Principal, about: &str) {
     for k in 0..3 {
         let axis = principal.axes_b.matrix().column(k).into_owned();
         line(
@@ -142,7 +173,7 @@ fn principal_lines(out: &mut String, principal: &Principal, about: &str) {
     }
 }
 
-fn tensor_lines(out: &mut String, title: &str, i: &Matrix3<f64>) {
+fn tensor_lines(out: &mut Description, title: &str, i: &Matrix3<f64>) {
     line(out, "", title);
     for r in 0..3 {
         line(
@@ -193,11 +224,11 @@ fn effect_text(e: &Effect) -> String {
     }
 }
 
-/// A multi-line description of the scene: body, principal moments and axes, motion and moment center, the state
-/// at t = 0, effects, method and tolerances, rows and an estimate of the steps; then `warnings` and a fixed step
-/// too coarse for the motion ([`simulate::CoarseStep`]), one `warning` line each.
-pub fn describe(scene: &Scene, warnings: &[String]) -> String {
-    let mut out = String::new();
+/// What the scene will simulate: body, principal moments and axes, motion and moment center, the state at t = 0,
+/// effects, method and tolerances, rows and an estimate of the steps; then `warnings` and a fixed step too coarse
+/// for the motion ([`simulate::CoarseStep`]), one `warning` item each.
+pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
+    let mut out = Description::default();
     let w = &mut out;
     scene_lines(w, scene);
     body_lines(w, scene);
@@ -214,7 +245,10 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> String {
     effect_lines(w, scene);
     let steps = method_lines(w, scene);
     output_lines(w, scene);
-    line(w, "estimate", &steps);
+    // A long estimate continues on the lines below its label.
+    for (k, text) in steps.lines().enumerate() {
+        line(w, if k == 0 { "estimate" } else { "" }, text);
+    }
     let coarse = simulate::CoarseStep::of(scene).map(|c| c.to_string());
     for warning in warnings.iter().chain(&coarse) {
         line(w, "warning", warning);
@@ -223,7 +257,7 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> String {
 }
 
 /// The scene's name and description.
-fn scene_lines(w: &mut String, scene: &Scene) {
+fn scene_lines(w: &mut Description, scene: &Scene) {
     let name = if scene.name.is_empty() {
         "(unnamed)"
     } else {
@@ -236,7 +270,7 @@ fn scene_lines(w: &mut String, scene: &Scene) {
 }
 
 /// The body: mass, inertia tensor about C, principal moments and axes.
-fn body_lines(w: &mut String, scene: &Scene) {
+fn body_lines(w: &mut Description, scene: &Scene) {
     let body = &scene.body;
     line(w, "body", &format!("mass {} kg", plain(body.mass())));
     tensor_lines(w, "inertia about C, body axes (kg*m^2):", body.inertia_c());
@@ -244,7 +278,7 @@ fn body_lines(w: &mut String, scene: &Scene) {
 }
 
 /// Free motion: its moment center (C, or the pivot of a gravity effect) and the state at t = 0.
-fn free_motion_lines(w: &mut String, scene: &Scene, omega0_b: &Vector3<f64>, free: &FreeBody) {
+fn free_motion_lines(w: &mut Description, scene: &Scene, omega0_b: &Vector3<f64>, free: &FreeBody) {
     let pivot = scene.effects.iter().find_map(|e| match e {
         Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
         _ => None,
@@ -306,7 +340,7 @@ fn free_motion_lines(w: &mut String, scene: &Scene, omega0_b: &Vector3<f64>, fre
 
 /// Prescribed fixed-axis motion: the axis and its tilt from the nearest principal axis, the rate, the moment
 /// center and the state at t = 0.
-fn fixed_axis_lines(w: &mut String, scene: &Scene, motion: &FixedAxis) {
+fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
     let axis_b = motion.axis_b().into_inner();
     let (tilt, nearest) = tilt_from_principal(scene.body.principal(), &axis_b);
     line(
@@ -344,7 +378,7 @@ fn fixed_axis_lines(w: &mut String, scene: &Scene, motion: &FixedAxis) {
 }
 
 /// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
-fn axis_point_lines(w: &mut String, point_b: &Vector3<f64>) {
+fn axis_point_lines(w: &mut Description, point_b: &Vector3<f64>) {
     if *point_b == Vector3::zeros() {
         line(
             w,
@@ -369,7 +403,7 @@ fn axis_point_lines(w: &mut String, point_b: &Vector3<f64>) {
 }
 
 /// The state of fixed-axis motion at t = 0: ω, H, the moment the bearings supply, the force, the energy.
-fn fixed_axis_state_lines(w: &mut String, s: &Sample) {
+fn fixed_axis_state_lines(w: &mut Description, s: &Sample) {
     line(
         w,
         "at t = 0",
@@ -404,7 +438,7 @@ fn fixed_axis_state_lines(w: &mut String, s: &Sample) {
 }
 
 /// The initial attitude, when it is not the identity.
-fn attitude_line(w: &mut String, scene: &Scene) {
+fn attitude_line(w: &mut Description, scene: &Scene) {
     if scene.attitude0.angle() == 0.0 {
         return;
     }
@@ -424,7 +458,7 @@ fn attitude_line(w: &mut String, scene: &Scene) {
 }
 
 /// A hinge: its axis, I_uu and initial angle and rate.
-fn hinge_lines(w: &mut String, hinge: &Hinge) {
+fn hinge_lines(w: &mut Description, hinge: &Hinge) {
     let axis = hinge.axis();
     line(
         w,
@@ -447,7 +481,7 @@ fn hinge_lines(w: &mut String, hinge: &Hinge) {
 
 /// Where C is (with point masses), and for an axis motion its bearings and its imbalance: static m·e (e the
 /// distance of C from the axis) and dynamic |I_A u − (u·I_A u) u| (the product of inertia about the axis).
-fn support_lines(w: &mut String, scene: &Scene) {
+fn support_lines(w: &mut Description, scene: &Scene) {
     if scene.center_b != Vector3::zeros() {
         line(
             w,
@@ -494,7 +528,7 @@ fn support_lines(w: &mut String, scene: &Scene) {
 }
 
 /// The effects, one a line (or why there are none).
-fn effect_lines(w: &mut String, scene: &Scene) {
+fn effect_lines(w: &mut Description, scene: &Scene) {
     if scene.effects.is_empty() {
         let none = match scene.motion {
             Motion::FixedAxis(_) => "none: the motion is prescribed",
@@ -508,8 +542,8 @@ fn effect_lines(w: &mut String, scene: &Scene) {
     }
 }
 
-/// The equation and the method with its step or tolerances; returns the estimate of the steps.
-fn method_lines(w: &mut String, scene: &Scene) -> String {
+/// The equation and the method with its step or tolerances; returns the estimate of the steps (one line or more).
+fn method_lines(w: &mut Description, scene: &Scene) -> String {
     let s = &scene.solver;
     let form = match s.frame {
         Form::Body => "body axes: I*omega' + omega x I*omega = M",
@@ -564,9 +598,8 @@ fn method_lines(w: &mut String, scene: &Scene) -> String {
         );
         if estimate.is_finite() {
             format!(
-                "about {} steps (adaptive: at least one per row interval, and about\n{:LABEL$}t_end*|omega|/(C*rtol^(1/(p+1))) by a rule of thumb good to a factor of 2, |omega| = {} rad/s)",
+                "about {} steps (adaptive: at least one per row interval, and about\nt_end*|omega|/(C*rtol^(1/(p+1))) by a rule of thumb good to a factor of 2, |omega| = {} rad/s)",
                 plain(estimate),
-                "",
                 fixed(rate)
             )
         } else {
@@ -586,7 +619,7 @@ fn method_lines(w: &mut String, scene: &Scene) -> String {
 }
 
 /// The rows and columns of the output.
-fn output_lines(w: &mut String, scene: &Scene) {
+fn output_lines(w: &mut Description, scene: &Scene) {
     let s = &scene.solver;
     let rows = scene.schedule.len();
     let extra: Vec<&str> = simulate::columns(scene)
@@ -653,6 +686,28 @@ mod tests {
         assert!(angle < 1e-6 && k == 3, "{angle} {k}");
         let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, 2.0, 0.0));
         assert!(angle < 1e-6 && k == 2, "{angle} {k}");
+    }
+
+    #[test]
+    fn the_items_gather_the_lines_under_their_labels() {
+        let mut d = Description::default();
+        line(&mut d, "body", "mass 1 kg");
+        line(&mut d, "", "row 1");
+        line(&mut d, "method", "rk4");
+        assert_eq!(
+            d.items(),
+            vec![
+                ("body", vec!["mass 1 kg", "row 1"]),
+                ("method", vec!["rk4"])
+            ]
+        );
+        assert_eq!(
+            d.text(),
+            format!(
+                "{:<LABEL$}mass 1 kg\n{:<LABEL$}row 1\n{:<LABEL$}rk4\n",
+                "body", "", "method"
+            )
+        );
     }
 
     #[test]

@@ -1,0 +1,39 @@
+"""eulerdyn: Euler's equation of rigid-body rotation, M = d/dt(I·ω), for notebooks (see ``__init__.py``)."""
+
+import os
+from typing import Any, Dict, Mapping, Optional, Tuple, Union
+
+import pandas as pd
+
+from ._eulerdyn import RunError as RunError
+from ._eulerdyn import SceneError as SceneError
+
+__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run"]
+
+SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+
+def run(
+    scene: SceneLike,
+    *,
+    method: Optional[str] = None,
+    frame: Optional[str] = None,
+    backend: Optional[str] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    dt: Optional[float] = None,
+    t_end: Optional[float] = None,
+    every: Optional[float] = None,
+) -> pd.DataFrame:
+    """Simulate a scene; its rows as a DataFrame with the CSV's columns, bit for bit (``eulerdyn run``)."""
+
+def check(scene: SceneLike) -> Dict[str, Any]:
+    """What a scene will simulate, as a dict (``eulerdyn check``)."""
+
+def compare(scene: SceneLike, *, method: Optional[str] = None) -> Dict[str, Any]:
+    """Both forms against each other and the closed form (``eulerdyn compare``)."""
+
+def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
+    """The work-precision study's table (``eulerdyn accuracy``)."""
+
+def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
+    """Two-plane balancing (``eulerdyn balance``)."""

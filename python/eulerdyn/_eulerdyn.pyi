@@ -1,0 +1,48 @@
+"""The extension module (Rust, python/src/): plain Python data; ``eulerdyn`` wraps it in pandas."""
+
+import os
+from typing import Any, Dict, List, Optional, Tuple, Union
+
+_Scene = Union[str, "os.PathLike[str]", Dict[str, Any]]
+
+class SceneError(ValueError):
+    """A scene or an argument that is not valid; the message is the command line's."""
+
+    file: str
+    key: Optional[str]
+    line: Optional[int]
+    column: Optional[int]
+    problem: str
+
+class RunError(RuntimeError):
+    """A run that failed; the message is the command line's."""
+
+    scene: str
+    t: Optional[float]
+    reason: str
+
+def run(
+    scene: _Scene,
+    *,
+    method: Optional[str] = None,
+    frame: Optional[str] = None,
+    backend: Optional[str] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    dt: Optional[float] = None,
+    t_end: Optional[float] = None,
+    every: Optional[float] = None,
+) -> Tuple[List[str], bytes, Dict[str, Any]]:
+    """Column names, the rows as native float64 bytes (row-major), and the run's report."""
+
+def check(scene: _Scene) -> Dict[str, Any]:
+    """What ``eulerdyn check`` prints, as a dict."""
+
+def compare(scene: _Scene, *, method: Optional[str] = None) -> Dict[str, Any]:
+    """The comparison as a dict; ``table`` is a list of (quantity, body_vs_space, body_vs_exact, space_vs_exact)."""
+
+def accuracy(scene: _Scene, *, quick: bool = False) -> Tuple[str, str]:
+    """The study's table (CSV text) and summary."""
+
+def balance(scene: _Scene, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
+    """The correction masses and the balanced scene, as a dict."""

@@ -1,0 +1,253 @@
+//! `check`, `compare`, `accuracy` and `balance`: the commands of the same names, as dicts and CSV text.
+
+use std::path::PathBuf;
+
+use eulerdyn::analysis::balance::{Planes, balance_scene};
+use eulerdyn::analysis::compare::{Comparison, compare_until};
+use eulerdyn::analysis::describe::describe;
+use eulerdyn::analysis::study::{self, StudyError, StudyOptions};
+use eulerdyn::scene::{Flags, Motion, Overrides, Scene, SceneError};
+use eulerdyn::simulate::{self, RunFailed};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+use crate::convert::{toml_to_py, vec3};
+use crate::errors::{no_panic, run_error, run_error_message};
+use crate::input::SceneInput;
+use crate::run::{SignalCheck, stop_on};
+
+/// The motion's kind as the scene file names it (`motion.kind`; `free` without a `[motion]`).
+fn motion_kind(scene: &Scene) -> &'static str {
+    match scene.motion {
+        Motion::Free { .. } => "free",
+        Motion::FixedAxis(_) => "fixed_axis",
+        Motion::Hinge(_) => "hinge",
+    }
+}
+
+/// What `eulerdyn check` prints about a scene (a path or a dict), as a dict: `text` (the printout), `items` (each
+/// label with its lines; a `warning` item for each warning), and the settings as values: name, description,
+/// motion, method, frame, backend, rtol, atol, dt, t_end, every, rows, columns. Raises SceneError for bad input.
+#[pyfunction]
+pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    no_panic(|| {
+        let input = SceneInput::from_py(scene)?;
+        let s = input.scene(py, &Overrides::default())?;
+        let warnings = input.warnings(py, &s)?;
+        let description = describe(&s, &warnings);
+        let d = PyDict::new(py);
+        d.set_item("text", description.text())?;
+        let items = PyDict::new(py);
+        for (label, lines) in description.items() {
+            match items.get_item(label)? {
+                Some(earlier) => {
+                    let earlier = earlier.cast::<PyList>()?;
+                    for line in lines {
+                        earlier.append(line)?;
+                    }
+                }
+                None => items.set_item(label, PyList::new(py, lines)?)?,
+            }
+        }
+        d.set_item("items", items)?;
+        d.set_item("name", &s.name)?;
+        d.set_item("description", &s.description)?;
+        d.set_item("motion", motion_kind(&s))?;
+        let solver = &s.solver;
+        d.set_item("method", solver.method.name())?;
+        d.set_item("frame", solver.frame.name())?;
+        d.set_item("backend", solver.backend.name())?;
+        d.set_item("rtol", solver.rtol)?;
+        d.set_item("atol", solver.atol)?;
+        d.set_item("dt", solver.dt)?;
+        d.set_item("t_end", solver.t_end)?;
+        d.set_item("every", s.schedule.every())?;
+        d.set_item("rows", s.schedule.len())?;
+        let columns: Vec<&str> = simulate::columns(&s)
+            .columns()
+            .iter()
+            .map(|c| c.name)
+            .collect();
+        d.set_item("columns", columns)?;
+        Ok(d)
+    })
+}
+
+/// The comparison as a dict: text (what `eulerdyn compare` prints), passes, tolerance, rows, closed_form (its name
+/// or None), note, and table: (quantity, body_vs_space, body_vs_exact, space_vs_exact) per quantity.
+fn comparison_dict<'py>(py: Python<'py>, c: &Comparison) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("text", c.report())?;
+    d.set_item("passes", c.passes())?;
+    d.set_item("tolerance", c.tolerance)?;
+    d.set_item("rows", c.rows)?;
+    d.set_item("closed_form", c.exact.as_ref().map(|e| e.0))?;
+    d.set_item("note", c.note.clone())?;
+    let table: Vec<_> = c
+        .table()
+        .iter()
+        .map(|r| {
+            (
+                r.quantity,
+                r.body_vs_space,
+                r.body_vs_exact,
+                r.space_vs_exact,
+            )
+        })
+        .collect();
+    d.set_item("table", table)?;
+    Ok(d)
+}
+
+/// Runs a scene (a path or a dict) in both forms of Euler's equation and against its closed form, as `eulerdyn
+/// compare` (with its `--method`). Returns a dict (see `comparison_dict`); `passes` is False where the command
+/// exits 1. Raises SceneError for bad input, RunError for a failed run.
+#[pyfunction]
+#[pyo3(signature = (scene, *, method=None))]
+pub fn compare<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+    method: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    no_panic(|| {
+        let input = SceneInput::from_py(scene)?;
+        let flags = Flags {
+            method: method.as_deref(),
+            ..Flags::default()
+        };
+        let overrides = flags
+            .overrides(&input.path)
+            .map_err(|e| input.error(py, e))?;
+        let s = input.scene(py, &overrides)?;
+        let (result, interrupted) = py.detach(|| {
+            let mut signals = SignalCheck::new();
+            let mut interrupted = None;
+            let result = compare_until(&s, || stop_on(signals.poll(), &mut interrupted));
+            (result, interrupted)
+        });
+        if let Some(interrupt) = interrupted {
+            return Err(interrupt);
+        }
+        let comparison = result.map_err(|e| run_error(py, &RunFailed::new(&input.path, &e)))?;
+        comparison_dict(py, &comparison)
+    })
+}
+
+/// The study's error as Python's: bad input (the command line's exit 2) as SceneError, a failed reference run as
+/// RunError.
+fn study_error(py: Python<'_>, input: &SceneInput, e: StudyError) -> PyErr {
+    let message = e.to_string();
+    match e {
+        StudyError::Scene(e) => input.error(py, e),
+        StudyError::Unsuitable { file, problem } => input.error(
+            py,
+            SceneError {
+                file,
+                key: None,
+                location: None,
+                problem,
+            },
+        ),
+        StudyError::Reference { file, problem } | StudyError::Output { file, problem, .. } => {
+            let failed = RunFailed {
+                scene: file,
+                t: None,
+                reason: problem,
+            };
+            run_error_message(py, message, &failed)
+        }
+        StudyError::Interrupted { file } => {
+            let failed = RunFailed {
+                scene: file,
+                t: None,
+                reason: "interrupted".into(),
+            };
+            run_error_message(py, message, &failed)
+        }
+    }
+}
+
+/// The work-precision study of a scene (a path or a dict), as `eulerdyn accuracy`; `quick` runs the library's
+/// quick study (4 tolerances, 4 step sizes, one repeat, own backend, body form) instead of the full one. Returns
+/// the table as CSV text (the command's columns) and the summary the command prints. Raises SceneError for a scene
+/// the study cannot use, RunError when the reference run fails, KeyboardInterrupt on Ctrl-C (between runs).
+#[pyfunction]
+#[pyo3(signature = (scene, *, quick=false))]
+pub fn accuracy(
+    py: Python<'_>,
+    scene: &Bound<'_, PyAny>,
+    quick: bool,
+) -> PyResult<(String, String)> {
+    no_panic(|| {
+        let input = SceneInput::from_py(scene)?;
+        let options = if quick {
+            StudyOptions::quick()
+        } else {
+            StudyOptions::default()
+        };
+        let (path, text): (PathBuf, &str) = (input.path.clone(), &input.text);
+        let result = py.detach(|| {
+            let mut signals = SignalCheck::new();
+            let mut interrupted = None;
+            let study = study::accuracy_until(&path, text, &options, |_, _, _| {
+                stop_on(signals.poll(), &mut interrupted)
+            });
+            (study, interrupted)
+        });
+        match result {
+            (_, Some(interrupt)) => Err(interrupt),
+            (Ok(study), None) => Ok((study.table_csv(), study.summary())),
+            (Err(e), None) => Err(study_error(py, &input, e)),
+        }
+    })
+}
+
+/// Two-plane balancing of a fixed-axis or hinge scene (a path or a dict), as `eulerdyn balance --planes A,B
+/// --radius R`. Returns a dict: text (what the command prints), corrections (per plane: plane, z, mass, angle_deg,
+/// at_b), reference_b, reference_name, rate, largest_reaction_before/after, scene (the balanced scene as a dict)
+/// and toml (it as a scene file). Raises SceneError for bad input or a scene that cannot be balanced.
+#[pyfunction]
+#[pyo3(signature = (scene, *, planes, radius))]
+pub fn balance<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+    planes: (f64, f64),
+    radius: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    no_panic(|| {
+        let input = SceneInput::from_py(scene)?;
+        let planes = Planes {
+            a: planes.0,
+            b: planes.1,
+            radius,
+        };
+        let result =
+            balance_scene(&input.path, &input.text, &planes).map_err(|e| input.error(py, e))?;
+        let d = PyDict::new(py);
+        d.set_item("text", result.report())?;
+        let corrections = PyList::empty(py);
+        for (name, c) in ["A", "B"].iter().zip(&result.corrections) {
+            let item = PyDict::new(py);
+            item.set_item("plane", name)?;
+            item.set_item("z", c.z)?;
+            item.set_item("mass", c.mass)?;
+            item.set_item("angle_deg", c.angle_deg)?;
+            item.set_item("at_b", vec3(&c.at_b))?;
+            corrections.append(item)?;
+        }
+        d.set_item("corrections", corrections)?;
+        d.set_item("reference_b", vec3(&result.reference_b))?;
+        d.set_item("reference_name", result.reference_name)?;
+        d.set_item("rate", result.rate)?;
+        d.set_item("largest_reaction_before", result.largest_reaction[0])?;
+        d.set_item("largest_reaction_after", result.largest_reaction[1])?;
+        let toml_text = result
+            .balanced_toml()
+            .map_err(crate::errors::RunError::new_err)?;
+        let value = toml::Value::try_from(&result.balanced)
+            .map_err(|e| crate::errors::RunError::new_err(e.to_string()))?;
+        d.set_item("scene", toml_to_py(py, &value)?)?;
+        d.set_item("toml", toml_text)?;
+        Ok(d)
+    })
+}

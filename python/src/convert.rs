@@ -1,0 +1,36 @@
+//! Rust values as Python values: vectors as tuples, TOML values (a balanced scene) as dicts and lists.
+
+use nalgebra::Vector3;
+use pyo3::IntoPyObjectExt;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+/// A 3-vector as a tuple (x, y, z).
+pub fn vec3(v: &Vector3<f64>) -> (f64, f64, f64) {
+    (v.x, v.y, v.z)
+}
+
+/// A TOML value as the Python value `tomllib` would give (a datetime as its text).
+pub fn toml_to_py<'py>(py: Python<'py>, value: &toml::Value) -> PyResult<Bound<'py, PyAny>> {
+    match value {
+        toml::Value::String(s) => s.into_bound_py_any(py),
+        toml::Value::Integer(i) => i.into_bound_py_any(py),
+        toml::Value::Float(x) => x.into_bound_py_any(py),
+        toml::Value::Boolean(b) => b.into_bound_py_any(py),
+        toml::Value::Datetime(d) => d.to_string().into_bound_py_any(py),
+        toml::Value::Array(items) => {
+            let list = PyList::empty(py);
+            for item in items {
+                list.append(toml_to_py(py, item)?)?;
+            }
+            Ok(list.into_any())
+        }
+        toml::Value::Table(table) => {
+            let dict = PyDict::new(py);
+            for (k, v) in table {
+                dict.set_item(k, toml_to_py(py, v)?)?;
+            }
+            Ok(dict.into_any())
+        }
+    }
+}

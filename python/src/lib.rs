@@ -1,0 +1,31 @@
+//! `eulerdyn._eulerdyn`: the eulerdyn library for Python, one function per command of the command line (`run`,
+//! `check`, `compare`, `accuracy`, `balance`). Each takes a scene file's path or a dict of the same keys, calls the
+//! library (nothing is computed here), and returns plain Python data that `eulerdyn/__init__.py` turns into pandas
+//! DataFrames.
+//!
+//! Bad input raises `eulerdyn.SceneError` (a `ValueError`) with the command line's message; a run that fails
+//! raises `eulerdyn.RunError` with the time and the reason. Runs release the GIL and look for Ctrl-C
+//! (KeyboardInterrupt) a few times a second. A panic in the library is caught and raised as `RunError`, never as
+//! pyo3's `PanicException`.
+
+mod commands;
+mod convert;
+mod errors;
+mod input;
+mod run;
+
+use pyo3::prelude::*;
+
+/// The extension module: its functions and exceptions.
+#[pymodule]
+fn _eulerdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("SceneError", py.get_type::<errors::SceneError>())?;
+    m.add("RunError", py.get_type::<errors::RunError>())?;
+    m.add_function(wrap_pyfunction!(run::run, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::check, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::compare, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::accuracy, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::balance, m)?)?;
+    Ok(())
+}

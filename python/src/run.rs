@@ -1,0 +1,173 @@
+//! `run`: a scene's rows as the command line's CSV columns, row-major float64 bytes; the GIL released meanwhile,
+//! with Ctrl-C looked for a few times a second.
+
+use std::fmt;
+use std::ops::ControlFlow;
+use std::time::{Duration, Instant};
+
+use eulerdyn::sample::NonFinite;
+use eulerdyn::scene::Flags;
+use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyDict};
+
+use crate::errors::{no_panic, run_error};
+use crate::input::SceneInput;
+
+/// How often a run looks for Ctrl-C (reacquiring the GIL to run Python's signal handlers).
+const SIGNAL_INTERVAL: Duration = Duration::from_millis(50);
+
+/// Why the Python sink stopped a run: a non-finite value (as the CSV writer refuses it), rows that do not fit in
+/// memory, or a Python exception raised by a signal handler (KeyboardInterrupt).
+#[derive(Debug)]
+pub enum Stop {
+    NonFinite(NonFinite),
+    OutOfMemory { t: f64 },
+    Python(PyErr),
+}
+
+impl Stop {
+    /// The row time the run stopped at, when known.
+    fn time(&self) -> Option<f64> {
+        match self {
+            Stop::NonFinite(e) => Some(e.t),
+            Stop::OutOfMemory { t } => Some(*t),
+            Stop::Python(_) => None,
+        }
+    }
+}
+
+impl fmt::Display for Stop {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Stop::NonFinite(e) => write!(f, "{e}"),
+            Stop::OutOfMemory { t } => write!(
+                f,
+                "the rows up to t = {t} fill the memory: use a larger output.every (every=) or a shorter t_end, \
+                 or the command line, which streams them to a file"
+            ),
+            Stop::Python(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for Stop {}
+
+/// Calls `check` (with the GIL) at most every [`SIGNAL_INTERVAL`]: Python's signal handlers run there, and the
+/// KeyboardInterrupt a Ctrl-C raises stops the run.
+pub struct SignalCheck {
+    last: Instant,
+}
+
+impl SignalCheck {
+    pub fn new() -> Self {
+        Self {
+            last: Instant::now(),
+        }
+    }
+
+    /// Runs Python's signal handlers if the interval has passed; their exception, if any.
+    pub fn poll(&mut self) -> Result<(), PyErr> {
+        if self.last.elapsed() < SIGNAL_INTERVAL {
+            return Ok(());
+        }
+        self.last = Instant::now();
+        Python::attach(|py| py.check_signals())
+    }
+}
+
+/// A poll's answer for a library function that stops when it breaks: the exception (KeyboardInterrupt) is kept in
+/// `interrupted`, to raise once the function has returned.
+pub fn stop_on(polled: Result<(), PyErr>, interrupted: &mut Option<PyErr>) -> ControlFlow<()> {
+    match polled {
+        Ok(()) => ControlFlow::Continue(()),
+        Err(e) => {
+            *interrupted = Some(e);
+            ControlFlow::Break(())
+        }
+    }
+}
+
+/// The run's report as a dict: rows, steps, rejected, evals, wall_seconds.
+fn report_dict<'py>(py: Python<'py>, report: &RunReport) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("rows", report.rows)?;
+    d.set_item("steps", report.stats.steps)?;
+    d.set_item("rejected", report.stats.rejected)?;
+    d.set_item("evals", report.stats.evals)?;
+    d.set_item("wall_seconds", report.wall_seconds)?;
+    Ok(d)
+}
+
+/// Simulates a scene (a path or a dict) with the command line's `run` flags. Returns the CSV's column names, the
+/// rows as native-endian float64 bytes (row-major), and the run's report (rows, steps, rejected, evals,
+/// wall_seconds). Raises SceneError for bad input, RunError for a failed run, KeyboardInterrupt on Ctrl-C.
+#[pyfunction]
+#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None))]
+#[allow(clippy::too_many_arguments)]
+#[allow(clippy::type_complexity)]
+pub fn run<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+    method: Option<String>,
+    frame: Option<String>,
+    backend: Option<String>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    dt: Option<f64>,
+    t_end: Option<f64>,
+    every: Option<f64>,
+) -> PyResult<(Vec<&'static str>, Bound<'py, PyBytes>, Bound<'py, PyDict>)> {
+    let flags = Flags {
+        method: method.as_deref(),
+        frame: frame.as_deref(),
+        backend: backend.as_deref(),
+        rtol,
+        atol,
+        dt,
+        t_end,
+        every,
+    };
+    no_panic(|| {
+        let input = SceneInput::from_py(scene)?;
+        let overrides = flags
+            .overrides(&input.path)
+            .map_err(|e| input.error(py, e))?;
+        let scene_model = input.scene(py, &overrides)?;
+        let columns = simulate::columns(&scene_model);
+        let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
+        let (result, bytes) = py.detach(|| {
+            let row_bytes = names.len() * size_of::<f64>();
+            let mut bytes: Vec<u8> = Vec::new();
+            // At most a million rows up front; more as they come, refused (not aborted) when memory runs out.
+            let _ = bytes.try_reserve(scene_model.schedule.len().min(1 << 20) * row_bytes);
+            let mut values = Vec::with_capacity(names.len());
+            let mut signals = SignalCheck::new();
+            let result = simulate::run(&scene_model, |s| {
+                columns
+                    .finite_values(s, &mut values)
+                    .map_err(Stop::NonFinite)?;
+                bytes
+                    .try_reserve(row_bytes)
+                    .map_err(|_| Stop::OutOfMemory { t: s.t })?;
+                bytes.extend(values.iter().flat_map(|v| v.to_ne_bytes()));
+                signals.poll().map_err(Stop::Python)
+            });
+            (result, bytes)
+        });
+        let report = match result {
+            Ok(report) => report,
+            Err(RunError::Sink(Stop::Python(e))) => return Err(e),
+            Err(RunError::Sink(stop)) => {
+                let failed = RunFailed {
+                    scene: input.path.clone(),
+                    t: stop.time(),
+                    reason: stop.to_string(),
+                };
+                return Err(run_error(py, &failed));
+            }
+            Err(e) => return Err(run_error(py, &RunFailed::new(&input.path, &e))),
+        };
+        Ok((names, PyBytes::new(py, &bytes), report_dict(py, &report)?))
+    })
+}

@@ -1,0 +1,137 @@
+"""check, compare, accuracy and balance: the commands' output, as Python data."""
+
+import math
+
+import numpy as np
+import pytest
+
+import eulerdyn
+from conftest import cli_csv, disk_dict, run_cli
+
+STUDY_COLUMNS = [
+    "method", "frame", "rtol", "dt", "err_omega", "err_attitude", "energy_drift", "H_drift", "wall_s", "steps",
+    "rejected", "evals", "err_H_s", "atol", "backend", "repeats", "status",
+]
+
+
+@pytest.mark.parametrize("name", ["tilted_disk.toml", "asymmetric_free.toml", "rod_pendulum.toml", "heavy_top.toml"])
+def test_check_is_what_the_cli_prints(scenario, name):
+    path = scenario(name)
+    info = eulerdyn.check(path)
+    assert info["text"] == run_cli("check", str(path)).stdout
+    header, rows = cli_csv(str(path))
+    assert info["columns"] == header
+    assert info["rows"] == len(rows)
+    assert info["t_end"] == rows[-1][0]
+    # Every line of the printout is under one of the items.
+    lines = sum(len(v) for v in info["items"].values())
+    assert lines == len(info["text"].splitlines())
+
+
+def test_check_of_the_disk_dict():
+    info = eulerdyn.check(disk_dict())
+    assert info["motion"] == "fixed_axis"
+    assert (info["method"], info["frame"], info["every"], info["rows"]) == ("dop853", "space", 0.01, 101)
+    assert info["name"] == "tilted-disk"
+    assert "dop853" in info["items"]["method"][0]
+    assert info["text"].startswith("scene          tilted-disk\n")
+
+
+def test_compare_is_what_the_cli_prints(scenario):
+    path = scenario("asymmetric_free.toml")
+    result = eulerdyn.compare(path)
+    assert result["text"] == run_cli("compare", str(path)).stdout
+    assert result["passes"] is True
+    assert result["tolerance"] == 1e-8
+    assert result["closed_form"] is not None
+    differences = result["differences"]
+    assert list(differences.columns) == ["body vs space", "body vs exact", "space vs exact"]
+    assert "omega" in differences.index
+    assert (differences.max() <= 1e-8).all()
+
+
+def test_compare_of_a_dict_that_exceeds_the_tolerance(tmp_path):
+    """RK4 at a coarse step against the closed form: the command exits 1, the module says passes = False."""
+    text = (
+        "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.3, 0.0, 2.0]\n"
+        '[solver]\nmethod = "rk4"\ndt = 0.05\nt_end = 10.0\n[output]\nevery = 0.5\n[compare]\ntolerance = 1e-8\n'
+    )
+    path = tmp_path / "coarse.toml"
+    path.write_text(text)
+    scene = {
+        "body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]},
+        "initial": {"omega": [0.3, 0.0, 2.0]},
+        "solver": {"method": "rk4", "dt": 0.05, "t_end": 10.0},
+        "output": {"every": 0.5},
+        "compare": {"tolerance": 1e-8},
+    }
+    result = eulerdyn.compare(scene)
+    cli = run_cli("compare", str(path), expect=1)
+    assert result["text"] == cli.stdout
+    assert result["passes"] is False
+    assert result["differences"].to_numpy().max() > result["tolerance"]
+    # With dop853 (the flag) it passes.
+    assert eulerdyn.compare(scene, method="dop853")["passes"] is True
+
+
+def test_accuracy_quick_study_of_a_dict():
+    scene = {
+        "body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]},
+        "initial": {"omega": [0.3, 0.0, 2.0]},
+        "solver": {"t_end": 2.0},
+        "output": {"every": 0.5},
+    }
+    table = eulerdyn.accuracy(scene, quick=True)
+    assert list(table.columns) == STUDY_COLUMNS
+    assert set(table["method"]) >= {"rk4", "dopri5", "dop853", "split2", "split4", "exact"}
+    assert (table["status"] == "ok").all()
+    # Against the closed form, dop853 at rtol 1e-10 is far better than at 1e-4.
+    dop853 = table[table["method"] == "dop853"].set_index("rtol")["err_omega"]
+    assert dop853[1e-10] < 1e-3 * dop853[1e-4]
+    # The command's cells, typed: counts as ints, numbers as floats (NaN for an empty cell), names as str.
+    assert str(table["steps"].dtype) == "int64" and str(table["repeats"].dtype) == "int64"
+    assert table["rtol"].dtype == float and table["dt"].dtype == float
+    assert table[table["method"] == "rk4"]["rtol"].isna().all()
+    assert table[table["method"] == "rk4"]["dt"].notna().all()
+    assert set(table["frame"]) == {"body"} and set(table["backend"]) == {"own"}
+    assert "dop853" in table.attrs["summary"]
+
+
+def test_accuracy_refuses_a_scene_it_cannot_study():
+    scene = {"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 0.0}, "output": {"every": 0.5}}
+    with pytest.raises(eulerdyn.SceneError, match="t_end = 0"):
+        eulerdyn.accuracy(scene, quick=True)
+
+
+def test_balance_is_what_the_cli_prints(scenario):
+    path = scenario("rotor_bearings.toml")
+    result = eulerdyn.balance(path, planes=(-0.1, 0.1), radius=0.2)
+    assert result["text"] == run_cli("balance", str(path), "--planes", "-0.1,0.1", "--radius", "0.2").stdout
+    assert result["largest_reaction_after"] < 1e-9 * result["largest_reaction_before"]
+    # The balanced scene runs, and its bearing reactions no longer rotate.
+    df = eulerdyn.run(result["scene"])
+    for column in ("R_A_s_x", "R_A_s_y", "R_B_s_x", "R_B_s_y"):
+        assert np.ptp(df[column]) <= 1e-9 * 19.62, column
+
+
+def test_balance_of_the_notes_disk():
+    """The notes' skewed disk (s = 0, |d| = ¼ m R² sin θ cos θ): two equal masses ¼ m R² sin θ cos θ / (R_c (z₂ − z₁))
+    on opposite sides."""
+    m, r, theta, r_c, (z1, z2) = 2.0, 0.3, math.radians(30.0), 0.2, (-0.1, 0.1)
+    result = eulerdyn.balance(disk_dict(), planes=(z1, z2), radius=r_c)
+    expected = 0.25 * m * r * r * math.sin(theta) * math.cos(theta) / (r_c * (z2 - z1))
+    masses = [c["mass"] for c in result["corrections"]]
+    assert masses == pytest.approx([expected, expected], rel=1e-12)
+    assert [c["plane"] for c in result["corrections"]] == ["A", "B"]
+    # At R_c from the axis u = (0, −sin θ, cos θ) (body axes), on opposite sides of it, in their planes.
+    u = np.array([0.0, -math.sin(theta), math.cos(theta)])
+    a, b = (np.array(c["at_b"]) for c in result["corrections"])
+    assert (np.dot(a, u), np.dot(b, u)) == pytest.approx((z1, z2), abs=1e-12)
+    radial_a, radial_b = a - np.dot(a, u) * u, b - np.dot(b, u) * u
+    assert np.dot(radial_a, radial_b) == pytest.approx(-r_c * r_c, rel=1e-12)
+
+
+def test_balance_refuses_a_free_body():
+    scene = {"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.5}}
+    with pytest.raises(eulerdyn.SceneError, match="<dict>: cannot balance: .*fixed_axis or a hinge"):
+        eulerdyn.balance(scene, planes=(-0.1, 0.1), radius=0.2)
