@@ -29,7 +29,7 @@ import pandas as pd
 from . import _eulerdyn
 from ._eulerdyn import RunError, SceneError
 
-__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run"]
+__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run", "sweep"]
 
 #: A scene: the path of a scene file, or a dict of its keys (nested dicts for its tables, lists of dicts for
 #: ``[[effect]]`` and ``[[body.point_mass]]``).
@@ -167,6 +167,33 @@ def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
     df = _table(table)
     df.attrs["summary"] = summary
     return df
+
+
+def sweep(
+    sweep_file: Union[str, "os.PathLike[str]"], *, jobs: Optional[int] = None, shard: Optional[str] = None
+) -> pd.DataFrame:
+    """The runs of a sweep file, as ``eulerdyn sweep SWEEP.toml``: a base scene run many times with numeric keys
+    set from grids (``values``, ``linspace``, ``logspace``) or drawn at random (``normal``, ``uniform``), in
+    parallel, each run reduced to one row.
+
+    Args:
+        sweep_file: the path of the sweep file (its ``scene`` is relative to it).
+        jobs: threads (None: all cores).
+        shard: ``"K/N"``: only the runs with ``run % N == K - 1`` (for N processes that split a sweep).
+
+    Returns:
+        The results table, a row per run sorted by ``run``: ``run``, one column per varied key, ``status``
+        (``ok``, ``failed``, ``invalid``), ``message``, ``max_M_norm`` (and ``max_F_sup_norm``, ``max_R_A_norm``,
+        ``max_R_B_norm`` where the scene has them), ``energy_drift``, ``H_drift``, ``final_omega_b_x/y/z``,
+        ``steps``, ``evals``, ``wall_s``, then ``min_X``, ``max_X``, ``final_X`` of each ``[summary]`` column.
+        A failed or invalid run is a row with its message (NaN in its numeric columns); nothing is raised for it.
+
+    Raises:
+        SceneError: the sweep file or its base scene is not valid (unknown key, empty grid, ...), a bad shard,
+            or ``jobs=0``.
+        KeyboardInterrupt: Ctrl-C (the sweep stops between runs).
+    """
+    return _table(_eulerdyn.sweep(os.fspath(sweep_file), jobs=jobs, shard=shard))
 
 
 def _table(text: str) -> pd.DataFrame:

@@ -8,7 +8,7 @@ import pandas as pd
 from ._eulerdyn import RunError as RunError
 from ._eulerdyn import SceneError as SceneError
 
-__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run"]
+__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run", "sweep"]
 
 SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 
@@ -37,3 +37,8 @@ def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
 
 def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
     """Two-plane balancing (``eulerdyn balance``)."""
+
+def sweep(
+    sweep_file: Union[str, "os.PathLike[str]"], *, jobs: Optional[int] = None, shard: Optional[str] = None
+) -> pd.DataFrame:
+    """The results table of a sweep file (``eulerdyn sweep``), a row per run."""

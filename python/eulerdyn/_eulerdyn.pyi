@@ -46,3 +46,6 @@ def accuracy(scene: _Scene, *, quick: bool = False) -> Tuple[str, str]:
 
 def balance(scene: _Scene, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
     """The correction masses and the balanced scene, as a dict."""
+
+def sweep(sweep: str, *, jobs: Optional[int] = None, shard: Optional[str] = None) -> str:
+    """The sweep's results table as CSV text."""

@@ -1,5 +1,5 @@
 //! `eulerdyn._eulerdyn`: the eulerdyn library for Python, one function per command of the command line (`run`,
-//! `check`, `compare`, `accuracy`, `balance`). Each takes a scene file's path or a dict of the same keys, calls the
+//! `check`, `compare`, `accuracy`, `balance`, `sweep`). Each takes a scene file's path or a dict of the same keys, calls the
 //! library (nothing is computed here), and returns plain Python data that `eulerdyn/__init__.py` turns into pandas
 //! DataFrames.
 //!
@@ -13,6 +13,7 @@ mod convert;
 mod errors;
 mod input;
 mod run;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -27,5 +28,6 @@ fn _eulerdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::compare, m)?)?;
     m.add_function(wrap_pyfunction!(commands::accuracy, m)?)?;
     m.add_function(wrap_pyfunction!(commands::balance, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! `run`: a scene's rows as the command line's CSV columns, row-major float64 bytes; the GIL released meanwhile,
 //! with Ctrl-C looked for a few times a second.
 
+use std::ffi::CString;
 use std::fmt;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
@@ -8,6 +9,7 @@ use std::time::{Duration, Instant};
 use eulerdyn::sample::NonFinite;
 use eulerdyn::scene::Flags;
 use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
+use pyo3::exceptions::PyUserWarning;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict};
 
@@ -134,6 +136,9 @@ pub fn run<'py>(
             .overrides(&input.path)
             .map_err(|e| input.error(py, e))?;
         let scene_model = input.scene(py, &overrides)?;
+        if let Some(coarse) = simulate::CoarseStep::of(&scene_model) {
+            warn(py, format!("{}: {coarse}", input.path.display()))?;
+        }
         let columns = simulate::columns(&scene_model);
         let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
         let (result, bytes) = py.detach(|| {
@@ -168,6 +173,15 @@ pub fn run<'py>(
             }
             Err(e) => return Err(run_error(py, &RunFailed::new(&input.path, &e))),
         };
+        if let Some(drift) = simulate::drift_warning(report.energy_drift) {
+            warn(py, format!("{}: {drift}", input.path.display()))?;
+        }
         Ok((names, PyBytes::new(py, &bytes), report_dict(py, &report)?))
     })
+}
+
+/// Issues a Python `UserWarning` (the command line prints the same text on stderr as `warning: …`).
+fn warn(py: Python<'_>, message: String) -> PyResult<()> {
+    let text = CString::new(message.replace('\0', " ")).unwrap_or_default();
+    PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 2)
 }

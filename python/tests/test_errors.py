@@ -129,10 +129,14 @@ every = 0.4
 def test_a_failed_run_is_run_error_with_the_time(tmp_path):
     path = tmp_path / "diverging.toml"
     path.write_text(DIVERGING)
-    stderr = run_cli("run", str(path), expect=1).stderr.strip()
-    with pytest.raises(eulerdyn.RunError) as e:
+    stderr = run_cli("run", str(path), expect=1).stderr.strip().splitlines()
+    # The coarse step is warned of first (a UserWarning in Python, a `warning:` line on stderr), then the error.
+    with pytest.raises(eulerdyn.RunError) as e, pytest.warns(UserWarning, match="turns the body by 8.02 rad"):
         eulerdyn.run(path)
-    assert f"error: {e.value}" == stderr
+    assert stderr[0] == f"{path}: warning: a fixed step of 0.4 s turns the body by 8.02 rad (|omega| = 20 rad/s), " \
+        "more than the 0.1 rad per step a fixed-step method needs to be accurate: the rows may be wrong; use " \
+        "dt <= 0.00499 s or an adaptive method (dopri5, dop853)"
+    assert f"error: {e.value}" == stderr[-1]
     assert str(e.value).startswith(f"{path}: the run failed: ")
     assert isinstance(e.value.t, float) and 0.0 < e.value.t <= 50.0
     assert f"t = {e.value.t}" in e.value.reason or str(e.value.t) in e.value.reason

@@ -1,6 +1,7 @@
 """`eulerdyn.run`: the command line's CSV, bit for bit, from a scene file or a dict, with each of its flags."""
 
 import math
+import warnings
 
 import numpy as np
 import pandas as pd
@@ -117,3 +118,16 @@ def test_the_frame_is_a_free_choice_for_the_values():
     body = eulerdyn.run(disk_dict(), frame="body")
     space = eulerdyn.run(disk_dict(), frame="space")
     assert np.allclose(body["M_s_x"], space["M_s_x"], atol=1e-12)
+
+
+def test_a_coarse_fixed_step_and_a_drifting_energy_are_user_warnings(scenario):
+    # The heavy top (150 rad/s) with rk4 and dt = 0.05 s, capped at the rows' 0.01 s: 1.5 rad per step, and T + V,
+    # which a top on a fixed pivot conserves, drifts by about 8 % (the command line prints the same warnings).
+    with pytest.warns(UserWarning) as record:
+        eulerdyn.run(scenario("heavy_top.toml"), method="rk4", dt=0.05)
+    texts = [str(w.message) for w in record]
+    assert any("turns the body by 1.5 rad" in t for t in texts), texts
+    assert any("the energy T + V, which this scene conserves, drifted by" in t for t in texts), texts
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        eulerdyn.run(scenario("heavy_top.toml"))
