@@ -62,6 +62,7 @@ fn curves(study: &Study) -> Vec<Curve> {
                 label,
                 color: PALETTE[method_index % PALETTE.len()],
                 dashed: row.frame == Form::Space,
+                marker: None,
                 points: vec![point],
             }),
         }
@@ -164,7 +165,7 @@ fn draw_legend(area: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         .pos(Pos::new(HPos::Left, VPos::Center));
     let mut y = 30;
     for curve in curves {
-        draw_legend_entry(area, curve, y, &text)?;
+        draw_legend_entry(area, curve, (6, y), &text)?;
         y += 22;
     }
     y += 10;
