@@ -145,7 +145,7 @@ fn draw(root: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         }
     }
     for curve in curves {
-        draw_curve(&mut chart, curve, 8)?;
+        draw_curve(&mut chart, curve, 8, 1)?;
         let marker = if curve.dashed {
             ShapeStyle::from(&curve.color).stroke_width(2)
         } else {
@@ -165,7 +165,7 @@ fn draw_legend(area: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         .pos(Pos::new(HPos::Left, VPos::Center));
     let mut y = 30;
     for curve in curves {
-        draw_legend_entry(area, curve, (6, y), &text)?;
+        draw_legend_entry(area, curve, (6, y), &text, 1)?;
         y += 22;
     }
     y += 10;

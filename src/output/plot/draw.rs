@@ -26,10 +26,19 @@ pub(crate) type DrawResult = Result<(), DrawingAreaErrorKind<std::io::Error>>;
 pub(crate) type Chart<'a, 'b> =
     ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
+/// Drawing units (SVG user units) per pixel: the SVG is drawn at this finer grid, its viewBox scaled down to the
+/// figure's size, so that curves are placed to a quarter pixel (plotters rounds coordinates to whole units).
+pub(crate) const DOT: i32 = 4;
 /// Height of a legend line (px).
 const LEGEND_LINE: i32 = 16;
 /// Marks along a curve with a marker.
 const MARKS_PER_CURVE: usize = 10;
+
+/// The plotters font size that gives an SVG `font-size` of at least `px` pixels, in drawing units of `dot` per
+/// pixel: plotters writes its size divided by 1.24, and rounds some sizes down to whole units, so this is whole.
+pub(crate) fn font_size(px: f64, dot: i32) -> f64 {
+    (px * f64::from(dot) * 1.24).ceil()
+}
 
 fn draw_error(file: &Path, e: impl fmt::Display) -> PlotError {
     PlotError::Output {
@@ -71,6 +80,7 @@ pub(super) fn render_svg(
     } else {
         (TITLE_CM * PX_PER_CM).round() as u32
     };
+    let dot = DOT as u32;
     let cell = (
         width / grid.columns as u32,
         (height - title_px) / grid.rows as u32,
@@ -82,15 +92,16 @@ pub(super) fn render_svg(
         .unwrap_or(1);
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+        let root =
+            SVGBackend::with_string(&mut svg, (width * dot, height * dot)).into_drawing_area();
         let fail = |e| draw_error(out_name, e);
         root.fill(&WHITE).map_err(fail)?;
         if !title.is_empty() {
-            let style = TextStyle::from((FONT, TITLE_PX).into_font())
+            let style = TextStyle::from((FONT, font_size(TITLE_PX, DOT)).into_font())
                 .pos(Pos::new(HPos::Center, VPos::Center));
             root.draw(&Text::new(
                 title.to_string(),
-                (width as i32 / 2, title_px as i32 / 2),
+                ((width * dot) as i32 / 2, (title_px * dot) as i32 / 2),
                 style,
             ))
             .map_err(fail)?;
@@ -98,15 +109,18 @@ pub(super) fn render_svg(
         for (k, plot) in plots.iter().enumerate() {
             let (row, column) = (k / grid.columns, k % grid.columns);
             let corner = (
-                column as i32 * cell.0 as i32,
-                title_px as i32 + row as i32 * cell.1 as i32,
+                DOT * column as i32 * cell.0 as i32,
+                DOT * (title_px as i32 + row as i32 * cell.1 as i32),
             );
-            let area = root.clone().shrink(corner, cell);
+            let area = root.clone().shrink(corner, (cell.0 * dot, cell.1 * dot));
             draw_panel(&area, run, plot, legend_rows).map_err(fail)?;
         }
         root.present().map_err(fail)?;
     }
-    Ok(svg)
+    // The figure's size in pixels, its drawing in units of 1/DOT pixel.
+    let drawn = format!("<svg width=\"{}\" height=\"{}\"", width * dot, height * dot);
+    let shown = format!("<svg width=\"{width}\" height=\"{height}\"");
+    Ok(svg.replacen(&drawn, &shown, 1))
 }
 
 /// Legend entries per line in a panel `width` px wide, and the width of each (px).
@@ -165,7 +179,7 @@ fn draw_panel(
     legend_rows: usize,
 ) -> DrawResult {
     let (_, h) = area.dim_in_pixel();
-    let legend_height = legend_rows as i32 * LEGEND_LINE + 8;
+    let legend_height = DOT * (legend_rows as i32 * LEGEND_LINE + 8);
     let (chart_area, legend_area) = area.split_vertically(h as i32 - legend_height);
     let (t0, t1) = time_range(run);
     let curves = drawn_curves(plot);
@@ -198,12 +212,13 @@ fn draw_panel(
         .map(|v| y_fmt(v).chars().count())
         .max()
         .unwrap_or(4) as f64;
-    let y_area = (widest * 0.62 * TEXT_PX + 2.2 * TEXT_PX) as u32;
+    let y_area = (widest * 0.62 * TEXT_PX + 2.2 * TEXT_PX) as u32 * DOT as u32;
     let mut chart = ChartBuilder::on(&chart_area)
-        .caption(&plot.title, (FONT, CAPTION_PX).into_font())
-        .margin(4)
-        .margin_right(14)
-        .x_label_area_size((2.9 * TEXT_PX) as u32)
+        .caption(&plot.title, (FONT, font_size(CAPTION_PX, DOT)).into_font())
+        .margin(4 * DOT as u32)
+        .margin_right(14 * DOT as u32)
+        .margin_top(10 * DOT as u32)
+        .x_label_area_size((3.3 * TEXT_PX) as u32 * DOT as u32)
         .y_label_area_size(y_area)
         .build_cartesian_2d(t0..t1, lo..hi)?;
     let mut mesh = chart.configure_mesh();
@@ -213,11 +228,13 @@ fn draw_panel(
         .y_label_formatter(&y_fmt)
         .x_labels(6)
         .y_labels(6)
-        .bold_line_style(BLACK.mix(0.15))
-        .light_line_style(BLACK.mix(0.04))
+        .bold_line_style(BLACK.mix(0.15).stroke_width(DOT as u32))
+        .light_line_style(BLACK.mix(0.04).stroke_width(DOT as u32))
+        .axis_style(BLACK.stroke_width(DOT as u32))
+        .set_all_tick_mark_size(5 * DOT)
         .max_light_lines(4)
-        .axis_desc_style((FONT, TEXT_PX))
-        .label_style((FONT, TEXT_PX));
+        .axis_desc_style((FONT, font_size(TEXT_PX, DOT)))
+        .label_style((FONT, font_size(TEXT_PX, DOT)));
     if plot.log {
         // A label at every decade (at most 7 of them), and no minor lines: they would be linear in the exponent.
         let decades = (hi - lo).round().clamp(1.0, 6.0) as usize;
@@ -231,10 +248,10 @@ fn draw_panel(
 /// Draws `curves`: the solid ones first, the dashed ones over them, then the markers of every curve.
 fn draw_curves(chart: &mut Chart<'_, '_>, curves: &[Curve]) -> DrawResult {
     for curve in curves.iter().filter(|c| !c.dashed) {
-        draw_curve(chart, curve, 7)?;
+        draw_curve(chart, curve, 7, DOT)?;
     }
     for curve in curves.iter().filter(|c| c.dashed) {
-        draw_curve(chart, curve, 7)?;
+        draw_curve(chart, curve, 7, DOT)?;
     }
     for (k, curve) in curves.iter().enumerate() {
         draw_marks(chart, curve, k)?;
@@ -242,12 +259,19 @@ fn draw_curves(chart: &mut Chart<'_, '_>, curves: &[Curve]) -> DrawResult {
     Ok(())
 }
 
-/// Draws `curve` as a line 2 px wide, solid or dashed (dashes of `dash` px, 5 px apart).
-pub(crate) fn draw_curve(chart: &mut Chart<'_, '_>, curve: &Curve, dash: u32) -> DrawResult {
-    let style = ShapeStyle::from(&curve.color).stroke_width(2);
+/// Draws `curve` as a line 2 px wide, solid or dashed (dashes of `dash` px, 5 px apart), in a drawing of `dot`
+/// units per pixel.
+pub(crate) fn draw_curve(
+    chart: &mut Chart<'_, '_>,
+    curve: &Curve,
+    dash: u32,
+    dot: i32,
+) -> DrawResult {
+    let style = ShapeStyle::from(&curve.color).stroke_width(2 * dot as u32);
     let points = curve.points.iter().copied();
     if curve.dashed {
-        chart.draw_series(DashedLineSeries::new(points, dash, 5, style))?;
+        let dot = dot as u32;
+        chart.draw_series(DashedLineSeries::new(points, dash * dot, 5 * dot, style))?;
     } else {
         chart.draw_series(LineSeries::new(points, style))?;
     }
@@ -277,72 +301,93 @@ fn draw_marks(chart: &mut Chart<'_, '_>, curve: &Curve, k: usize) -> DrawResult 
             marks.push(**p);
         }
     }
-    let style = ShapeStyle::from(&curve.color).stroke_width(1);
+    let style = ShapeStyle::from(&curve.color).stroke_width(3 * DOT as u32 / 2);
+    let (r, a) = (4 * DOT, 3 * DOT);
     match marker {
         Marker::Circle => {
             chart.draw_series(
                 marks
                     .into_iter()
-                    .map(|p| EmptyElement::at(p) + Circle::new((0, 0), 4, style)),
+                    .map(|p| EmptyElement::at(p) + Circle::new((0, 0), r, style)),
             )?;
         }
         Marker::Square => {
             chart.draw_series(
                 marks
                     .into_iter()
-                    .map(|p| EmptyElement::at(p) + Rectangle::new([(-3, -3), (3, 3)], style)),
+                    .map(|p| EmptyElement::at(p) + Rectangle::new([(-a, -a), (a, a)], style)),
             )?;
         }
     }
     Ok(())
 }
 
-/// One legend entry at (`x`, `y`): a sample of the curve's line (three dashes when dashed, its marker in the
-/// middle) and its label.
+/// One legend entry at (`x`, `y`), in a drawing of `dot` units per pixel: a sample of the curve's line (three
+/// dashes when dashed, its marker in the middle) and its label.
 pub(crate) fn draw_legend_entry(
     area: &Area<'_>,
     curve: &Curve,
     (x, y): (i32, i32),
     text: &TextStyle<'_>,
+    dot: i32,
 ) -> DrawResult {
-    let style = ShapeStyle::from(&curve.color).stroke_width(2);
+    let style = ShapeStyle::from(&curve.color).stroke_width(2 * dot as u32);
     if curve.dashed {
         for dx in [0, 11, 22] {
-            area.draw(&PathElement::new(vec![(x + dx, y), (x + dx + 7, y)], style))?;
+            let from = x + dx * dot;
+            area.draw(&PathElement::new(
+                vec![(from, y), (from + 7 * dot, y)],
+                style,
+            ))?;
         }
     } else {
-        area.draw(&PathElement::new(vec![(x, y), (x + 29, y)], style))?;
+        area.draw(&PathElement::new(vec![(x, y), (x + 29 * dot, y)], style))?;
     }
-    let mark = ShapeStyle::from(&curve.color).stroke_width(1);
+    let mark = ShapeStyle::from(&curve.color).stroke_width(3 * dot as u32 / 2);
+    let middle = x + 14 * dot;
     match curve.marker {
-        Some(Marker::Circle) => area.draw(&Circle::new((x + 14, y), 4, mark))?,
+        Some(Marker::Circle) => area.draw(&Circle::new((middle, y), 4 * dot, mark))?,
         Some(Marker::Square) => {
-            area.draw(&Rectangle::new([(x + 11, y - 3), (x + 17, y + 3)], mark))?
+            let a = 3 * dot;
+            area.draw(&Rectangle::new(
+                [(middle - a, y - a), (middle + a, y + a)],
+                mark,
+            ))?
         }
         None => {}
     }
-    area.draw(&Text::new(curve.label.clone(), (x + 36, y), text.clone()))
+    area.draw(&Text::new(
+        curve.label.clone(),
+        (x + 36 * dot, y),
+        text.clone(),
+    ))
 }
 
 /// The legend, below the chart so that it never hides a curve: entries in columns, line by line, then the notes.
 fn draw_legend(area: &Area<'_>, plot: &PanelPlot) -> DrawResult {
-    let text = TextStyle::from((FONT, TEXT_PX).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
-    let note = (FONT, TEXT_PX)
+    let text = TextStyle::from((FONT, font_size(TEXT_PX, DOT)).into_font())
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    let note = (FONT, font_size(TEXT_PX, DOT))
         .into_font()
         .color(&RGBColor(0x55, 0x55, 0x55))
         .pos(Pos::new(HPos::Left, VPos::Center));
     let (w, _) = area.dim_in_pixel();
-    let (per_line, entry) = legend_columns(plot, w as i32);
+    let (per_line, entry) = legend_columns(plot, w as i32 / DOT);
     let left = 12;
     let mut y = LEGEND_LINE / 2;
     for line in plot.curves.chunks(per_line) {
         for (k, curve) in line.iter().enumerate() {
-            draw_legend_entry(area, curve, (left + k as i32 * entry, y), &text)?;
+            let at = (DOT * (left + k as i32 * entry), DOT * y);
+            draw_legend_entry(area, curve, at, &text, DOT)?;
         }
         y += LEGEND_LINE;
     }
     for line in &plot.notes {
-        area.draw(&Text::new(line.clone(), (left, y), note.clone()))?;
+        area.draw(&Text::new(
+            line.clone(),
+            (DOT * left, DOT * y),
+            note.clone(),
+        ))?;
         y += LEGEND_LINE;
     }
     Ok(())

@@ -276,7 +276,7 @@ fn drift_panel(run: &RunSeries) -> PanelPlot {
                 .iter()
                 .map(|c| c.label.split(':').next().unwrap_or(""))
                 .collect();
-            format!("Drift of the invariants {} since t = 0", names.join(", "))
+            format!("Drift of {} since t = 0", names.join(" and "))
         }
     };
     PanelPlot {
