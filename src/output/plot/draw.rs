@@ -131,7 +131,7 @@ fn legend_columns(plot: &PanelPlot, width: i32) -> (usize, i32) {
         .map(|c| c.label.chars().count())
         .max()
         .unwrap_or(1) as f64;
-    let entry = (longest * 0.6 * TEXT_PX) as i32 + 44;
+    let entry = (longest * 0.6 * TEXT_PX) as i32 + 52;
     (((width - 16) / entry).max(1) as usize, entry)
 }
 
@@ -315,11 +315,23 @@ fn draw_marks(chart: &mut Chart<'_, '_>, curve: &Curve, k: usize) -> DrawResult 
             chart.draw_series(
                 marks
                     .into_iter()
-                    .map(|p| EmptyElement::at(p) + Rectangle::new([(-a, -a), (a, a)], style)),
+                    .map(|p| EmptyElement::at(p) + PathElement::new(square(0, 0, a), style)),
             )?;
         }
     }
     Ok(())
+}
+
+/// The closed outline of a square of half side `a` centred at (`x`, `y`) (plotters' rectangles have no stroke
+/// width).
+fn square(x: i32, y: i32, a: i32) -> Vec<(i32, i32)> {
+    vec![
+        (x - a, y - a),
+        (x + a, y - a),
+        (x + a, y + a),
+        (x - a, y + a),
+        (x - a, y - a),
+    ]
 }
 
 /// One legend entry at (`x`, `y`), in a drawing of `dot` units per pixel: a sample of the curve's line (three
@@ -349,10 +361,7 @@ pub(crate) fn draw_legend_entry(
         Some(Marker::Circle) => area.draw(&Circle::new((middle, y), 4 * dot, mark))?,
         Some(Marker::Square) => {
             let a = 3 * dot;
-            area.draw(&Rectangle::new(
-                [(middle - a, y - a), (middle + a, y + a)],
-                mark,
-            ))?
+            area.draw(&PathElement::new(square(middle, y, a), mark))?
         }
         None => {}
     }

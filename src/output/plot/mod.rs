@@ -281,9 +281,7 @@ pub fn render_svg(
         }
         None => draw::default_title(run),
     };
-    let size = layout::Grid::for_panels(panels.len())
-        .figure_size(options.size, !title.is_empty())
-        .map_err(|e| PlotError::Option(format!("--size: {e}")))?;
+    let size = figure_size(&panels, options)?;
     draw::render_svg(run, &panels, size, &title, out_name)
 }
 
@@ -322,11 +320,12 @@ pub fn plot_file(
     }
     let run = read_run(csv, &panels)?;
     let svg = render_svg(&run, &panels, options, out)?;
+    let size = figure_size(&panels, options)?;
     let (bytes, pixels) = match format {
-        FigureFormat::Svg => (svg.into_bytes(), svg_pixels(&panels, options)?),
+        FigureFormat::Svg => (svg.into_bytes(), size.pixels()),
         FigureFormat::Png => {
-            let dpi = options.dpi.unwrap_or(png::DEFAULT_DPI);
-            let image = png::rasterise(&svg, dpi).map_err(|problem| PlotError::Output {
+            let pixels = png::png_pixels(size, options.dpi.unwrap_or(png::DEFAULT_DPI));
+            let image = png::rasterise(&svg, pixels).map_err(|problem| PlotError::Output {
                 file: out.to_path_buf(),
                 problem,
             })?;
@@ -342,13 +341,12 @@ pub fn plot_file(
     })
 }
 
-/// The SVG's size in pixels.
-fn svg_pixels(panels: &[Panel], options: &FigureOptions) -> Result<(u32, u32), PlotError> {
+/// The figure's size (cm) for `panels` and `options`.
+fn figure_size(panels: &[Panel], options: &FigureOptions) -> Result<FigureSize, PlotError> {
     let titled = options.title.as_ref().is_none_or(|t| !t.is_empty());
     layout::Grid::for_panels(panels.len())
         .figure_size(options.size, titled)
-        .map(FigureSize::pixels)
-        .map_err(PlotError::Option)
+        .map_err(|e| PlotError::Option(format!("--size: {e}")))
 }
 
 /// Writes `bytes` to `out` through a temporary file renamed over it.

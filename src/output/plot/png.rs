@@ -2,11 +2,13 @@
 //! background. Text is set in DejaVu Sans, embedded in the program (`assets/fonts/`, Bitstream Vera licence), which
 //! stands for the SVG's `sans-serif`: no system font is looked up, so the PNG is the same on every machine.
 //!
-//! The SVG's unit is 1/96 inch, so a PNG at `dpi` pixels per inch is the SVG scaled by dpi / 96: a 16 cm figure
-//! at 300 dpi is 1890 px wide.
+//! A PNG at `dpi` pixels per inch of a figure W cm wide is round(W / 2.54 · dpi) pixels wide: a 16 cm figure at
+//! 300 dpi is 1890 px wide.
 
 use resvg::tiny_skia::{Color, Pixmap, Transform};
 use resvg::usvg;
+
+use super::FigureSize;
 
 /// The resolution of a PNG unless asked otherwise (pixels per inch): print quality.
 pub const DEFAULT_DPI: f64 = 300.0;
@@ -24,8 +26,8 @@ pub(super) struct PngImage {
     pub(super) pixels: (u32, u32),
 }
 
-/// The PNG of the SVG text `svg` at `dpi` pixels per inch.
-pub(super) fn rasterise(svg: &str, dpi: f64) -> Result<PngImage, String> {
+/// The PNG, `pixels` wide and high, of the SVG text `svg` (scaled to fill it).
+pub(super) fn rasterise(svg: &str, pixels: (u32, u32)) -> Result<PngImage, String> {
     let mut options = usvg::Options {
         font_family: FONT_FAMILY.into(),
         ..usvg::Options::default()
@@ -35,28 +37,29 @@ pub(super) fn rasterise(svg: &str, dpi: f64) -> Result<PngImage, String> {
     fonts.set_sans_serif_family(FONT_FAMILY);
     let tree = usvg::Tree::from_str(svg, &options)
         .map_err(|e| format!("cannot read the figure's SVG for the PNG: {e}"))?;
-    let scale = (dpi / 96.0) as f32;
     let size = tree.size();
-    let pixels = (
-        (size.width() * scale).round() as u32,
-        (size.height() * scale).round() as u32,
-    );
     let mut pixmap = Pixmap::new(pixels.0, pixels.1).ok_or_else(|| {
         format!(
-            "a PNG of {} x {} pixels is too large; give a smaller --size or --dpi",
+            "a PNG of {} x {} pixels cannot be made; give a smaller --size or --dpi",
             pixels.0, pixels.1
         )
     })?;
     pixmap.fill(Color::WHITE);
-    resvg::render(
-        &tree,
-        Transform::from_scale(scale, scale),
-        &mut pixmap.as_mut(),
+    let scale = Transform::from_scale(
+        pixels.0 as f32 / size.width(),
+        pixels.1 as f32 / size.height(),
     );
+    resvg::render(&tree, scale, &mut pixmap.as_mut());
     let bytes = pixmap
         .encode_png()
         .map_err(|e| format!("cannot encode the PNG: {e}"))?;
     Ok(PngImage { bytes, pixels })
+}
+
+/// The size in pixels of a PNG of a figure of `size` at `dpi` pixels per inch.
+pub(super) fn png_pixels(size: FigureSize, dpi: f64) -> (u32, u32) {
+    let px = |cm: f64| (cm / 2.54 * dpi).round() as u32;
+    (px(size.width_cm), px(size.height_cm))
 }
 
 /// A `--dpi` value: a number in [`DPI_RANGE`].
@@ -75,12 +78,17 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_96_dpi_png_has_the_svgs_pixel_size_and_300_dpi_scales_it() {
+    fn a_png_has_the_pixel_size_of_its_centimetres_at_its_dpi() {
         let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100" height="50"><text x="10" y="30" font-family="sans-serif" font-size="12">ω θ</text></svg>"#;
-        let image = rasterise(svg, 96.0).unwrap();
+        let image = rasterise(svg, (100, 50)).unwrap();
         assert_eq!(image.pixels, (100, 50));
         assert!(image.bytes.starts_with(b"\x89PNG\r\n\x1a\n"));
-        assert_eq!(rasterise(svg, 300.0).unwrap().pixels, (313, 156));
+        let size = FigureSize {
+            width_cm: 16.0,
+            height_cm: 10.0,
+        };
+        assert_eq!(png_pixels(size, 300.0), (1890, 1181));
+        assert_eq!(png_pixels(size, 96.0), (605, 378));
     }
 
     #[test]
@@ -88,8 +96,8 @@ mod tests {
         let blank = r#"<svg xmlns="http://www.w3.org/2000/svg" width="60" height="20"></svg>"#;
         let text = r#"<svg xmlns="http://www.w3.org/2000/svg" width="60" height="20"><text x="2" y="15" font-family="sans-serif" font-size="12">ω_b,x</text></svg>"#;
         assert_ne!(
-            rasterise(blank, 96.0).unwrap().bytes,
-            rasterise(text, 96.0).unwrap().bytes
+            rasterise(blank, (60, 20)).unwrap().bytes,
+            rasterise(text, (60, 20)).unwrap().bytes
         );
     }
 
