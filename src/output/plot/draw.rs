@@ -40,6 +40,13 @@ pub(crate) fn font_size(px: f64, dot: i32) -> f64 {
     (px * f64::from(dot) * 1.24).ceil()
 }
 
+/// The text size (px) at which `text` fits in `width` px: `px`, or smaller, but never below [`TEXT_PX`] (9 pt). The
+/// width of a character is taken as 0.56 of the size (DejaVu Sans and Helvetica-like fonts average about that).
+fn fitted_px(text: &str, px: f64, width: f64) -> f64 {
+    let chars = text.chars().count().max(1) as f64;
+    (width / (0.56 * chars)).clamp(TEXT_PX, px)
+}
+
 fn draw_error(file: &Path, e: impl fmt::Display) -> PlotError {
     PlotError::Output {
         file: file.to_path_buf(),
@@ -97,7 +104,8 @@ pub(super) fn render_svg(
         let fail = |e| draw_error(out_name, e);
         root.fill(&WHITE).map_err(fail)?;
         if !title.is_empty() {
-            let style = TextStyle::from((FONT, font_size(TITLE_PX, DOT)).into_font())
+            let fitted = fitted_px(title, TITLE_PX, f64::from(width) - 16.0);
+            let style = TextStyle::from((FONT, font_size(fitted, DOT)).into_font())
                 .pos(Pos::new(HPos::Center, VPos::Center));
             root.draw(&Text::new(
                 title.to_string(),
@@ -213,8 +221,10 @@ fn draw_panel(
         .max()
         .unwrap_or(4) as f64;
     let y_area = (widest * 0.62 * TEXT_PX + 2.2 * TEXT_PX) as u32 * DOT as u32;
+    let panel_width = f64::from(chart_area.dim_in_pixel().0 / DOT as u32);
+    let caption_px = fitted_px(&plot.title, CAPTION_PX, panel_width - 8.0);
     let mut chart = ChartBuilder::on(&chart_area)
-        .caption(&plot.title, (FONT, font_size(CAPTION_PX, DOT)).into_font())
+        .caption(&plot.title, (FONT, font_size(caption_px, DOT)).into_font())
         .margin(4 * DOT as u32)
         .margin_right(14 * DOT as u32)
         .margin_top(10 * DOT as u32)
