@@ -22,7 +22,7 @@ mod decimator;
 mod draw;
 pub mod layout;
 mod panels;
-mod png;
+pub mod png;
 mod series;
 
 use std::fmt;
