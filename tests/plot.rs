@@ -725,7 +725,7 @@ fn a_free_run_has_no_theta_and_the_refusal_says_which_runs_do() {
 }
 
 #[test]
-fn a_gravity_run_shows_t_v_and_t_plus_v_and_the_drift_of_t_plus_v_only() {
+fn a_gravity_run_shows_t_v_and_t_plus_v_and_the_drift_of_its_invariants_only() {
     let dir = tempfile::tempdir().unwrap();
     let csv = run_scenario(dir.path(), "heavy_top", "top", &["--t-end", "1"]);
     let svg = plot_svg(
@@ -735,12 +735,14 @@ fn a_gravity_run_shows_t_v_and_t_plus_v_and_the_drift_of_t_plus_v_only() {
     );
     check_svg(&svg);
     let texts = texts(&svg);
+    // T + V and, gravity being vertical and its moment about the pivot horizontal, H_s,z.
     for expected in [
         "T",
         "V",
         "T + V",
         "T + V: relative",
-        "Drift of T + V since t = 0",
+        "H_s,z: relative",
+        "Drift of T + V and H_s,z since t = 0",
     ] {
         assert!(texts.contains(&expected), "no {expected:?} in {texts:?}");
     }

@@ -124,12 +124,12 @@ impl Panel {
         }
     }
 
-    /// The CSV columns the panel draws when the file has them: V and T + V (gravity scenes) for the energy panel
-    /// and the drift of T + V for the drift panel.
+    /// The CSV columns the panel draws when the file has them: V and T + V (gravity scenes) for the energy panel,
+    /// T + V and H_s,z (an invariant under vertical gravity) for the drift panel.
     pub fn optional_columns(self) -> &'static [&'static str] {
         match self {
             Panel::Energy => &["potential", "energy_total"],
-            Panel::Drift => &["energy_total"],
+            Panel::Drift => &["energy_total", "H_s_z"],
             _ => &[],
         }
     }

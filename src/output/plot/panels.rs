@@ -204,9 +204,10 @@ fn body_and_space_panel(run: &RunSeries, title: &str, symbol: &str, quantity: &s
     PanelPlot::linear(title, &format!("{symbol} ({unit})"), curves)
 }
 
-/// The CSV columns of the scene's invariants (of |H|, T and T + V), or `None` when there is no sidecar to tell.
-/// Free motion and a hinge keep T and |H| with no effects, and T + V under gravity alone; a prescribed fixed-axis
-/// motion keeps T and |H| unless it accelerates; torques and damping leave none.
+/// The CSV columns of the scene's invariants (of |H|, T, T + V and H_s,z), or `None` when there is no sidecar to
+/// tell. Free motion and a hinge keep T and |H| with no effects, and T + V under gravity alone (free motion about
+/// a pivot also H_s,z, the component of H along vertical gravity, whose moment is horizontal); a prescribed
+/// fixed-axis motion keeps T and |H| unless it accelerates; torques and damping leave none.
 pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>> {
     let scene = scene?;
     let only_gravity = scene.effects.iter().all(|e| e == "gravity");
@@ -214,6 +215,7 @@ pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>
         "fixed_axis" if scene.accelerated => vec![],
         "fixed_axis" => vec!["H_norm", "energy"],
         _ if scene.effects.is_empty() => vec!["H_norm", "energy"],
+        "free" if only_gravity && scene.vertical_gravity => vec!["energy_total", "H_s_z"],
         _ if only_gravity => vec!["energy_total"],
         _ => vec![],
     })
@@ -224,6 +226,7 @@ fn drift_style(column: &str) -> (&'static str, RGBColor, &'static str) {
     match column {
         "H_norm" => ("|H|", ORANGE, "kg·m²/s"),
         "energy_total" => ("T + V", BLACK, "J"),
+        "H_s_z" => ("H_s,z", BLUE, "kg·m²/s"),
         _ => ("T", PURPLE, "J"),
     }
 }
@@ -236,7 +239,12 @@ fn drift_panel(run: &RunSeries) -> PanelPlot {
     let mut clamped = false;
     let mut curves = Vec::new();
     for d in &run.drifts {
-        if kept.as_ref().is_some_and(|k| !k.contains(&d.column)) {
+        // Without the scene, H_s,z (an invariant only under vertical gravity) is left out.
+        let shown = match &kept {
+            Some(k) => k.contains(&d.column),
+            None => d.column != "H_s_z",
+        };
+        if !shown {
             continue;
         }
         let (name, color, unit) = drift_style(d.column);
@@ -300,6 +308,7 @@ mod tests {
             motion: motion.into(),
             effects: effects.iter().map(|e| e.to_string()).collect(),
             accelerated,
+            vertical_gravity: true,
         }
     }
 
@@ -319,6 +328,18 @@ mod tests {
         );
         assert_eq!(
             invariants(Some(&scene("free", &["gravity"], false))),
+            Some(vec!["energy_total", "H_s_z"])
+        );
+        let tilted_gravity = SceneFacts {
+            vertical_gravity: false,
+            ..scene("free", &["gravity"], false)
+        };
+        assert_eq!(
+            invariants(Some(&tilted_gravity)),
+            Some(vec!["energy_total"])
+        );
+        assert_eq!(
+            invariants(Some(&scene("hinge", &["gravity"], false))),
             Some(vec!["energy_total"])
         );
         assert_eq!(

@@ -43,6 +43,8 @@ pub(super) struct SceneFacts {
     pub(super) effects: Vec<String>,
     /// A prescribed fixed-axis motion with a nonzero angular acceleration (`motion.accel`).
     pub(super) accelerated: bool,
+    /// Every gravity effect's `g` is along space z (so that, about a fixed pivot, H_s,z is an invariant).
+    pub(super) vertical_gravity: bool,
 }
 
 /// The curves read from a run's CSV, ready to draw.
@@ -76,7 +78,7 @@ impl RunSeries {
     /// No rows yet: a curve for each wanted column after t, and the derived curves of `panels`.
     fn new(file: &Path, wanted: &[&'static str], panels: &[Panel]) -> Self {
         let drifts = if panels.contains(&Panel::Drift) {
-            ["H_norm", "energy", "energy_total"]
+            ["H_norm", "energy", "energy_total", "H_s_z"]
                 .into_iter()
                 .filter(|c| wanted.contains(c))
                 .map(|column| Drift {
@@ -280,14 +282,23 @@ fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
         .iter()
         .filter_map(|e| e.as_str().map(str::to_string))
         .collect();
-    // The angular acceleration of a prescribed motion is in the scene text only.
-    let accel = text_of("/scene/text")
-        .and_then(|t| toml::from_str::<toml::Table>(&t).ok())
-        .and_then(|t| {
-            let accel = t.get("motion")?.get("accel")?;
-            accel
-                .as_float()
-                .or_else(|| accel.as_integer().map(|a| a as f64))
+    // The angular acceleration of a prescribed motion and the direction of gravity are in the scene text only.
+    let scene = text_of("/scene/text").and_then(|t| toml::from_str::<toml::Table>(&t).ok());
+    let number = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|a| a as f64));
+    let accel = scene
+        .as_ref()
+        .and_then(|t| number(t.get("motion")?.get("accel")?));
+    let vertical_gravity = scene
+        .as_ref()
+        .and_then(|t| t.get("effect")?.as_array())
+        .is_some_and(|effects| {
+            effects
+                .iter()
+                .filter(|e| e.get("type").and_then(|t| t.as_str()) == Some("gravity"))
+                .all(|e| {
+                    let g = e.get("g").and_then(|g| g.as_array());
+                    g.is_some_and(|g| g.len() == 3 && g[..2].iter().all(|c| number(c) == Some(0.0)))
+                })
         });
     Some(SceneFacts {
         name: text_of("/scene/name")?,
@@ -296,5 +307,6 @@ fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
         motion: text_of("/scene/motion").unwrap_or_else(|| "free".into()),
         effects,
         accelerated: accel.is_some_and(|a| a != 0.0),
+        vertical_gravity,
     })
 }
