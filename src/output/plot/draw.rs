@@ -221,13 +221,11 @@ fn draw_panel(
         .max()
         .unwrap_or(4) as f64;
     let y_area = (widest * 0.62 * TEXT_PX + 2.2 * TEXT_PX) as u32 * DOT as u32;
-    let panel_width = f64::from(chart_area.dim_in_pixel().0 / DOT as u32);
-    let caption_px = fitted_px(&plot.title, CAPTION_PX, panel_width - 8.0);
+    let chart_area = draw_caption(&chart_area, &plot.title)?;
     let mut chart = ChartBuilder::on(&chart_area)
-        .caption(&plot.title, (FONT, font_size(caption_px, DOT)).into_font())
         .margin(4 * DOT as u32)
         .margin_right(14 * DOT as u32)
-        .margin_top(10 * DOT as u32)
+        .margin_top((TEXT_PX / 2.0) as u32 * DOT as u32 + 2 * DOT as u32)
         .x_label_area_size((3.3 * TEXT_PX) as u32 * DOT as u32)
         .y_label_area_size(y_area)
         .build_cartesian_2d(t0..t1, lo..hi)?;
@@ -253,6 +251,26 @@ fn draw_panel(
     mesh.draw()?;
     draw_curves(&mut chart, &curves)?;
     draw_legend(&legend_area, plot)
+}
+
+/// Draws the panel's `title` centred at the top of `area`, shrunk to fit its width (not below 9 pt), and returns
+/// the area below it. (Drawn here rather than by plotters, so that the top tick label has room below it.)
+fn draw_caption<'a>(
+    area: &Area<'a>,
+    title: &str,
+) -> Result<Area<'a>, DrawingAreaErrorKind<std::io::Error>> {
+    let (w, _) = area.dim_in_pixel();
+    let px = fitted_px(title, CAPTION_PX, f64::from(w / DOT as u32) - 8.0);
+    let band = (1.5 * CAPTION_PX) as i32 * DOT;
+    let style = TextStyle::from((FONT, font_size(px, DOT)).into_font())
+        .pos(Pos::new(HPos::Center, VPos::Center));
+    area.draw(&Text::new(
+        title.to_string(),
+        (w as i32 / 2, band / 2 + 2 * DOT),
+        style,
+    ))?;
+    let (_, below) = area.split_vertically(band + 2 * DOT);
+    Ok(below)
 }
 
 /// Draws `curves`: the solid ones first, the dashed ones over them, then the markers of every curve.
