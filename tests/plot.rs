@@ -776,3 +776,42 @@ fn a_scene_with_a_torque_has_no_invariant_to_draw() {
         "{texts:?}"
     );
 }
+
+/// The words of a command line, double quotes grouping (`--title "Tilted disk"`).
+fn words(line: &str) -> Vec<String> {
+    let mut words = Vec::new();
+    for (k, part) in line.split('"').enumerate() {
+        if k % 2 == 1 {
+            words.push(part.to_string());
+        } else {
+            words.extend(part.split_whitespace().map(str::to_string));
+        }
+    }
+    words
+}
+
+#[test]
+fn the_examples_of_plot_help_that_plot_disk_csv_work() {
+    let help = eulerdyn(["plot", "--help"]).stdout;
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let mut tried = 0;
+    for line in help.lines().map(str::trim) {
+        let Some(rest) = line.strip_prefix("eulerdyn plot disk.csv ") else {
+            continue;
+        };
+        // The command ends where a comment, three spaces or more, begins.
+        let command = rest.split("   ").next().unwrap();
+        let mut args = vec!["plot".to_string(), text(&csv).to_string()];
+        for word in words(command) {
+            args.push(match word.strip_prefix("disk") {
+                Some(_) => text(&dir.path().join(&word)).to_string(),
+                None => word,
+            });
+        }
+        eulerdyn(&args).expect_code(0);
+        tried += 1;
+    }
+    assert!(tried >= 3, "{tried} examples in: {help}");
+    assert!(png_size(&std::fs::read(dir.path().join("disk.png")).unwrap()).0 == 1890);
+}
