@@ -18,13 +18,14 @@ $eulerdyn plot "$work/tilted_disk.csv" -o "$out/tilted_disk_h.svg" --panels h_bo
 $eulerdyn run scenarios/tennis_racket.toml -o "$work/tennis_racket.csv"
 $eulerdyn plot "$work/tennis_racket.csv" -o "$out/tennis_racket.svg" --panels omega,drift
 
-# The heavy top: H about the pivot precessing (with nutation) in space; kinetic energy traded with potential.
+# The heavy top: H about the pivot precessing (with nutation) in space; kinetic energy traded with potential, T + V
+# conserved (its drift, the scene's one invariant among |H|, T and T + V).
 $eulerdyn run scenarios/heavy_top.toml -o "$work/heavy_top.csv"
-$eulerdyn plot "$work/heavy_top.csv" -o "$out/heavy_top.svg" --panels h_space,energy
+$eulerdyn plot "$work/heavy_top.csv" -o "$out/heavy_top.svg" --panels h_space,energy,drift
 
 # A motor runs the skewed disk up on its hinge: the rate rises to 10 rad/s, the bearings' couple with its square.
 $eulerdyn run scenarios/motor_runup.toml -o "$work/motor_runup.csv"
-$eulerdyn plot "$work/motor_runup.csv" -o "$out/motor_runup_bearings.svg" --panels omega,bearings
+$eulerdyn plot "$work/motor_runup.csv" -o "$out/motor_runup_bearings.svg" --panels omega,theta,moment,bearings
 
 # What accuracy costs: the work-precision study of the benchmark body (about 10 s; its times differ run to run).
 [ -n "${GALLERY_FIGURES_ONLY:-}" ] && exit 0

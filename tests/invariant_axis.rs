@@ -672,7 +672,7 @@ fn plot_draws_the_bearings_panel_of_a_run_with_bearings() {
     ]);
     out.expect_code(0);
     let text = std::fs::read_to_string(&svg).unwrap();
-    for label in ["|R_A|", "|R_B|", "R_A_b_x (A)", "R_B_b_z (B)"] {
+    for label in ["|R_A|", "|R_B|", "R_A,x", "R_B,z"] {
         assert!(text.contains(label), "{label} in the legend");
     }
     // A free run has no bearings: the panel is refused with the columns it lacks.

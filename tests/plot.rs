@@ -1,5 +1,6 @@
 //! `eulerdyn plot`: the SVG it writes from a run's CSV (well formed, every panel with its title, axis labels with
-//! units and legend, no NaN), `--panels`, and the clear errors on a CSV it cannot use.
+//! units and legend in symbols, no NaN), the grid of panels, `--panels`, `--size`, `--title`, PNG output, the
+//! panels of fixed-axis and gravity runs, and the clear errors on a CSV or an option it cannot use.
 
 mod common;
 
@@ -33,6 +34,15 @@ fn attributes<'a>(svg: &'a str, name: &str) -> Vec<&'a str> {
         .collect()
 }
 
+/// The SVG's drawing size: its viewBox's width and height (its units; the figure's pixels are `width`, `height`).
+fn view_box(svg: &str) -> (f64, f64) {
+    let numbers: Vec<f64> = attributes(svg, "viewBox")[0]
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    (numbers[2], numbers[3])
+}
+
 /// Checks that `svg` is one well-formed-looking SVG document whose coordinates are all finite numbers inside its
 /// canvas; returns the number of polyline points.
 fn check_svg(svg: &str) -> usize {
@@ -43,8 +53,7 @@ fn check_svg(svg: &str) -> usize {
     for bad in ["NaN", "nan", "inf"] {
         assert!(!svg.contains(bad), "the SVG contains {bad}");
     }
-    let width: f64 = attributes(svg, "width")[0].parse().unwrap();
-    let height: f64 = attributes(svg, "height")[0].parse().unwrap();
+    let (width, height) = view_box(svg);
     for name in ["x", "y", "x1", "y1", "x2", "y2"] {
         for v in attributes(svg, name) {
             let v: f64 = v.parse().unwrap_or_else(|_| panic!("{name}=\"{v}\""));
@@ -67,12 +76,12 @@ fn check_svg(svg: &str) -> usize {
 }
 
 const PANEL_TITLES: [&str; 6] = [
-    "Moment of momentum H about the moment center, in body axes",
-    "Moment of momentum H about the moment center, in space axes",
+    "Moment of momentum H, body axes",
+    "Moment of momentum H, space axes",
     "Moment M about the moment center",
     "Angular velocity ω",
-    "Kinetic energy",
-    "Change of |H| and energy since t = 0",
+    "Kinetic energy T = ½ ω·H",
+    "Drift of |H| and T since t = 0",
 ];
 
 #[test]
@@ -108,31 +117,39 @@ fn every_panel_of_the_tilted_disk_is_drawn_with_title_axis_labels_and_legend() {
             "no axis label {label:?}"
         );
     }
+    let texts = texts(&svg);
     for legend in [
-        "H_b_x",
-        "H_s_z",
-        "M_b_x body",
-        "M_s_y space",
-        "omega_b_z body",
+        "H_b,x",
+        "H_s,z",
+        "M_b,x",
+        "M_s,y",
+        "ω_b,z",
+        "ω_s,x",
+        "|H|",
+        "T",
         "|H|: relative",
-        "energy: relative",
+        "T: relative",
     ] {
-        assert!(svg.contains(legend), "no legend entry {legend:?}");
+        assert!(texts.contains(&legend), "no legend entry {legend:?}");
+    }
+    // Symbols, not column names.
+    for column in ["H_b_x", "omega_b_z", "M_s_y", "energy", "H_norm"] {
+        assert!(!texts.contains(&column), "{column} in {texts:?}");
     }
     // The disk's |H| and energy are constant: their drift is exactly 0 at most rows, drawn at the floor and said so.
     assert!(svg.contains("is drawn at 1e-17"), "no floor note");
     // The figure names the run it shows, from the sidecar.
-    assert!(svg.contains("scene tilted-disk, dop853"), "no subtitle");
+    assert!(svg.contains("tilted-disk: dop853"), "no subtitle");
     assert_eq!(
         dir_entries(dir.path()),
         ["disk.csv", "disk.csv.meta.json", "disk.svg"]
     );
 }
 
-/// The curves (polylines of more than 10 points, stroke width 2) drawn in `color` (`#D62728`), in drawing order,
-/// as pixel coordinates.
+/// The curves (polylines of more than 10 points, stroke width 2 px: 8 drawing units) drawn in `color`
+/// (`#D62728`), in drawing order, as drawing coordinates (4 a pixel).
 fn curves(svg: &str, color: &str) -> Vec<Vec<(f64, f64)>> {
-    let key = format!("stroke=\"{color}\" stroke-width=\"2\" points=\"");
+    let key = format!("stroke=\"{color}\" stroke-width=\"8\" points=\"");
     svg.match_indices(&key)
         .filter_map(|(i, _)| {
             let rest = &svg[i + key.len()..];
@@ -146,6 +163,29 @@ fn curves(svg: &str, color: &str) -> Vec<Vec<(f64, f64)>> {
             (points.len() > 10).then_some(points)
         })
         .collect()
+}
+
+/// The text of every `<text>` element, trimmed.
+fn texts(svg: &str) -> Vec<&str> {
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| Some(t[t.find('>')? + 1..t.find("</text>")?].trim()))
+        .collect()
+}
+
+/// The (x, y) of the `<text>` element whose text is `content`.
+fn text_position(svg: &str, content: &str) -> Option<(f64, f64)> {
+    svg.split("<text").skip(1).find_map(|t| {
+        let (attrs, rest) = t.split_once('>')?;
+        if rest[..rest.find("</text>")?].trim() != content {
+            return None;
+        }
+        let tag = format!("<text{attrs}>");
+        Some((
+            attributes(&tag, "x")[0].parse().ok()?,
+            attributes(&tag, "y")[0].parse().ok()?,
+        ))
+    })
 }
 
 /// The spread of a curve's pixel heights.
@@ -183,9 +223,9 @@ fn the_tilted_disk_shows_h_constant_in_the_body_and_turning_in_space() {
         assert_eq!(body.len(), 101, "{name}");
         assert_eq!(y_spread(body), 0.0, "{name} is a flat line");
     }
-    // In space, H turns about z: its x and y components swing (±0.195 of a 1.1 kg·m²/s axis: ~85 px), z stays put.
-    assert!(y_spread(&x[1]) > 50.0, "H_s_x: {}", y_spread(&x[1]));
-    assert!(y_spread(&y[1]) > 50.0, "H_s_y: {}", y_spread(&y[1]));
+    // In space, H turns about z: its x and y components swing (±0.195 of a 1.1 kg·m²/s axis: ~40 px), z stays put.
+    assert!(y_spread(&x[1]) > 100.0, "H_s_x: {}", y_spread(&x[1]));
+    assert!(y_spread(&y[1]) > 100.0, "H_s_y: {}", y_spread(&y[1]));
     assert_eq!(y_spread(&z[1]), 0.0, "H_s_z");
 }
 
@@ -451,4 +491,327 @@ fn a_long_run_is_reduced_to_a_bounded_number_of_points_keeping_its_extremes() {
         svg.contains(">\n9\n<") || svg.contains(">\n8\n<"),
         "the spike survives"
     );
+}
+
+/// Plots `csv` with `args` after `-o out` and returns the SVG text (expects exit 0).
+fn plot_svg(csv: &Path, out: &Path, args: &[&str]) -> String {
+    let mut all = vec!["plot", text(csv), "-o", text(out)];
+    all.extend(args);
+    eulerdyn(&all).expect_code(0);
+    std::fs::read_to_string(out).unwrap()
+}
+
+#[test]
+fn panels_are_laid_out_in_a_grid_of_two_columns_sixteen_centimetres_wide() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let svg = plot_svg(&csv, &dir.path().join("disk.svg"), &[]);
+    check_svg(&svg);
+    // 16 cm at 96 px per inch: 605 px; three rows of 7 cm and the 0.9 cm title: 21.9 cm = 828 px.
+    assert_eq!(attributes(&svg, "width")[0], "605");
+    assert_eq!(attributes(&svg, "height")[0], "828");
+    let at = |title: &str| text_position(&svg, title).unwrap_or_else(|| panic!("no {title:?}"));
+    let [h_body, h_space, moment, omega, energy, drift] = PANEL_TITLES.map(at);
+    // Row by row, two columns: the left titles centred in the left half, the right ones in the right half.
+    let (view_width, _) = view_box(&svg);
+    for (left, right) in [(h_body, h_space), (moment, omega), (energy, drift)] {
+        assert_eq!(left.1, right.1, "one row");
+        assert!(left.0 < 0.5 * view_width && right.0 > 0.5 * view_width);
+        assert!((right.0 - left.0 - 0.5 * view_width).abs() < 0.05 * view_width);
+    }
+    assert!(h_body.1 < moment.1 && moment.1 < energy.1, "three rows");
+    assert_eq!((h_body.0, moment.0), (moment.0, energy.0), "one column");
+    // Two panels: one column.
+    let two = plot_svg(
+        &csv,
+        &dir.path().join("two.svg"),
+        &["--panels", "h_body,h_space"],
+    );
+    let (a, b) = (
+        text_position(&two, PANEL_TITLES[0]).unwrap(),
+        text_position(&two, PANEL_TITLES[1]).unwrap(),
+    );
+    assert!(a.0 == b.0 && a.1 < b.1, "{a:?} {b:?}");
+}
+
+#[test]
+fn every_text_is_at_least_nine_points_in_a_sixteen_centimetre_figure() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let svg = plot_svg(&csv, &dir.path().join("disk.svg"), &["--size", "16,20"]);
+    // The figure is 16 cm = 16 / 2.54 in = 604.7 px of 1/96 in; 9 pt = 9/72 in = 12 px, 1.98 % of the width.
+    let width_px: f64 = attributes(&svg, "width")[0].parse().unwrap();
+    assert_eq!(width_px, (16.0f64 / 2.54 * 96.0).round());
+    let (view_width, _) = view_box(&svg);
+    let sizes = attributes(&svg, "font-size");
+    assert!(
+        sizes.len() > 50,
+        "tick labels, titles, legends: {}",
+        sizes.len()
+    );
+    for size in sizes {
+        let in_px = size.parse::<f64>().unwrap() * width_px / view_width;
+        let in_points = in_px * 72.0 / 96.0;
+        assert!(in_points >= 9.0, "a text at {in_points} pt");
+        assert!(in_px / width_px >= 12.0 / 604.72 - 1e-9);
+    }
+}
+
+#[test]
+fn size_and_title_are_honoured() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let out = dir.path().join("disk.svg");
+    let svg = plot_svg(
+        &csv,
+        &out,
+        &["--size", "24,18", "--title", "The tilted disk"],
+    );
+    check_svg(&svg);
+    // 24 cm and 18 cm at 96 px per inch.
+    assert_eq!(attributes(&svg, "width")[0], "907");
+    assert_eq!(attributes(&svg, "height")[0], "680");
+    let texts = texts(&svg);
+    assert!(texts.contains(&"The tilted disk"), "{texts:?}");
+    assert!(
+        !svg.contains("tilted-disk: dop853"),
+        "the default title is replaced"
+    );
+    let untitled = plot_svg(&csv, &out, &["--title", "", "--panels", "omega"]);
+    assert!(!untitled.contains("dop853"), "no title");
+    // One panel, no title band: 6 cm.
+    assert_eq!(attributes(&untitled, "height")[0], "227");
+}
+
+#[test]
+fn bad_sizes_titles_and_resolutions_are_refused_naming_the_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.1"]);
+    let svg = dir.path().join("x.svg");
+    for (args, flag, says) in [
+        (vec!["--size", "16"], "--size", "W,H"),
+        (vec!["--size", "16x12"], "--size", "W,H"),
+        (vec!["--size", "abc,12"], "--size", "not a number"),
+        (vec!["--size", "0,12"], "--size", "out of range"),
+        (vec!["--size", "16,-3"], "--size", "out of range"),
+        (vec!["--size", "10,10"], "--size", "at least 12,14.4"),
+        (vec!["--title", "two\nlines"], "--title", "one line"),
+        (vec!["--dpi", "300"], "--dpi", "only a PNG"),
+    ] {
+        let mut all = vec!["plot", text(&csv), "-o", text(&svg)];
+        all.extend(&args);
+        let out = eulerdyn(&all);
+        out.expect_code(2);
+        assert!(!out.panicked(), "{}", out.stderr);
+        assert!(
+            out.stderr.contains(flag) && out.stderr.contains(says),
+            "{args:?}: {}",
+            out.stderr
+        );
+        assert!(!svg.exists(), "{args:?} wrote a figure");
+    }
+    let png = dir.path().join("x.png");
+    let out = eulerdyn(["plot", text(&csv), "-o", text(&png), "--dpi", "0"]);
+    out.expect_code(2);
+    assert!(out.stderr.contains("--dpi"), "{}", out.stderr);
+    assert!(!png.exists());
+}
+
+/// The width and height in a PNG's IHDR chunk.
+fn png_size(bytes: &[u8]) -> (u32, u32) {
+    assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
+    assert_eq!(&bytes[12..16], b"IHDR");
+    let be = |b: &[u8]| u32::from_be_bytes([b[0], b[1], b[2], b[3]]);
+    (be(&bytes[16..20]), be(&bytes[20..24]))
+}
+
+#[test]
+fn a_png_is_written_at_the_requested_size_and_resolution() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let png = dir.path().join("disk.png");
+    let out = eulerdyn([
+        "plot",
+        text(&csv),
+        "-o",
+        text(&png),
+        "--size",
+        "16,10",
+        "--panels",
+        "h_space,omega",
+    ]);
+    out.expect_code(0);
+    // 300 dpi by default: 16 cm = 1890 px, 10 cm = 1181 px.
+    assert_eq!(png_size(&std::fs::read(&png).unwrap()), (1890, 1181));
+    assert!(out.stderr.contains("1890 x 1181 px"), "{}", out.stderr);
+    let upper = dir.path().join("DISK.PNG");
+    eulerdyn([
+        "plot",
+        text(&csv),
+        "-o",
+        text(&upper),
+        "--size",
+        "16,10",
+        "--dpi",
+        "96",
+        "--panels",
+        "h_space,omega",
+    ])
+    .expect_code(0);
+    let bytes = std::fs::read(&upper).unwrap();
+    assert_eq!(png_size(&bytes), (605, 378));
+    // Not blank: a 605 x 378 white image compresses to far less.
+    assert!(bytes.len() > 20_000, "{} bytes", bytes.len());
+}
+
+#[test]
+fn theta_support_and_bearing_panels_are_drawn_for_a_hinge_with_bearings() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "motor_runup", "motor", &["--t-end", "2"]);
+    let svg = plot_svg(
+        &csv,
+        &dir.path().join("motor.svg"),
+        &["--panels", "omega,theta,support,bearings"],
+    );
+    check_svg(&svg);
+    let texts = texts(&svg);
+    for expected in [
+        "Angle θ turned about the fixed axis",
+        "θ (rad)",
+        "θ",
+        "Support force F_sup, space axes",
+        "F_sup,x",
+        "|F_sup|",
+        "Bearing forces on the body, body axes",
+        "R_A,x",
+        "R_B,z",
+        "|R_A|",
+        "|R_B|",
+    ] {
+        assert!(texts.contains(&expected), "no {expected:?}");
+    }
+    // The second set of each panel (space axes, bearing B, |R_B|) carries markers, so that it shows where it
+    // covers the first: open circles in the components' colours, open squares for the magnitudes.
+    for color in ["#D62728", "#2CA02C", "#1F77B4"] {
+        let marks = svg
+            .split("<circle")
+            .skip(1)
+            .filter(|c| c.contains(&format!("stroke=\"{color}\"")))
+            .count();
+        assert!(marks >= 2 * 10, "{color}: {marks} circles");
+    }
+    let squares = svg.matches("stroke=\"#555555\" stroke-width=\"6\"").count();
+    assert!(squares > 20, "{squares} square markers");
+}
+
+#[test]
+fn a_free_run_has_no_theta_and_the_refusal_says_which_runs_do() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tennis_racket", "racket", &["--t-end", "1"]);
+    let svg = dir.path().join("r.svg");
+    for panel in ["theta", "support"] {
+        let out = eulerdyn(["plot", text(&csv), "-o", text(&svg), "--panels", panel]);
+        out.expect_code(2);
+        assert!(
+            out.stderr.contains(&format!("needed by {panel}"))
+                && out
+                    .stderr
+                    .contains("only fixed_axis and hinge runs have them"),
+            "{}",
+            out.stderr
+        );
+        assert!(!svg.exists());
+    }
+}
+
+#[test]
+fn a_gravity_run_shows_t_v_and_t_plus_v_and_the_drift_of_its_invariants_only() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "heavy_top", "top", &["--t-end", "1"]);
+    let svg = plot_svg(
+        &csv,
+        &dir.path().join("top.svg"),
+        &["--panels", "energy,drift"],
+    );
+    check_svg(&svg);
+    let texts = texts(&svg);
+    // T + V and, gravity being vertical and its moment about the pivot horizontal, H_s,z.
+    for expected in [
+        "T",
+        "V",
+        "T + V",
+        "T + V: relative",
+        "H_s,z: relative",
+        "Drift of T + V and H_s,z since t = 0",
+    ] {
+        assert!(texts.contains(&expected), "no {expected:?} in {texts:?}");
+    }
+    // Under gravity neither T nor |H| is an invariant: their drift is not drawn.
+    for absent in ["T: relative", "|H|: relative"] {
+        assert!(!texts.contains(&absent), "{absent}");
+    }
+    // Without a potential, the energy panel is T alone.
+    let disk = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.2"]);
+    let svg = plot_svg(&disk, &dir.path().join("disk.svg"), &["--panels", "energy"]);
+    let texts = self::texts(&svg);
+    assert!(
+        texts.contains(&"T") && !texts.contains(&"T + V"),
+        "{texts:?}"
+    );
+}
+
+#[test]
+fn a_scene_with_a_torque_has_no_invariant_to_draw() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "motor_runup", "motor", &["--t-end", "1"]);
+    let svg = plot_svg(&csv, &dir.path().join("m.svg"), &["--panels", "drift"]);
+    check_svg(&svg);
+    let texts = texts(&svg);
+    assert!(
+        texts.contains(&"this scene has no invariant among |H|, T and T + V"),
+        "{texts:?}"
+    );
+    assert!(
+        !texts.iter().any(|t| t.ends_with(": relative")),
+        "{texts:?}"
+    );
+}
+
+/// The words of a command line, double quotes grouping (`--title "Tilted disk"`).
+fn words(line: &str) -> Vec<String> {
+    let mut words = Vec::new();
+    for (k, part) in line.split('"').enumerate() {
+        if k % 2 == 1 {
+            words.push(part.to_string());
+        } else {
+            words.extend(part.split_whitespace().map(str::to_string));
+        }
+    }
+    words
+}
+
+#[test]
+fn the_examples_of_plot_help_that_plot_disk_csv_work() {
+    let help = eulerdyn(["plot", "--help"]).stdout;
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let mut tried = 0;
+    for line in help.lines().map(str::trim) {
+        let Some(rest) = line.strip_prefix("eulerdyn plot disk.csv ") else {
+            continue;
+        };
+        // The command ends where a comment, three spaces or more, begins.
+        let command = rest.split("   ").next().unwrap();
+        let mut args = vec!["plot".to_string(), text(&csv).to_string()];
+        for word in words(command) {
+            args.push(match word.strip_prefix("disk") {
+                Some(_) => text(&dir.path().join(&word)).to_string(),
+                None => word,
+            });
+        }
+        eulerdyn(&args).expect_code(0);
+        tried += 1;
+    }
+    assert!(tried >= 3, "{tried} examples in: {help}");
+    assert!(png_size(&std::fs::read(dir.path().join("disk.png")).unwrap()).0 == 1890);
 }

@@ -61,12 +61,12 @@ pub enum Command {
         /// Scene file (TOML).
         scene: PathBuf,
     },
-    /// Plot a run's CSV as an SVG figure.
+    /// Plot a run's CSV as a figure (SVG, or PNG when the output ends in .png).
     ///
-    /// One panel per quantity: H in body and in space axes, the moment M, omega, the kinetic energy, and the drift
-    /// of |H| and energy on a log scale.
+    /// One panel per quantity, in a grid: H in body and in space axes, the moment M, omega, the energy, and the
+    /// drift of the scene's invariants on a log scale.
     #[command(
-        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (default: all)."
+        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (default: all); for fixed_axis and hinge runs also\ntheta, support and bearings (with bearings). The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
     )]
     Plot(PlotArgs),
     /// Work-precision study: every applicable method over a sweep of tolerances or step sizes, its error against
@@ -115,12 +115,23 @@ pub struct PlotArgs {
     /// CSV written by `eulerdyn run` (columns are found by their header names); `-`: stdin.
     #[arg(value_name = "RUN.csv")]
     pub csv: PathBuf,
-    /// Output SVG file, written atomically; `-`: stdout.
+    /// Output file, written atomically: SVG, or PNG when its name ends in .png; `-`: SVG to stdout.
     #[arg(short = 'o', long = "output", value_name = "FIG.svg")]
     pub output: Option<PathBuf>,
-    /// Panels to draw, comma-separated, in this order: h_body, h_space, moment, omega, energy, drift, or all.
+    /// Panels to draw, comma-separated, in this order: h_body, h_space, moment, omega, energy, drift, or all;
+    /// theta, support, bearings for fixed_axis and hinge runs.
     #[arg(long, value_name = "LIST", default_value = "all")]
     pub panels: String,
+    /// Figure width and height in centimetres (at 96 pixels per inch), e.g. 16,12. Default: 16 cm wide, as
+    /// tall as the panels' rows need (6 cm a row in one column, 7 cm in two, plus 0.9 cm for the title).
+    #[arg(long, value_name = "W,H")]
+    pub size: Option<String>,
+    /// The figure's title, instead of the scene, method and rows; `--title ""`: no title.
+    #[arg(long, value_name = "TEXT")]
+    pub title: Option<String>,
+    /// Pixels per inch of a PNG (default 300): a 16 cm figure is then 1890 px wide. PNG output only.
+    #[arg(long, value_name = "N")]
+    pub dpi: Option<String>,
 }
 
 #[derive(Debug, Args)]
@@ -473,9 +484,31 @@ fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
     }
 }
 
+/// The figure options of `plot`'s arguments; a bad value is bad input naming its flag.
+fn figure_options(args: &PlotArgs) -> Result<plot::FigureOptions, Failure> {
+    let size = args
+        .size
+        .as_deref()
+        .map(str::parse::<plot::FigureSize>)
+        .transpose()
+        .map_err(|e| Failure::Input(format!("--size: {e}")))?;
+    let dpi = args
+        .dpi
+        .as_deref()
+        .map(plot::parse_dpi)
+        .transpose()
+        .map_err(|e| Failure::Input(format!("--dpi: {e}")))?;
+    Ok(plot::FigureOptions {
+        size,
+        title: args.title.clone(),
+        dpi,
+    })
+}
+
 fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
     let panels =
         Panel::parse_list(&args.panels).map_err(|e| Failure::Input(format!("--panels: {e}")))?;
+    let options = figure_options(args)?;
     let to_stdout = match args.output.as_deref() {
         Some(p) => p.as_os_str() == "-",
         None if io::stdout().is_terminal() => {
@@ -487,7 +520,7 @@ fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
         None => true,
     };
     let plot_failure = |e: PlotError| match e {
-        PlotError::Input { .. } => Failure::Input(e.to_string()),
+        PlotError::Input { .. } | PlotError::Option(_) => Failure::Input(e.to_string()),
         PlotError::Output { .. } => Failure::Run(e.to_string()),
     };
     match args.output.as_deref().filter(|_| !to_stdout) {
@@ -498,21 +531,31 @@ fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
                     out.display()
                 )));
             }
-            let summary = plot::plot_file(&args.csv, out, &panels).map_err(plot_failure)?;
+            let summary =
+                plot::plot_file(&args.csv, out, &panels, &options).map_err(plot_failure)?;
             if !quiet {
                 let names: Vec<&str> = summary.panels.iter().map(|p| p.name()).collect();
                 eprintln!(
-                    "wrote {} ({} rows; panels {})",
+                    "wrote {} ({} rows; panels {}; {} x {} px)",
                     out.display(),
                     summary.rows,
-                    names.join(", ")
+                    names.join(", "),
+                    summary.pixels.0,
+                    summary.pixels.1
                 );
             }
             Ok(())
         }
         None => {
+            if options.dpi.is_some() {
+                return Err(Failure::Input(
+                    "--dpi: only a PNG has a resolution, and stdout gets SVG; give -o FIG.png"
+                        .into(),
+                ));
+            }
             let run = plot::read_run(&args.csv, &panels).map_err(plot_failure)?;
-            let svg = plot::render_svg(&run, &panels, Path::new("stdout")).map_err(plot_failure)?;
+            let svg = plot::render_svg(&run, &panels, &options, Path::new("stdout"))
+                .map_err(plot_failure)?;
             print_stdout(&svg)
         }
     }

@@ -62,6 +62,7 @@ fn curves(study: &Study) -> Vec<Curve> {
                 label,
                 color: PALETTE[method_index % PALETTE.len()],
                 dashed: row.frame == Form::Space,
+                marker: None,
                 points: vec![point],
             }),
         }
@@ -144,7 +145,7 @@ fn draw(root: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         }
     }
     for curve in curves {
-        draw_curve(&mut chart, curve, 8)?;
+        draw_curve(&mut chart, curve, 8, 1)?;
         let marker = if curve.dashed {
             ShapeStyle::from(&curve.color).stroke_width(2)
         } else {
@@ -164,7 +165,7 @@ fn draw_legend(area: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {
         .pos(Pos::new(HPos::Left, VPos::Center));
     let mut y = 30;
     for curve in curves {
-        draw_legend_entry(area, curve, y, &text)?;
+        draw_legend_entry(area, curve, (6, y), &text, 1)?;
         y += 22;
     }
     y += 10;

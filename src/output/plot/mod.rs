@@ -1,0 +1,394 @@
+//! `eulerdyn plot`: a run's CSV time series drawn as a figure, one panel per quantity, laid out in a grid at a
+//! size that prints (see [`layout`]): SVG, or PNG when the output's name ends in `.png`.
+//!
+//! The CSV is read by its header names (the column order does not matter and extra columns are ignored), so any
+//! CSV that `eulerdyn run` writes can be plotted, as can one re-saved by pandas with the same column names. Only
+//! the columns the chosen panels need are read. A file that cannot be used (empty, no data rows, a missing
+//! column, a cell that is not a finite number, a row of the wrong length) is refused with a [`PlotError`] that
+//! names the file, the row and the column.
+//!
+//! Reading streams: memory does not grow with the number of rows. Long runs are reduced to at most about
+//! [`MAX_POINTS`] points per curve by keeping, for each run of consecutive rows, its smallest and its largest
+//! value (in time order), so that peaks, flips and spikes stay visible.
+//!
+//! The figure is drawn with plotters' SVG backend (pure Rust, no font libraries: the SVG names the font family and
+//! the viewer renders the text). PNG is that SVG rasterised by resvg (pure Rust) with the font embedded in the
+//! program (Liberation Sans, `assets/fonts/`), so it needs no system fonts.
+//!
+//! Files: `series` reads the CSV and sidecar, `decimator` bounds the points, `panels` says what each panel
+//! shows, `layout` sizes the figure and its grid, `draw` draws the SVG, `png` rasterises it.
+
+mod decimator;
+mod draw;
+pub mod layout;
+mod panels;
+pub mod png;
+mod series;
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+use super::run_csv::CsvInputError;
+use super::ticks;
+
+pub(crate) use draw::{
+    Area, DrawResult, decade_label, decade_range, draw_curve, draw_legend_entry,
+};
+pub use layout::FigureSize;
+pub(crate) use panels::Curve;
+pub use panels::DRIFT_FLOOR;
+pub use png::parse_dpi;
+pub use series::{RunSeries, read_run, read_run_from};
+
+/// Most points per curve (about; see the module documentation).
+pub const MAX_POINTS: usize = 4096;
+
+/// The font family the SVG names (the viewer renders the text; the PNG uses the embedded font).
+pub(crate) const FONT: &str = "sans-serif";
+
+/// One panel of the figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Panel {
+    /// H in body axes (and |H|).
+    HBody,
+    /// H in space axes (and |H|).
+    HSpace,
+    /// The moment M about the moment center, body axes (solid) and space axes (dashed).
+    Moment,
+    /// The angular velocity ω, body axes (solid) and space axes (dashed).
+    Omega,
+    /// The kinetic energy.
+    Energy,
+    /// |x(t) − x(0)| / |x(0)| of |H| and of the energy, on a log scale.
+    Drift,
+    /// The bearings' forces on the body: |R_A|, |R_B| and their components in body axes (A solid, B dashed).
+    /// Drawn when asked for (`--panels …,bearings`): only runs with bearings have its columns.
+    Bearings,
+    /// The force the support applies to the body, F_sup, in space axes, and |F_sup| (fixed_axis and hinge runs).
+    Support,
+    /// The angle θ turned about the fixed axis (fixed_axis and hinge runs).
+    Theta,
+}
+
+impl Panel {
+    /// Every panel, in the order they are drawn by default.
+    pub const ALL: [Panel; 6] = [
+        Panel::HBody,
+        Panel::HSpace,
+        Panel::Moment,
+        Panel::Omega,
+        Panel::Energy,
+        Panel::Drift,
+    ];
+
+    /// The panels of fixed-axis and hinge runs, drawn when asked for.
+    pub const AXIS_ONLY: [Panel; 3] = [Panel::Theta, Panel::Support, Panel::Bearings];
+
+    /// The name used with `--panels`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Panel::HBody => "h_body",
+            Panel::HSpace => "h_space",
+            Panel::Moment => "moment",
+            Panel::Omega => "omega",
+            Panel::Energy => "energy",
+            Panel::Drift => "drift",
+            Panel::Bearings => "bearings",
+            Panel::Support => "support",
+            Panel::Theta => "theta",
+        }
+    }
+
+    /// The CSV columns the panel needs (besides `t`).
+    pub fn columns(self) -> &'static [&'static str] {
+        match self {
+            Panel::HBody => &["H_b_x", "H_b_y", "H_b_z", "H_norm"],
+            Panel::HSpace => &["H_s_x", "H_s_y", "H_s_z", "H_norm"],
+            Panel::Moment => &["M_b_x", "M_b_y", "M_b_z", "M_s_x", "M_s_y", "M_s_z"],
+            Panel::Omega => &[
+                "omega_b_x",
+                "omega_b_y",
+                "omega_b_z",
+                "omega_s_x",
+                "omega_s_y",
+                "omega_s_z",
+            ],
+            Panel::Energy => &["energy"],
+            Panel::Drift => &["H_norm", "energy"],
+            Panel::Bearings => &[
+                "R_A_b_x", "R_A_b_y", "R_A_b_z", "R_B_b_x", "R_B_b_y", "R_B_b_z",
+            ],
+            Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
+            Panel::Theta => &["theta"],
+        }
+    }
+
+    /// The CSV columns the panel draws when the file has them: V and T + V (gravity scenes) for the energy panel,
+    /// T + V and H_s,z (an invariant under vertical gravity) for the drift panel.
+    pub fn optional_columns(self) -> &'static [&'static str] {
+        match self {
+            Panel::Energy => &["potential", "energy_total"],
+            Panel::Drift => &["energy_total", "H_s_z"],
+            _ => &[],
+        }
+    }
+
+    /// Which runs have the panel's columns, for panels that not every run can draw.
+    pub fn which_runs(self) -> Option<&'static str> {
+        match self {
+            Panel::Bearings => Some("only runs of scenes with `bearings` have the bearing forces"),
+            Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
+            _ => None,
+        }
+    }
+
+    /// A comma-separated list of panel names (`h_body,h_space`), in the order given; a name given twice is drawn
+    /// once. `all` stands for every panel.
+    pub fn parse_list(text: &str) -> Result<Vec<Panel>, String> {
+        let mut panels = Vec::new();
+        for name in text.split(',').map(str::trim) {
+            if name.is_empty() {
+                return Err(format!(
+                    "empty panel name in \"{text}\"; give names separated by commas, e.g. h_body,h_space (panels: {})",
+                    Self::names()
+                ));
+            }
+            let chosen = if name == "all" {
+                Panel::ALL.to_vec()
+            } else {
+                vec![name.parse::<Panel>()?]
+            };
+            for panel in chosen {
+                if !panels.contains(&panel) {
+                    panels.push(panel);
+                }
+            }
+        }
+        Ok(panels)
+    }
+
+    /// Every panel name, comma-separated.
+    pub fn names() -> String {
+        Panel::ALL.map(Panel::name).join(", ")
+            + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only)"
+    }
+}
+
+impl fmt::Display for Panel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Panel {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Panel::ALL
+            .into_iter()
+            .chain(Panel::AXIS_ONLY)
+            .find(|p| p.name() == s)
+            .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
+    }
+}
+
+/// Why a CSV could not be plotted, or the figure not written.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    /// The CSV cannot be used (bad input).
+    #[error("{}: {problem}", file.display())]
+    Input { file: PathBuf, problem: String },
+    /// A figure option (`--size`, `--title`, `--dpi`) cannot be used; the message names it (bad input).
+    #[error("{0}")]
+    Option(String),
+    /// The figure could not be drawn or written.
+    #[error("{}: {problem}", file.display())]
+    Output { file: PathBuf, problem: String },
+}
+
+impl From<CsvInputError> for PlotError {
+    fn from(e: CsvInputError) -> Self {
+        PlotError::Input {
+            file: e.file,
+            problem: e.problem,
+        }
+    }
+}
+
+impl PlotError {
+    fn input(file: &Path, problem: impl Into<String>) -> Self {
+        PlotError::Input {
+            file: file.to_path_buf(),
+            problem: problem.into(),
+        }
+    }
+}
+
+/// How the figure is drawn: its size (default: [`layout::Grid::figure_size`]), its title (default: the scene,
+/// method and rows; `Some("")`: none), and the resolution of a PNG.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FigureOptions {
+    pub size: Option<FigureSize>,
+    pub title: Option<String>,
+    /// Pixels per inch of a PNG (default [`png::DEFAULT_DPI`]); an SVG has none, and is refused one.
+    pub dpi: Option<f64>,
+}
+
+/// The file format of a figure, by the output's extension: `.png` (any case) is PNG, anything else SVG.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FigureFormat {
+    Svg,
+    Png,
+}
+
+impl FigureFormat {
+    /// The format `out`'s name asks for.
+    pub fn of(out: &Path) -> Self {
+        match out.extension() {
+            Some(e) if e.eq_ignore_ascii_case("png") => FigureFormat::Png,
+            _ => FigureFormat::Svg,
+        }
+    }
+}
+
+/// A `--title` that is one line of printable text.
+fn check_title(title: &str) -> Result<(), PlotError> {
+    if title.chars().any(char::is_control) {
+        return Err(PlotError::Option(
+            "--title: give one line of text (no line breaks or control characters)".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// The figure for `panels` (all when empty) of `run`, as SVG text.
+pub fn render_svg(
+    run: &RunSeries,
+    panels: &[Panel],
+    options: &FigureOptions,
+    out_name: &Path,
+) -> Result<String, PlotError> {
+    let panels: Vec<Panel> = if panels.is_empty() {
+        Panel::ALL.to_vec()
+    } else {
+        panels.to_vec()
+    };
+    let title = match &options.title {
+        Some(t) => {
+            check_title(t)?;
+            t.clone()
+        }
+        None => draw::default_title(run),
+    };
+    let size = figure_size(&panels, options)?;
+    draw::render_svg(run, &panels, size, &title, out_name)
+}
+
+/// What [`plot_file`] drew.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotSummary {
+    /// Data rows read from the CSV.
+    pub rows: u64,
+    /// Panels drawn.
+    pub panels: Vec<Panel>,
+    /// The file's format.
+    pub format: FigureFormat,
+    /// Its size in pixels (of the SVG: 1/96 inch; of the PNG: at its dpi).
+    pub pixels: (u32, u32),
+}
+
+/// Reads the run's CSV `csv` (`-`: stdin), draws `panels` (all when empty) and writes the figure to `out`
+/// atomically, as PNG when its name ends in `.png`, else SVG: on any error an existing `out` is left untouched.
+pub fn plot_file(
+    csv: &Path,
+    out: &Path,
+    panels: &[Panel],
+    options: &FigureOptions,
+) -> Result<PlotSummary, PlotError> {
+    let panels: Vec<Panel> = if panels.is_empty() {
+        Panel::ALL.to_vec()
+    } else {
+        panels.to_vec()
+    };
+    let format = FigureFormat::of(out);
+    if format == FigureFormat::Svg && options.dpi.is_some() {
+        return Err(PlotError::Option(
+            "--dpi: only a PNG has a resolution; name the output FIG.png, or leave out --dpi"
+                .into(),
+        ));
+    }
+    let run = read_run(csv, &panels)?;
+    let svg = render_svg(&run, &panels, options, out)?;
+    let size = figure_size(&panels, options)?;
+    let (bytes, pixels) = match format {
+        FigureFormat::Svg => (svg.into_bytes(), size.pixels()),
+        FigureFormat::Png => {
+            let pixels = png::png_pixels(size, options.dpi.unwrap_or(png::DEFAULT_DPI));
+            let image = png::rasterise(&svg, pixels).map_err(|problem| PlotError::Output {
+                file: out.to_path_buf(),
+                problem,
+            })?;
+            (image.bytes, image.pixels)
+        }
+    };
+    write_atomically(out, &bytes)?;
+    Ok(PlotSummary {
+        rows: run.rows,
+        panels,
+        format,
+        pixels,
+    })
+}
+
+/// The figure's size (cm) for `panels` and `options`.
+fn figure_size(panels: &[Panel], options: &FigureOptions) -> Result<FigureSize, PlotError> {
+    let titled = options.title.as_ref().is_none_or(|t| !t.is_empty());
+    layout::Grid::for_panels(panels.len())
+        .figure_size(options.size, titled)
+        .map_err(|e| PlotError::Option(format!("--size: {e}")))
+}
+
+/// Writes `bytes` to `out` through a temporary file renamed over it.
+fn write_atomically(out: &Path, bytes: &[u8]) -> Result<(), PlotError> {
+    let file = super::AtomicFile::create(out).map_err(|e| PlotError::Input {
+        file: out.to_path_buf(),
+        problem: format!("cannot create the output file: {e}"),
+    })?;
+    file.write_and_commit(bytes).map_err(|e| PlotError::Output {
+        file: out.to_path_buf(),
+        problem: e.to_string(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn panel_lists_parse_dedupe_and_refuse_unknown_names() {
+        assert_eq!(
+            Panel::parse_list("h_body, h_space,h_body").unwrap(),
+            vec![Panel::HBody, Panel::HSpace]
+        );
+        assert_eq!(Panel::parse_list("all").unwrap(), Panel::ALL.to_vec());
+        assert_eq!(
+            Panel::parse_list("theta,support").unwrap(),
+            vec![Panel::Theta, Panel::Support]
+        );
+        let e = Panel::parse_list("h_body,torque").unwrap_err();
+        assert!(
+            e.contains("unknown panel \"torque\"") && e.contains("h_space"),
+            "{e}"
+        );
+        assert!(Panel::parse_list("h_body,").is_err());
+    }
+
+    #[test]
+    fn the_format_is_chosen_by_the_extension() {
+        assert_eq!(FigureFormat::of(Path::new("a/fig.png")), FigureFormat::Png);
+        assert_eq!(FigureFormat::of(Path::new("FIG.PNG")), FigureFormat::Png);
+        assert_eq!(FigureFormat::of(Path::new("fig.svg")), FigureFormat::Svg);
+        assert_eq!(FigureFormat::of(Path::new("fig")), FigureFormat::Svg);
+    }
+}

@@ -1,0 +1,354 @@
+//! What each panel draws: its title, axis label and curves, with legend labels in the symbols of the notes (ω_b,x,
+//! H_s,z, |R_A|, T + V) rather than CSV column names. Body-axes components are solid lines and space-axes ones
+//! dashed with open circles (likewise bearing A solid, bearing B dashed with markers), so that a curve drawn over
+//! another with the same values leaves both visible, in the plot and in the legend.
+
+use plotters::style::RGBColor;
+
+use super::Panel;
+use super::series::{RunSeries, SceneFacts};
+
+/// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
+/// legend says so.
+pub const DRIFT_FLOOR: f64 = 1e-17;
+
+/// A mark drawn along a curve at regular intervals (and in its legend sample).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Marker {
+    /// An open circle.
+    Circle,
+    /// An open square.
+    Square,
+}
+
+/// A curve to draw: its legend label, colour, line style and points (x, y) in drawing order.
+pub(crate) struct Curve {
+    pub label: String,
+    pub color: RGBColor,
+    pub dashed: bool,
+    /// Marks along the curve, so that it stays visible where another curve covers it.
+    pub marker: Option<Marker>,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// What one panel shows.
+pub(super) struct PanelPlot {
+    pub(super) title: String,
+    pub(super) y_label: String,
+    pub(super) curves: Vec<Curve>,
+    /// Log scale (the drift panel).
+    pub(super) log: bool,
+    /// Legend lines that are text only.
+    pub(super) notes: Vec<String>,
+}
+
+impl PanelPlot {
+    fn linear(title: impl Into<String>, y_label: &str, curves: Vec<Curve>) -> Self {
+        Self {
+            title: title.into(),
+            y_label: y_label.into(),
+            curves,
+            log: false,
+            notes: Vec::new(),
+        }
+    }
+}
+
+const RED: RGBColor = RGBColor(0xd6, 0x27, 0x28);
+const GREEN: RGBColor = RGBColor(0x2c, 0xa0, 0x2c);
+const BLUE: RGBColor = RGBColor(0x1f, 0x77, 0xb4);
+const GREY: RGBColor = RGBColor(0x55, 0x55, 0x55);
+const PURPLE: RGBColor = RGBColor(0x94, 0x67, 0xbd);
+const ORANGE: RGBColor = RGBColor(0xff, 0x7f, 0x0e);
+const BLACK: RGBColor = RGBColor(0, 0, 0);
+const XYZ: [RGBColor; 3] = [RED, GREEN, BLUE];
+
+/// A vector's three components as curves: columns `{prefix}_x` …, labels `{symbol},x` …, coloured x red, y green,
+/// z blue; the second set of a panel is dashed with open circles.
+fn components(run: &RunSeries, prefix: &str, symbol: &str, second: bool) -> Vec<Curve> {
+    ["x", "y", "z"]
+        .iter()
+        .zip(XYZ)
+        .map(|(axis, color)| Curve {
+            label: format!("{symbol},{axis}"),
+            color,
+            dashed: second,
+            marker: second.then_some(Marker::Circle),
+            points: run.points(&format!("{prefix}_{axis}")),
+        })
+        .collect()
+}
+
+/// One solid curve of the CSV column `column`.
+fn single(run: &RunSeries, column: &str, label: &str, color: RGBColor) -> Curve {
+    Curve {
+        label: label.into(),
+        color,
+        dashed: false,
+        marker: None,
+        points: run.points(column),
+    }
+}
+
+/// What `panel` shows of `run`.
+pub(super) fn panel_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
+    match panel {
+        Panel::HBody => h_panel(run, "H_b", "body"),
+        Panel::HSpace => h_panel(run, "H_s", "space"),
+        Panel::Moment => body_and_space_panel(run, "Moment M about the moment center", "M", "M"),
+        Panel::Omega => body_and_space_panel(run, "Angular velocity ω", "ω", "omega"),
+        Panel::Energy => energy_panel(run),
+        Panel::Drift => drift_panel(run),
+        Panel::Bearings => bearings_panel(run),
+        Panel::Support => support_panel(run),
+        Panel::Theta => PanelPlot::linear(
+            "Angle θ turned about the fixed axis",
+            "θ (rad)",
+            vec![single(run, "theta", "θ", BLUE)],
+        ),
+    }
+}
+
+/// The kinetic energy T; with the columns `potential` and `energy_total` (gravity scenes), also V and T + V.
+fn energy_panel(run: &RunSeries) -> PanelPlot {
+    let mut curves = vec![single(run, "energy", "T", PURPLE)];
+    if run.has("potential") && run.has("energy_total") {
+        curves.push(Curve {
+            dashed: true,
+            marker: Some(Marker::Square),
+            ..single(run, "potential", "V", ORANGE)
+        });
+        curves.push(single(run, "energy_total", "T + V", BLACK));
+        PanelPlot::linear(
+            "Kinetic T, potential V and total T + V",
+            "energy (J)",
+            curves,
+        )
+    } else {
+        PanelPlot::linear("Kinetic energy T = ½ ω·H", "energy (J)", curves)
+    }
+}
+
+/// The magnitude of the vector with columns `{prefix}_x` … (read as a derived curve).
+fn norm(run: &RunSeries, prefix: &str, label: &str, second: bool) -> Curve {
+    Curve {
+        label: label.into(),
+        color: GREY,
+        dashed: second,
+        marker: second.then_some(Marker::Square),
+        points: run
+            .norms
+            .iter()
+            .find(|n| n.prefix == prefix)
+            .map(|n| n.points.points())
+            .unwrap_or_default(),
+    }
+}
+
+/// The components of the bearings' forces on the body, body axes (A solid, B dashed with circles), and their
+/// magnitudes (grey; |R_B| dashed with squares).
+fn bearings_panel(run: &RunSeries) -> PanelPlot {
+    let curves = components(run, "R_A_b", "R_A", false)
+        .into_iter()
+        .chain(components(run, "R_B_b", "R_B", true))
+        .chain([
+            norm(run, "R_A_b", "|R_A|", false),
+            norm(run, "R_B_b", "|R_B|", true),
+        ])
+        .collect();
+    PanelPlot::linear("Bearing forces on the body, body axes", "R (N)", curves)
+}
+
+/// The force the support applies to the body, F_sup = m a_C − Σ F_effects, in space axes, and its magnitude.
+fn support_panel(run: &RunSeries) -> PanelPlot {
+    let curves = components(run, "F_sup_s", "F_sup", false)
+        .into_iter()
+        .chain([norm(run, "F_sup_s", "|F_sup|", true)])
+        .collect();
+    PanelPlot::linear("Support force F_sup, space axes", "F_sup (N)", curves)
+}
+
+/// H in one set of axes (columns `{columns}_x` …), with |H| grey, dashed with squares.
+fn h_panel(run: &RunSeries, columns: &str, axes: &str) -> PanelPlot {
+    let symbol = format!("H_{}", &axes[..1]);
+    let norm = Curve {
+        label: "|H|".into(),
+        color: GREY,
+        dashed: true,
+        marker: Some(Marker::Square),
+        points: run.points("H_norm"),
+    };
+    let curves = components(run, columns, &symbol, false)
+        .into_iter()
+        .chain([norm])
+        .collect();
+    PanelPlot::linear(
+        format!("Moment of momentum H, {axes} axes"),
+        "H (kg·m²/s)",
+        curves,
+    )
+}
+
+/// A vector in body axes (`{quantity}_b_x` …, solid) and in space axes (`{quantity}_s_x` …, dashed with circles).
+fn body_and_space_panel(run: &RunSeries, title: &str, symbol: &str, quantity: &str) -> PanelPlot {
+    let unit = if quantity == "M" { "N·m" } else { "rad/s" };
+    let curves = components(run, &format!("{quantity}_b"), &format!("{symbol}_b"), false)
+        .into_iter()
+        .chain(components(
+            run,
+            &format!("{quantity}_s"),
+            &format!("{symbol}_s"),
+            true,
+        ))
+        .collect();
+    PanelPlot::linear(title, &format!("{symbol} ({unit})"), curves)
+}
+
+/// The CSV columns of the scene's invariants (of |H|, T, T + V and H_s,z), or `None` when there is no sidecar to
+/// tell. Free motion and a hinge keep T and |H| with no effects, and T + V under gravity alone (free motion about
+/// a pivot also H_s,z, the component of H along vertical gravity, whose moment is horizontal); a prescribed
+/// fixed-axis motion keeps T and |H| unless it accelerates; torques and damping leave none.
+pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>> {
+    let scene = scene?;
+    let only_gravity = scene.effects.iter().all(|e| e == "gravity");
+    Some(match scene.motion.as_str() {
+        "fixed_axis" if scene.accelerated => vec![],
+        "fixed_axis" => vec!["H_norm", "energy"],
+        _ if scene.effects.is_empty() => vec!["H_norm", "energy"],
+        "free" if only_gravity && scene.vertical_gravity => vec!["energy_total", "H_s_z"],
+        _ if only_gravity => vec!["energy_total"],
+        _ => vec![],
+    })
+}
+
+/// The symbol, colour and unit of a drift curve's quantity.
+fn drift_style(column: &str) -> (&'static str, RGBColor, &'static str) {
+    match column {
+        "H_norm" => ("|H|", ORANGE, "kg·m²/s"),
+        "energy_total" => ("T + V", BLACK, "J"),
+        "H_s_z" => ("H_s,z", BLUE, "kg·m²/s"),
+        _ => ("T", PURPLE, "J"),
+    }
+}
+
+/// The drift of the scene's invariants (all of |H|, T and T + V the file has when the scene is not known) on a log
+/// scale, values below [`DRIFT_FLOOR`] drawn at it.
+fn drift_panel(run: &RunSeries) -> PanelPlot {
+    let kept = invariants(run.scene.as_ref());
+    let mut notes = Vec::new();
+    let mut clamped = false;
+    let mut curves = Vec::new();
+    for d in &run.drifts {
+        // Without the scene, H_s,z (an invariant only under vertical gravity) is left out.
+        let shown = match &kept {
+            Some(k) => k.contains(&d.column),
+            None => d.column != "H_s_z",
+        };
+        if !shown {
+            continue;
+        }
+        let (name, color, unit) = drift_style(d.column);
+        let label = if d.x0 == Some(0.0) {
+            format!("{name}: absolute ({unit}), as {name}(0) = 0")
+        } else {
+            format!("{name}: relative")
+        };
+        let mut points = d.points.points();
+        for p in &mut points {
+            if p.1 < DRIFT_FLOOR {
+                clamped = true;
+                p.1 = DRIFT_FLOOR;
+            }
+        }
+        curves.push(Curve {
+            label,
+            color,
+            dashed: false,
+            marker: None,
+            points,
+        });
+    }
+    if clamped {
+        notes.push(format!(
+            "drift < {DRIFT_FLOOR:.0e} (e.g. 0) is drawn at {DRIFT_FLOOR:.0e}"
+        ));
+    }
+    let title = match &kept {
+        None => "Change of |H| and T since t = 0 (their drift where they are invariants)".into(),
+        Some(k) if k.is_empty() || curves.is_empty() => {
+            notes.push("this scene has no invariant among |H|, T and T + V".into());
+            "Change of the invariants since t = 0".into()
+        }
+        Some(_) => {
+            let names: Vec<&str> = curves
+                .iter()
+                .map(|c| c.label.split(':').next().unwrap_or(""))
+                .collect();
+            format!("Drift of {} since t = 0", names.join(" and "))
+        }
+    };
+    PanelPlot {
+        title,
+        y_label: "|x(t) − x(0)| / |x(0)|".into(),
+        curves,
+        log: true,
+        notes,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(motion: &str, effects: &[&str], accelerated: bool) -> SceneFacts {
+        SceneFacts {
+            name: "s".into(),
+            method: "dop853".into(),
+            frame: "body".into(),
+            motion: motion.into(),
+            effects: effects.iter().map(|e| e.to_string()).collect(),
+            accelerated,
+            vertical_gravity: true,
+        }
+    }
+
+    #[test]
+    fn the_invariants_are_those_the_scene_has() {
+        assert_eq!(invariants(None), None);
+        let both = Some(vec!["H_norm", "energy"]);
+        assert_eq!(invariants(Some(&scene("free", &[], false))), both);
+        assert_eq!(invariants(Some(&scene("hinge", &[], false))), both);
+        assert_eq!(
+            invariants(Some(&scene("fixed_axis", &["gravity"], false))),
+            both
+        );
+        assert_eq!(
+            invariants(Some(&scene("fixed_axis", &[], true))),
+            Some(vec![])
+        );
+        assert_eq!(
+            invariants(Some(&scene("free", &["gravity"], false))),
+            Some(vec!["energy_total", "H_s_z"])
+        );
+        let tilted_gravity = SceneFacts {
+            vertical_gravity: false,
+            ..scene("free", &["gravity"], false)
+        };
+        assert_eq!(
+            invariants(Some(&tilted_gravity)),
+            Some(vec!["energy_total"])
+        );
+        assert_eq!(
+            invariants(Some(&scene("hinge", &["gravity"], false))),
+            Some(vec!["energy_total"])
+        );
+        assert_eq!(
+            invariants(Some(&scene("hinge", &["gravity", "torque"], false))),
+            Some(vec![])
+        );
+        assert_eq!(
+            invariants(Some(&scene("free", &["damping"], false))),
+            Some(vec![])
+        );
+    }
+}

@@ -1,0 +1,312 @@
+//! Reading a run's CSV into the curves the chosen panels draw: by header names (the column order does not matter
+//! and extra columns are ignored), streaming (memory does not grow with the rows), each curve reduced by a
+//! [`Decimator`]. A panel's optional columns (`potential` and `energy_total` for the energy panel) are read when the
+//! file has them. What the run's sidecar says of the scene (name, method, motion, effects) is kept for the title
+//! and for the drift panel, which shows only the scene's invariants.
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use super::decimator::Decimator;
+use super::{Panel, PlotError};
+use crate::output::run_csv::{RunCsvReader, sidecar_path};
+
+/// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
+#[derive(Debug, Clone)]
+pub(super) struct Drift {
+    /// The CSV column x.
+    pub(super) column: &'static str,
+    /// x(0), the first row's value.
+    pub(super) x0: Option<f64>,
+    pub(super) points: Decimator,
+}
+
+/// A derived curve: the magnitude of a vector whose components are three consecutive wanted columns.
+#[derive(Debug, Clone)]
+pub(super) struct Norm {
+    /// The columns' common prefix (`R_A_b` for `R_A_b_x` …).
+    pub(super) prefix: &'static str,
+    /// The index in a row's values of the x component.
+    index: usize,
+    pub(super) points: Decimator,
+}
+
+/// What the run's sidecar (`RUN.csv.meta.json`) says of the scene that was run.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct SceneFacts {
+    pub(super) name: String,
+    pub(super) method: String,
+    pub(super) frame: String,
+    /// `free`, `fixed_axis` or `hinge`.
+    pub(super) motion: String,
+    /// The effects' types (`gravity`, `torque`, `damping`), as listed.
+    pub(super) effects: Vec<String>,
+    /// A prescribed fixed-axis motion with a nonzero angular acceleration (`motion.accel`).
+    pub(super) accelerated: bool,
+    /// Every gravity effect's `g` is along space z (so that, about a fixed pivot, H_s,z is an invariant).
+    pub(super) vertical_gravity: bool,
+}
+
+/// The curves read from a run's CSV, ready to draw.
+#[derive(Debug, Clone)]
+pub struct RunSeries {
+    /// The file, for titles and messages.
+    pub file: PathBuf,
+    /// Data rows read.
+    pub rows: u64,
+    /// Smallest and largest t.
+    pub(super) t_range: (f64, f64),
+    /// Curves by column name.
+    columns: Vec<(&'static str, Decimator)>,
+    pub(super) drifts: Vec<Drift>,
+    /// |R_A|, |R_B| (bearings panel) and |F_sup| (support panel).
+    pub(super) norms: Vec<Norm>,
+    /// The scene, from the run's sidecar, when there is one.
+    pub(super) scene: Option<SceneFacts>,
+}
+
+/// The vectors whose magnitude a panel draws, by column prefix.
+fn norm_prefixes(panel: Panel) -> &'static [&'static str] {
+    match panel {
+        Panel::Bearings => &["R_A_b", "R_B_b"],
+        Panel::Support => &["F_sup_s"],
+        _ => &[],
+    }
+}
+
+impl RunSeries {
+    /// No rows yet: a curve for each wanted column after t, and the derived curves of `panels`.
+    fn new(file: &Path, wanted: &[&'static str], panels: &[Panel]) -> Self {
+        let drifts = if panels.contains(&Panel::Drift) {
+            ["H_norm", "energy", "energy_total", "H_s_z"]
+                .into_iter()
+                .filter(|c| wanted.contains(c))
+                .map(|column| Drift {
+                    column,
+                    x0: None,
+                    points: Decimator::new(),
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let norms = panels
+            .iter()
+            .flat_map(|&p| norm_prefixes(p))
+            .filter_map(|&prefix| {
+                let x = format!("{prefix}_x");
+                let index = wanted.iter().position(|c| *c == x)?;
+                Some(Norm {
+                    prefix,
+                    index,
+                    points: Decimator::new(),
+                })
+            })
+            .collect();
+        Self {
+            file: file.to_path_buf(),
+            rows: 0,
+            t_range: (f64::INFINITY, f64::NEG_INFINITY),
+            columns: wanted[1..].iter().map(|&c| (c, Decimator::new())).collect(),
+            drifts,
+            norms,
+            scene: None,
+        }
+    }
+
+    /// Adds a row's `values` (t first, then the wanted columns); `drift_index[k]` is the value of drift k.
+    fn push(&mut self, values: &[f64], drift_index: &[usize]) {
+        let t = values[0];
+        self.t_range = (self.t_range.0.min(t), self.t_range.1.max(t));
+        for (k, (_, d)) in self.columns.iter_mut().enumerate() {
+            d.push(t, values[k + 1]);
+        }
+        for norm in &mut self.norms {
+            let r = &values[norm.index..norm.index + 3];
+            norm.points
+                .push(t, (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt());
+        }
+        for (drift, &k) in self.drifts.iter_mut().zip(drift_index) {
+            let x = values[k];
+            match drift.x0 {
+                None => drift.x0 = Some(x),
+                Some(x0) => {
+                    let change = (x - x0).abs();
+                    let value = if x0 == 0.0 { change } else { change / x0.abs() };
+                    drift.points.push(t, value);
+                }
+            }
+        }
+    }
+
+    /// The points of the CSV column `column` (none when it was not read).
+    pub(super) fn points(&self, column: &str) -> Vec<(f64, f64)> {
+        self.columns
+            .iter()
+            .find(|(name, _)| *name == column)
+            .map(|(_, d)| d.points())
+            .unwrap_or_default()
+    }
+
+    /// Whether the CSV column `column` was read (an optional column the file has, or a required one).
+    pub(super) fn has(&self, column: &str) -> bool {
+        self.columns.iter().any(|(name, _)| *name == column)
+    }
+}
+
+/// Reads the CSV file `path` (or stdin when `path` is `-`) for `panels`.
+pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
+    if path.as_os_str() == "-" {
+        let reader = RunCsvReader::new(Path::new("stdin"), std::io::stdin().lock())?;
+        return read_rows(reader, panels);
+    }
+    let mut series = read_rows(RunCsvReader::open(path)?, panels)?;
+    series.scene = sidecar_scene(path);
+    Ok(series)
+}
+
+/// Reads a run's CSV from `reader`; `file` names it in messages.
+pub fn read_run_from(
+    file: &Path,
+    reader: impl Read,
+    panels: &[Panel],
+) -> Result<RunSeries, PlotError> {
+    read_rows(RunCsvReader::new(file, reader)?, panels)
+}
+
+/// Reads the data rows of `csv` (its header read) into the curves of `panels`.
+fn read_rows(mut csv: RunCsvReader<impl Read>, panels: &[Panel]) -> Result<RunSeries, PlotError> {
+    let file = csv.file().to_path_buf();
+    let wanted = wanted_columns(panels, |c| csv.index_of(c).is_some());
+    let index = column_indices(&csv, &wanted, panels)?;
+    let mut series = RunSeries::new(&file, &wanted, panels);
+    let drift_index: Vec<usize> = series
+        .drifts
+        .iter()
+        .map(|d| wanted.iter().position(|&w| w == d.column).unwrap_or(0))
+        .collect();
+    let mut values = vec![0.0; wanted.len()];
+    while csv.next_row(&index, &wanted, &mut values)? {
+        series.rows += 1;
+        series.push(&values, &drift_index);
+    }
+    if series.rows == 0 {
+        return Err(PlotError::input(
+            &file,
+            "the file has a header but no data rows; nothing to plot",
+        ));
+    }
+    Ok(series)
+}
+
+/// The columns to read: t, then those of every panel, each once; a panel's optional columns when `present`.
+fn wanted_columns(panels: &[Panel], present: impl Fn(&str) -> bool) -> Vec<&'static str> {
+    let mut wanted: Vec<&'static str> = vec!["t"];
+    for panel in panels {
+        let optional = panel.optional_columns().iter().filter(|c| present(c));
+        for &c in panel.columns().iter().chain(optional) {
+            if !wanted.contains(&c) {
+                wanted.push(c);
+            }
+        }
+    }
+    wanted
+}
+
+/// The index in the header of each wanted column; a missing column is refused with the panels that need it.
+fn column_indices(
+    csv: &RunCsvReader<impl Read>,
+    wanted: &[&'static str],
+    panels: &[Panel],
+) -> Result<Vec<usize>, PlotError> {
+    let mut missing: Vec<(&str, Vec<&str>)> = Vec::new();
+    let mut index = Vec::with_capacity(wanted.len());
+    for &name in wanted {
+        match csv.index_of(name) {
+            Some(i) => index.push(i),
+            None => {
+                let users: Vec<&str> = if name == "t" {
+                    vec!["every panel"]
+                } else {
+                    panels
+                        .iter()
+                        .filter(|p| p.columns().contains(&name))
+                        .map(|p| p.name())
+                        .collect()
+                };
+                missing.push((name, users));
+            }
+        }
+    }
+    if missing.is_empty() {
+        return Ok(index);
+    }
+    let list: Vec<String> = missing
+        .iter()
+        .map(|(name, users)| format!("`{name}` (needed by {})", users.join(", ")))
+        .collect();
+    let runs_with: Vec<String> = panels
+        .iter()
+        .filter(|p| missing.iter().any(|(name, _)| p.columns().contains(name)))
+        .filter_map(|p| p.which_runs().map(|runs| format!("{p}: {runs}")))
+        .collect();
+    let runs_with = if runs_with.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", runs_with.join("; "))
+    };
+    let shown = csv.header_shown();
+    let hint = if csv.header().len() == 1 && (shown.contains(';') || shown.contains('\t')) {
+        " (the columns must be separated by commas)"
+    } else {
+        ""
+    };
+    Err(PlotError::input(
+        csv.file(),
+        format!(
+            "no column {}{runs_with}; is it a CSV written by `eulerdyn run`? Its header is: {shown}{hint}. Choose other panels with --panels ({})",
+            list.join(", "),
+            Panel::names()
+        ),
+    ))
+}
+
+/// The scene's name, method, motion and effects from `FILE.meta.json`, if the run left one next to the CSV.
+fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
+    let text = std::fs::read_to_string(sidecar_path(csv)).ok()?;
+    let doc: serde_json::Value = serde_json::from_str(&text).ok()?;
+    let text_of = |pointer: &str| Some(doc.pointer(pointer)?.as_str()?.to_string());
+    let effects = doc
+        .pointer("/scene/effects")?
+        .as_array()?
+        .iter()
+        .filter_map(|e| e.as_str().map(str::to_string))
+        .collect();
+    // The angular acceleration of a prescribed motion and the direction of gravity are in the scene text only.
+    let scene = text_of("/scene/text").and_then(|t| toml::from_str::<toml::Table>(&t).ok());
+    let number = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|a| a as f64));
+    let accel = scene
+        .as_ref()
+        .and_then(|t| number(t.get("motion")?.get("accel")?));
+    let vertical_gravity = scene
+        .as_ref()
+        .and_then(|t| t.get("effect")?.as_array())
+        .is_some_and(|effects| {
+            effects
+                .iter()
+                .filter(|e| e.get("type").and_then(|t| t.as_str()) == Some("gravity"))
+                .all(|e| {
+                    let g = e.get("g").and_then(|g| g.as_array());
+                    g.is_some_and(|g| g.len() == 3 && g[..2].iter().all(|c| number(c) == Some(0.0)))
+                })
+        });
+    Some(SceneFacts {
+        name: text_of("/scene/name")?,
+        method: text_of("/solver/method")?,
+        frame: text_of("/solver/frame")?,
+        motion: text_of("/scene/motion").unwrap_or_else(|| "free".into()),
+        effects,
+        accelerated: accel.is_some_and(|a| a != 0.0),
+        vertical_gravity,
+    })
+}
