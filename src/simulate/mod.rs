@@ -202,14 +202,21 @@ pub fn run<E: std::error::Error + 'static>(
             guard.check(s).map_err(Stop::Diverged)?;
         }
         rows += 1;
-        let mut s = *s;
-        if with_potential {
-            s.potential = scene.gravity_potential(&s.q);
-        }
+        // A copy of the row only where it gains its potential energy.
+        let with_v;
+        let s = if with_potential {
+            with_v = Sample {
+                potential: scene.gravity_potential(&s.q),
+                ..*s
+            };
+            &with_v
+        } else {
+            s
+        };
         if let Some(watch) = &mut watch {
-            watch.add(&s);
+            watch.add(s);
         }
-        sink(&s).map_err(Stop::Sink)
+        sink(s).map_err(Stop::Sink)
     };
     let stats = match &scene.motion {
         Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),
