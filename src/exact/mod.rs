@@ -8,15 +8,19 @@
 //!   descending Landen / ascending Gauss transformations, A&S 16.12–16.15, DLMF 22.7, 22.20).
 //! - [`torque_free`]: the torque-free (Euler–Poinsot) rigid body, any moments, any initial
 //!   state: angular velocity and exact attitude (Landau & Lifshitz, *Mechanics*, §37).
+//! - [`equal_grid`]: the torque-free body on an equal grid of times, advanced row by row by the addition theorems
+//!   of sn, cn, dn and of the precession angle's elliptic integral (DLMF 22.8, §19.11), re-anchored periodically.
 //! - [`symmetric`]: symmetric bodies: torque-free precession, constant axial torque, and the
 //!   heavy symmetric top in steady precession (Goldstein, *Classical Mechanics*, §§5.6–5.7).
 
 pub mod damped_spin;
+pub mod equal_grid;
 pub mod jacobi;
 pub mod symmetric;
 pub mod torque_free;
 
 pub use damped_spin::{DampedSpin, DampedSpinState};
+pub use equal_grid::{ANCHOR_ROWS, EqualGrid};
 pub use jacobi::{JacobiElliptic, amplitude, sn_cn_dn};
 pub use symmetric::{
     AxialTorqueSymmetric, HeavySymmetricTop, PrecessionRoots, SteadyPrecession, SymmetricTorqueFree,

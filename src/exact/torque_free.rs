@@ -82,50 +82,50 @@ pub struct TorqueFreeBody {
     q0: UnitQuaternion<f64>,
     h_s: Vector3<f64>,
     energy: f64,
-    motion: Motion,
+    pub(super) motion: Motion,
 }
 
 #[derive(Debug, Clone)]
-enum Motion {
+pub(super) enum Motion {
     Stationary,
     Elliptic(Box<Elliptic>),
 }
 
 /// The non-stationary solution in the canonical frame (see the module docs).
 #[derive(Debug, Clone)]
-struct Elliptic {
+pub(super) struct Elliptic {
     /// User → canonical: `v_c = perm · v_u` (signed permutation, det +1).
-    perm: Matrix3<f64>,
+    pub(super) perm: Matrix3<f64>,
     /// Canonical user-axis index of canonical axis 3 (for [`TorqueFreeCase`]).
-    axis3_user: usize,
-    inertia: [f64; 3],
-    a: f64,
-    b: f64,
-    c: f64,
-    eps: f64,
-    lambda: f64,
-    tau0: f64,
-    separatrix: bool,
-    jac: JacobiElliptic,
+    pub(super) axis3_user: usize,
+    pub(super) inertia: [f64; 3],
+    pub(super) a: f64,
+    pub(super) b: f64,
+    pub(super) c: f64,
+    pub(super) eps: f64,
+    pub(super) lambda: f64,
+    pub(super) tau0: f64,
+    pub(super) separatrix: bool,
+    pub(super) jac: JacobiElliptic,
     /// `n = −I₃(I₂−I₁)/(I₁(I₃−I₂)) ≤ 0`, the characteristic of Π (A&S 17.2.15 sign
     /// convention: `Π(φ, n|m) = ∫ dθ / ((1 − n sin²θ) √(1 − m sin²θ))`).
-    n: f64,
+    pub(super) n: f64,
     /// `M/I₁`: the mean-free part of dφ/dt.
-    rate_lin: f64,
+    pub(super) rate_lin: f64,
     /// Coefficient of `2j R_J(0, m′, 1, 1−n) + s³ R_J(c², d², 1, 1 − n s²)` in φ (elliptic).
-    kappa: f64,
+    pub(super) kappa: f64,
     /// `R_J(0, m′, 1, 1 − n)` (elliptic case).
-    rj_complete: f64,
+    pub(super) rj_complete: f64,
     /// The φ-integral's value at τ₀ (subtracted so that φ(0) = 0).
-    g0: f64,
+    pub(super) g0: f64,
     /// Separatrix: `φ = sep_lin · t + sep_atan · (atan(√ν tanh τ) − atan(√ν tanh τ₀))`.
-    sep_lin: f64,
-    sep_atan: f64,
-    sqrt_nu: f64,
+    pub(super) sep_lin: f64,
+    pub(super) sep_atan: f64,
+    pub(super) sqrt_nu: f64,
     /// `q0 ⊗ perm⁻¹ ⊗ q_H(0)⁻¹`: maps the "H frame" (space frame rotated so that H ∥ z) to
     /// space; `attitude(t) = q_fixed ⊗ q_H(t) ⊗ q_perm`.
-    q_fixed: UnitQuaternion<f64>,
-    q_perm: UnitQuaternion<f64>,
+    pub(super) q_fixed: UnitQuaternion<f64>,
+    pub(super) q_perm: UnitQuaternion<f64>,
 }
 
 impl TorqueFreeBody {
@@ -465,7 +465,7 @@ impl Elliptic {
         Ok(())
     }
 
-    fn tau(&self, t: f64) -> f64 {
+    pub(super) fn tau(&self, t: f64) -> f64 {
         self.lambda.mul_add(t, self.tau0)
     }
 
@@ -481,7 +481,7 @@ impl Elliptic {
     }
 
     /// sn, cn ≥ 0, dn of the reduced argument r (τ = 2jK + r) and j.
-    fn reduced(&self, tau: f64) -> (f64, f64, f64, f64) {
+    pub(super) fn reduced(&self, tau: f64) -> (f64, f64, f64, f64) {
         if self.separatrix {
             let sech = 1.0 / tau.cosh();
             (tau.tanh(), sech, sech, 0.0)
@@ -492,7 +492,7 @@ impl Elliptic {
     }
 
     /// `2j R_J(0, m′, 1, 1−n) + s³ R_J(c², d², 1, 1 − n s²)`, i.e. `(3/n)(Π(am τ, n|m) − τ)`.
-    fn g_integral(&self, s: f64, c: f64, d: f64, j: f64) -> f64 {
+    pub(super) fn g_integral(&self, s: f64, c: f64, d: f64, j: f64) -> f64 {
         let partial = if s == 0.0 {
             0.0
         } else {

@@ -1,0 +1,268 @@
+//! The torque-free body on an equal grid of times `t_k = k·every`, each row advanced from the previous one by
+//! addition theorems instead of evaluated from scratch.
+//!
+//! On the grid, `τ_k = λ t_k + τ₀` advances by the constant `h = λ·every`, so (DLMF 22.8.1–22.8.3)
+//!
+//! ```text
+//!   sn(u + h) = (sn u cn h dn h + sn h cn u dn u) / Δ
+//!   cn(u + h) = (cn u cn h − sn u dn u sn h dn h) / Δ        Δ = 1 − m sn²u sn²h
+//!   dn(u + h) = (dn u dn h − m sn u cn u sn h cn h) / Δ
+//! ```
+//!
+//! and the precession angle's elliptic integral `J(u) = ∫₀ᵘ sn²v / (1 + ν sn²v) dv` (ν = −n ≥ 0, the
+//! characteristic of [`TorqueFreeBody::attitude`], whose `Π(am u, n|m) = u − ν J(u)`) by its addition theorem
+//!
+//! ```text
+//!   J(u + h) = J(u) + J(h) + atan2(ρ sn u sn h sn(u+h),  1 + ν sn²(u+h) − ν sn u sn h cn(u+h) dn(u+h)) / ρ
+//!   ρ = √(ν (m + ν)(1 + ν))
+//! ```
+//!
+//! — Jacobi's addition theorem of the integral of the third kind (the Legendre form is DLMF §19.11(i), Carlson's
+//! form DLMF 19.26.9: the extra term is an `R_C`, elementary), written for the imaginary parameter `a` of
+//! `n = m sn²a < 0`, where the logarithm of Jacobi's form becomes this arctangent. The second argument of the
+//! arctangent is ≥ 1 (so the principal value is the continuous one); the identity is checked against the direct
+//! evaluation (Carlson `R_J`) in the tests, and was checked against mpmath quadrature to 1e-30 when derived.
+//! The rest of the attitude (L&L §37, see [`TorqueFreeBody::attitude`]) is algebraic in sn, cn, dn: the nutation
+//! and spin half-angles follow from `H_p` by half-angle formulas (no atan2, no sine), so a row costs one arctangent,
+//! one sine–cosine pair (of the precession angle) and a few square roots.
+//!
+//! Round-off: the recurrences are neutrally stable, so their rounding errors accumulate (measured: see
+//! [`ANCHOR_ROWS`]); every [`ANCHOR_ROWS`] rows the walk restarts from a direct evaluation, which bounds the error
+//! independently of the number of rows. The separatrix and stationary motions are evaluated directly at every row.
+
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+
+use super::torque_free::{Elliptic, Motion, TorqueFreeBody};
+
+/// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
+/// (test `roundoff_growth_without_reanchoring_sets_the_anchor_interval`, docs/performance.md): for the benchmark
+/// body, never re-anchored, the attitude's difference from the direct evaluation grows like r^1.3–1.5 with the
+/// number of rows r — at h = λ·every ≈ 0.004: 9.5e-15 rad after 256 rows, 3.0e-14 after 1000, 1.1e-13 after 10⁴,
+/// 1.5e-12 after 10⁵ (ω: 9.3e-16, 4.8e-15, 6.9e-15, 1.3e-14); at h ≈ 0.04: 5.7e-15, 2.4e-14, 6.8e-13, 1.4e-11.
+/// 256 rows keep the walk's own error ~10× below 1e-13; the direct evaluation (~0.4 µs) then costs ~1.5 ns a row.
+pub const ANCHOR_ROWS: u64 = 256;
+
+/// The rows `k = 0, 1, 2, …` of [`TorqueFreeBody::equal_grid`]: `(t_k, ω_p(t_k), q(t_k))`, `t_k = k·every` (the
+/// binary64 product, as [`crate::integrate::Schedule::time`] forms it). An endless iterator.
+#[derive(Debug, Clone)]
+pub struct EqualGrid<'a> {
+    body: &'a TorqueFreeBody,
+    every: f64,
+    next: u64,
+    anchor_rows: u64,
+    walk: Option<Walk<'a>>,
+}
+
+impl TorqueFreeBody {
+    /// The motion on the equal grid `t_k = k·every`, `k = 0, 1, 2, …`, advanced row by row by addition theorems
+    /// (see [`EqualGrid`]); agrees with [`Self::omega_p`] and [`Self::attitude`] to round-off (≤ 1e-13).
+    pub fn equal_grid(&self, every: f64) -> EqualGrid<'_> {
+        let walk = match &self.motion {
+            Motion::Elliptic(e) if !e.separatrix && e.jac.mc() > 0.0 && every.is_finite() => {
+                Some(Walk::new(e, every))
+            }
+            _ => None,
+        };
+        EqualGrid {
+            body: self,
+            every,
+            next: 0,
+            anchor_rows: ANCHOR_ROWS,
+            walk,
+        }
+    }
+}
+
+impl EqualGrid<'_> {
+    /// The same grid restarted from a direct evaluation every `rows` rows instead of [`ANCHOR_ROWS`] (at least 1;
+    /// 1 is the direct evaluation at every row). For measuring the recurrences' round-off growth.
+    pub fn with_anchor_rows(mut self, rows: u64) -> Self {
+        self.anchor_rows = rows.max(1);
+        self
+    }
+
+    /// Whether rows are advanced by the addition theorems (false: each row is evaluated directly — stationary
+    /// motion and the separatrix).
+    pub fn is_walk(&self) -> bool {
+        self.walk.is_some()
+    }
+}
+
+impl Iterator for EqualGrid<'_> {
+    type Item = (f64, Vector3<f64>, UnitQuaternion<f64>);
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let k = self.next;
+        self.next += 1;
+        let t = k as f64 * self.every;
+        let Some(walk) = &mut self.walk else {
+            return Some((t, self.body.omega_p(t), self.body.attitude(t)));
+        };
+        if k % self.anchor_rows == 0 {
+            walk.anchor(t);
+        } else {
+            walk.advance();
+        }
+        Some((t, walk.omega_p(), walk.attitude(t)))
+    }
+}
+
+/// The walk: the step's constants and the state at the last row.
+#[derive(Debug, Clone)]
+struct Walk<'a> {
+    e: &'a Elliptic,
+    /// m and m′ = 1 − m.
+    m: f64,
+    mc: f64,
+    /// sn h, cn h, dn h, cn h dn h, sn h dn h, m sn h cn h, m sn²h.
+    step: [f64; 7],
+    /// 3J(h) (the integral in the units of [`Elliptic::g_integral`]).
+    g_step: f64,
+    /// ν = −n and 3/ρ (J's addition theorem); unused when n = 0.
+    nu: f64,
+    rho: f64,
+    three_over_rho: f64,
+    /// 2K(m), for the half-period count of a row.
+    two_k: f64,
+    /// sn, cn, dn of τ at the last row (unreduced).
+    s: f64,
+    c: f64,
+    d: f64,
+    /// 3J at the last anchor minus its value at τ₀, and the increments of 3J since the anchor.
+    g_anchor: f64,
+    g_since: f64,
+}
+
+impl<'a> Walk<'a> {
+    fn new(e: &'a Elliptic, every: f64) -> Self {
+        let h = e.lambda * every;
+        let (sh, ch, dh) = e.jac.sn_cn_dn(h);
+        let m = e.jac.m();
+        let nu = -e.n;
+        let rho = (nu * (m + nu) * (1.0 + nu)).sqrt();
+        let g_step = if e.n == 0.0 {
+            0.0
+        } else {
+            let (s, c, d, j) = e.reduced(h);
+            e.g_integral(s, c, d, j)
+        };
+        Self {
+            e,
+            m,
+            mc: e.jac.mc(),
+            step: [sh, ch, dh, ch * dh, sh * dh, m * sh * ch, m * sh * sh],
+            g_step,
+            nu,
+            rho,
+            three_over_rho: 3.0 / rho,
+            two_k: 2.0 * e.jac.quarter_period(),
+            s: 0.0,
+            c: 1.0,
+            d: 1.0,
+            g_anchor: 0.0,
+            g_since: 0.0,
+        }
+    }
+
+    /// Restart from the direct evaluation at t.
+    fn anchor(&mut self, t: f64) {
+        let e = self.e;
+        let red = e.jac.reduce(e.tau(t));
+        (self.s, self.c, self.d) = red.values();
+        self.g_anchor = if e.n == 0.0 {
+            0.0
+        } else {
+            e.g_integral(red.sn, red.cn, red.dn, red.j) - e.g0
+        };
+        self.g_since = 0.0;
+    }
+
+    /// One row on: DLMF 22.8.1–22.8.3 and J's addition theorem (module docs).
+    fn advance(&mut self) {
+        let [sh, ch, dh, ch_dh, sh_dh, m_sh_ch, m_sh2] = self.step;
+        let (s, c, d) = (self.s, self.c, self.d);
+        let inv = 1.0 / (m_sh2 * s).mul_add(-s, 1.0);
+        let s1 = s.mul_add(ch_dh, sh * c * d) * inv;
+        let c1 = c.mul_add(ch, -(s * d * sh_dh)) * inv;
+        let d1 = d.mul_add(dh, -(m_sh_ch * s * c)) * inv;
+        // Back onto the curve sn² + cn² = 1, dn² = m′ + m cn² (DLMF 22.6.1), one Newton step each: off the curve
+        // the addition theorems are not a translation, and the deviation would grow from row to row.
+        let scale = 0.5 * (3.0 - s1.mul_add(s1, c1 * c1));
+        let (s1, c1) = (s1 * scale, c1 * scale);
+        let d1 = 0.5 * (d1 + self.m.mul_add(c1 * c1, self.mc) / d1);
+        if self.nu != 0.0 {
+            let ss = s * sh;
+            let y = self.nu.mul_add(s1.mul_add(s1, -(ss * c1 * d1)), 1.0);
+            self.g_since += self
+                .three_over_rho
+                .mul_add((self.rho * ss * s1).atan2(y), self.g_step);
+        }
+        (self.s, self.c, self.d) = (s1, c1, d1);
+    }
+
+    /// ω in the user's principal axes (L&L §37: ω₁ = a cn τ, ω₂ = ε b sn τ, ω₃ = c dn τ canonically).
+    fn omega_p(&self) -> Vector3<f64> {
+        let e = self.e;
+        e.perm.transpose() * Vector3::new(e.a * self.c, e.eps * e.b * self.s, e.c * self.d)
+    }
+
+    /// The attitude at t from the walk's state: [`TorqueFreeBody::attitude`]'s `q_fixed ⊗ R_z(φ) R_x(θ) R_z(ψ) ⊗ P`
+    /// with the half-angles of θ and ψ from `H_p` by half-angle formulas.
+    fn attitude(&self, t: f64) -> UnitQuaternion<f64> {
+        let e = self.e;
+        // The half-period count j of τ = 2jK + r and the reduced sn r, cn r ≥ 0 (as Elliptic::q_h uses them).
+        let j = (e.tau(t) / self.two_k).round();
+        let sign = if (j % 2.0).abs() == 1.0 { -1.0 } else { 1.0 };
+        let [i1, i2, i3] = e.inertia;
+        let x = i1 * e.a * sign * self.c;
+        let y = i2 * e.b * sign * self.s;
+        let z = i3 * e.c * self.d;
+        let [cos_t, sin_t, cos_p, sin_p] = half_angles(x, y, z, j.rem_euclid(4.0), e.eps);
+        let phi = if e.n == 0.0 {
+            e.rate_lin * t
+        } else {
+            e.rate_lin
+                .mul_add(t, e.kappa * (self.g_anchor + self.g_since))
+        };
+        let (sin_f, cos_f) = (0.5 * phi).sin_cos();
+        // R_x(θ) R_z(ψ) = (cθ cψ, sθ cψ, −sθ sψ, cθ sψ); then R_z(φ) on the left.
+        let (w, i, jj, k) = (cos_t * cos_p, sin_t * cos_p, -sin_t * sin_p, cos_t * sin_p);
+        let q_h = Quaternion::new(
+            cos_f * w - sin_f * k,
+            cos_f * i - sin_f * jj,
+            cos_f * jj + sin_f * i,
+            cos_f * k + sin_f * w,
+        );
+        e.q_fixed * UnitQuaternion::new_unchecked(q_h) * e.q_perm
+    }
+}
+
+/// cos, sin of θ/2 and of ψ/2 for the Euler angles of [`TorqueFreeBody::attitude`] from `H_p`'s components
+/// `(x, y, z) = (I₁ω₁, I₂ω₂, I₃ω₃)` of the reduced argument (x ≥ 0 up to rounding, z > 0), the half-period count
+/// `j4 = j mod 4` and ε: θ = atan2(√(x² + y²), z) ∈ [0, π/2), ψ = π/2 − ε(j4·π + α), α = atan2(y, x) ∈ [−π/2, π/2];
+/// cos(θ/2) = √((1 + cos θ)/2), sin(θ/2) = sin θ / (2 cos(θ/2)), and the same for α/2, then ψ/2 by the angle sum
+/// with π/4 − ε j4 π/2 (a multiple of π/2 plus π/4, whose cosine and sine are ±√½).
+fn half_angles(x: f64, y: f64, z: f64, j4: f64, eps: f64) -> [f64; 4] {
+    let r2 = x.mul_add(x, y * y);
+    let rho = r2.sqrt();
+    let m_tot = z.mul_add(z, r2).sqrt();
+    let cos_t = ((m_tot + z) / (2.0 * m_tot)).sqrt();
+    let sin_t = rho / (2.0 * m_tot * cos_t);
+    let cos_a = ((rho + x).max(0.0) / (2.0 * rho)).sqrt();
+    let sin_a = y / (2.0 * rho * cos_a);
+    // π/4 + q·π/2 with q = −ε·j4 mod 4: (cos, sin) = √½ (±1, ±1).
+    let q = (-eps * j4).rem_euclid(4.0);
+    let r = std::f64::consts::FRAC_1_SQRT_2;
+    let (cos_g, sin_g) = if q == 0.0 {
+        (r, r)
+    } else if q == 1.0 {
+        (-r, r)
+    } else if q == 2.0 {
+        (-r, -r)
+    } else {
+        (r, -r)
+    };
+    let cos_p = cos_g.mul_add(cos_a, eps * sin_g * sin_a);
+    let sin_p = sin_g.mul_add(cos_a, -(eps * cos_g * sin_a));
+    [cos_t, sin_t, cos_p, sin_p]
+}
