@@ -32,11 +32,13 @@ use std::path::Path;
 use std::time::Instant;
 
 use eulerdyn::analysis::study::{self, StudyOptions, format_seconds};
+use eulerdyn::exact::TorqueFreeBody;
 use eulerdyn::frames::Form;
 use eulerdyn::method::{Backend, Method};
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
 use eulerdyn::trig::{self, small_sin_cos};
+use nalgebra::{UnitQuaternion, Vector3};
 
 /// The benchmark body, torque-free, rows only at 0 and t_end.
 const SPARSE_SCENE: &str = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.3, 0.0, 2.0]\n[solver]\nrtol = 1e-10\natol = 1e-12\ndt = 1e-3\nt_end = 100.0\n[output]\nevery = 100.0\n";
@@ -968,7 +970,105 @@ fn constant_torque_cost(
     Ok((evals, median(&times) * 1e9 / evals as f64))
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// Per row on the sweep's equal grid: the benchmark scene with 10 001 rows over 100 s (a row every 0.01 s).
+
+/// The benchmark scene on an equal grid of 10 001 rows over 100 s.
+const GRID_SCENE: &str = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.3, 0.0, 2.0]\n[solver]\nrtol = 1e-12\natol = 1e-14\nt_end = 100.0\n[output]\nevery = 0.01\n";
+
+/// Runs `once` (which handles `per` rows) until at least SAMPLE_SECONDS have passed: ns per row.
+fn ns_per_row(per: u64, mut once: impl FnMut()) -> f64 {
+    let (mut runs, start) = (0u64, Instant::now());
+    while runs == 0 || start.elapsed().as_secs_f64() < SAMPLE_SECONDS {
+        once();
+        runs += 1;
+    }
+    start.elapsed().as_secs_f64() * 1e9 / (runs * per) as f64
+}
+
+/// ns per row of `scene` through `simulate::run`, rows handed to a sink that drops them (as a sweep's summary does).
+fn run_per_row(scene: &eulerdyn::scene::Scene) -> f64 {
+    let rows = scene.schedule.len() as u64;
+    ns_per_row(rows, || {
+        simulate::run(scene, |s| {
+            black_box(s);
+            Ok::<(), Infallible>(())
+        })
+        .expect("the benchmark scene runs");
+    })
+}
+
+/// Issue 26: `exact` per row on the equal grid against `dop853` at rtol 1e-12 on the same grid, both through
+/// `simulate::run` (the whole row: closed form or integration, the row's vectors, the divergence guard), and the
+/// closed form alone, advanced by the addition theorems (`TorqueFreeBody::equal_grid`) and evaluated directly at
+/// each row (`omega_p` and `attitude`, what `exact` did before). Median (min) of SAMPLES interleaved samples.
+fn equal_grid_costs() {
+    let path = Path::new("benchmark.toml");
+    let with = |method: Method| {
+        let overrides = Overrides {
+            method: Some(method),
+            ..Overrides::default()
+        };
+        scene::parse(path, GRID_SCENE, &overrides).expect("the grid scene is valid")
+    };
+    let (exact, dop853) = (with(Method::Exact), with(Method::Dop853));
+    let rows = exact.schedule.len();
+    let body = TorqueFreeBody::new(
+        Vector3::from(MOMENTS),
+        Vector3::from(OMEGA0),
+        UnitQuaternion::identity(),
+    )
+    .expect("the benchmark body");
+    let every = exact.schedule.every();
+    let (mut t_exact, mut t_dop, mut t_walk, mut t_direct) = (vec![], vec![], vec![], vec![]);
+    for _ in 0..SAMPLES {
+        t_exact.push(run_per_row(&exact));
+        t_dop.push(run_per_row(&dop853));
+        t_walk.push(ns_per_row(rows as u64, || {
+            for row in body.equal_grid(every).take(rows) {
+                black_box(row);
+            }
+        }));
+        t_direct.push(ns_per_row(rows as u64, || {
+            for k in 0..rows {
+                let t = k as f64 * every;
+                black_box((body.omega_p(t), body.attitude(t)));
+            }
+        }));
+    }
+    let (exact_ns, dop_ns) = (median(&t_exact), median(&t_dop));
+    println!(
+        "equal grid: the benchmark body, {rows} rows over 100 s (every 0.01 s); ns per row, median (min) of \
+         {SAMPLES} samples:"
+    );
+    println!(
+        "  exact  (simulate::run)            {exact_ns:7.1} ({:6.1})   target <= 200 ns: {}",
+        min(&t_exact),
+        if exact_ns <= 200.0 { "ok" } else { "MISSED" }
+    );
+    println!(
+        "  dop853 rtol 1e-12 (simulate::run) {dop_ns:7.1} ({:6.1})   = {:.2} x exact (target >= 2: {})",
+        min(&t_dop),
+        dop_ns / exact_ns,
+        if dop_ns >= 2.0 * exact_ns {
+            "ok"
+        } else {
+            "MISSED"
+        }
+    );
+    println!(
+        "  closed form alone: addition theorems {:6.1} ({:6.1}), direct evaluation {:6.1} ({:6.1}) = {:.1} x",
+        median(&t_walk),
+        min(&t_walk),
+        median(&t_direct),
+        min(&t_direct),
+        median(&t_direct) / median(&t_walk)
+    );
+    println!();
+}
+
 fn main() {
+    equal_grid_costs();
     per_step_costs();
     if std::env::var_os("EULERDYN_BENCH_QUICK").is_some() {
         return;

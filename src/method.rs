@@ -23,9 +23,10 @@ pub enum Method {
     /// An order-4 composition of `split2`: Suzuki's fractal S(ph)S(ph)S((1−4p)h)S(ph)S(ph), p = 1/(4 − 4^{1/3})
     /// (Suzuki 1990, Phys. Lett. A 146, 319), fixed step `dt`.
     Split4,
-    /// The torque-free flow in closed form (Landau & Lifshitz §37; Celledoni, Fassò, Säfström & Zanna 2008): every
-    /// row evaluated directly at its time, no stepping. Torque-free scenes only. See
-    /// [`crate::motion::exact_flow`].
+    /// The torque-free flow in closed form (Landau & Lifshitz §37; Celledoni, Fassò, Säfström & Zanna 2008), no
+    /// stepping: the rows of the equal grid advanced by the addition theorems of the closed form (DLMF 22.8) and
+    /// re-anchored to its direct evaluation every 256 rows, the last row evaluated directly. Torque-free scenes only.
+    /// See [`crate::motion::exact_flow`].
     Exact,
 }
 

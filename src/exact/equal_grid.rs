@@ -30,9 +30,10 @@
 //! [`ANCHOR_ROWS`]); every [`ANCHOR_ROWS`] rows the walk restarts from a direct evaluation, which bounds the error
 //! independently of the number of rows. The separatrix and stationary motions are evaluated directly at every row.
 
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 use super::torque_free::{Elliptic, Motion, TorqueFreeBody};
+use crate::trig::small_sin_cos;
 
 /// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
 /// (test `roundoff_growth_without_reanchoring_sets_the_anchor_interval`, docs/performance.md): for the benchmark
@@ -42,14 +43,19 @@ use super::torque_free::{Elliptic, Motion, TorqueFreeBody};
 /// 256 rows keep the walk's own error ~10× below 1e-13; the direct evaluation (~0.4 µs) then costs ~1.5 ns a row.
 pub const ANCHOR_ROWS: u64 = 256;
 
-/// The rows `k = 0, 1, 2, …` of [`TorqueFreeBody::equal_grid`]: `(t_k, ω_p(t_k), q(t_k))`, `t_k = k·every` (the
-/// binary64 product, as [`crate::integrate::Schedule::time`] forms it). An endless iterator.
+/// The rows `k = 0, 1, 2, …` of [`TorqueFreeBody::equal_grid`]: `(t_k, ω(t_k), q(t_k))`, `t_k = k·every` (the
+/// binary64 product, as [`crate::integrate::Schedule::time`] forms it), ω in the principal axes and q principal →
+/// space (or in the axes of [`EqualGrid::in_axes`]). An endless iterator.
 #[derive(Debug, Clone)]
 pub struct EqualGrid<'a> {
     body: &'a TorqueFreeBody,
     every: f64,
     next: u64,
     anchor_rows: u64,
+    /// Rows until the next direct evaluation.
+    until_anchor: u64,
+    /// The axes of the rows as a rotation from them to the principal axes (identity: principal axes).
+    axes_q: UnitQuaternion<f64>,
     walk: Option<Walk<'a>>,
 }
 
@@ -68,6 +74,8 @@ impl TorqueFreeBody {
             every,
             next: 0,
             anchor_rows: ANCHOR_ROWS,
+            until_anchor: 0,
+            axes_q: UnitQuaternion::identity(),
             walk,
         }
     }
@@ -78,6 +86,17 @@ impl EqualGrid<'_> {
     /// 1 is the direct evaluation at every row). For measuring the recurrences' round-off growth.
     pub fn with_anchor_rows(mut self, rows: u64) -> Self {
         self.anchor_rows = rows.max(1);
+        self
+    }
+
+    /// The same grid with ω in other axes b and the attitude b → space, `axes_q` being the rotation principal → b
+    /// (`v_b = axes_q · v_p`, the principal axes' matrix in b): ω_b = axes_q · ω_p and q_b = q_p ⊗ axes_q⁻¹, folded
+    /// into the constants of the walk.
+    pub fn in_axes(mut self, axes_q: &UnitQuaternion<f64>) -> Self {
+        self.axes_q = *axes_q;
+        if let Some(walk) = &mut self.walk {
+            walk.set_axes(axes_q);
+        }
         self
     }
 
@@ -96,14 +115,17 @@ impl Iterator for EqualGrid<'_> {
         self.next += 1;
         let t = k as f64 * self.every;
         let Some(walk) = &mut self.walk else {
-            return Some((t, self.body.omega_p(t), self.body.attitude(t)));
+            let (omega_p, q_p) = (self.body.omega_p(t), self.body.attitude(t));
+            return Some((t, self.axes_q * omega_p, q_p * self.axes_q.inverse()));
         };
-        if k % self.anchor_rows == 0 {
+        if self.until_anchor == 0 {
             walk.anchor(t);
+            self.until_anchor = self.anchor_rows - 1;
         } else {
-            walk.advance();
+            walk.advance(t);
+            self.until_anchor -= 1;
         }
-        Some((t, walk.omega_p(), walk.attitude(t)))
+        Some((t, walk.omega(), walk.attitude(t)))
     }
 }
 
@@ -118,19 +140,24 @@ struct Walk<'a> {
     step: [f64; 7],
     /// 3J(h) (the integral in the units of [`Elliptic::g_integral`]).
     g_step: f64,
-    /// ν = −n and 3/ρ (J's addition theorem); unused when n = 0.
+    /// ν = −n, ρ and 3/ρ (J's addition theorem); unused when n = 0.
     nu: f64,
     rho: f64,
     three_over_rho: f64,
-    /// 2K(m), for the half-period count of a row.
-    two_k: f64,
+    /// 1/(2K(m)), for the half-period count of a row.
+    inv_two_k: f64,
+    /// ω = omega_of · (cn τ, sn τ, dn τ): the output axes from the canonical frame, times diag(a, ε b, c).
+    omega_of: Matrix3<f64>,
+    /// The constant right factor of the attitude: canonical → output axes (P, then the axes' rotation).
+    right: UnitQuaternion<f64>,
     /// sn, cn, dn of τ at the last row (unreduced).
     s: f64,
     c: f64,
     d: f64,
-    /// 3J at the last anchor minus its value at τ₀, and the increments of 3J since the anchor.
-    g_anchor: f64,
-    g_since: f64,
+    /// The last row's time and cos, sin of half its precession angle φ.
+    t: f64,
+    cos_half_phi: f64,
+    sin_half_phi: f64,
 }
 
 impl<'a> Walk<'a> {
@@ -146,7 +173,7 @@ impl<'a> Walk<'a> {
             let (s, c, d, j) = e.reduced(h);
             e.g_integral(s, c, d, j)
         };
-        Self {
+        let mut walk = Self {
             e,
             m,
             mc: e.jac.mc(),
@@ -155,13 +182,26 @@ impl<'a> Walk<'a> {
             nu,
             rho,
             three_over_rho: 3.0 / rho,
-            two_k: 2.0 * e.jac.quarter_period(),
+            inv_two_k: 0.5 / e.jac.quarter_period(),
+            omega_of: Matrix3::identity(),
+            right: e.q_perm,
             s: 0.0,
             c: 1.0,
             d: 1.0,
-            g_anchor: 0.0,
-            g_since: 0.0,
-        }
+            t: 0.0,
+            cos_half_phi: 1.0,
+            sin_half_phi: 0.0,
+        };
+        walk.set_axes(&UnitQuaternion::identity());
+        walk
+    }
+
+    /// Output in the axes of [`EqualGrid::in_axes`].
+    fn set_axes(&mut self, axes_q: &UnitQuaternion<f64>) {
+        let e = self.e;
+        let scale = Matrix3::from_diagonal(&Vector3::new(e.a, e.eps * e.b, e.c));
+        self.omega_of = axes_q.to_rotation_matrix().matrix() * e.perm.transpose() * scale;
+        self.right = e.q_perm * axes_q.inverse();
     }
 
     /// Restart from the direct evaluation at t.
@@ -169,62 +209,68 @@ impl<'a> Walk<'a> {
         let e = self.e;
         let red = e.jac.reduce(e.tau(t));
         (self.s, self.c, self.d) = red.values();
-        self.g_anchor = if e.n == 0.0 {
-            0.0
+        // φ = (M/I₁) t + κ (g(τ) − g(τ₀)) (TorqueFreeBody::attitude), its two large terms partly cancelling: one
+        // rounding fewer by a fused multiply-add (a call without the FMA instruction, once per re-anchoring).
+        let phi = if e.n == 0.0 {
+            e.rate_lin * t
         } else {
-            e.g_integral(red.sn, red.cn, red.dn, red.j) - e.g0
+            let g = e.g_integral(red.sn, red.cn, red.dn, red.j) - e.g0;
+            e.rate_lin.mul_add(t, e.kappa * g)
         };
-        self.g_since = 0.0;
+        (self.sin_half_phi, self.cos_half_phi) = (0.5 * phi).sin_cos();
+        self.t = t;
     }
 
-    /// One row on: DLMF 22.8.1–22.8.3 and J's addition theorem (module docs).
-    fn advance(&mut self) {
+    /// One row on, to t: DLMF 22.8.1–22.8.3, and φ by the increment of J (its addition theorem, module docs) and of
+    /// the time (the difference of two rows' times is exact, so the rounding of t_k = k·every is honoured), as a
+    /// rotation of (cos φ/2, sin φ/2) by the increment's half-angle. (No `mul_add`: without the FMA instruction in
+    /// the target it is a call.)
+    fn advance(&mut self, t: f64) {
         let [sh, ch, dh, ch_dh, sh_dh, m_sh_ch, m_sh2] = self.step;
         let (s, c, d) = (self.s, self.c, self.d);
-        let inv = 1.0 / (m_sh2 * s).mul_add(-s, 1.0);
-        let s1 = s.mul_add(ch_dh, sh * c * d) * inv;
-        let c1 = c.mul_add(ch, -(s * d * sh_dh)) * inv;
-        let d1 = d.mul_add(dh, -(m_sh_ch * s * c)) * inv;
+        let inv = 1.0 / (1.0 - m_sh2 * s * s);
+        let s1 = (s * ch_dh + sh * c * d) * inv;
+        let c1 = (c * ch - s * d * sh_dh) * inv;
+        let d1 = (d * dh - m_sh_ch * s * c) * inv;
         // Back onto the curve sn² + cn² = 1, dn² = m′ + m cn² (DLMF 22.6.1), one Newton step each: off the curve
         // the addition theorems are not a translation, and the deviation would grow from row to row.
-        let scale = 0.5 * (3.0 - s1.mul_add(s1, c1 * c1));
+        let scale = 0.5 * (3.0 - (s1 * s1 + c1 * c1));
         let (s1, c1) = (s1 * scale, c1 * scale);
-        let d1 = 0.5 * (d1 + self.m.mul_add(c1 * c1, self.mc) / d1);
+        let d1 = 0.5 * (d1 + (self.mc + self.m * c1 * c1) / d1);
+        let e = self.e;
+        let mut d_phi = e.rate_lin * (t - self.t);
         if self.nu != 0.0 {
             let ss = s * sh;
-            let y = self.nu.mul_add(s1.mul_add(s1, -(ss * c1 * d1)), 1.0);
-            self.g_since += self
-                .three_over_rho
-                .mul_add((self.rho * ss * s1).atan2(y), self.g_step);
+            let y = 1.0 + self.nu * (s1 * s1 - ss * c1 * d1);
+            d_phi += e.kappa * (self.g_step + self.three_over_rho * (self.rho * ss * s1).atan2(y));
         }
-        (self.s, self.c, self.d) = (s1, c1, d1);
+        let (sin_d, cos_d) = small_sin_cos(0.5 * d_phi);
+        let (cos_f, sin_f) = (self.cos_half_phi, self.sin_half_phi);
+        self.cos_half_phi = cos_f * cos_d - sin_f * sin_d;
+        self.sin_half_phi = sin_f * cos_d + cos_f * sin_d;
+        (self.s, self.c, self.d, self.t) = (s1, c1, d1, t);
     }
 
-    /// ω in the user's principal axes (L&L §37: ω₁ = a cn τ, ω₂ = ε b sn τ, ω₃ = c dn τ canonically).
-    fn omega_p(&self) -> Vector3<f64> {
-        let e = self.e;
-        e.perm.transpose() * Vector3::new(e.a * self.c, e.eps * e.b * self.s, e.c * self.d)
+    /// ω in the output axes (L&L §37: ω₁ = a cn τ, ω₂ = ε b sn τ, ω₃ = c dn τ canonically).
+    fn omega(&self) -> Vector3<f64> {
+        self.omega_of * Vector3::new(self.c, self.s, self.d)
     }
 
     /// The attitude at t from the walk's state: [`TorqueFreeBody::attitude`]'s `q_fixed ⊗ R_z(φ) R_x(θ) R_z(ψ) ⊗ P`
-    /// with the half-angles of θ and ψ from `H_p` by half-angle formulas.
+    /// (then the output axes) with the half-angles of θ and ψ from `H_p` by half-angle formulas.
     fn attitude(&self, t: f64) -> UnitQuaternion<f64> {
         let e = self.e;
         // The half-period count j of τ = 2jK + r and the reduced sn r, cn r ≥ 0 (as Elliptic::q_h uses them).
-        let j = (e.tau(t) / self.two_k).round();
-        let sign = if (j % 2.0).abs() == 1.0 { -1.0 } else { 1.0 };
+        // j = ⌊τ/2K + ½⌋ (τ ≥ τ₀ ≥ −K, so τ/2K + 3/2 > 0 and the conversion truncates to the floor; no call to
+        // `round`, which is one without SSE4.1; which side a tie goes to does not matter: q is continuous there).
+        let j = ((e.lambda * t + e.tau0) * self.inv_two_k + 1.5) as i64 - 1;
+        let sign = if j & 1 == 1 { -1.0 } else { 1.0 };
         let [i1, i2, i3] = e.inertia;
         let x = i1 * e.a * sign * self.c;
         let y = i2 * e.b * sign * self.s;
         let z = i3 * e.c * self.d;
-        let [cos_t, sin_t, cos_p, sin_p] = half_angles(x, y, z, j.rem_euclid(4.0), e.eps);
-        let phi = if e.n == 0.0 {
-            e.rate_lin * t
-        } else {
-            e.rate_lin
-                .mul_add(t, e.kappa * (self.g_anchor + self.g_since))
-        };
-        let (sin_f, cos_f) = (0.5 * phi).sin_cos();
+        let [cos_t, sin_t, cos_p, sin_p] = half_angles(x, y, z, j & 3, e.eps);
+        let (cos_f, sin_f) = (self.cos_half_phi, self.sin_half_phi);
         // R_x(θ) R_z(ψ) = (cθ cψ, sθ cψ, −sθ sψ, cθ sψ); then R_z(φ) on the left.
         let (w, i, jj, k) = (cos_t * cos_p, sin_t * cos_p, -sin_t * sin_p, cos_t * sin_p);
         let q_h = Quaternion::new(
@@ -233,36 +279,37 @@ impl<'a> Walk<'a> {
             cos_f * jj + sin_f * i,
             cos_f * k + sin_f * w,
         );
-        e.q_fixed * UnitQuaternion::new_unchecked(q_h) * e.q_perm
+        e.q_fixed * UnitQuaternion::new_unchecked(q_h) * self.right
     }
 }
 
 /// cos, sin of θ/2 and of ψ/2 for the Euler angles of [`TorqueFreeBody::attitude`] from `H_p`'s components
 /// `(x, y, z) = (I₁ω₁, I₂ω₂, I₃ω₃)` of the reduced argument (x ≥ 0 up to rounding, z > 0), the half-period count
 /// `j4 = j mod 4` and ε: θ = atan2(√(x² + y²), z) ∈ [0, π/2), ψ = π/2 − ε(j4·π + α), α = atan2(y, x) ∈ [−π/2, π/2];
-/// cos(θ/2) = √((1 + cos θ)/2), sin(θ/2) = sin θ / (2 cos(θ/2)), and the same for α/2, then ψ/2 by the angle sum
+/// cos(θ/2) = √((1 + cos θ)/2), sin(θ/2) = sin θ / (2 cos(θ/2)), and the same for α/2 (x ≤ 0 only where cn ≈ 0,
+/// and then |y| ≈ ρ, so √(2ρ(ρ + x)) > 0), then ψ/2 by the angle sum
 /// with π/4 − ε j4 π/2 (a multiple of π/2 plus π/4, whose cosine and sine are ±√½).
-fn half_angles(x: f64, y: f64, z: f64, j4: f64, eps: f64) -> [f64; 4] {
-    let r2 = x.mul_add(x, y * y);
+fn half_angles(x: f64, y: f64, z: f64, j4: i64, eps: f64) -> [f64; 4] {
+    let r2 = x * x + y * y;
     let rho = r2.sqrt();
-    let m_tot = z.mul_add(z, r2).sqrt();
-    let cos_t = ((m_tot + z) / (2.0 * m_tot)).sqrt();
-    let sin_t = rho / (2.0 * m_tot * cos_t);
-    let cos_a = ((rho + x).max(0.0) / (2.0 * rho)).sqrt();
-    let sin_a = y / (2.0 * rho * cos_a);
+    let m_tot = (z * z + r2).sqrt();
+    // cos(θ/2) = (M + z)/√(2M(M + z)), sin(θ/2) = ρ/√(2M(M + z)); the same for α/2 with (ρ, x): one division.
+    let (p_t, p_a) = (m_tot + z, (rho + x).max(0.0));
+    let (root_t, root_a) = ((2.0 * m_tot * p_t).sqrt(), (2.0 * rho * p_a).sqrt());
+    let inv = 1.0 / (root_t * root_a);
+    let (inv_t, inv_a) = (inv * root_a, inv * root_t);
+    let (cos_t, sin_t) = (p_t * inv_t, rho * inv_t);
+    let (cos_a, sin_a) = (p_a * inv_a, y * inv_a);
     // π/4 + q·π/2 with q = −ε·j4 mod 4: (cos, sin) = √½ (±1, ±1).
-    let q = (-eps * j4).rem_euclid(4.0);
+    let q = if eps > 0.0 { (4 - j4) & 3 } else { j4 };
     let r = std::f64::consts::FRAC_1_SQRT_2;
-    let (cos_g, sin_g) = if q == 0.0 {
-        (r, r)
-    } else if q == 1.0 {
-        (-r, r)
-    } else if q == 2.0 {
-        (-r, -r)
-    } else {
-        (r, -r)
+    let (cos_g, sin_g) = match q {
+        0 => (r, r),
+        1 => (-r, r),
+        2 => (-r, -r),
+        _ => (r, -r),
     };
-    let cos_p = cos_g.mul_add(cos_a, eps * sin_g * sin_a);
-    let sin_p = sin_g.mul_add(cos_a, -(eps * cos_g * sin_a));
+    let cos_p = cos_g * cos_a + eps * sin_g * sin_a;
+    let sin_p = sin_g * cos_a - eps * cos_g * sin_a;
     [cos_t, sin_t, cos_p, sin_p]
 }

@@ -61,24 +61,27 @@ impl ExactFlow {
 
     /// The row at time t in the form `frame` (module docs), evaluated directly. M = 0: the flow is torque-free.
     pub fn sample(&self, t: f64, frame: Form) -> Sample {
-        self.row(t, &self.exact.attitude(t), || self.exact.omega_p(t), frame)
+        let q = self.exact.attitude(t) * self.axes_q.inverse();
+        let omega_h_b = || {
+            let omega_p = self.exact.omega_p(t);
+            let h_p = omega_p.component_mul(self.body.principal_moments());
+            (self.axes_q * omega_p, self.axes_q * h_p)
+        };
+        self.row(t, q, omega_h_b, frame)
     }
 
-    /// The row at t from the attitude `q_p` (principal → space) and ω_p (asked for in the body form only).
+    /// The row at t from the attitude q (body → space) and (ω_b, H_b) (asked for in the body form only).
     fn row(
         &self,
         t: f64,
-        q_p: &UnitQuaternion<f64>,
-        omega_p: impl FnOnce() -> Vector3<f64>,
+        q: UnitQuaternion<f64>,
+        omega_h_b: impl FnOnce() -> (Vector3<f64>, Vector3<f64>),
         frame: Form,
     ) -> Sample {
-        let q = q_p * self.axes_q.inverse();
-        let moments = self.body.principal_moments();
         let (omega_b, h_b, h_s) = match frame {
             Form::Body => {
-                let omega_p = omega_p();
-                let h_b = self.axes_q * omega_p.component_mul(moments);
-                (self.axes_q * omega_p, h_b, q * h_b)
+                let (omega_b, h_b) = omega_h_b();
+                (omega_b, h_b, q * h_b)
             }
             Form::Space => {
                 let h_s = self.exact.h_s();
@@ -113,15 +116,18 @@ impl ExactFlow {
         mut on_row: impl FnMut(&Sample) -> Result<(), E>,
     ) -> Result<Stats, IntegrateError<E>> {
         let mut stats = Stats::default();
-        let mut grid = self.exact.equal_grid(schedule.every());
+        let mut grid = self
+            .exact
+            .equal_grid(schedule.every())
+            .in_axes(&self.axes_q);
         let last = schedule.len() - 1;
         for k in 0..schedule.len() {
             let t = schedule.time(k);
             let sample = match grid.next() {
                 // Rows before the last are on the grid: t = k·every, as the walk forms it.
-                Some((t_grid, omega_p, q_p)) if k < last => {
+                Some((t_grid, omega_b, q)) if k < last => {
                     debug_assert_eq!(t_grid, t);
-                    self.row(t, &q_p, || omega_p, frame)
+                    self.row(t, q, || (omega_b, self.body.inertia_b() * omega_b), frame)
                 }
                 _ => self.sample(t, frame),
             };
