@@ -12,7 +12,14 @@
 //! scene; 2 threads ≥ 1.7 × faster than 1. Each in-process figure is the median of 3 passes, interleaved so that a
 //! slow spell of the machine hits all alike.
 //!
-//! Run: `cargo bench --bench sweep`. `EULERDYN_BENCH_QUICK=1` runs 10^3 runs instead of 10^4.
+//! Then (issue 26) the same for every method — the benchmark body, 201 rows, the fixed-step methods at dt = 0.01 s —
+//! with the per-run overhead of the sweep in µs (making the run's scene from the template and checking it, the
+//! summary, the table row: the sweep on 1 thread minus the integration alone), and the 10^6-run Monte Carlo of the
+//! dop853 case extrapolated from the 2-thread figure (target ≤ 120 s). The load average is printed beside: on a
+//! shared machine the 2-thread figures need both cores free.
+//!
+//! Run: `cargo bench --bench sweep`. `EULERDYN_BENCH_QUICK=1` runs 10^3 runs instead of 10^4 (and a tenth of the
+//! runs per method).
 
 use std::convert::Infallible;
 use std::hint::black_box;
@@ -87,28 +94,97 @@ fn process_per_run(binary: &str, dir: &Path, sweep: &Sweep) -> f64 {
     start.elapsed().as_secs_f64() / files.len() as f64
 }
 
-fn main() {
-    let runs = if std::env::var_os("EULERDYN_BENCH_QUICK").is_some() {
-        1_000
-    } else {
-        10_000
-    };
-    let dir = tempfile::tempdir().expect("temporary directory");
-    std::fs::write(dir.path().join("base.toml"), BASE_SCENE).expect("scene written");
-    let sweep_file = dir.path().join("sweep.toml");
+/// A sweep of `runs` draws of ω0_x ~ N(0.3, 0.01) around `base` (a scene's text), written to `dir` under `name`,
+/// and its scenes, built beforehand.
+fn benchmark_sweep(dir: &Path, name: &str, base: &str, runs: u64) -> (Sweep, Vec<Scene>) {
+    std::fs::write(dir.join(format!("{name}.toml")), base).expect("scene written");
+    let sweep_file = dir.join(format!("{name}_sweep.toml"));
     let text = format!(
-        "scene = \"base.toml\"\nseed = 1\nruns = {runs}\n[[vary]]\nkey = \"initial.omega.0\"\nnormal = {{ mean = 0.3, sd = 0.01 }}\n"
+        "scene = \"{name}.toml\"\nseed = 1\nruns = {runs}\n[[vary]]\nkey = \"initial.omega.0\"\nnormal = {{ mean = 0.3, sd = 0.01 }}\n"
     );
     std::fs::write(&sweep_file, text).expect("sweep written");
     let sweep = Sweep::load(&sweep_file).expect("the bench sweep is valid");
-    let scenes: Vec<Scene> = (0..sweep.len())
+    let scenes = (0..sweep.len())
         .map(|run| {
             sweep
                 .scene(&sweep.values(run))
                 .expect("every draw is valid")
         })
         .collect();
+    (sweep, scenes)
+}
 
+/// The one-minute load average (/proc/loadavg), for the conditions of a measurement.
+fn load_average() -> String {
+    std::fs::read_to_string("/proc/loadavg")
+        .ok()
+        .and_then(|s| s.split_whitespace().next().map(str::to_string))
+        .unwrap_or_else(|| "?".into())
+}
+
+/// Every method in a sweep: per run alone, on 1 and 2 threads, the overhead and the scaling.
+fn every_method(dir: &Path, quick: bool) {
+    // Runs per method: about 0.3 s a pass on 1 thread.
+    let cases: [(&str, u64); 6] = [
+        ("rk4", 600),
+        ("dopri5", 200),
+        ("dop853", 1_500),
+        ("split2", 800),
+        ("split4", 250),
+        ("exact", 12_000),
+    ];
+    println!(
+        "every method, the benchmark body over 100 s with 201 rows (rtol 1e-12, atol 1e-14; dt = 0.01 s), median of \
+         {PASSES} passes, per run (load average {} before):",
+        load_average()
+    );
+    println!(
+        "  {:<8} {:>6} {:>12} {:>12} {:>12} {:>12} {:>16}",
+        "method", "runs", "alone", "1 thread", "overhead", "2 threads", "2 vs 1 (>= 1.7)"
+    );
+    let mut dop853_two = f64::NAN;
+    for (method, runs) in cases {
+        let runs = if quick { runs / 10 } else { runs };
+        let mut base = BASE_SCENE.replace("method = \"dop853\"", &format!("method = \"{method}\""));
+        if matches!(method, "rk4" | "split2" | "split4") {
+            base = base.replace("t_end = 100.0\n", "t_end = 100.0\ndt = 0.01\n");
+        }
+        let (sweep, scenes) = benchmark_sweep(dir, method, &base, runs);
+        let (mut alone, mut one, mut two) = (Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..PASSES {
+            alone.push(integration_per_run(&scenes));
+            one.push(sweep_per_run(&sweep, 1));
+            two.push(sweep_per_run(&sweep, 2));
+        }
+        let (alone, one, two) = (median(alone), median(one), median(two));
+        if method == "dop853" {
+            dop853_two = two;
+        }
+        let us = |s: f64| format!("{:.1} us", s * 1e6);
+        let scaling = one / two;
+        println!(
+            "  {method:<8} {runs:>6} {:>12} {:>12} {:>12} {:>12} {:>9.2} x {}",
+            us(alone),
+            us(one),
+            us(one - alone),
+            us(two),
+            scaling,
+            if scaling >= 1.7 { "ok" } else { "MISSED" }
+        );
+    }
+    println!(
+        "  10^6-run Monte Carlo of the benchmark body (dop853, rtol 1e-12, 201 rows) on 2 threads, extrapolated: \
+         {:.0} s (target <= 120 s; load average {} after)",
+        dop853_two * 1e6,
+        load_average()
+    );
+}
+
+fn main() {
+    let quick = std::env::var_os("EULERDYN_BENCH_QUICK").is_some();
+    let runs = if quick { 1_000 } else { 10_000 };
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let (sweep, scenes) = benchmark_sweep(dir.path(), "base", BASE_SCENE, runs);
     let (mut alone, mut one, mut two) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..PASSES {
         alone.push(integration_per_run(&scenes));
@@ -118,7 +194,10 @@ fn main() {
     let process = process_per_run(env!("CARGO_BIN_EXE_eulerdyn"), dir.path(), &sweep);
     let (alone, one, two) = (median(alone), median(one), median(two));
     let ms = |s: f64| s * 1e3;
-    println!("sweep of {runs} runs of the benchmark body (median of {PASSES} passes), per run:");
+    println!(
+        "sweep of {runs} runs of the benchmark body (median of {PASSES} passes; load average {}), per run:",
+        load_average()
+    );
     println!("  integration alone             {:8.4} ms", ms(alone));
     println!(
         "  sweep, 1 thread               {:8.4} ms   {:.3} x the integration alone (target <= 1.3)",
@@ -135,4 +214,6 @@ fn main() {
         ms(process),
         process / one
     );
+    println!();
+    every_method(dir.path(), quick);
 }

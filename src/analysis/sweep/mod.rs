@@ -244,7 +244,9 @@ impl Sweep {
 
     /// Runs the runs of `shard` on `jobs` threads (0: all cores) and hands each outcome to `deliver` in run
     /// order. Runs go in batches (the first small, growing while a batch takes under a quarter second), so that
-    /// memory holds one batch of outcomes and progress comes often; `deliver`'s error stops the sweep.
+    /// memory holds two batches of outcomes and progress comes often; while the pool runs a batch, the calling
+    /// thread delivers the one before (so the table and the progress bar never leave the pool idle); `deliver`'s
+    /// error stops the sweep (the batch being run is finished and dropped).
     pub fn run_all<E: std::fmt::Display>(
         &self,
         jobs: usize,
@@ -257,21 +259,34 @@ impl Sweep {
             .build()
             .map_err(|e| SweepError::Threads(e.to_string()))?;
         let threads = pool.current_num_threads() as u64;
-        let mut runs = shard.runs(self.total).peekable();
+        let mut runs = shard.runs(self.total);
         let mut batch_len = 2 * threads;
-        while runs.peek().is_some() {
-            let batch: Vec<u64> = runs.by_ref().take(batch_len as usize).collect();
-            let started = Instant::now();
-            let outcomes: Vec<RunOutcome> =
-                pool.install(|| batch.par_iter().map(|&i| self.run_one(i, series)).collect());
-            for o in &outcomes {
-                deliver(o).map_err(SweepError::Deliver)?;
+        std::thread::scope(|scope| {
+            let run_batch = |batch: Vec<u64>| {
+                let pool = &pool;
+                scope.spawn(move || {
+                    let started = Instant::now();
+                    let outcomes: Vec<RunOutcome> = pool
+                        .install(|| batch.par_iter().map(|&i| self.run_one(i, series)).collect());
+                    (outcomes, started.elapsed().as_secs_f64())
+                })
+            };
+            let mut running = Some(run_batch(runs.by_ref().take(batch_len as usize).collect()));
+            while let Some(handle) = running.take() {
+                let next: Vec<u64> = runs.by_ref().take(batch_len as usize).collect();
+                running = (!next.is_empty()).then(|| run_batch(next));
+                let (outcomes, seconds) = handle
+                    .join()
+                    .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+                for o in &outcomes {
+                    deliver(o).map_err(SweepError::Deliver)?;
+                }
+                if seconds < 0.25 {
+                    batch_len = (batch_len * 2).min(MAX_BATCH);
+                }
             }
-            if started.elapsed().as_secs_f64() < 0.25 {
-                batch_len = (batch_len * 2).min(MAX_BATCH);
-            }
-        }
-        Ok(())
+            Ok(())
+        })
     }
 }
 
