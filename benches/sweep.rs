@@ -122,7 +122,28 @@ fn load_average() -> String {
         .unwrap_or_else(|| "?".into())
 }
 
-/// Every method in a sweep: per run alone, on 1 and 2 threads, the overhead and the scaling.
+/// CPU seconds this process has used (user + system; /proc/self/stat, in ticks of 1/100 s).
+fn process_cpu_seconds() -> f64 {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let fields: Vec<f64> = stat
+        .rsplit_once(')')
+        .map(|(_, rest)| rest.split_whitespace().filter_map(|f| f.parse().ok()).collect())
+        .unwrap_or_default();
+    // After the command name: state (not a number, skipped), then ppid … cmajflt (10 fields), utime, stime.
+    fields.get(10).zip(fields.get(11)).map_or(f64::NAN, |(u, s)| (u + s) / 100.0)
+}
+
+/// `f`'s result and the CPU seconds the process used meanwhile, added to `cpu`.
+fn with_cpu<T>(cpu: &mut f64, f: impl FnOnce() -> T) -> T {
+    let before = process_cpu_seconds();
+    let out = f();
+    *cpu += process_cpu_seconds() - before;
+    out
+}
+
+/// Every method in a sweep: per run alone, on 1 and 2 threads, the overhead and the scaling; beside the wall-clock
+/// scaling (which needs both cores free), the CPU time per run on 2 threads over that on 1 (1.00: the threads
+/// add no work, whatever else runs on the machine).
 fn every_method(dir: &Path, quick: bool) {
     // Runs per method: about 0.3 s a pass on 1 thread.
     let cases: [(&str, u64); 6] = [
@@ -139,8 +160,8 @@ fn every_method(dir: &Path, quick: bool) {
         load_average()
     );
     println!(
-        "  {:<8} {:>6} {:>12} {:>12} {:>12} {:>12} {:>16}",
-        "method", "runs", "alone", "1 thread", "overhead", "2 threads", "2 vs 1 (>= 1.7)"
+        "  {:<8} {:>6} {:>12} {:>12} {:>12} {:>12} {:>18} {:>8}",
+        "method", "runs", "alone", "1 thread", "overhead", "2 threads", "2 vs 1 (>= 1.7)", "CPU 2/1"
     );
     let mut dop853_two = f64::NAN;
     for (method, runs) in cases {
@@ -151,10 +172,11 @@ fn every_method(dir: &Path, quick: bool) {
         }
         let (sweep, scenes) = benchmark_sweep(dir, method, &base, runs);
         let (mut alone, mut one, mut two) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut cpu_one, mut cpu_two) = (0.0, 0.0);
         for _ in 0..PASSES {
             alone.push(integration_per_run(&scenes));
-            one.push(sweep_per_run(&sweep, 1));
-            two.push(sweep_per_run(&sweep, 2));
+            one.push(with_cpu(&mut cpu_one, || sweep_per_run(&sweep, 1)));
+            two.push(with_cpu(&mut cpu_two, || sweep_per_run(&sweep, 2)));
         }
         let (alone, one, two) = (median(alone), median(one), median(two));
         if method == "dop853" {
@@ -163,13 +185,14 @@ fn every_method(dir: &Path, quick: bool) {
         let us = |s: f64| format!("{:.1} us", s * 1e6);
         let scaling = one / two;
         println!(
-            "  {method:<8} {runs:>6} {:>12} {:>12} {:>12} {:>12} {:>9.2} x {}",
+            "  {method:<8} {runs:>6} {:>12} {:>12} {:>12} {:>12} {:>9.2} x {:<6} {:>8.2}",
             us(alone),
             us(one),
             us(one - alone),
             us(two),
             scaling,
-            if scaling >= 1.7 { "ok" } else { "MISSED" }
+            if scaling >= 1.7 { "ok" } else { "MISSED" },
+            cpu_two / cpu_one
         );
     }
     println!(
