@@ -1,4 +1,4 @@
-//! Two words that the first round spelled alike: the axes a vector is expressed in, and the form of Euler's
+//! Two words for two things that are easily spelled alike: the axes a vector is expressed in, and the form of Euler's
 //! equation that is integrated. A vector `v_b` is in [`Axes::Body`], `v_s` in [`Axes::Space`]; the attitude
 //! `r_sb` (the quaternion q) maps body to space, `v_s = r_sb · v_b`.
 

@@ -339,8 +339,8 @@ fn check_warns_of_values_that_look_like_unit_slips() {
             "body.shape.radius = 300 m: a body over 100 m across; if millimetres were meant, write 0.3 m",
         ),
         (
-            disk.replace("tilt_deg = 30 ", "tilt_deg = 0.5 "),
-            "motion.tilt_deg = 0.5 is 0.5 degrees; if radians were meant, that is 28.6 degrees",
+            disk.replace("tilt_deg = 30 ", "tilt_deg = 0.5236 "),
+            "motion.tilt_deg = 0.5236 is 0.5236 degrees; if radians were meant, that is 30.0 degrees",
         ),
     ];
     for (k, (scene_text, warning)) in cases.iter().enumerate() {
@@ -365,4 +365,40 @@ fn check_warns_of_an_initial_omega_near_the_separatrix() {
     // The benchmark body, ω0 = (0.3, 0, 2): δ = (36.09 − 24.18)/(12.09·2) = 0.49, far from it.
     let out = eulerdyn(["check", &scenario("asymmetric_free")]);
     assert!(!out.stdout.contains("separatrix"), "{}", out.stdout);
+}
+
+#[test]
+fn run_and_sweep_warn_of_unit_slips_where_the_run_is_and_the_sidecar_lists_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let disk = std::fs::read_to_string(scenario("tilted_disk")).unwrap();
+    let slip = disk.replace("tilt_deg = 30 ", "tilt_deg = 0.5236 ");
+    assert_ne!(slip, disk, "the scenario sets tilt_deg = 30");
+    let scene = write_file(dir.path(), "slip.toml", &slip);
+    let csv = dir.path().join("slip.csv");
+    let out = eulerdyn(["run", text(&scene), "-o", text(&csv)]);
+    out.expect_code(0);
+    let warning = "motion.tilt_deg = 0.5236 is 0.5236 degrees; if radians were meant, that is 30.0 degrees";
+    assert!(out.stderr.contains(&format!("slip.toml: warning: {warning}")), "{}", out.stderr);
+    let sidecar = eulerdyn::output::Sidecar::read(&csv).unwrap();
+    assert!(sidecar.warnings.iter().any(|w| w == warning), "{:?}", sidecar.warnings);
+    // To stdout too: the warning is on stderr, the CSV clean.
+    let out = eulerdyn(["run", text(&scene)]);
+    out.expect_code(0);
+    assert!(out.stderr.contains(warning) && !out.stdout.contains("warning"));
+    // A sweep of it says so once, for its base scene.
+    let sweep = write_file(
+        dir.path(),
+        "sweep.toml",
+        "scene = \"slip.toml\"\n[[vary]]\nkey = \"motion.rate\"\nvalues = [5.0, 10.0, 20.0]\n",
+    );
+    let out = eulerdyn(["sweep", text(&sweep), "-o", text(&dir.path().join("s.csv"))]);
+    out.expect_code(0);
+    assert_eq!(out.stderr.matches(warning).count(), 1, "{}", out.stderr);
+    // A real rotor's skew of 1° is not a slip.
+    let skew = write_file(dir.path(), "skew.toml", &disk.replace("tilt_deg = 30 ", "tilt_deg = 1.0 "));
+    let out = eulerdyn(["run", text(&skew)]);
+    out.expect_code(0);
+    assert!(!out.stderr.contains("radians"), "{}", out.stderr);
+    let out = eulerdyn(["check", text(&skew)]);
+    assert!(!out.stdout.contains("warning"), "{}", out.stdout);
 }

@@ -58,14 +58,14 @@ const CONTRACT: [&str; 12] = [
     "evals",
 ];
 
+/// The scene of `text`, read as the file `name`.
+fn parsed(name: &str, text: &str) -> eulerdyn::scene::Scene {
+    eulerdyn::scene::parse(Path::new(name), text, &Default::default()).expect("a valid scene")
+}
+
 fn quick_study(text: &str) -> study::Study {
-    study::accuracy(
-        Path::new("test.toml"),
-        text,
-        &StudyOptions::quick(),
-        |_, _, _| {},
-    )
-    .expect("the study runs")
+    study::accuracy(&parsed("test.toml", text), &StudyOptions::quick(), |_, _, _| {})
+        .expect("the study runs")
 }
 
 #[test]
@@ -319,8 +319,7 @@ fn bad_input_is_refused_and_leaves_no_files() {
 
     // t_end = 0: nothing to study.
     let e = study::accuracy(
-        Path::new("zero.toml"),
-        &FREE.replace("t_end = 20.0", "t_end = 0.0"),
+        &parsed("zero.toml", &FREE.replace("t_end = 20.0", "t_end = 0.0")),
         &quick,
         |_, _, _| {},
     )
@@ -345,8 +344,7 @@ fn too_many_rows_for_a_reference_are_refused_with_a_clear_message() {
         .replace("t_end = 20.0", "t_end = 2000.0")
         .replace("every = 2.0", "every = 1e-3");
     let e = study::accuracy(
-        Path::new("dense.toml"),
-        &text,
+        &parsed("dense.toml", &text),
         &StudyOptions::quick(),
         |_, _, _| {},
     )
@@ -410,8 +408,7 @@ fn accuracy_command_writes_the_contract_table_and_the_figure() {
 fn a_progress_that_breaks_stops_the_study_before_its_next_run() {
     let mut calls = Vec::new();
     let e = study::accuracy_until(
-        Path::new("test.toml"),
-        FREE,
+        &parsed("test.toml", FREE),
         &StudyOptions::quick(),
         |done, _, what| {
             calls.push((done, what.to_string()));

@@ -33,7 +33,7 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
     no_panic(|| {
         let input = SceneInput::from_py(scene)?;
         let s = input.scene(py, &Overrides::default())?;
-        let warnings = input.warnings(py, &s)?;
+        let warnings = eulerdyn::scene::advice::warnings(&s);
         let description = describe(&s, &warnings);
         let d = PyDict::new(py);
         d.set_item("text", description.text())?;
@@ -185,11 +185,11 @@ pub fn accuracy(
         } else {
             StudyOptions::default()
         };
-        let (path, text): (PathBuf, &str) = (input.path.clone(), &input.text);
+        let scene = input.scene(py, &Overrides::default())?;
         let result = py.detach(|| {
             let mut signals = SignalCheck::new();
             let mut interrupted = None;
-            let study = study::accuracy_until(&path, text, &options, |_, _, _| {
+            let study = study::accuracy_until(&scene, &options, |_, _, _| {
                 stop_on(signals.poll(), &mut interrupted)
             });
             (study, interrupted)

@@ -59,13 +59,6 @@ impl SceneInput {
         scene_error(py, e, self.from_dict)
     }
 
-    /// What `check` warns about in the scene as written (unit slips, the separatrix): see
-    /// `eulerdyn::scene::advice`.
-    pub fn warnings(&self, py: Python<'_>, scene: &Scene) -> PyResult<Vec<String>> {
-        let spec = scene::parse_spec(&self.path, &self.text).map_err(|e| self.error(py, e))?;
-        Ok(scene::advice::warnings(&spec, scene))
-    }
-
     /// The validated scene with `overrides` (as the command line's flags).
     pub fn scene(&self, py: Python<'_>, overrides: &Overrides) -> PyResult<Scene> {
         scene::parse(&self.path, &self.text, overrides).map_err(|e| self.error(py, e))

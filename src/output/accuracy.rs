@@ -6,7 +6,7 @@ use std::path::Path;
 use super::atomic::{AtomicFile, same_file};
 use super::work_precision;
 use crate::analysis::study::{self, Study, StudyError, StudyOptions};
-use crate::scene::{self, Overrides, SceneError};
+use crate::scene::{self, Overrides};
 
 /// Opens an output file atomically, refusing the scene file itself.
 fn create_output(scene: &Path, out: &Path) -> Result<AtomicFile, StudyError> {
@@ -34,20 +34,6 @@ fn finish_output(file: AtomicFile, bytes: &[u8]) -> Result<(), StudyError> {
         })
 }
 
-/// The scene's text, after [`scene::load`] has given the messages for a missing, unreadable or non-UTF-8 file and
-/// validated the scene.
-fn read_scene(scene_path: &Path) -> Result<String, StudyError> {
-    scene::load(scene_path, &Overrides::default())?;
-    std::fs::read_to_string(scene_path).map_err(|e| {
-        StudyError::Scene(SceneError {
-            file: scene_path.to_path_buf(),
-            key: None,
-            location: None,
-            problem: format!("cannot read the file: {e}"),
-        })
-    })
-}
-
 /// Reads and validates the scene, creates the output files (before the study, so that a bad path fails at once),
 /// runs the study with `progress` (see [`study::accuracy`]), then writes the table and the figure atomically: on
 /// any failure no partial file is left and existing files are untouched. Returns the study; print
@@ -59,7 +45,7 @@ pub fn run_accuracy_command(
     options: &StudyOptions,
     progress: impl FnMut(usize, usize, &str),
 ) -> Result<Study, StudyError> {
-    let text = read_scene(scene_path)?;
+    let scene = scene::load(scene_path, &Overrides::default())?;
     if let (Some(t), Some(p)) = (table, plot)
         && t == p
     {
@@ -71,7 +57,7 @@ pub fn run_accuracy_command(
     }
     let table_file = table.map(|p| create_output(scene_path, p)).transpose()?;
     let plot_file = plot.map(|p| create_output(scene_path, p)).transpose()?;
-    let study = study::accuracy(scene_path, &text, options, progress)?;
+    let study = study::accuracy(&scene, options, progress)?;
     let svg = match &plot_file {
         Some(f) => {
             Some(

@@ -106,7 +106,7 @@ impl Sidecar {
             solver: SidecarSolver {
                 method: s.method.name().to_string(),
                 backend: s.backend.name().to_string(),
-                frame: s.frame.name().to_string(),
+                frame: s.form.name().to_string(),
                 rtol: s.rtol,
                 atol: s.atol,
                 dt: s.dt,

@@ -17,7 +17,8 @@ use super::spec::SceneSpec;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverConfig {
     pub method: Method,
-    pub frame: Form,
+    /// The form of Euler's equation integrated (the scene file's `solver.frame`).
+    pub form: Form,
     pub backend: Backend,
     pub rtol: f64,
     pub atol: f64,

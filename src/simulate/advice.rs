@@ -122,12 +122,13 @@ pub fn drift_warning(energy_drift: Option<f64>) -> Option<String> {
     })
 }
 
-/// Everything a finished run is warned about: a coarse fixed step ([`CoarseStep`]) and a drifting energy
-/// ([`drift_warning`]).
+/// Everything a finished run is warned about: the scene's own warnings ([`crate::scene::advice::warnings`]: unit
+/// slips, the separatrix), a coarse fixed step ([`CoarseStep`]) and a drifting energy ([`drift_warning`]).
 pub fn warnings(scene: &Scene, energy_drift: Option<f64>) -> Vec<String> {
     let coarse = CoarseStep::of(scene).map(|c| c.to_string());
-    coarse
+    crate::scene::advice::warnings(scene)
         .into_iter()
+        .chain(coarse)
         .chain(drift_warning(energy_drift))
         .collect()
 }

@@ -257,7 +257,7 @@ fn run_free<M: KickMoment + Clone, E>(
     moment: M,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
-    let frame = scene.solver.frame;
+    let frame = scene.solver.form;
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
             let mut split = LiePoisson::new(body, frame, scheme, moment);
@@ -274,7 +274,7 @@ fn run_free<M: KickMoment + Clone, E>(
         }
         Runner::Exact => {
             if !M::ZERO {
-                // Validation refuses this (scene.rs); a scene built by hand still gets a clear error.
+                // Validation refuses this (scene/validate/solver.rs); a scene built by hand still gets a clear error.
                 return Err(IntegrateError::InvalidSettings {
                     reason:
                         "method \"exact\" is the torque-free closed form; the scene has effects"
@@ -343,7 +343,7 @@ fn run_fixed_axis<E>(
     motion: &FixedAxis,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
-    let frame = scene.solver.frame;
+    let frame = scene.solver.form;
     let h_s0: Vector3<f64> = motion.sample(0.0, frame).h_s;
     let mut system = RequiredMomentRate { motion, frame };
     let mut on_row = |t: f64, h_s_int: &Vector3<f64>| {
@@ -388,7 +388,7 @@ fn run_hinge<E>(
     hinge: &Hinge,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
-    let form = scene.solver.frame;
+    let form = scene.solver.form;
     let Runner::RungeKutta(settings) = runner(scene) else {
         return Err(IntegrateError::InvalidSettings {
             reason: format!(

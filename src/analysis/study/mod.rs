@@ -26,7 +26,7 @@ use std::time::Instant;
 
 use crate::frames::Form;
 use crate::method::{Backend, Method};
-use crate::scene::{self, Overrides, Scene, SceneError};
+use crate::scene::{Scene, SceneError};
 
 pub use measure::Measure;
 pub use summary::{CurveCost, format_seconds};
@@ -284,15 +284,22 @@ impl Runs {
     }
 }
 
-/// The scene as written, refused when the study cannot use it (t_end = 0, too many rows for the reference).
-fn studied_scene(scene_path: &Path, text: &str) -> Result<Scene, StudyError> {
-    let base = scene::parse(scene_path, text, &Overrides::default())?;
+/// The scene's file (or `<scene>` for one built in code), for messages and the summary.
+fn scene_file(scene: &Scene) -> PathBuf {
+    scene
+        .source
+        .as_ref()
+        .map_or_else(|| PathBuf::from("<scene>"), |s| s.path.clone())
+}
+
+/// Refuses a scene the study cannot use (t_end = 0, too many rows for the reference).
+fn check_studied(scene: &Scene, scene_path: &Path) -> Result<(), StudyError> {
     let unsuitable = |problem: String| StudyError::Unsuitable {
         file: scene_path.to_path_buf(),
         problem,
     };
-    let n_rows = base.schedule.len();
-    if base.solver.t_end <= 0.0 {
+    let n_rows = scene.schedule.len();
+    if scene.solver.t_end <= 0.0 {
         return Err(unsuitable(
             "solver.t_end = 0: there is nothing to integrate; give t_end > 0".into(),
         ));
@@ -302,7 +309,7 @@ fn studied_scene(scene_path: &Path, text: &str) -> Result<Scene, StudyError> {
             "the scene writes {n_rows} rows; the accuracy study keeps the reference at every row in memory and takes at most {REFERENCE_MAX_ROWS}: use a larger output.every (or --every)"
         )));
     }
-    Ok(base)
+    Ok(())
 }
 
 /// For each of [`TARGETS`], the fastest run reaching it, and the fastest among the methods that integrate.
@@ -327,16 +334,15 @@ fn cheapest(rows: &[StudyRow], measure: Measure) -> Vec<Cheapest> {
         .collect()
 }
 
-/// Runs the work-precision study of the scene file `scene_path` whose text is `text`. `progress(done, total,
-/// what)` is called before every run (and once at the end with done = total); `total` is the planned number of
+/// Runs the work-precision study of `scene` (every run a variant of its [`Scene::spec`], the scene as simulated).
+/// `progress(done, total, what)` is called before every run (and once at the end with done = total); `total` is the planned number of
 /// runs, some of which a curve may skip (the count then jumps).
 pub fn accuracy(
-    scene_path: &Path,
-    text: &str,
+    scene: &Scene,
     options: &StudyOptions,
     mut progress: impl FnMut(usize, usize, &str),
 ) -> Result<Study, StudyError> {
-    accuracy_until(scene_path, text, options, |done, total, what| {
+    accuracy_until(scene, options, |done, total, what| {
         progress(done, total, what);
         ControlFlow::Continue(())
     })
@@ -345,23 +351,24 @@ pub fn accuracy(
 /// [`accuracy`], stopped before the next run with [`StudyError::Interrupted`] once `progress` breaks (the Python
 /// module's Ctrl-C).
 pub fn accuracy_until(
-    scene_path: &Path,
-    text: &str,
+    base: &Scene,
     options: &StudyOptions,
     mut progress: impl FnMut(usize, usize, &str) -> ControlFlow<()>,
 ) -> Result<Study, StudyError> {
     let started = Instant::now();
-    let base = studied_scene(scene_path, text)?;
-    // Every run changes the typed scene, parsed once (never the text).
-    let spec = scene::parse_spec(scene_path, text)?;
+    let path = scene_file(base);
+    let scene_path = path.as_path();
+    check_studied(base, scene_path)?;
+    // Every run changes the typed scene as simulated (never the text).
+    let spec = &base.spec;
     let interrupted = || StudyError::Interrupted {
         file: scene_path.to_path_buf(),
     };
     if progress(0, 1, "reference").is_break() {
         return Err(interrupted());
     }
-    let reference = reference::StudyReference::for_scene(&base, scene_path, &spec)?;
-    let sweep = sweep::Sweep::new(&spec, &base, &reference, options);
+    let reference = reference::StudyReference::for_scene(base, scene_path, spec)?;
+    let sweep = sweep::Sweep::new(spec, base, &reference, options);
     let curves = plan(options);
     let total: usize = curves.iter().map(|c| c.planned).sum();
     let mut done = 0usize;

@@ -60,6 +60,10 @@ pub enum Command {
     Check {
         /// Scene file (TOML).
         scene: PathBuf,
+        /// Print the numbers at full precision as JSON (mass, C, inertia, principal axes, moment center, the
+        /// scene as simulated) instead of the text.
+        #[arg(long)]
+        json: bool,
     },
     /// Plot a run's CSV as a figure (SVG, or PNG when the output ends in .png).
     ///
@@ -192,7 +196,7 @@ pub fn main() -> ExitCode {
     let quiet = cli.quiet;
     let result = match cli.command {
         Command::Run(args) => run(&args, quiet),
-        Command::Check { scene } => check(&scene),
+        Command::Check { scene, json } => check(&scene, json),
         Command::Compare { scene, method } => compare(&scene, method, quiet),
         Command::Plot(args) => plot_command(&args, quiet),
         Command::Accuracy(args) => accuracy_command(&args, quiet),
@@ -243,10 +247,14 @@ fn sweep(args: &SweepArgs, quiet: bool) -> Result<(), Failure> {
     }
 }
 
-fn check(path: &Path) -> Result<(), Failure> {
+fn check(path: &Path, json: bool) -> Result<(), Failure> {
     let scene = scene::load(path, &Overrides::default())?;
-    let spec = scene::load_spec(path)?;
-    let warnings = scene::advice::warnings(&spec, &scene);
+    let warnings = scene::advice::warnings(&scene);
+    if json {
+        let facts = eulerdyn::analysis::facts::facts(&scene, &warnings);
+        let text = serde_json::to_string_pretty(&facts).map_err(|e| Failure::Run(e.to_string()))?;
+        return print_stdout(&format!("{text}\n"));
+    }
     print_stdout(&describe::describe(&scene, &warnings).text())
 }
 
@@ -301,8 +309,11 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     }
     .overrides(&args.scene)?;
     let scene_model = scene::load(&args.scene, &overrides)?;
-    if let Some(coarse) = simulate::CoarseStep::of(&scene_model) {
-        eprintln!("{}: warning: {coarse}", args.scene.display());
+    let before_run = scene::advice::warnings(&scene_model)
+        .into_iter()
+        .chain(simulate::CoarseStep::of(&scene_model).map(|c| c.to_string()));
+    for warning in before_run {
+        eprintln!("{}: warning: {warning}", args.scene.display());
     }
     let columns = simulate::columns(&scene_model);
     let mut progress = Progress::bar(
@@ -406,7 +417,7 @@ fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
     }
 }
 
-/// `eulerdyn plot`: reads a run's CSV and writes the SVG figure to `-o FILE` (atomically) or to stdout.
+/// `eulerdyn accuracy`: the work-precision study, its table to `-o FILE` (or stdout) and its figure to `--plot`.
 fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
     let table = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let mut progress = None;
@@ -467,6 +478,7 @@ fn figure_options(args: &PlotArgs) -> Result<plot::FigureOptions, Failure> {
     })
 }
 
+/// `eulerdyn plot`: reads a run's CSV and writes the SVG figure to `-o FILE` (atomically) or to stdout.
 fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
     let panels =
         Panel::parse_list(&args.panels).map_err(|e| Failure::Input(format!("--panels: {e}")))?;

@@ -12,6 +12,7 @@ use eulerdyn::analysis::sweep::{
     RunOutcome, SeriesSink, Shard, Status, Sweep, SweepError, TableWriter,
 };
 use eulerdyn::output::{AtomicFile, CsvWriter};
+use eulerdyn::scene::{self, Overrides};
 use eulerdyn::sample::{ColumnSet, Sample};
 
 #[derive(Debug, Args)]
@@ -43,6 +44,12 @@ pub enum SweepFailure {
 pub fn sweep_command(args: &SweepArgs, quiet: bool) -> Result<(String, bool), SweepFailure> {
     let input = |m: String| SweepFailure::Input(m);
     let sweep = Sweep::load(&args.sweep).map_err(|e| input(e.to_string()))?;
+    // The base scene's own warnings (unit slips, the separatrix), once: every run is a variant of it.
+    if let Ok(base) = scene::load(&sweep.scene_file, &Overrides::default()) {
+        for warning in scene::advice::warnings(&base) {
+            eprintln!("{}: warning: {warning}", sweep.scene_file.display());
+        }
+    }
     let shard = match &args.shard {
         Some(text) => Shard::parse(text).map_err(input)?,
         None => Shard::ALL,
