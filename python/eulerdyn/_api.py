@@ -1,18 +1,12 @@
-"""eulerdyn: Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes, for notebooks.
+"""The module's functions (re-exported by ``eulerdyn``): each calls the extension ``eulerdyn._eulerdyn`` and turns
+its plain data into pandas. Kept apart from ``__init__.py`` so that ``dir(eulerdyn)`` shows the module's names only,
+not the ones imported here.
 
-Each function mirrors a command of the ``eulerdyn`` command line and calls the same Rust library:
-
-- :func:`run` — a scene's time series as a :class:`pandas.DataFrame` with the CSV's columns (bit for bit);
-- :func:`check` — what a scene will simulate, as a dict;
-- :func:`compare` — both forms of Euler's equation against each other and the closed form;
-- :func:`accuracy` — the work-precision study, as a DataFrame;
-- :func:`balance` — two-plane balancing of a fixed-axis or hinge scene.
-
-A scene is the path of a scene file (TOML) or a dict of the same keys, e.g.
-``{"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.1}}``.
-Bad input raises :class:`SceneError` (a ``ValueError``) with the command line's message, naming the file (or
-``<dict>``) and the key; a failed run raises :class:`RunError` with the time and the reason. Runs release the GIL,
-and Ctrl-C (KeyboardInterrupt) stops them.
+Tables (the study's and the sweep's) are typed by column, never by their cells, so that the same column has the same
+dtype in every table, with or without empty cells and with no rows at all: counts (``run``, ``steps``, ``rejected``,
+``evals``, ``repeats``) are int64 (the tables write every count), names and messages (``method``, ``frame``,
+``backend``, ``status``, ``message``) pandas' string dtype (``""`` for an empty cell), every other column float64
+(NaN for an empty cell).
 """
 
 from __future__ import annotations
@@ -27,19 +21,26 @@ import numpy as np
 import pandas as pd
 
 from . import _eulerdyn
-from ._eulerdyn import RunError, SceneError
-
-__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run", "sweep"]
 
 #: A scene: the path of a scene file, or a dict of its keys (nested dicts for its tables, lists of dicts for
 #: ``[[effect]]`` and ``[[body.point_mass]]``).
 SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 
+#: The columns of whole numbers (int64) and of names and messages (str) in the study's table and the sweep's; every
+#: other column of theirs is float64.
+_STUDY_COUNTS = ("steps", "rejected", "evals", "repeats")
+_STUDY_TEXTS = ("method", "frame", "backend", "status")
+_SWEEP_COUNTS = ("run", "steps", "evals")
+_SWEEP_TEXTS = ("status", "message")
 
-def _scene(scene: SceneLike) -> Any:
-    """The scene as the extension takes it: a path, or a plain dict (any other mapping is copied into one)."""
-    if isinstance(scene, Mapping) and not isinstance(scene, dict):
-        return {k: _scene(v) if isinstance(v, Mapping) else v for k, v in scene.items()}
+
+def _scene(scene: Any) -> Any:
+    """A scene (or a sweep) as the extension takes it: a path, or plain dicts and lists (any other mapping is
+    copied into a dict, a tuple into a list, at every depth)."""
+    if isinstance(scene, Mapping):
+        return {k: _scene(v) for k, v in scene.items()}
+    if isinstance(scene, (list, tuple)):
+        return [_scene(v) for v in scene]
     return scene
 
 
@@ -77,8 +78,8 @@ def run(
         ``rejected``, ``evals``, ``wall_seconds``.
 
     Raises:
-        SceneError: the scene or an override is not valid (the message names the key, e.g.
-            ``solver.method (from --method)``).
+        SceneError: the scene or an override is not valid (the message names the key, and the keyword argument
+            that set it, e.g. ``solver.dt (from dt=)``).
         RunError: the run failed (diverged, the step size collapsed); ``.t`` is the time it stopped at.
         KeyboardInterrupt: Ctrl-C during the run.
     """
@@ -155,7 +156,8 @@ def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
     Returns:
         The command's table, a row per run: ``method``, ``frame``, ``rtol``, ``dt``, ``err_omega``,
         ``err_attitude``, ``energy_drift``, ``H_drift``, ``wall_s``, ``steps``, ``rejected``, ``evals``,
-        ``err_H_s``, ``atol``, ``backend``, ``repeats``, ``status`` (NaN where the CSV has an empty cell).
+        ``err_H_s``, ``atol``, ``backend``, ``repeats``, ``status``: the counts int64, the names str, the rest
+        float64 (NaN where the CSV has an empty cell), whatever the rows.
         ``df.attrs["summary"]`` is the summary the command prints.
 
     Raises:
@@ -164,20 +166,25 @@ def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
         KeyboardInterrupt: Ctrl-C (the study stops before its next run).
     """
     table, summary = _eulerdyn.accuracy(_scene(scene), quick=quick)
-    df = _table(table)
+    df = _table(table, _STUDY_COUNTS, _STUDY_TEXTS)
     df.attrs["summary"] = summary
     return df
 
 
 def sweep(
-    sweep_file: Union[str, "os.PathLike[str]"], *, jobs: Optional[int] = None, shard: Optional[str] = None
+    sweep_file: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    *,
+    jobs: Optional[int] = None,
+    shard: Optional[str] = None,
 ) -> pd.DataFrame:
-    """The runs of a sweep file, as ``eulerdyn sweep SWEEP.toml``: a base scene run many times with numeric keys
-    set from grids (``values``, ``linspace``, ``logspace``) or drawn at random (``normal``, ``uniform``), in
-    parallel, each run reduced to one row.
+    """The runs of a sweep, as ``eulerdyn sweep SWEEP.toml``: a base scene run many times with numeric keys set from
+    grids (``values``, ``linspace``, ``logspace``) or drawn at random (``normal``, ``uniform``), in parallel, each
+    run reduced to one row.
 
     Args:
-        sweep_file: the path of the sweep file (its ``scene`` is relative to it).
+        sweep_file: the path of a sweep file (its ``scene`` is relative to it), or a dict of its keys, e.g.
+            ``{"scene": disk, "vary": [{"key": "motion.rate", "values": [5.0, 10.0]}]}``, whose ``scene`` is the
+            base scene: a dict of its keys, or its path (relative to the working directory).
         jobs: threads (None: all cores).
         shard: ``"K/N"``: only the runs with ``run % N == K - 1`` (for N processes that split a sweep).
 
@@ -185,38 +192,49 @@ def sweep(
         The results table, a row per run sorted by ``run``: ``run``, one column per varied key, ``status``
         (``ok``, ``failed``, ``invalid``), ``message``, ``max_M_norm`` (and ``max_F_sup_norm``, ``max_R_A_norm``,
         ``max_R_B_norm`` where the scene has them), ``energy_drift``, ``H_drift``, ``final_omega_b_x/y/z``,
-        ``steps``, ``evals``, ``wall_s``, then ``min_X``, ``max_X``, ``final_X`` of each ``[summary]`` column.
-        A failed or invalid run is a row with its message (NaN in its numeric columns); nothing is raised for it.
+        ``steps``, ``evals``, ``wall_s``, then ``min_X``, ``max_X``, ``final_X`` of each ``[summary]`` column:
+        ``run``, ``steps`` and ``evals`` int64, ``status`` and ``message`` str (``""`` for a run that is ok), the
+        rest float64, whatever the rows. A failed or invalid run is a row with its message (NaN in its numeric
+        columns); nothing is raised for it.
 
     Raises:
-        SceneError: the sweep file or its base scene is not valid (unknown key, empty grid, ...), a bad shard,
-            or ``jobs=0``.
+        SceneError: the sweep or its base scene is not valid (unknown key, empty grid, ...), a bad shard, or
+            ``jobs=0``. The message names the file, or ``<dict>`` and the key within the dict (``vary[0].key``,
+            ``scene.body.mass`` for a base scene given as a dict).
         KeyboardInterrupt: Ctrl-C (the sweep stops between runs).
     """
-    return _table(_eulerdyn.sweep(os.fspath(sweep_file), jobs=jobs, shard=shard))
+    return _sweep_table(_eulerdyn.sweep(_scene(sweep_file), jobs=jobs, shard=shard))
 
 
-def _table(text: str) -> pd.DataFrame:
-    """A CSV table as a DataFrame, each number read by Python's float (correctly rounded: the f64 the table was
-    written from). A column of numbers and empty cells is float (NaN for empty), of whole numbers int, else str."""
+def _sweep_table(text: str) -> pd.DataFrame:
+    """The sweep's results table (CSV text, as ``eulerdyn sweep`` writes it) as a DataFrame."""
+    return _table(text, _SWEEP_COUNTS, _SWEEP_TEXTS)
+
+
+def _table(text: str, counts: Tuple[str, ...], texts: Tuple[str, ...]) -> pd.DataFrame:
+    """A CSV table as a DataFrame, typed by column whatever its cells: the ``counts`` int64, the ``texts`` str
+    (pandas' string dtype, ``""`` for an empty cell), every other column float64, each number read by Python's
+    float (correctly rounded: the f64 the table was written from), NaN for an empty cell."""
     reader = csv.reader(io.StringIO(text))
     header = next(reader)
     rows = list(reader)
     columns: Dict[str, Any] = {}
     for k, name in enumerate(header):
         cells = [row[k] for row in rows]
-        columns[name] = _column(cells)
+        if name in counts:
+            columns[name] = _counts(name, cells)
+        elif name in texts:
+            columns[name] = pd.Series(cells, dtype=str)
+        else:
+            columns[name] = np.array([float(c) if c else math.nan for c in cells], dtype=np.float64)
     return pd.DataFrame(columns, columns=header)
 
 
-def _column(cells: "list[str]") -> Any:
-    """The cells of one column as ints, floats or strings (see :func:`_table`)."""
-    if cells and all(c.isdigit() for c in cells):
-        return np.array([int(c) for c in cells], dtype=np.int64)
-    try:
-        return np.array([float(c) if c else math.nan for c in cells], dtype=np.float64)
-    except ValueError:
-        return cells
+def _counts(name: str, cells: "list[str]") -> Any:
+    """A column of counts as int64; the tables write every count, so an empty cell is the library's error."""
+    if not all(cells):
+        raise _eulerdyn.RunError(f"internal error in eulerdyn (please report it): the column `{name}` has an empty count")
+    return np.array([int(c) for c in cells], dtype=np.int64)
 
 
 def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:

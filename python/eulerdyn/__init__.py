@@ -1,0 +1,34 @@
+"""eulerdyn: Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes, for notebooks.
+
+Each function mirrors a command of the ``eulerdyn`` command line and calls the same Rust library:
+
+- :func:`run` — a scene's time series as a :class:`pandas.DataFrame` with the CSV's columns (bit for bit);
+- :func:`check` — what a scene will simulate, as a dict;
+- :func:`compare` — both forms of Euler's equation against each other and the closed form;
+- :func:`accuracy` — the work-precision study, as a DataFrame;
+- :func:`balance` — two-plane balancing of a fixed-axis or hinge scene;
+- :func:`sweep` — many runs of a scene with keys varied, a row per run.
+
+A scene is the path of a scene file (TOML) or a dict of the same keys, e.g.
+``{"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.1}}``;
+a sweep likewise. Bad input raises :class:`SceneError` (a ``ValueError``) with the command line's message, naming
+the file (or ``<dict>``) and the key, and the keyword argument that set it (``solver.dt (from dt=)``); a failed
+run raises :class:`RunError` with the time and the reason. Runs release the GIL, and Ctrl-C (KeyboardInterrupt)
+stops them. A column has one dtype whatever its cells: see ``README.md`` (From Python). ``__version__`` is the
+version of the eulerdyn crate the extension was built from.
+"""
+
+from ._api import SceneLike, accuracy, balance, check, compare, run, sweep
+from ._eulerdyn import RunError, SceneError, __version__
+
+__all__ = [
+    "RunError",
+    "SceneError",
+    "SceneLike",
+    "accuracy",
+    "balance",
+    "check",
+    "compare",
+    "run",
+    "sweep",
+]
