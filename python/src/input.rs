@@ -73,7 +73,7 @@ impl SceneInput {
 }
 
 /// A `SceneError` about a dict's key.
-fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
+pub fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
     let e = scene::SceneError {
         file: PathBuf::from(DICT_ORIGIN),
         key: key.map(str::to_string),
@@ -84,7 +84,7 @@ fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
 }
 
 /// The Python type's name of `value`, for messages.
-fn type_name(value: &Bound<'_, PyAny>) -> String {
+pub fn type_name(value: &Bound<'_, PyAny>) -> String {
     value
         .get_type()
         .name()
@@ -92,7 +92,7 @@ fn type_name(value: &Bound<'_, PyAny>) -> String {
 }
 
 /// A dict as a TOML table; `key` is its key path (empty for the scene itself).
-fn table_of(dict: &Bound<'_, PyDict>, key: &str) -> PyResult<toml::Table> {
+pub fn table_of(dict: &Bound<'_, PyDict>, key: &str) -> PyResult<toml::Table> {
     let mut table = toml::Table::new();
     for (k, v) in dict.iter() {
         let Ok(name) = k.cast::<PyString>() else {
