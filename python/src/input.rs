@@ -40,12 +40,7 @@ impl SceneInput {
                 from_dict: true,
             });
         }
-        let path: PathBuf = scene.extract().map_err(|_| {
-            PyTypeError::new_err(format!(
-                "scene: expected a scene file's path (str or os.PathLike) or a dict of its keys, got {}",
-                type_name(scene)
-            ))
-        })?;
+        let path = path_of(scene, "scene")?;
         let text = scene::read(&path).map_err(|e| scene_error(py, e, false))?;
         Ok(Self {
             path,
@@ -81,6 +76,17 @@ pub fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
         problem,
     };
     scene_error(py, e, true)
+}
+
+/// The path a `what` argument (`scene`, `sweep`) gives when it is not a dict: a str or an os.PathLike, else a
+/// TypeError that says what it may be.
+pub fn path_of(value: &Bound<'_, PyAny>, what: &str) -> PyResult<PathBuf> {
+    value.extract().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{what}: expected a {what} file's path (str or os.PathLike) or a dict of its keys, got {}",
+            type_name(value)
+        ))
+    })
 }
 
 /// The Python type's name of `value`, for messages.

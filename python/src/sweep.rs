@@ -5,13 +5,13 @@ use std::path::{Path, PathBuf};
 
 use eulerdyn::analysis::sweep::{Shard, Sweep, SweepError, TableWriter};
 use eulerdyn::scene;
-use pyo3::exceptions::{PyRuntimeError, PyTypeError};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use tempfile::TempDir;
 
 use crate::errors::{SceneError, no_panic, scene_error};
-use crate::input::{DICT_ORIGIN, dict_error, table_of, type_name};
+use crate::input::{DICT_ORIGIN, dict_error, path_of, table_of, type_name};
 use crate::run::SignalCheck;
 
 /// A sweep given as a dict, written out as the files the library's [`Sweep::load`] reads: the sweep's keys as
@@ -119,12 +119,7 @@ fn load(py: Python<'_>, sweep: &Bound<'_, PyAny>) -> PyResult<(Sweep, Option<Sta
         let plan = Sweep::load(&staged.sweep_file()).map_err(|e| staged.error(py, e))?;
         return Ok((plan, Some(staged)));
     }
-    let path: PathBuf = sweep.extract().map_err(|_| {
-        PyTypeError::new_err(format!(
-            "sweep: expected a sweep file's path (str or os.PathLike) or a dict of its keys, got {}",
-            type_name(sweep)
-        ))
-    })?;
+    let path = path_of(sweep, "sweep")?;
     let plan = Sweep::load(&path).map_err(|e| scene_error(py, e, false))?;
     Ok((plan, None))
 }

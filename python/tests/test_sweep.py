@@ -169,3 +169,8 @@ def test_a_column_has_one_dtype_with_or_without_empty_cells():
             assert pd.api.types.is_string_dtype(dtype) and dtype != np.float64, name
         else:
             assert dtype == np.float64, name
+
+
+def test_a_sweep_of_the_wrong_type_is_a_type_error():
+    with pytest.raises(TypeError, match="sweep: expected a sweep file's path .* or a dict of its keys, got int"):
+        eulerdyn.sweep(42)
