@@ -62,3 +62,7 @@ pub use frames::{Axes, Form};
 pub use method::{Backend, Method};
 pub use sample::Sample;
 pub use scene::{BodySpec, EffectSpec, MotionSpec, Scene, SceneSpec, ShapeSpec};
+
+/// The crate's version (`Cargo.toml`), as the sidecar's `eulerdyn_version` and Python's `eulerdyn.__version__`
+/// give it.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

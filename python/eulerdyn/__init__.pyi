@@ -8,7 +8,10 @@ import pandas as pd
 from ._eulerdyn import RunError as RunError
 from ._eulerdyn import SceneError as SceneError
 
-__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run", "sweep"]
+__all__ = ["RunError", "SceneError", "SceneLike", "accuracy", "balance", "check", "compare", "run", "sweep"]
+
+__version__: str
+"""The version of the eulerdyn crate the extension was built from."""
 
 SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 
@@ -39,6 +42,9 @@ def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> 
     """Two-plane balancing (``eulerdyn balance``)."""
 
 def sweep(
-    sweep_file: Union[str, "os.PathLike[str]"], *, jobs: Optional[int] = None, shard: Optional[str] = None
+    sweep_file: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    *,
+    jobs: Optional[int] = None,
+    shard: Optional[str] = None,
 ) -> pd.DataFrame:
-    """The results table of a sweep file (``eulerdyn sweep``), a row per run."""
+    """The results table of a sweep file or a dict of its keys (``eulerdyn sweep``), a row per run."""

@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import eulerdyn
@@ -95,6 +96,21 @@ def test_accuracy_quick_study_of_a_dict():
     assert table[table["method"] == "rk4"]["dt"].notna().all()
     assert set(table["frame"]) == {"body"} and set(table["backend"]) == {"own"}
     assert "dop853" in table.attrs["summary"]
+    # Typed by column, not by cells: the same dtypes for the rk4 rows alone (rtol empty) and the others.
+    for name, dtype in table.dtypes.items():
+        if name in ("steps", "rejected", "evals", "repeats"):
+            assert dtype == np.int64, name
+        elif name in ("method", "frame", "backend", "status"):
+            assert pd.api.types.is_string_dtype(dtype) and dtype != np.float64, name
+        else:
+            assert dtype == np.float64, name
+    rk4 = eulerdyn._api._table(
+        table[table["method"] == "rk4"].to_csv(index=False, na_rep=""),
+        eulerdyn._api._STUDY_COUNTS,
+        eulerdyn._api._STUDY_TEXTS,
+    )
+    assert rk4["rtol"].isna().all()
+    assert rk4.dtypes.to_dict() == table.dtypes.to_dict()
 
 
 def test_accuracy_refuses_a_scene_it_cannot_study():
