@@ -5,7 +5,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;
 
 use crate::body::Principal;
-use crate::scene::{Motion, Scene, SceneSpec};
+use crate::scene::{Scene, SceneSpec};
 use crate::simulate;
 
 /// A scene's facts at full precision (SI units; body axes unless the name says otherwise).
@@ -49,14 +49,8 @@ fn array(v: &Vector3<f64>) -> [f64; 3] {
 pub fn facts(scene: &Scene, warnings: &[String]) -> SceneFacts {
     let inertia_c = scene.body.inertia_c();
     let principal = Principal::of(inertia_c);
-    let (rho_c_b, inertia_o_b, axis) = match &scene.motion {
-        Motion::Free { body, .. } => (*body.rho_c_b(), *body.inertia_b(), None),
-        Motion::FixedAxis(fixed) => (*fixed.rho_c_b(), *fixed.inertia_a_b(), Some(fixed)),
-        Motion::Hinge(hinge) => {
-            let fixed = hinge.axis();
-            (*fixed.rho_c_b(), *fixed.inertia_a_b(), Some(fixed))
-        }
-    };
+    let (rho_c_b, inertia_o_b) = scene.motion.about_moment_center();
+    let axis = scene.motion.axis();
     SceneFacts {
         name: scene.name.clone(),
         mass: scene.body.mass(),

@@ -106,8 +106,10 @@ mod tests {
 
     #[test]
     fn radians_written_as_degrees_are_told_from_real_skews() {
-        // 30°, 2°, 90° and 45° in radians: slips.
-        for slip in [0.5236, 0.0349, 1.5708, 0.7854] {
+        // 30°, 2°, 90° and 45° in radians, as a user types them (4 decimals): slips.
+        #[allow(clippy::approx_constant)]
+        let slips = [0.5236, 0.0349, 1.5708, 0.7854];
+        for slip in slips {
             assert!(looks_like_radians(slip), "{slip}");
         }
         // A rotor's skew of 0.5–2°, round tilts, and 0: as meant.

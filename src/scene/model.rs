@@ -1,6 +1,6 @@
 //! The validated scene: everything a run needs, in the types the simulation uses. Built by [`crate::scene`].
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::effects::Effect;
@@ -48,6 +48,25 @@ impl Motion {
             Motion::Free { .. } => "free",
             Motion::FixedAxis(_) => "fixed_axis",
             Motion::Hinge(_) => "hinge",
+        }
+    }
+
+    /// The fixed axis of a fixed-axis or hinge motion (its direction, point, bearings); `None` for free motion.
+    pub fn axis(&self) -> Option<&FixedAxis> {
+        match self {
+            Motion::Free { .. } => None,
+            Motion::FixedAxis(axis) => Some(axis),
+            Motion::Hinge(hinge) => Some(hinge.axis()),
+        }
+    }
+
+    /// C from the moment center O (the pivot, the axis point, or C itself), and the inertia about O, body axes.
+    pub fn about_moment_center(&self) -> (Vector3<f64>, Matrix3<f64>) {
+        match (self, self.axis()) {
+            (Motion::Free { body, .. }, _) => (*body.rho_c_b(), *body.inertia_b()),
+            (_, axis) => axis.map_or((Vector3::zeros(), Matrix3::zeros()), |a| {
+                (*a.rho_c_b(), *a.inertia_a_b())
+            }),
         }
     }
 }

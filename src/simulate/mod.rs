@@ -10,12 +10,13 @@ use std::time::Instant;
 
 use nalgebra::{SVector, Vector3};
 
+use crate::effects::{EffectMoments, TorqueFree};
 use crate::frames::Form;
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::{self, BodyForm, EffectMoments, FreeBody, SpaceForm, TorqueFree};
+use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::{ColumnSet, Sample};
@@ -26,7 +27,7 @@ mod guard;
 
 pub use advice::{
     CoarseStep, EnergyWatch, MAX_ENERGY_DRIFT, MAX_TURN_PER_STEP, drift_warning, fixed_step,
-    warnings,
+    warnings, warnings_before_run,
 };
 pub use guard::{Divergence, DivergenceGuard, GuardedQuantity};
 

@@ -6,7 +6,7 @@ page's `window.eulerdyn.state()` is checked against the run's CSV at the row tim
 canvas, and two times against each other.
 
 Run by `.ci/browser-tests` (which builds the binary and makes the venv). Environment:
-  EULERDYN_BIN                the eulerdyn binary (default: target/debug/eulerdyn)
+  EULERDYN_BIN                the eulerdyn binary (default: target/release/eulerdyn)
   CHROMIUM                    the browser (default: /usr/bin/chromium)
   EULERDYN_VIEW_SCREENSHOT    if set, the tilted disk's screenshot is written there (docs/tilted_disk_view.png)
   EULERDYN_VIEW_REPORT        if set, page sizes and open times are appended there (measurements, not checks)
@@ -55,7 +55,7 @@ def report(line):
 
 @pytest.fixture(scope="session")
 def work(tmp_path_factory):
-    assert BIN.is_file(), f"{BIN} is missing: build it first (cargo build)"
+    assert BIN.is_file(), f"{BIN} is missing: build it first (cargo build --release)"
     return tmp_path_factory.mktemp("view")
 
 

@@ -309,10 +309,7 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     }
     .overrides(&args.scene)?;
     let scene_model = scene::load(&args.scene, &overrides)?;
-    let before_run = scene::advice::warnings(&scene_model)
-        .into_iter()
-        .chain(simulate::CoarseStep::of(&scene_model).map(|c| c.to_string()));
-    for warning in before_run {
+    for warning in simulate::warnings_before_run(&scene_model) {
         eprintln!("{}: warning: {warning}", args.scene.display());
     }
     let columns = simulate::columns(&scene_model);

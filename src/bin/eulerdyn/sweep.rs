@@ -12,8 +12,8 @@ use eulerdyn::analysis::sweep::{
     RunOutcome, SeriesSink, Shard, Status, Sweep, SweepError, TableWriter,
 };
 use eulerdyn::output::{AtomicFile, CsvWriter};
-use eulerdyn::scene::{self, Overrides};
 use eulerdyn::sample::{ColumnSet, Sample};
+use eulerdyn::scene::{self, Overrides};
 
 #[derive(Debug, Args)]
 pub struct SweepArgs {

@@ -12,7 +12,7 @@ use serde_json::{Value, json};
 
 use crate::body::Principal;
 use crate::output::sidecar::{Sidecar, sidecar_path};
-use crate::scene::{Motion, Overrides, SceneSpec, ShapeSpec};
+use crate::scene::{Overrides, SceneSpec, ShapeSpec};
 
 /// The page's picture of the body and its supports, and notes on what could not be drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,15 +66,8 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
             e.key, e.problem
         )
     })?;
-    let (rho_c_b, inertia_o_b, axis) = match &scene.motion {
-        Motion::Free { body, .. } => (*body.rho_c_b(), *body.inertia_b(), None),
-        Motion::FixedAxis(fixed) => (*fixed.rho_c_b(), *fixed.inertia_a_b(), Some(fixed)),
-        Motion::Hinge(hinge) => (
-            *hinge.axis().rho_c_b(),
-            *hinge.axis().inertia_a_b(),
-            Some(hinge.axis()),
-        ),
-    };
+    let (rho_c_b, inertia_o_b) = scene.motion.about_moment_center();
+    let axis = scene.motion.axis();
     // The reference origin (shape center) from O: from C it is −center_b, and C is at ρ_C from O.
     let reference_o = rho_c_b - scene.center_b;
     let mut notes = Vec::new();

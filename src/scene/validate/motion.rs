@@ -7,8 +7,9 @@ use super::super::spec::{MotionKind, MotionSpec, SceneSpec};
 use super::{Checked, Invalid, KeyPath, finite, invalid, only_keys, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
+use crate::effects::EffectMoments;
 use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::{EffectMoments, FreeBody};
+use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::motion::support::Bearings;
 

@@ -1,16 +1,14 @@
 //! `eulerdyn sweep`: run numbering and grid order, determinism across threads and shards, invalid and failed runs as
 //! rows, the bearing-load map against its closed form, time series on request, and bad sweep files.
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
-use common::{column, dir_entries, eulerdyn, read_csv, repo_path, write_file};
+use crate::common::{column, dir_entries, eulerdyn, read_csv, repo_path, write_file};
 use eulerdyn::analysis::sweep::{RunOutcome, Shard, Status, Sweep};
 
 /// A sweep file in `dir` over the free scene `base.toml` written next to it.
 fn free_sweep(dir: &Path, body: &str) -> PathBuf {
-    write_file(dir, "base.toml", common::FREE_SCENE);
+    write_file(dir, "base.toml", crate::common::FREE_SCENE);
     write_file(dir, "sweep.toml", format!("scene = \"base.toml\"\n{body}"))
 }
 
@@ -178,7 +176,7 @@ fn series_are_written_on_request_and_equal_a_run_of_the_same_scene() {
     let scene = write_file(
         dir.path(),
         "run1.toml",
-        common::FREE_SCENE.replace("omega = [0.3, 0.0, 2.0]", "omega = [0.2, 0.0, 2.0]"),
+        crate::common::FREE_SCENE.replace("omega = [0.3, 0.0, 2.0]", "omega = [0.2, 0.0, 2.0]"),
     );
     let single = eulerdyn(["run", scene.to_str().unwrap()]);
     assert_eq!(

@@ -5,8 +5,6 @@
 //! error of `K_ADAPTIVE · rtol` per unit of |ω|·t_end (local errors of size rtol·|y| per step, accumulated about
 //! linearly over the run); for RK4 the global error of an order-4 method, `K_RK4 · (|ω| dt)⁴ · |ω| t_end`.
 
-mod common;
-
 use std::convert::Infallible;
 
 use eulerdyn::analysis::compare::attitude_angle;
@@ -20,7 +18,7 @@ use eulerdyn::scene::Scene;
 use eulerdyn::simulate;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
-use common::{scene_from, sign_changes};
+use crate::common::{scene_from, sign_changes};
 
 /// Global-error constant of the adaptive methods relative to rtol per unit of |ω|·t. Measured on the asymmetric
 /// torque-free body: 0.0004–0.15 (dopri5 in the space form is the largest); a tolerance that is not honoured, e.g.

@@ -5,11 +5,9 @@
 //!
 //! A case's expected line is marked in its text with a `# <--` comment on that line.
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
-use common::{FREE_SCENE, dir_entries, eulerdyn, read_csv, write_file};
+use crate::common::{FREE_SCENE, dir_entries, eulerdyn, read_csv, write_file};
 
 /// A prescribed-motion scene: the tilted thin disk.
 const DISK_SCENE: &str = r#"name = "disk"

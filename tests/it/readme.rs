@@ -2,9 +2,7 @@
 //! line `<!-- output of: eulerdyn ARGS -->` must be exactly what `eulerdyn ARGS` prints on stdout, run from the
 //! repository root. `EULERDYN_BLESS=1 cargo test --test readme` rewrites the blocks from the commands.
 
-mod common;
-
-use common::{eulerdyn, repo_path};
+use crate::common::{eulerdyn, repo_path};
 
 const MARK: &str = "<!-- output of: eulerdyn ";
 

@@ -2,11 +2,9 @@
 //! and records the scene as simulated: a scene that leaves a key at its default and one that writes the default
 //! out give the same CSV, the same sidecar scene and the same plots.
 
-mod common;
-
 use std::path::Path;
 
-use common::{eulerdyn, write_file};
+use crate::common::{eulerdyn, write_file};
 use eulerdyn::output::Sidecar;
 
 /// The bundled heavy top with `g` left at its default, and the same scene with every default the sidecar fills

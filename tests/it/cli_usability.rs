@@ -1,11 +1,9 @@
 //! The first hour of a new user: `--help` of every command with an example, `--version`, what `check` prints,
 //! data on stdout and messages on stderr, `--quiet`, and no progress bar when stderr is not a terminal.
 
-mod common;
-
 use std::path::Path;
 
-use common::{FREE_SCENE, eulerdyn, repo_path, write_file};
+use crate::common::{FREE_SCENE, eulerdyn, repo_path, write_file};
 
 fn scenario(name: &str) -> String {
     repo_path(&format!("scenarios/{name}.toml"))
@@ -377,10 +375,20 @@ fn run_and_sweep_warn_of_unit_slips_where_the_run_is_and_the_sidecar_lists_them(
     let csv = dir.path().join("slip.csv");
     let out = eulerdyn(["run", text(&scene), "-o", text(&csv)]);
     out.expect_code(0);
-    let warning = "motion.tilt_deg = 0.5236 is 0.5236 degrees; if radians were meant, that is 30.0 degrees";
-    assert!(out.stderr.contains(&format!("slip.toml: warning: {warning}")), "{}", out.stderr);
+    let warning =
+        "motion.tilt_deg = 0.5236 is 0.5236 degrees; if radians were meant, that is 30.0 degrees";
+    assert!(
+        out.stderr
+            .contains(&format!("slip.toml: warning: {warning}")),
+        "{}",
+        out.stderr
+    );
     let sidecar = eulerdyn::output::Sidecar::read(&csv).unwrap();
-    assert!(sidecar.warnings.iter().any(|w| w == warning), "{:?}", sidecar.warnings);
+    assert!(
+        sidecar.warnings.iter().any(|w| w == warning),
+        "{:?}",
+        sidecar.warnings
+    );
     // To stdout too: the warning is on stderr, the CSV clean.
     let out = eulerdyn(["run", text(&scene)]);
     out.expect_code(0);
@@ -395,7 +403,11 @@ fn run_and_sweep_warn_of_unit_slips_where_the_run_is_and_the_sidecar_lists_them(
     out.expect_code(0);
     assert_eq!(out.stderr.matches(warning).count(), 1, "{}", out.stderr);
     // A real rotor's skew of 1° is not a slip.
-    let skew = write_file(dir.path(), "skew.toml", &disk.replace("tilt_deg = 30 ", "tilt_deg = 1.0 "));
+    let skew = write_file(
+        dir.path(),
+        "skew.toml",
+        disk.replace("tilt_deg = 30 ", "tilt_deg = 1.0 "),
+    );
     let out = eulerdyn(["run", text(&skew)]);
     out.expect_code(0);
     assert!(!out.stderr.contains("radians"), "{}", out.stderr);

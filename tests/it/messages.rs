@@ -1,9 +1,7 @@
 //! Messages in the scene author's words: broken syntax named by its line, values of the wrong kind said plainly,
 //! numbers printed as written (exponent form), `[effect]` for `[[effect]]`.
 
-mod common;
-
-use common::{eulerdyn, write_file};
+use crate::common::{eulerdyn, write_file};
 
 const BASE: &str = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n";
 const TAIL: &str = "[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";

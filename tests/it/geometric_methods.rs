@@ -8,8 +8,6 @@
 //! (printed by `cargo test --test geometric_methods -- --nocapture`); a method that does not honour its order or its
 //! tolerance misses by orders of magnitude.
 
-mod common;
-
 use std::convert::Infallible;
 use std::path::Path;
 
@@ -23,7 +21,7 @@ use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, RunReport};
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
-use common::{eulerdyn, repo_path, scene_from, write_file};
+use crate::common::{eulerdyn, repo_path, scene_from, write_file};
 
 fn run(scene: &Scene) -> (Vec<Sample>, RunReport) {
     let mut out = Vec::new();

@@ -64,8 +64,12 @@ fn parsed(name: &str, text: &str) -> eulerdyn::scene::Scene {
 }
 
 fn quick_study(text: &str) -> study::Study {
-    study::accuracy(&parsed("test.toml", text), &StudyOptions::quick(), |_, _, _| {})
-        .expect("the study runs")
+    study::accuracy(
+        &parsed("test.toml", text),
+        &StudyOptions::quick(),
+        |_, _, _| {},
+    )
+    .expect("the study runs")
 }
 
 #[test]

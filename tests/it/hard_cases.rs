@@ -4,8 +4,6 @@
 //!
 //! Measured values quoted in the comments are from `cargo test --test hard_cases -- --nocapture`, which prints them.
 
-mod common;
-
 use std::convert::Infallible;
 use std::path::Path;
 
@@ -19,7 +17,7 @@ use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate::{self, GuardedQuantity, RunError, RunReport};
 use nalgebra::{UnitQuaternion, Vector3};
 
-use common::{eulerdyn, scene_from, sign_changes, write_file};
+use crate::common::{eulerdyn, scene_from, sign_changes, write_file};
 
 fn try_rows(scene: &Scene) -> (Vec<Sample>, Result<RunReport, RunError<Infallible>>) {
     let mut out = Vec::new();

@@ -12,9 +12,7 @@
 //!   problem 1, T = 4 √(l/g) K(sin(θ₀/2)) for the simple pendulum, with the compound pendulum's equivalent length
 //!   l = I_A/(m d); and its support force m(a_C − g) at every row (eq. 8.7).
 
-mod common;
-
-use common::{dir_entries, eulerdyn, write_file};
+use crate::common::{dir_entries, eulerdyn, write_file};
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::{BodySpec, EffectSpec, MotionSpec, SceneSpec, ShapeSpec};
 use eulerdyn::{Axes, Form, Method, simulate};
@@ -532,7 +530,7 @@ fn balance_writes_a_scene_whose_run_shows_no_rotating_reaction() {
     let out = dir.path().join("balanced.toml");
     let result = eulerdyn([
         "balance",
-        common::repo_path("scenarios/rotor_bearings.toml")
+        crate::common::repo_path("scenarios/rotor_bearings.toml")
             .to_str()
             .unwrap(),
         "--planes",
@@ -546,12 +544,12 @@ fn balance_writes_a_scene_whose_run_shows_no_rotating_reaction() {
     assert!(result.stdout.contains("plane A") && result.stdout.contains("before"));
     let run = eulerdyn(["run", out.to_str().unwrap()]);
     run.expect_code(0);
-    let (head, records) = common::read_csv(&run.stdout);
+    let (head, records) = crate::common::read_csv(&run.stdout);
     // With gravity the bearings still carry the weight, the same at every row: nothing rotates.
     for name in [
         "R_A_s_x", "R_A_s_y", "R_A_s_z", "R_B_s_x", "R_B_s_y", "R_B_s_z",
     ] {
-        let column = common::column(&head, &records, name);
+        let column = crate::common::column(&head, &records, name);
         let spread = column
             .iter()
             .fold(0f64, |m, v| m.max((v - column[0]).abs()));
@@ -562,7 +560,8 @@ fn balance_writes_a_scene_whose_run_shows_no_rotating_reaction() {
 #[test]
 fn a_motor_runs_the_hinge_up_to_the_steady_speed_against_viscous_friction() {
     // I_uu θ̈ = M − c θ̇ from rest: θ̇(t) = (M/c)(1 − exp(−c t / I_uu)) (the first-order linear ODE's solution).
-    let text = std::fs::read_to_string(common::repo_path("scenarios/motor_runup.toml")).unwrap();
+    let text =
+        std::fs::read_to_string(crate::common::repo_path("scenarios/motor_runup.toml")).unwrap();
     let scene =
         eulerdyn::scene::parse_spec(std::path::Path::new("motor_runup.toml"), &text).unwrap();
     let theta = 30f64.to_radians();
@@ -655,7 +654,7 @@ fn plot_draws_the_bearings_panel_of_a_run_with_bearings() {
     let svg = dir.path().join("rotor.svg");
     eulerdyn([
         "run",
-        common::repo_path("scenarios/rotor_bearings.toml")
+        crate::common::repo_path("scenarios/rotor_bearings.toml")
             .to_str()
             .unwrap(),
         "-o",
@@ -679,7 +678,7 @@ fn plot_draws_the_bearings_panel_of_a_run_with_bearings() {
     let free_csv = dir.path().join("free.csv");
     eulerdyn([
         "run",
-        common::repo_path("scenarios/asymmetric_free.toml")
+        crate::common::repo_path("scenarios/asymmetric_free.toml")
             .to_str()
             .unwrap(),
         "-o",

@@ -2,11 +2,9 @@
 //! units and legend in symbols, no NaN), the grid of panels, `--panels`, `--size`, `--title`, PNG output, the
 //! panels of fixed-axis and gravity runs, and the clear errors on a CSV or an option it cannot use.
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
-use common::{dir_entries, eulerdyn, repo_path, write_file};
+use crate::common::{dir_entries, eulerdyn, repo_path, write_file};
 
 /// A path as command-line text (temporary paths are UTF-8).
 fn text(path: &Path) -> &str {

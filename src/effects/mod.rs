@@ -2,6 +2,10 @@
 
 use nalgebra::Vector3;
 
+mod compiled;
+
+pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
+
 use crate::frames::Axes;
 use crate::trig;
 

@@ -2,11 +2,9 @@
 //! broken sidecar, an output that cannot be written) — exit 2 with the file and the problem, no partial file. The
 //! page in a real browser is tested by `tests/browser/test_view.py` (`.ci/browser-tests`).
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
-use common::{dir_entries, eulerdyn, repo_path, write_file};
+use crate::common::{dir_entries, eulerdyn, repo_path, write_file};
 use eulerdyn::output::view::{self, MAX_DRAWN_ROWS};
 
 /// Runs `scenario` into `dir/name.csv` (with its sidecar) and returns the CSV's path.
@@ -23,7 +21,7 @@ fn run(dir: &Path, scenario: &str, name: &str) -> PathBuf {
 }
 
 /// `eulerdyn view CSV -o OUT`.
-fn view_cmd(csv: &Path, out: &Path) -> common::Outcome {
+fn view_cmd(csv: &Path, out: &Path) -> crate::common::Outcome {
     eulerdyn([
         "view".as_ref(),
         csv.as_os_str(),
@@ -84,7 +82,7 @@ fn the_page_carries_every_row_of_the_tilted_disk_bit_for_bit_and_its_shape() {
         .iter()
         .map(|c| c.as_str().expect("a name"))
         .collect();
-    let (head, records) = common::read_csv(&std::fs::read_to_string(&csv).expect("csv"));
+    let (head, records) = crate::common::read_csv(&std::fs::read_to_string(&csv).expect("csv"));
     let rows = raw_rows(&html);
     assert_eq!(rows.len(), records.len());
     for (row, record) in rows.iter().zip(&records) {

@@ -1,11 +1,9 @@
 //! The `eulerdyn` binary end to end, against the outside contract (docs: /work/shared/CONTRACT.md): CSV layout and
 //! row times, number round-trips, the `-o` file and its sidecar, command-line overrides, output safety, `check`.
 
-mod common;
-
 use std::path::Path;
 
-use common::{
+use crate::common::{
     FREE_SCENE, column, dir_entries, eulerdyn, eulerdyn_to, expected_times, header, read_csv,
     repo_path, write_file,
 };

@@ -2,11 +2,9 @@
 //! binary into a temporary directory, remakes every committed figure of the README's gallery byte for byte (the
 //! timed work-precision figure aside), and the same binary and input give the same bytes twice.
 
-mod common;
-
 use std::process::Command;
 
-use common::{eulerdyn, repo_path};
+use crate::common::{eulerdyn, repo_path};
 
 #[test]
 fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
