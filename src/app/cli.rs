@@ -1,7 +1,6 @@
 //! The command line: `run`, `check`, `compare`, `plot`, `view`, …. Data goes to stdout, messages (and the progress bar) to
 //! stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input.
 
-use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -329,7 +328,8 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     run_to_file(args, &scene_model, out_path, progress, quiet)
 }
 
-/// `run -o FILE`: the CSV and its sidecar written atomically (both synced, then renamed), then the "wrote …" line.
+/// `run -o FILE`: the CSV and its sidecar written atomically (both synced, then renamed), or the CSV alone written
+/// through to a device or FIFO (see [`AtomicFile`]), then the "wrote …" line.
 fn run_to_file(
     args: &RunArgs,
     scene_model: &Scene,
@@ -345,16 +345,7 @@ fn run_to_file(
             out_path.display()
         )));
     }
-    // A destination that exists and is not a regular file (/dev/null, a pipe) is written directly.
-    if out_path.exists() && !out_path.is_file() && !out_path.is_dir() {
-        let file = File::options()
-            .write(true)
-            .open(out_path)
-            .map_err(|e| Failure::Input(file_error("cannot open", e)))?;
-        write_csv(&args.scene, scene_model, columns, file, &mut progress)
-            .map_err(|e| run_failure(&args.scene, out_path, e))?;
-        return Ok(());
-    }
+    // The output policy of `AtomicFile`: a device or FIFO is written through, anything else atomically.
     let mut csv_file = AtomicFile::create(out_path)
         .map_err(|e| Failure::Input(file_error("cannot create the output file", e)))?;
     let (report, _) = write_csv(
@@ -366,30 +357,14 @@ fn run_to_file(
     )
     .map_err(|e| run_failure(&args.scene, out_path, e))?;
     progress.finish();
-    let scene_text = std::fs::read_to_string(&args.scene).unwrap_or_default();
-    let sidecar = meta::sidecar(
-        &args.scene.display().to_string(),
-        &scene_text,
-        scene_model,
-        &report,
-        &columns.columns(),
-    );
-    let meta_path = PathBuf::from(format!("{}.meta.json", out_path.display()));
-    let meta_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", meta_path.display());
-    let mut meta_file =
-        AtomicFile::create(&meta_path).map_err(|e| Failure::Run(meta_error("cannot create", e)))?;
-    serde_json::to_writer_pretty(meta_file.file(), &sidecar)
-        .map_err(io::Error::from)
-        .and_then(|()| meta_file.file().write_all(b"\n"))
-        .map_err(|e| Failure::Run(meta_error("cannot write", e)))?;
-    // Both files on disk before either is renamed: the CSV first, then its sidecar.
-    AtomicFile::commit_both(csv_file, meta_file).map_err(|(which, e)| {
-        Failure::Run(if which == 0 {
-            file_error("cannot save", e)
-        } else {
-            meta_error("cannot save", e)
-        })
-    })?;
+    if csv_file.writes_through() {
+        // No sidecar beside a device or a FIFO (`/dev/null.meta.json`).
+        csv_file
+            .commit()
+            .map_err(|e| Failure::Run(file_error("cannot write", e)))?;
+    } else {
+        commit_with_sidecar(args, scene_model, &report, csv_file)?;
+    }
     if quiet {
         return Ok(());
     }
@@ -404,6 +379,41 @@ fn run_to_file(
         report.wall_seconds
     );
     Ok(())
+}
+
+/// Writes the sidecar `FILE.meta.json` of the run `report` beside the CSV being written atomically, then commits
+/// both: both files on disk before either is renamed, the CSV first, then its sidecar.
+fn commit_with_sidecar(
+    args: &RunArgs,
+    scene_model: &Scene,
+    report: &RunReport,
+    csv_file: AtomicFile,
+) -> Result<(), Failure> {
+    let out_path = csv_file.path().to_path_buf();
+    let file_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", out_path.display());
+    let scene_text = std::fs::read_to_string(&args.scene).unwrap_or_default();
+    let sidecar = meta::sidecar(
+        &args.scene.display().to_string(),
+        &scene_text,
+        scene_model,
+        report,
+        &simulate::columns(scene_model).columns(),
+    );
+    let meta_path = crate::output::run_csv::sidecar_path(&out_path);
+    let meta_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", meta_path.display());
+    let mut meta_file =
+        AtomicFile::create(&meta_path).map_err(|e| Failure::Run(meta_error("cannot create", e)))?;
+    serde_json::to_writer_pretty(meta_file.file(), &sidecar)
+        .map_err(io::Error::from)
+        .and_then(|()| meta_file.file().write_all(b"\n"))
+        .map_err(|e| Failure::Run(meta_error("cannot write", e)))?;
+    AtomicFile::commit_both(csv_file, meta_file).map_err(|(which, e)| {
+        Failure::Run(if which == 0 {
+            file_error("cannot save", e)
+        } else {
+            meta_error("cannot save", e)
+        })
+    })
 }
 
 /// Runs the scene, streaming its rows as CSV into `out` and its time into `progress`; returns the report and the
