@@ -381,18 +381,10 @@ fn an_output_path_that_is_a_directory_is_refused() {
 fn a_full_device_is_a_failed_run_not_a_panic() {
     // A full device made in a temporary directory (never the system's /dev/full through -o); needs root.
     let dir = tempfile::tempdir().unwrap();
-    let full = dir.path().join("full");
-    let made = std::process::Command::new("mknod")
-        .arg(&full)
-        .args(["c", "1", "7"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !made {
-        eprintln!(
-            "skipped: mknod is not permitted here (not root); tests/output_paths.rs covers FIFOs"
-        );
+    let Some(full) = common::device_node(dir.path(), "full", "7") else {
+        eprintln!("skipped: mknod is not permitted here (not root)");
         return;
-    }
+    };
     let out = eulerdyn(["run", &tilted_disk(), "-o", text(&full)]);
     assert!(!out.panicked(), "{}", out.stderr);
     out.expect_code(1);

@@ -17,7 +17,7 @@ use std::os::unix::fs::FileTypeExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use common::{FREE_SCENE, Outcome, dir_entries, eulerdyn, repo_path, write_file};
+use common::{FREE_SCENE, Outcome, device_node, dir_entries, eulerdyn, repo_path, write_file};
 
 /// A path as command-line text (temporary paths are UTF-8).
 fn text(path: &Path) -> &str {
@@ -183,18 +183,6 @@ fn check_symlink(case: &Case, work: &Path, reference: &[u8]) {
     assert_eq!(dir_entries(&links), beside_link, "{}", case.name);
 }
 
-/// A character device node `dir/name` (major 1: minor 3 the null device, 7 the full device) made with `mknod`;
-/// `None` where that is not permitted (not root).
-fn device(dir: &Path, name: &str, minor: &str) -> Option<PathBuf> {
-    let path = dir.join(name);
-    let made = Command::new("mknod")
-        .arg(&path)
-        .args(["c", "1", minor])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    made.then_some(path)
-}
-
 fn is_char_device(path: &Path) -> bool {
     std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_char_device())
 }
@@ -204,8 +192,8 @@ fn is_char_device(path: &Path) -> bool {
 fn check_devices(case: &Case, work: &Path) {
     let (null_dir, full_dir) = (subdir(work, "null"), subdir(work, "full"));
     let (Some(null), Some(full)) = (
-        device(&null_dir, "null", "3"),
-        device(&full_dir, "full", "7"),
+        device_node(&null_dir, "null", "3"),
+        device_node(&full_dir, "full", "7"),
     ) else {
         eprintln!(
             "{}: skipped the null- and full-device cases: mknod is not permitted here (not root); the FIFO and \

@@ -433,8 +433,7 @@ mod tests {
             let e = AtomicFile::create(&full)
                 .expect("opened")
                 .write_and_commit(&vec![7; size])
-                .err()
-                .expect("a full device refuses the bytes");
+                .expect_err("a full device refuses the bytes");
             assert!(e.to_string().contains("No space left"), "{e}");
         }
         assert!(is_char_device(&full));
