@@ -13,6 +13,7 @@
 
 mod common;
 
+use std::io::Read;
 use std::os::unix::fs::FileTypeExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -124,17 +125,22 @@ fn check_fifo(case: &Case, work: &Path, reference: &[u8]) {
         .expect("mkfifo runs");
     assert!(made.success(), "mkfifo {}", fifo.display());
     // The test holds the FIFO open for writing too (on Linux, opening a FIFO for reading and writing does not
-    // wait), so that the reader never waits forever, whatever the command does: it reads to the end once both
-    // the command and the test have closed it.
+    // wait), and opens the reader's end before the command starts (which then does not wait either), so that
+    // the reader never waits forever, whatever the command does: it reads to the end once both the command and
+    // the test have closed their ends.
     let keeper = std::fs::File::options()
         .read(true)
         .write(true)
         .open(&fifo)
         .expect("the FIFO opens");
-    let reader = {
-        let fifo = fifo.clone();
-        std::thread::spawn(move || std::fs::read(fifo).expect("the reader reads to the end"))
-    };
+    let mut reading = std::fs::File::open(&fifo).expect("the reader's end opens");
+    let reader = std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        reading
+            .read_to_end(&mut bytes)
+            .expect("the reader reads to the end");
+        bytes
+    });
     let outcome = case.run(&fifo);
     drop(keeper);
     let received = reader.join().expect("the reader thread");

@@ -158,8 +158,8 @@ impl Panel {
     pub fn absence(self) -> Option<&'static str> {
         match self {
             Panel::Bearings => Some(
-                "no bearings (only runs of scenes with `bearings` have the bearing forces R_A and R_B that the \
-                 bearings panel draws)",
+                "no bearings (only runs of scenes with `bearings` have the bearing forces, columns R_A_b_x … \
+                 R_B_b_z, that the bearings panel draws)",
             ),
             Panel::Theta => Some(
                 "no fixed axis, so no angle `theta` (needed by theta; only fixed_axis and hinge runs have them)",
