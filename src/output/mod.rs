@@ -1,4 +1,5 @@
-//! Output: CSV rows (streaming), the atomic file writer, the metadata sidecar, and SVG plots of a run's CSV.
+//! Output: CSV rows (streaming), the atomic file writer (one policy for every output path) and its registry of
+//! pending temporary files, the metadata sidecar, and SVG plots of a run's CSV.
 
 pub mod accuracy;
 pub mod atomic;

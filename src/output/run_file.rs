@@ -1,6 +1,7 @@
 //! A run written to a file: the CSV and its sidecar, both written atomically ([`AtomicFile`]: synced, then
 //! renamed, the CSV first), so that a failed or interrupted run leaves no partial file and an existing output
-//! untouched.
+//! untouched. A destination that is a device or a FIFO is written through, without a sidecar (the output policy
+//! of [`AtomicFile`]).
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -25,7 +26,8 @@ pub enum WriteRunError {
     Save { file: PathBuf, problem: String },
 }
 
-/// Runs `scene` and writes its CSV to `path` and its [`Sidecar`] to `path.meta.json`.
+/// Runs `scene` and writes its CSV to `path` and its [`Sidecar`] to `path.meta.json` (none beside a device or a
+/// FIFO).
 ///
 /// ```
 /// use eulerdyn::scene::{BodySpec, SceneSpec};
@@ -65,11 +67,16 @@ pub fn write_run_with(
         writer.write(s)
     })?;
     writer.finish().map_err(RunError::Sink)?;
-    let meta_path = sidecar_path(path);
     let save = |file: &Path, what: &str, e: io::Error| WriteRunError::Save {
         file: file.to_path_buf(),
         problem: format!("{what}: {e}"),
     };
+    if csv_file.writes_through() {
+        // A device or a FIFO: no sidecar beside it (`/dev/null.meta.json`).
+        csv_file.commit().map_err(|e| save(path, "cannot write", e))?;
+        return Ok(report);
+    }
+    let meta_path = sidecar_path(path);
     let sidecar = Sidecar::of_run(scene, &report, &columns.columns());
     let meta_file =
         AtomicFile::create(&meta_path).map_err(|e| save(&meta_path, "cannot create", e))?;

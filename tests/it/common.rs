@@ -183,3 +183,15 @@ pub fn sign_changes(rows: &[Sample], axis: usize) -> Vec<f64> {
 pub fn scene_from(text: &str, overrides: &Overrides) -> Scene {
     scene::parse(Path::new("test.toml"), text, overrides).unwrap_or_else(|e| panic!("{e}\n{text}"))
 }
+
+/// A character device node `dir/name` made with `mknod` (major 1: minor 3 is the null device, 7 the full device),
+/// so that no test writes to a system device through `-o`; `None` where that is not permitted (not root).
+pub fn device_node(dir: &Path, name: &str, minor: &str) -> Option<PathBuf> {
+    let path = dir.join(name);
+    let made = Command::new("mknod")
+        .arg(&path)
+        .args(["c", "1", minor])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    made.then_some(path)
+}

@@ -14,6 +14,7 @@ mod hard_cases;
 mod integrate_methods;
 mod invariant_axis;
 mod messages;
+mod output_paths;
 mod output_safety;
 mod plot;
 mod properties;

@@ -503,7 +503,8 @@ fn plot_svg(csv: &Path, out: &Path, args: &[&str]) -> String {
 fn panels_are_laid_out_in_a_grid_of_two_columns_sixteen_centimetres_wide() {
     let dir = tempfile::tempdir().unwrap();
     let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
-    let svg = plot_svg(&csv, &dir.path().join("disk.svg"), &[]);
+    // `all`: the six panels every run has (the disk's default adds θ and the support).
+    let svg = plot_svg(&csv, &dir.path().join("disk.svg"), &["--panels", "all"]);
     check_svg(&svg);
     // 16 cm at 96 px per inch: 605 px; three rows of 7 cm and the 0.9 cm title: 21.9 cm = 828 px.
     assert_eq!(attributes(&svg, "width")[0], "605");
@@ -560,10 +561,18 @@ fn size_and_title_are_honoured() {
     let dir = tempfile::tempdir().unwrap();
     let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
     let out = dir.path().join("disk.svg");
+    // `all`: the six panels every run has (the disk's default adds θ and the support).
     let svg = plot_svg(
         &csv,
         &out,
-        &["--size", "24,18", "--title", "The tilted disk"],
+        &[
+            "--panels",
+            "all",
+            "--size",
+            "24,18",
+            "--title",
+            "The tilted disk",
+        ],
     );
     check_svg(&svg);
     // 24 cm and 18 cm at 96 px per inch.
@@ -596,7 +605,8 @@ fn bad_sizes_titles_and_resolutions_are_refused_naming_the_flag() {
         (vec!["--title", "two\nlines"], "--title", "one line"),
         (vec!["--dpi", "300"], "--dpi", "only a PNG"),
     ] {
-        let mut all = vec!["plot", text(&csv), "-o", text(&svg)];
+        // `all`: the six panels every run has (the disk's default adds θ and the support).
+        let mut all = vec!["plot", text(&csv), "-o", text(&svg), "--panels", "all"];
         all.extend(&args);
         let out = eulerdyn(&all);
         out.expect_code(2);
@@ -812,4 +822,120 @@ fn the_examples_of_plot_help_that_plot_disk_csv_work() {
     }
     assert!(tried >= 3, "{tried} examples in: {help}");
     assert!(png_size(&std::fs::read(dir.path().join("disk.png")).unwrap()).0 == 1890);
+}
+
+#[test]
+fn by_default_a_run_gets_the_panels_it_has() {
+    let dir = tempfile::tempdir().unwrap();
+    let axis_titles = [
+        "Angle θ turned about the fixed axis",
+        "Support force F_sup, space axes",
+        "Bearing forces on the body, body axes",
+    ];
+    // A hinge with bearings: the six panels every run has, then θ, the support and the bearings.
+    let motor = run_scenario(dir.path(), "motor_runup", "motor", &["--t-end", "1"]);
+    let out = eulerdyn(["plot", text(&motor), "-o", text(&dir.path().join("m.svg"))]);
+    out.expect_code(0);
+    assert!(
+        out.stderr.contains(
+            "panels h_body, h_space, moment, omega, energy, drift, theta, support, bearings;"
+        ),
+        "{}",
+        out.stderr
+    );
+    let svg = std::fs::read_to_string(dir.path().join("m.svg")).unwrap();
+    check_svg(&svg);
+    // (Its energy and drift panels are titled for a driven, damped run; the wrote line above lists them.)
+    for title in PANEL_TITLES[..4].iter().chain(&axis_titles) {
+        assert!(svg.contains(title), "no panel {title:?}");
+    }
+    // A fixed axis without bearings: θ and the support, no bearings.
+    let disk = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
+    let out = eulerdyn(["plot", text(&disk), "-o", text(&dir.path().join("d.svg"))]);
+    out.expect_code(0);
+    assert!(
+        out.stderr
+            .contains("panels h_body, h_space, moment, omega, energy, drift, theta, support;"),
+        "{}",
+        out.stderr
+    );
+    // A free run: the six free-body panels only.
+    let racket = run_scenario(dir.path(), "tennis_racket", "racket", &["--t-end", "1"]);
+    let svg = plot_svg(&racket, &dir.path().join("r.svg"), &[]);
+    for title in PANEL_TITLES {
+        assert!(svg.contains(title), "no panel {title:?}");
+    }
+    for title in axis_titles {
+        assert!(!svg.contains(title), "a free run has no {title:?}");
+    }
+    // stdin to stdout: the same choice, from the header.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_eulerdyn"))
+        .args(["plot", "-", "-o", "-"])
+        .stdin(std::fs::File::open(&motor).unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let svg = String::from_utf8(out.stdout).unwrap();
+    assert!(svg.contains(axis_titles[2]), "the bearings from stdin");
+}
+
+#[test]
+fn help_says_what_the_default_panels_are() {
+    let help = eulerdyn(["plot", "--help"]).stdout;
+    assert!(!help.contains("[default: all]"), "{help}");
+    assert!(!help.contains("(default: all)"), "{help}");
+    assert!(help.contains("Default: the panels the run has"), "{help}");
+}
+
+#[test]
+fn bearings_of_a_run_without_bearings_are_refused_saying_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("x.svg");
+    for (scenario, panels) in [
+        ("tilted_disk", "bearings"),
+        ("tennis_racket", "omega,bearings"),
+    ] {
+        let csv = run_scenario(dir.path(), scenario, scenario, &["--t-end", "0.5"]);
+        let out = eulerdyn(["plot", text(&csv), "-o", text(&svg), "--panels", panels]);
+        out.expect_code(2);
+        assert!(
+            out.stderr.contains("this run has no bearings ("),
+            "{}",
+            out.stderr
+        );
+        assert!(out.stderr.contains(text(&csv)), "{}", out.stderr);
+        assert!(
+            !out.stderr.contains("is it a CSV written by") && !out.stderr.contains("no column"),
+            "no list of missing columns: {}",
+            out.stderr
+        );
+        assert!(!svg.exists());
+    }
+}
+
+#[test]
+fn a_scene_file_is_named_as_such_with_the_commands_that_plot_its_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(
+        dir.path(),
+        "spin.toml",
+        std::fs::read_to_string(repo_path("scenarios/tilted_disk.toml")).unwrap(),
+    );
+    let svg = dir.path().join("spin.svg");
+    let out = eulerdyn(["plot", text(&scene), "-o", text(&svg)]);
+    out.expect_code(2);
+    let scene_csv = text(&scene).replace(".toml", ".csv");
+    for expected in [
+        format!("{}: this is a scene file", text(&scene)),
+        format!("eulerdyn run {} -o {scene_csv}", text(&scene)),
+        format!("eulerdyn plot {scene_csv}"),
+    ] {
+        assert!(
+            out.stderr.contains(&expected),
+            "{expected:?} in {}",
+            out.stderr
+        );
+    }
+    assert!(!out.stderr.contains("no column"), "{}", out.stderr);
+    assert!(!svg.exists());
 }

@@ -1,7 +1,6 @@
 //! The command line: `run`, `check`, `compare`, `plot`, `view`, …. Data goes to stdout, messages (and the progress bar) to
 //! stderr. Exit codes: 0 ok, 1 the run failed, 2 bad input.
 
-use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -70,7 +69,7 @@ pub enum Command {
     /// One panel per quantity, in a grid: H in body and in space axes, the moment M, omega, the energy, and the
     /// drift of the scene's invariants on a log scale.
     #[command(
-        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (default: all); for fixed_axis and hinge runs also\ntheta, support and bearings (with bearings). The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
+        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (`all`: these six, which every run has); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings). Default: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
     )]
     Plot(PlotArgs),
     /// Work-precision study: every applicable method over a sweep of tolerances or step sizes, its error against
@@ -119,13 +118,17 @@ pub struct PlotArgs {
     /// CSV written by `eulerdyn run` (columns are found by their header names); `-`: stdin.
     #[arg(value_name = "RUN.csv")]
     pub csv: PathBuf,
-    /// Output file, written atomically: SVG, or PNG when its name ends in .png; `-`: SVG to stdout.
+    /// Output file, written atomically (a device or FIFO is written through): SVG, or PNG when its name ends in
+    /// .png; `-`: SVG to stdout.
     #[arg(short = 'o', long = "output", value_name = "FIG.svg")]
     pub output: Option<PathBuf>,
-    /// Panels to draw, comma-separated, in this order: h_body, h_space, moment, omega, energy, drift, or all;
-    /// theta, support, bearings for fixed_axis and hinge runs.
-    #[arg(long, value_name = "LIST", default_value = "all")]
-    pub panels: String,
+    /// Panels to draw, comma-separated, in the order given: h_body, h_space, moment, omega, energy, drift (`all`:
+    /// these six, which every run has); theta, support, bearings for fixed_axis and hinge runs.
+    ///
+    /// Default: the panels the run has: the six, then theta and support for a fixed_axis or hinge run, and
+    /// bearings when it has bearings.
+    #[arg(long, value_name = "LIST")]
+    pub panels: Option<String>,
     /// Figure width and height in centimetres (at 96 pixels per inch), e.g. 16,12. Default: 16 cm wide, as
     /// tall as the panels' rows need (6 cm a row in one column, 7 cm in two, plus 0.9 cm for the title).
     #[arg(long, value_name = "W,H")]
@@ -337,8 +340,8 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     run_to_file(args, &scene_model, out_path, progress, quiet)
 }
 
-/// `run -o FILE`: the CSV and its sidecar written atomically by the library ([`eulerdyn::output::write_run`]),
-/// then the "wrote …" line.
+/// `run -o FILE`: the CSV and its sidecar written by the library ([`eulerdyn::output::write_run`]: atomically,
+/// or the CSV alone written through to a device or FIFO), then the "wrote …" line.
 fn run_to_file(
     args: &RunArgs,
     scene_model: &Scene,
@@ -346,18 +349,6 @@ fn run_to_file(
     mut progress: Progress,
     quiet: bool,
 ) -> Result<(), Failure> {
-    let columns = simulate::columns(scene_model);
-    let file_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", out_path.display());
-    // A destination that exists and is not a regular file (/dev/null, a pipe) is written directly.
-    if out_path.exists() && !out_path.is_file() && !out_path.is_dir() {
-        let file = File::options()
-            .write(true)
-            .open(out_path)
-            .map_err(|e| Failure::Input(file_error("cannot open", e)))?;
-        write_csv(&args.scene, scene_model, columns, file, &mut progress)
-            .map_err(|e| run_failure(&args.scene, out_path, e))?;
-        return Ok(());
-    }
     let report =
         write_run_with(scene_model, out_path, |t| progress.set(t)).map_err(|e| match e {
             WriteRunError::Output { .. } => Failure::Input(e.to_string()),
@@ -477,8 +468,13 @@ fn figure_options(args: &PlotArgs) -> Result<plot::FigureOptions, Failure> {
 
 /// `eulerdyn plot`: reads a run's CSV and writes the SVG figure to `-o FILE` (atomically) or to stdout.
 fn plot_command(args: &PlotArgs, quiet: bool) -> Result<(), Failure> {
-    let panels =
-        Panel::parse_list(&args.panels).map_err(|e| Failure::Input(format!("--panels: {e}")))?;
+    // None: the panels the run has, chosen once its header is read.
+    let panels = match args.panels.as_deref() {
+        Some(list) => {
+            Panel::parse_list(list).map_err(|e| Failure::Input(format!("--panels: {e}")))?
+        }
+        None => Vec::new(),
+    };
     let options = figure_options(args)?;
     let to_stdout = match args.output.as_deref() {
         Some(p) => p.as_os_str() == "-",
