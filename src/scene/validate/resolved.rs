@@ -41,6 +41,10 @@ impl SceneSpec {
         spec.effect.iter_mut().for_each(resolve_effect);
         match spec.motion.as_mut() {
             Some(m) if m.kind != Some(MotionKind::Free) => {
+                // `rate_rpm` becomes `rate` (rad/s), the one the run used.
+                if let Some(rpm) = m.rate_rpm.take() {
+                    m.rate = Some(rpm * std::f64::consts::TAU / 60.0);
+                }
                 m.rate.get_or_insert(0.0);
                 m.point.get_or_insert([0.0; 3]);
                 match m.kind {
