@@ -5,6 +5,9 @@ use nalgebra::Vector3;
 use crate::frames::Axes;
 use crate::trig;
 
+/// Gravity when a gravity effect leaves out `g`: (0, 0, −9.81) m/s², space axes (standard gravity along −z).
+pub const DEFAULT_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
+
 /// Time profile of an applied torque.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum TorqueProfile {

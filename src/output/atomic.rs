@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use tempfile::TempPath;
 
 /// A file being written; becomes `path` on [`AtomicFile::commit`]. Its temporary file is registered with
-/// [`crate::app::interrupt`] so that an interrupt removes it (a file dropped without commit is removed by
+/// [`super::pending`] so that an interrupt handler can remove it (a file dropped without commit is removed by
 /// its `TempPath` and stays registered: removing it again on interrupt is a harmless no-op).
 pub struct AtomicFile {
     path: PathBuf,
@@ -63,7 +63,7 @@ impl AtomicFile {
         // tempfile creates 0600; an output file gets the usual rw-r--r--.
         temp.as_file()
             .set_permissions(std::fs::Permissions::from_mode(0o644))?;
-        crate::app::interrupt::register(temp.path());
+        super::pending::register(temp.path());
         let (file, temp_path) = temp.into_parts();
         Ok(Self {
             path: path.to_path_buf(),
@@ -117,10 +117,24 @@ impl AtomicFile {
         })
     }
 
+    /// Writes `bytes` into the buffer, to commit later.
+    pub fn write(mut self, bytes: &[u8]) -> io::Result<Self> {
+        self.out.write_all(bytes)?;
+        Ok(self)
+    }
+
     /// Writes `bytes` and commits: the whole file at once.
     pub fn write_and_commit(mut self, bytes: &[u8]) -> Result<(), CommitError> {
         self.out.write_all(bytes).map_err(CommitError::Write)?;
         self.commit().map_err(CommitError::Save)
+    }
+}
+
+/// Whether two paths name the same existing file (an output that would overwrite an input).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
     }
 }
 
@@ -135,7 +149,7 @@ impl Synced {
     fn rename(self) -> io::Result<()> {
         let temp_path = self.temp_path.to_path_buf();
         let result = self.temp_path.persist(&self.path).map_err(|e| e.error);
-        crate::app::interrupt::unregister(&temp_path);
+        super::pending::unregister(&temp_path);
         result
     }
 }

@@ -11,6 +11,8 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 
+use super::spec::SceneSpec;
+
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverConfig {
@@ -36,6 +38,17 @@ pub enum Motion {
     FixedAxis(FixedAxis),
     /// Rotation about a fixed axis driven by the effects (θ integrated from their moment about the axis).
     Hinge(Hinge),
+}
+
+impl Motion {
+    /// The motion's `type` in a scene file: `free`, `fixed_axis` or `hinge`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Motion::Free { .. } => "free",
+            Motion::FixedAxis(_) => "fixed_axis",
+            Motion::Hinge(_) => "hinge",
+        }
+    }
 }
 
 impl Scene {
@@ -67,4 +80,17 @@ pub struct Scene {
     pub schedule: Schedule,
     /// Largest allowed difference for `eulerdyn compare`.
     pub compare_tolerance: f64,
+    /// The scene as simulated: the spec it was built from, with the overrides applied and every default that a
+    /// key leaves out written in (see [`SceneSpec::resolved`]). The analyses that vary a scene (accuracy,
+    /// balance, sweeps) start from it, and the run's sidecar records it.
+    pub spec: SceneSpec,
+    /// The scene file it was read from and that file's text; `None` for a scene built in code.
+    pub source: Option<SceneSource>,
+}
+
+/// Where a scene came from: its file (or `<dict>` for a Python dict) and the text as written.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneSource {
+    pub path: std::path::PathBuf,
+    pub text: String,
 }

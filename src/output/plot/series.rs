@@ -9,7 +9,9 @@ use std::path::{Path, PathBuf};
 
 use super::decimator::Decimator;
 use super::{Panel, PlotError};
-use crate::output::run_csv::{RunCsvReader, sidecar_path};
+use crate::output::run_csv::RunCsvReader;
+use crate::output::sidecar::Sidecar;
+use crate::scene::EffectKind;
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -271,41 +273,24 @@ fn column_indices(
     ))
 }
 
-/// The scene's name, method, motion and effects from `FILE.meta.json`, if the run left one next to the CSV.
+/// The scene's name, method, motion and effects from the run's sidecar ([`Sidecar`]), if it left one next to the
+/// CSV; the scene as simulated (defaults written in) says whether a prescribed motion accelerates and where
+/// gravity points.
 fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
-    let text = std::fs::read_to_string(sidecar_path(csv)).ok()?;
-    let doc: serde_json::Value = serde_json::from_str(&text).ok()?;
-    let text_of = |pointer: &str| Some(doc.pointer(pointer)?.as_str()?.to_string());
-    let effects = doc
-        .pointer("/scene/effects")?
-        .as_array()?
+    let sidecar = Sidecar::read(csv).ok()?;
+    let spec = &sidecar.scene.spec;
+    let accel = spec.motion.as_ref().and_then(|m| m.accel);
+    let vertical_gravity = spec
+        .effect
         .iter()
-        .filter_map(|e| e.as_str().map(str::to_string))
-        .collect();
-    // The angular acceleration of a prescribed motion and the direction of gravity are in the scene text only.
-    let scene = text_of("/scene/text").and_then(|t| toml::from_str::<toml::Table>(&t).ok());
-    let number = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|a| a as f64));
-    let accel = scene
-        .as_ref()
-        .and_then(|t| number(t.get("motion")?.get("accel")?));
-    let vertical_gravity = scene
-        .as_ref()
-        .and_then(|t| t.get("effect")?.as_array())
-        .is_some_and(|effects| {
-            effects
-                .iter()
-                .filter(|e| e.get("type").and_then(|t| t.as_str()) == Some("gravity"))
-                .all(|e| {
-                    let g = e.get("g").and_then(|g| g.as_array());
-                    g.is_some_and(|g| g.len() == 3 && g[..2].iter().all(|c| number(c) == Some(0.0)))
-                })
-        });
+        .filter(|e| e.kind == Some(EffectKind::Gravity))
+        .all(|e| e.g.is_some_and(|g| g[0] == 0.0 && g[1] == 0.0));
     Some(SceneFacts {
-        name: text_of("/scene/name")?,
-        method: text_of("/solver/method")?,
-        frame: text_of("/solver/frame")?,
-        motion: text_of("/scene/motion").unwrap_or_else(|| "free".into()),
-        effects,
+        name: sidecar.scene.name,
+        method: sidecar.solver.method,
+        frame: sidecar.solver.frame,
+        motion: sidecar.scene.motion,
+        effects: sidecar.scene.effects,
         accelerated: accel.is_some_and(|a| a != 0.0),
         vertical_gravity,
     })

@@ -1,6 +1,6 @@
 //! What the page draws besides the rows: the body's shape, its point masses, the fixed axis and the bearings, the
-//! inertia for the polhode — all read from the run's sidecar (`RUN.csv.meta.json`), whose `scene.text` is the scene
-//! file the run was made from. Without a usable sidecar the page draws what the CSV allows, and says what is missing.
+//! inertia for the polhode — all read from the run's sidecar (`RUN.csv.meta.json`), whose `scene.spec` is the scene
+//! as the run simulated it. Without a usable sidecar the page draws what the CSV allows, and says what is missing.
 //!
 //! Every position is given in body axes from the moment center O (C, the gravity pivot, or the fixed axis's
 //! point), which the page puts at the origin of space.
@@ -12,7 +12,8 @@ use serde_json::{Value, json};
 
 use crate::body::Principal;
 use crate::effects::Effect;
-use crate::scene::{self, Motion, Overrides, SceneSpec, ShapeSpec};
+use crate::output::sidecar::{Sidecar, sidecar_path};
+use crate::scene::{Motion, Overrides, SceneSpec, ShapeSpec};
 
 /// The page's picture of the body and its supports, and notes on what could not be drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -23,34 +24,26 @@ pub struct Geometry {
     pub notes: Vec<String>,
 }
 
-/// The geometry of the run whose sidecar is `sidecar`: the sidecar's scene, or, when the sidecar is missing or
+/// The geometry of the run whose CSV is `csv`, from its sidecar's scene; when the sidecar is missing or
 /// unusable, an unknown body with a note saying why.
-pub fn read_geometry(sidecar: &Path) -> Geometry {
-    let text = match std::fs::read_to_string(sidecar) {
-        Ok(text) => text,
-        Err(e) => {
-            let why = if e.kind() == std::io::ErrorKind::NotFound {
-                "there is no sidecar".to_string()
-            } else {
-                format!("the sidecar cannot be read ({e})")
-            };
+pub fn read_geometry(csv: &Path) -> Geometry {
+    let name = sidecar_path(csv);
+    let sidecar = match std::fs::exists(&name) {
+        Ok(false) => {
             return Geometry::unknown(format!(
-                "{why} {}: the body's shape, inertia and supports are unknown, so the body is drawn as a unit \
-                 cube (not to scale), with no fixed axis, bearings or polhode; the vectors and the attitude are \
-                 the CSV's",
-                sidecar.display()
+                "there is no sidecar {}: the body's shape, inertia and supports are unknown, so the body is \
+                 drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode; the vectors and \
+                 the attitude are the CSV's",
+                name.display()
             ));
         }
+        _ => Sidecar::read(csv),
     };
-    read_geometry_text(&sidecar.display().to_string(), &text)
-}
-
-/// The geometry of the sidecar document `text`, read from the file named `name`.
-fn read_geometry_text(name: &str, text: &str) -> Geometry {
-    match geometry_of_sidecar(text) {
+    match sidecar.and_then(|sidecar| geometry_of_sidecar(&sidecar)) {
         Ok(geometry) => geometry,
         Err(problem) => Geometry::unknown(format!(
-            "{name}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode"
+            "{}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode",
+            name.display()
         )),
     }
 }
@@ -65,21 +58,9 @@ impl Geometry {
     }
 }
 
-/// The geometry from the sidecar document `text`.
-fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
-    let doc: Value =
-        serde_json::from_str(text).map_err(|e| format!("the sidecar is not valid JSON ({e})"))?;
-    let scene_text = doc
-        .pointer("/scene/text")
-        .and_then(Value::as_str)
-        .ok_or("the sidecar has no scene text (`scene.text`)")?;
-    let scene_path = doc
-        .pointer("/scene/path")
-        .and_then(Value::as_str)
-        .unwrap_or("scene");
-    let path = Path::new(scene_path);
-    let spec = scene::parse_spec(path, scene_text)
-        .map_err(|e| format!("the sidecar's scene cannot be read ({e})"))?;
+/// The geometry from the sidecar's scene (as simulated).
+fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
+    let spec = &sidecar.scene.spec;
     let scene = spec.build_with(&Overrides::default()).map_err(|e| {
         format!(
             "the sidecar's scene is not valid ({}: {})",
@@ -98,7 +79,7 @@ fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
     // The reference origin (shape center) from O: from C it is −center_b, and C is at ρ_C from O.
     let reference_o = rho_c_b - scene.center_b;
     let mut notes = Vec::new();
-    let body = body_json(&spec, &reference_o, &mut notes);
+    let body = body_json(spec, &reference_o, &mut notes);
     let point_masses: Vec<Value> = spec
         .body
         .point_mass
@@ -109,13 +90,11 @@ fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
         })
         .collect();
     let principal = Principal::of(&inertia_o_b);
-    let motion = doc.pointer("/scene/motion").and_then(Value::as_str);
-    let units: serde_json::Map<String, Value> = doc
-        .pointer("/columns")
-        .and_then(Value::as_array)
-        .into_iter()
-        .flatten()
-        .filter_map(|c| Some((c.get("name")?.as_str()?.to_string(), c.get("unit")?.clone())))
+    let motion = &sidecar.scene.motion;
+    let units: serde_json::Map<String, Value> = sidecar
+        .columns
+        .iter()
+        .map(|c| (c.name.clone(), Value::from(c.unit.clone())))
         .collect();
     Ok(Geometry {
         json: json!({
@@ -199,8 +178,8 @@ fn shape_or_inertia_box(
     }
     let mass = spec.body.mass;
     let inertia = match spec.body.inertia {
-        Some(scene::InertiaSpec::Principal(m)) => Matrix3::from_diagonal(&Vector3::from(m)),
-        Some(scene::InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
+        Some(crate::scene::InertiaSpec::Principal(m)) => Matrix3::from_diagonal(&Vector3::from(m)),
+        Some(crate::scene::InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
         None => Matrix3::identity() * mass,
     };
     let principal = Principal::of(&inertia);
@@ -277,9 +256,12 @@ mod tests {
         }
     }
 
-    /// A sidecar document whose scene is `scene_text`.
-    fn sidecar(scene_text: &str) -> String {
-        json!({ "scene": { "path": "s.toml", "motion": "free", "text": scene_text } }).to_string()
+    /// A sidecar whose scene is `scene_text`.
+    fn sidecar(scene_text: &str) -> Sidecar {
+        let spec = crate::scene::parse_spec(Path::new("s.toml"), scene_text).expect("a scene");
+        let scene = spec.build().expect("a valid scene");
+        let report = crate::simulate::RunReport::default();
+        Sidecar::of_run(&scene, &report, &[])
     }
 
     #[test]
@@ -346,10 +328,17 @@ mod tests {
 
     #[test]
     fn a_sidecar_whose_scene_is_invalid_is_named_with_the_key() {
-        let g = read_geometry_text("x.meta.json", &sidecar("[body]\nmass = -1.0\n"));
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let csv = dir.path().join("x.csv");
+        let mut bad = sidecar(
+            "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n",
+        );
+        bad.scene.spec.body.mass = -1.0;
+        std::fs::write(sidecar_path(&csv), bad.to_json()).expect("written");
+        let g = read_geometry(&csv);
         assert_eq!(g.json["body"]["kind"], "unknown");
         assert!(
-            g.notes[0].contains("x.meta.json: the sidecar's scene"),
+            g.notes[0].contains("x.csv.meta.json: the sidecar's scene is not valid (body.mass"),
             "{:?}",
             g.notes
         );
@@ -357,7 +346,7 @@ mod tests {
 
     #[test]
     fn a_missing_sidecar_gives_an_unknown_body_and_a_note_naming_it() {
-        let g = read_geometry(Path::new("/nonexistent/run.csv.meta.json"));
+        let g = read_geometry(Path::new("/nonexistent/run.csv"));
         assert_eq!(g.json["body"]["kind"], "unknown");
         assert!(g.notes[0].contains("there is no sidecar /nonexistent/run.csv.meta.json"));
     }

@@ -6,9 +6,9 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use crate::analysis::balance::{Balance, Planes, balance_scene};
-use crate::output::AtomicFile;
-use crate::scene;
+use eulerdyn::analysis::balance::{Balance, Planes, balance_scene};
+use eulerdyn::output::AtomicFile;
+use eulerdyn::scene;
 
 #[derive(Debug, Args)]
 pub struct BalanceArgs {

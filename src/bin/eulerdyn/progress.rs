@@ -163,11 +163,13 @@ impl Progress {
     }
 
     /// Whether the bar is drawn now (false until the delay has passed, and always false when hidden).
+    #[cfg(test)]
     pub fn is_visible(&self) -> bool {
         !self.bar.is_hidden()
     }
 
     /// The position reached, as a fraction of the whole (0 for a spinner or a hidden bar).
+    #[cfg(test)]
     pub fn fraction(&self) -> f64 {
         if self.total > 0.0 {
             self.position as f64 / RESOLUTION as f64

@@ -8,18 +8,18 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
-use crate::analysis::describe;
-use crate::app::balance::{BalanceArgs, balance_command};
-use crate::app::progress::{self, Progress};
-use crate::app::sweep::{SweepArgs, SweepFailure, sweep_command};
-use crate::app::view::{ViewArgs, view_command};
-use crate::output::plot::{self, Panel, PlotError};
-use crate::output::view::ViewError;
-use crate::output::{AtomicFile, CsvWriter, meta};
-use crate::sample::ColumnSet;
-use crate::scene::Scene;
-use crate::scene::{self, Flags, Overrides, SceneError};
-use crate::simulate::{self, RunError, RunFailed, RunReport};
+use crate::balance::{BalanceArgs, balance_command};
+use crate::progress::{self, Progress};
+use crate::sweep::{SweepArgs, SweepFailure, sweep_command};
+use crate::view::{ViewArgs, view_command};
+use eulerdyn::analysis::describe;
+use eulerdyn::output::plot::{self, Panel, PlotError};
+use eulerdyn::output::view::ViewError;
+use eulerdyn::output::{CsvWriter, WriteRunError, same_file, write_run_with};
+use eulerdyn::sample::ColumnSet;
+use eulerdyn::scene::Scene;
+use eulerdyn::scene::{self, Flags, Overrides, SceneError};
+use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
 
 /// Euler's equation of rigid-body rotation, M = d/dt(I·ω), in body and space axes.
 #[derive(Debug, Parser)]
@@ -184,7 +184,7 @@ impl From<SceneError> for Failure {
 /// Parses the command line, runs the command, prints messages, and returns the exit code.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
-    if let Err(e) = crate::app::interrupt::install() {
+    if let Err(e) = crate::interrupt::install() {
         eprintln!(
             "warning: cannot handle interrupts ({e}); an interrupted run may leave a temporary file"
         );
@@ -273,7 +273,7 @@ fn compare(path: &Path, method: Option<String>, quiet: bool) -> Result<(), Failu
         "running both forms and the closed form",
         progress::wanted(quiet),
     );
-    let comparison = crate::analysis::compare::compare(&scene);
+    let comparison = eulerdyn::analysis::compare::compare(&scene);
     spinner.finish();
     let comparison = comparison.map_err(|e| Failure::Run(RunFailed::new(path, &e).to_string()))?;
     print_stdout(&comparison.report())?;
@@ -329,7 +329,8 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     run_to_file(args, &scene_model, out_path, progress, quiet)
 }
 
-/// `run -o FILE`: the CSV and its sidecar written atomically (both synced, then renamed), then the "wrote …" line.
+/// `run -o FILE`: the CSV and its sidecar written atomically by the library ([`eulerdyn::output::write_run`]),
+/// then the "wrote …" line.
 fn run_to_file(
     args: &RunArgs,
     scene_model: &Scene,
@@ -339,12 +340,6 @@ fn run_to_file(
 ) -> Result<(), Failure> {
     let columns = simulate::columns(scene_model);
     let file_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", out_path.display());
-    if same_file(&args.scene, out_path) {
-        return Err(Failure::Input(format!(
-            "{}: the output would overwrite the scene file; give another -o path",
-            out_path.display()
-        )));
-    }
     // A destination that exists and is not a regular file (/dev/null, a pipe) is written directly.
     if out_path.exists() && !out_path.is_file() && !out_path.is_dir() {
         let file = File::options()
@@ -355,41 +350,16 @@ fn run_to_file(
             .map_err(|e| run_failure(&args.scene, out_path, e))?;
         return Ok(());
     }
-    let mut csv_file = AtomicFile::create(out_path)
-        .map_err(|e| Failure::Input(file_error("cannot create the output file", e)))?;
-    let (report, _) = write_csv(
-        &args.scene,
-        scene_model,
-        columns,
-        csv_file.file(),
-        &mut progress,
-    )
-    .map_err(|e| run_failure(&args.scene, out_path, e))?;
+    let report =
+        write_run_with(scene_model, out_path, |t| progress.set(t)).map_err(|e| match e {
+            WriteRunError::Output { .. } => Failure::Input(e.to_string()),
+            WriteRunError::Run(e) => run_failure(&args.scene, out_path, e),
+            WriteRunError::Save { .. } => Failure::Run(e.to_string()),
+        })?;
     progress.finish();
-    let scene_text = std::fs::read_to_string(&args.scene).unwrap_or_default();
-    let sidecar = meta::sidecar(
-        &args.scene.display().to_string(),
-        &scene_text,
-        scene_model,
-        &report,
-        &columns.columns(),
-    );
-    let meta_path = PathBuf::from(format!("{}.meta.json", out_path.display()));
-    let meta_error = |what: &str, e: io::Error| format!("{}: {what}: {e}", meta_path.display());
-    let mut meta_file =
-        AtomicFile::create(&meta_path).map_err(|e| Failure::Run(meta_error("cannot create", e)))?;
-    serde_json::to_writer_pretty(meta_file.file(), &sidecar)
-        .map_err(io::Error::from)
-        .and_then(|()| meta_file.file().write_all(b"\n"))
-        .map_err(|e| Failure::Run(meta_error("cannot write", e)))?;
-    // Both files on disk before either is renamed: the CSV first, then its sidecar.
-    AtomicFile::commit_both(csv_file, meta_file).map_err(|(which, e)| {
-        Failure::Run(if which == 0 {
-            file_error("cannot save", e)
-        } else {
-            meta_error("cannot save", e)
-        })
-    })?;
+    if let Some(drift) = simulate::drift_warning(report.energy_drift) {
+        eprintln!("{}: warning: {drift}", args.scene.display());
+    }
     if quiet {
         return Ok(());
     }
@@ -427,14 +397,6 @@ fn write_csv<W: Write>(
     Ok((report, out))
 }
 
-/// Whether two paths name the same existing file.
-fn same_file(a: &Path, b: &Path) -> bool {
-    match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => false,
-    }
-}
-
 fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
     match e {
         e @ (RunError::Integrate(_) | RunError::Diverged(_)) => {
@@ -448,11 +410,11 @@ fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
 fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
     let table = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let mut progress = None;
-    let result = crate::app::accuracy::run_accuracy_command(
+    let result = eulerdyn::output::accuracy::run_accuracy_command(
         &args.scene,
         table,
         args.plot.as_deref(),
-        &crate::analysis::study::StudyOptions::default(),
+        &eulerdyn::analysis::study::StudyOptions::default(),
         |done, total, _label| {
             progress
                 .get_or_insert_with(|| {

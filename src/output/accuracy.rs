@@ -1,20 +1,12 @@
-//! `eulerdyn accuracy SCENE [-o TABLE.csv] [--plot FIG.svg]`: the work-precision study
-//! ([`crate::analysis::study`]) of a scene file, its table and figure written atomically.
+//! The work-precision study ([`crate::analysis::study`]) of a scene file with its table and figure written
+//! atomically (`eulerdyn accuracy SCENE -o TABLE.csv --plot FIG.svg`).
 
 use std::path::Path;
 
+use super::atomic::{AtomicFile, same_file};
+use super::work_precision;
 use crate::analysis::study::{self, Study, StudyError, StudyOptions};
-use crate::output::AtomicFile;
-use crate::output::work_precision;
 use crate::scene::{self, Overrides, SceneError};
-
-/// Whether two paths name the same existing file.
-fn same_file(a: &Path, b: &Path) -> bool {
-    match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => false,
-    }
-}
 
 /// Opens an output file atomically, refusing the scene file itself.
 fn create_output(scene: &Path, out: &Path) -> Result<AtomicFile, StudyError> {

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use crate::output::view::{ViewError, ViewSummary, view_file};
+use eulerdyn::output::view::{ViewError, ViewSummary, view_file};
 
 #[derive(Debug, Args)]
 pub struct ViewArgs {

@@ -1,5 +1,5 @@
 //! `eulerdyn sweep SWEEP.toml -o RESULTS.csv [--jobs N] [--shard K/N] [--series DIR]`: the runs of a sweep
-//! ([`crate::analysis::sweep`]) in parallel, their results table written atomically, progress on stderr.
+//! ([`eulerdyn::analysis::sweep`]) in parallel, their results table written atomically, progress on stderr.
 
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -7,12 +7,12 @@ use std::time::Instant;
 
 use clap::Args;
 
-use crate::analysis::sweep::{
+use crate::progress::{self, Progress};
+use eulerdyn::analysis::sweep::{
     RunOutcome, SeriesSink, Shard, Status, Sweep, SweepError, TableWriter,
 };
-use crate::app::progress::{self, Progress};
-use crate::output::{AtomicFile, CsvWriter};
-use crate::sample::{ColumnSet, Sample};
+use eulerdyn::output::{AtomicFile, CsvWriter};
+use eulerdyn::sample::{ColumnSet, Sample};
 
 #[derive(Debug, Args)]
 pub struct SweepArgs {
