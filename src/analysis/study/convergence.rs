@@ -58,7 +58,7 @@ pub fn verdict(
     let curve = curve_of(rows, measure, row);
     if let Some(&(_, _, miss)) = curve
         .iter()
-        .find(|&&(s, e, _)| s < setting && !(e <= target))
+        .find(|&&(s, e, _)| s < setting && (e > target || e.is_nan()))
     {
         return Err(NotCounted::TighterMisses(miss));
     }
