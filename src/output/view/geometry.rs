@@ -291,7 +291,8 @@ mod tests {
     #[test]
     fn a_thin_rod_is_drawn_a_twentieth_of_its_length_thick_and_the_legend_says_so() {
         let text = "[body]\nmass = 1.0\nshape = { type = \"thin_rod\", length = 1.0 }\n\
-                    [initial]\nomega = [0.0, 0.0, 1.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+                    [motion]\ntype = \"fixed_axis\"\naxis = [0.0, 0.0, 1.0]\nrate = 1.0\n\
+                    [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
         let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
         assert_eq!(g.json["body"]["min_drawn_thickness"], 0.05);
         let said = g.json["body"]["drawn_thicker"]
