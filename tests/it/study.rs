@@ -43,6 +43,21 @@ t_end = 5.0
 every = 0.5
 "#;
 
+/// A box of 0.3 × 0.2 × 0.1 m spun near its intermediate axis, ω0 = (0.015, 10, 0) rad/s: the Jacobi modulus of its
+/// torque-free motion is k² = 1/(1 + 3e-6) = 0.999997 (see `separatrix_box_modulus`), so close to the separatrix
+/// that every method's error levels off near 1e-9 to 1e-8 whatever the tolerance.
+const SEPARATRIX_BOX: &str = r#"name = "separatrix-box"
+[body]
+mass = 1.0
+shape = { type = "box", size = [0.3, 0.2, 0.1] }
+[initial]
+omega = [0.015, 10.0, 0.0]
+[solver]
+t_end = 5.0
+[output]
+every = 0.05
+"#;
+
 const CONTRACT: [&str; 12] = [
     "method",
     "frame",
@@ -430,4 +445,128 @@ fn a_progress_that_breaks_stops_the_study_before_its_next_run() {
     // The reference, then the runs up to the one it was stopped before; no "done".
     assert_eq!(calls.len(), 4);
     assert!(calls.iter().all(|(_, what)| what != "done"));
+}
+
+/// The Jacobi modulus k² of SEPARATRIX_BOX's motion. Box moments I₁ = m(b² + c²)/12 and cyclically; for
+/// H² < 2E·I₂ (ω near the intermediate axis, on the side of the smallest moment), Landau & Lifshitz, Mechanics,
+/// §37 (suffixes 1 and 3 interchanged): k² = (I₃ − I₂)(H² − 2E·I₁) / ((I₂ − I₁)(2E·I₃ − H²)).
+fn separatrix_box_modulus() -> f64 {
+    let (m, [a, b, c], w) = (1.0, [0.3f64, 0.2, 0.1], [0.015f64, 10.0, 0.0]);
+    let i = [(b * b + c * c), (a * a + c * c), (a * a + b * b)].map(|s| m * s / 12.0);
+    let two_e: f64 = (0..3).map(|k| i[k] * w[k] * w[k]).sum();
+    let h2: f64 = (0..3).map(|k| (i[k] * w[k]).powi(2)).sum();
+    assert!(
+        h2 < two_e * i[1],
+        "the box turns on the side of its smallest moment"
+    );
+    (i[2] - i[1]) * (h2 - two_e * i[0]) / ((i[1] - i[0]) * (two_e * i[2] - h2))
+}
+
+#[test]
+fn near_a_separatrix_a_run_that_reaches_a_target_by_chance_is_not_named() {
+    assert!((separatrix_box_modulus() - 0.999997).abs() < 1e-9);
+    let options = StudyOptions {
+        rtols: (5..=13).map(|k| 10f64.powi(-k)).collect(),
+        ..StudyOptions::quick()
+    };
+    let s = study::accuracy(
+        Path::new("box.toml"),
+        SEPARATRIX_BOX,
+        &options,
+        |_, _, _| {},
+    )
+    .expect("the study runs");
+    let target = 1e-9;
+    let k = TARGETS
+        .iter()
+        .position(|&t| t == target)
+        .expect("1e-9 is a target");
+    // The runs of a curve (method and form), loosest rtol first.
+    let curve = |r: &study::StudyRow| -> Vec<&study::StudyRow> {
+        s.rows
+            .iter()
+            .filter(|o| o.method == r.method && o.frame == r.frame && o.failure.is_none())
+            .collect()
+    };
+    // The case of the issue: dop853 reaches 1e-9 at some tolerance, and misses it again at a tighter one.
+    let lucky: Vec<&study::StudyRow> = s
+        .rows
+        .iter()
+        .filter(|r| r.method_name.is_adaptive() && r.err_omega <= target)
+        .filter(|r| {
+            curve(r)
+                .iter()
+                .any(|o| o.rtol < r.rtol && o.err_omega > target)
+        })
+        .collect();
+    assert!(
+        lucky.iter().any(|r| r.method_name == Method::Dop853),
+        "the scene no longer shows the case: {:?}",
+        s.rows
+            .iter()
+            .map(|r| (&r.method, r.rtol, r.err_omega))
+            .collect::<Vec<_>>()
+    );
+    // No run that integrates is named for 1e-9; the fastest lucky run is reported instead.
+    let c = &s.cheapest[k];
+    assert_eq!(c.integrator, None, "{}", s.summary());
+    let u = c.unconverged.expect("the lucky run is reported");
+    assert!(lucky.contains(&&s.rows[u]), "{:?}", s.rows[u]);
+    let summary = s.summary();
+    let block: String = summary
+        .split("cheapest for ")
+        .find(|b| b.starts_with("err_omega <= 1e-9:"))
+        .expect("the 1e-9 block")
+        .to_string();
+    assert!(
+        block.contains("reached by chance, not named")
+            && block.contains("does not stay below the target as the tolerance tightens")
+            && !block.contains("cheapest that integrates"),
+        "{block}"
+    );
+    let dop853 = s
+        .costs()
+        .into_iter()
+        .find(|c| c.method == "dop853")
+        .expect("dop853's costs");
+    assert!(
+        dop853.rows[k].is_none() && dop853.unconverged[k],
+        "{dop853:?}"
+    );
+    let row = summary
+        .lines()
+        .find(|l| l.starts_with("dop853 "))
+        .expect("dop853's row of the cost table");
+    // The last two cells: 1e-9 (n.c.) and 1e-12 (not reached: a one-word cell).
+    assert_eq!(row.split_whitespace().rev().nth(1), Some("n.c."), "{row}");
+    // Every run that is named has a curve whose runs stay below its target at every tighter setting.
+    for c in &s.cheapest {
+        for i in [c.row, c.integrator].into_iter().flatten() {
+            let r = &s.rows[i];
+            let tighter = curve(r).into_iter().filter(|o| match (o.rtol, r.rtol) {
+                (Some(a), Some(b)) => a < b,
+                _ => o.dt < r.dt,
+            });
+            for o in tighter {
+                assert!(
+                    o.err_omega <= c.target,
+                    "{r:?} named for {} but {o:?}",
+                    c.target
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_converging_method_is_still_named_at_every_target_it_reaches() {
+    // The benchmark body's errors fall with the tolerance down to round-off: nothing there is luck.
+    let s = quick_study(FREE);
+    for c in &s.cheapest {
+        assert_eq!(c.unconverged, None, "{}", s.summary());
+    }
+    assert!(s.cheapest[0].integrator.is_some() && s.cheapest[1].integrator.is_some());
+    for c in s.costs() {
+        assert_eq!(c.unconverged, [false; 3], "{c:?}");
+    }
 }

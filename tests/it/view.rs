@@ -329,3 +329,26 @@ fn a_csv_on_stdin_is_shown_without_a_sidecar() {
     assert_eq!(data["rows_in_run"], 101);
     assert_eq!(data["geometry"]["body"]["kind"], "unknown");
 }
+
+#[test]
+fn a_thin_rod_is_drawn_thick_enough_to_show_and_gravity_sets_the_first_view_s_up() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let csv = run(dir.path(), "scenarios/rod_pendulum.toml", "rod");
+    let out = dir.path().join("rod.html");
+    let outcome = view_cmd(&csv, &out);
+    outcome.expect_code(0);
+    // Drawing the rod thicker is said in the page's legend, not warned about.
+    assert!(!outcome.stderr.contains("warning"), "{}", outcome.stderr);
+    let data = page_data(&std::fs::read_to_string(&out).expect("page"));
+    let body = &data["geometry"]["body"];
+    assert_eq!(body["kind"], "thin_rod");
+    // 5 % of the 1 m rod.
+    assert_eq!(body["min_drawn_thickness"], 0.05);
+    let said = body["drawn_thicker"].as_str().expect("the legend's words");
+    assert!(said.contains("at least 0.050 m thick"), "{said}");
+    // The scene's g = (0, -9.81, 0): the page puts +y up.
+    assert_eq!(
+        data["geometry"]["gravity_s"],
+        serde_json::json!([0.0, -9.81, 0.0])
+    );
+}

@@ -3,16 +3,19 @@
 //! Every method of [`Method::ALL`] that the scene accepts is run over a sweep (adaptive methods over relative
 //! tolerances, fixed-step methods over halved step sizes), each run's error measured against a reference (a closed
 //! form, or a tight DOP853 run), and its integration timed. The outcome is a [`Study`]: a table (one row per run,
-//! [`TABLE_COLUMNS`]), and a summary naming the cheapest method for each of [`TARGETS`]. How the sweep is chosen,
-//! what each measure means and how the time is taken: `docs/accuracy_study.md`.
+//! [`TABLE_COLUMNS`]), and a summary naming the cheapest method for each of [`TARGETS`] — among the runs whose
+//! curve converges there ([`convergence`]), so that a run reaching a target by chance is not named. How the sweep
+//! is chosen, what each measure means and how the time is taken: `docs/accuracy_study.md`.
 //!
 //! - this module: the options, the plan of runs, and [`accuracy`], which runs it;
+//! - `convergence`: whether a run counts for a target (its curve's error falls with the setting there);
 //! - `reference`: the closed form or reference run the errors are taken against;
 //! - `sweep`: one curve of runs, and one run: its scene, its errors, its timing;
 //! - `measure`: the errors of one run against the reference, row by row;
 //! - `timing`: the timed repeats of a run;
 //! - `table`, `summary`: the study as CSV and in words.
 
+pub mod convergence;
 mod measure;
 mod reference;
 mod summary;
@@ -150,11 +153,15 @@ impl StudyRow {
 pub struct Cheapest {
     /// The error level.
     pub target: f64,
-    /// Index into [`Study::rows`] of the fastest run with error ≤ target, if any.
+    /// Index into [`Study::rows`] of the fastest run with error ≤ target that counts for it (its curve converges
+    /// there: [`convergence`]), if any.
     pub row: Option<usize>,
     /// The same among the methods that integrate (fixed-step or adaptive: not `exact`, which evaluates the closed
     /// form at every row).
     pub integrator: Option<usize>,
+    /// The fastest run with error ≤ target that does not count for it (its curve does not converge there), when
+    /// it is faster than [`Cheapest::integrator`] or there is none: reported, never named the cheapest.
+    pub unconverged: Option<usize>,
 }
 
 /// A method (or backend) the study did not sweep, and why.
@@ -312,24 +319,32 @@ fn check_studied(scene: &Scene, scene_path: &Path) -> Result<(), StudyError> {
     Ok(())
 }
 
-/// For each of [`TARGETS`], the fastest run reaching it, and the fastest among the methods that integrate.
+/// For each of [`TARGETS`], the fastest run reaching it that counts for it ([`convergence`]), the same among the
+/// methods that integrate, and the fastest run reaching it by chance when that one is faster.
 fn cheapest(rows: &[StudyRow], measure: Measure) -> Vec<Cheapest> {
-    let fastest = |target: f64, integrators_only: bool| {
+    let fastest = |target: f64, integrators_only: bool, counted: bool| {
         rows.iter()
             .enumerate()
             .filter(|(_, r)| r.error(measure).is_some_and(|e| e <= target))
             .filter(|(_, r)| {
                 !integrators_only || r.method_name.is_fixed_step() || r.method_name.is_adaptive()
             })
+            .filter(|(i, _)| convergence::counts(rows, measure, *i, target) == counted)
             .min_by(|a, b| a.1.wall_s.total_cmp(&b.1.wall_s))
             .map(|(i, _)| i)
     };
     TARGETS
         .iter()
-        .map(|&target| Cheapest {
-            target,
-            row: fastest(target, false),
-            integrator: fastest(target, true),
+        .map(|&target| {
+            let integrator = fastest(target, true, true);
+            let unconverged = fastest(target, true, false)
+                .filter(|&u| integrator.is_none_or(|i| rows[u].wall_s < rows[i].wall_s));
+            Cheapest {
+                target,
+                row: fastest(target, false, true),
+                integrator,
+                unconverged,
+            }
         })
         .collect()
 }

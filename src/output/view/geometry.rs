@@ -11,6 +11,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde_json::{Value, json};
 
 use crate::body::Principal;
+use crate::effects::Effect;
 use crate::output::sidecar::{Sidecar, sidecar_path};
 use crate::scene::{Overrides, SceneSpec, ShapeSpec};
 
@@ -95,6 +96,7 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
             "description": scene.description,
             "motion": motion,
             "effects": scene.effects.iter().map(|e| e.kind()).collect::<Vec<_>>(),
+            "gravity_s": gravity_s(&scene.effects).map(|g| vec3(&g)),
             "body": body,
             "point_masses": point_masses,
             "mass_center": vec3(&rho_c_b),
@@ -108,9 +110,61 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
     })
 }
 
-/// The body's shape as the page draws it: its kind, dimensions (m) and center (the reference origin, from O);
-/// a body given by its inertia is the box of equal principal moments, turned to its principal axes.
+/// Thin parts of a body are drawn at least this fraction of its longest dimension thick: a thin rod or a thin disk
+/// (no thickness at all) or a flat box would otherwise be a line or a sheet, lost behind the axes and the arrows.
+pub const MIN_DRAWN_THICKNESS: f64 = 0.05;
+
+/// The body's shape as the page draws it: its kind, dimensions (m), center (the reference origin, from O) and
+/// `min_drawn_thickness` (m, [`MIN_DRAWN_THICKNESS`] of its longest dimension), with `drawn_thicker` saying so
+/// (for the legend; not a warning) when a part is drawn thicker than it is.
 fn body_json(spec: &SceneSpec, reference_o: &Vector3<f64>, notes: &mut Vec<String>) -> Value {
+    let mut body = shape_or_inertia_box(spec, reference_o, notes);
+    if let Some((thinnest, longest)) = extent(&body) {
+        let min = MIN_DRAWN_THICKNESS * longest;
+        if thinnest < min {
+            body["drawn_thicker"] = json!(format!(
+                "drawn at least {min:.3} m thick ({:.0} % of its longest dimension, {longest:.3} m) so that it \
+                 shows; its thinnest dimension is {thinnest:.3} m",
+                MIN_DRAWN_THICKNESS * 100.0
+            ));
+        }
+        body["min_drawn_thickness"] = json!(min);
+    }
+    body
+}
+
+/// The thinnest and the longest dimension (m) of a body as [`body_json`] describes it, if its kind is known.
+fn extent(body: &Value) -> Option<(f64, f64)> {
+    let get = |key: &str| body.get(key).and_then(Value::as_f64);
+    let pair = |a: f64, b: f64| Some((a.min(b), a.max(b)));
+    match body.get("kind")?.as_str()? {
+        "thin_rod" => Some((0.0, get("length")?)),
+        "thin_disk" => Some((0.0, 2.0 * get("radius")?)),
+        "disk" => pair(get("thickness")?, 2.0 * get("radius")?),
+        "cylinder" => pair(get("height")?, 2.0 * get("radius")?),
+        "sphere" => pair(2.0 * get("radius")?, 2.0 * get("radius")?),
+        "box" | "inertia_box" => {
+            let edges: Vec<f64> = body
+                .get("size")?
+                .as_array()?
+                .iter()
+                .filter_map(Value::as_f64)
+                .collect();
+            let min = edges.iter().cloned().fold(f64::INFINITY, f64::min);
+            let max = edges.iter().cloned().fold(0.0, f64::max);
+            (edges.len() == 3).then_some((min, max))
+        }
+        _ => None,
+    }
+}
+
+/// The body's shape from the scene file, or, for a body given by its inertia, the box of equal principal moments
+/// turned to its principal axes; centered at the reference origin (from O).
+fn shape_or_inertia_box(
+    spec: &SceneSpec,
+    reference_o: &Vector3<f64>,
+    notes: &mut Vec<String>,
+) -> Value {
     let center = vec3(reference_o);
     if let Some(shape) = &spec.body.shape {
         return shape_json(shape, json!(center));
@@ -156,6 +210,14 @@ pub fn equal_moment_box(m: f64, moments: &Vector3<f64>) -> [f64; 3] {
     let edges = squares.map(|s| s.max(0.0).sqrt());
     let longest = edges.iter().cloned().fold(0.0, f64::max).max(1e-9);
     edges.map(|e| e.max(0.02 * longest))
+}
+
+/// Gravity's g (space axes, m/s²) when the scene has it: the page draws −g up.
+fn gravity_s(effects: &[Effect]) -> Option<Vector3<f64>> {
+    effects.iter().find_map(|e| match e {
+        Effect::Gravity { g_s, .. } if g_s.norm() > 0.0 => Some(*g_s),
+        _ => None,
+    })
 }
 
 /// `[x, y, z]`.
@@ -212,6 +274,28 @@ mod tests {
         let moments = g.json["inertia_p"].as_array().expect("moments");
         assert!((moments[0].as_f64().expect("I1") - i_xx).abs() < 1e-15);
         assert!(g.notes.is_empty());
+        // 2 cm tall, 8 cm across: thicker than 5 % of 8 cm, drawn as it is.
+        assert!(
+            (g.json["body"]["min_drawn_thickness"].as_f64().expect("min") - 0.004).abs() < 1e-15
+        );
+        assert!(g.json["body"].get("drawn_thicker").is_none());
+    }
+
+    #[test]
+    fn a_thin_rod_is_drawn_a_twentieth_of_its_length_thick_and_the_legend_says_so() {
+        let text = "[body]\nmass = 1.0\nshape = { type = \"thin_rod\", length = 1.0 }\n\
+                    [motion]\ntype = \"fixed_axis\"\naxis = [0.0, 0.0, 1.0]\nrate = 1.0\n\
+                    [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        assert_eq!(g.json["body"]["min_drawn_thickness"], 0.05);
+        let said = g.json["body"]["drawn_thicker"]
+            .as_str()
+            .expect("a legend text");
+        assert!(
+            said.contains("at least 0.050 m thick (5 % of its longest dimension, 1.000 m)"),
+            "{said}"
+        );
+        assert!(g.notes.is_empty(), "not a warning: {:?}", g.notes);
     }
 
     #[test]
