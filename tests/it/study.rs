@@ -469,13 +469,8 @@ fn near_a_separatrix_a_run_that_reaches_a_target_by_chance_is_not_named() {
         rtols: (5..=13).map(|k| 10f64.powi(-k)).collect(),
         ..StudyOptions::quick()
     };
-    let s = study::accuracy(
-        Path::new("box.toml"),
-        SEPARATRIX_BOX,
-        &options,
-        |_, _, _| {},
-    )
-    .expect("the study runs");
+    let s = study::accuracy(&parsed("box.toml", SEPARATRIX_BOX), &options, |_, _, _| {})
+        .expect("the study runs");
     let target = 1e-9;
     let k = TARGETS
         .iter()
