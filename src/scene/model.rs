@@ -101,8 +101,8 @@ pub struct Scene {
     /// Largest allowed difference for `eulerdyn compare`.
     pub compare_tolerance: f64,
     /// The scene as simulated: the spec it was built from, with the overrides applied and every default that a
-    /// key leaves out written in (the solver and output values as run, each effect's and motion's defaults). The analyses that vary a scene (accuracy,
-    /// balance, sweeps) start from it, and the run's sidecar records it.
+    /// key leaves out written in (the solver and output values as run, each effect's and motion's defaults). The
+    /// analyses that vary a scene (accuracy, balance, sweeps) start from it, and the run's sidecar records it.
     pub spec: SceneSpec,
     /// The scene file it was read from and that file's text; `None` for a scene built in code.
     pub source: Option<SceneSource>,
