@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use crate::analysis::balance::{Planes, Report, Request, balance_report, check_options};
+use crate::analysis::balance::{Planes, Report, Request, balance_report, check_options, table};
 use crate::output::AtomicFile;
 use crate::scene;
 
@@ -58,8 +58,7 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
     let measured = match &args.measured {
         Some(table) => Some((
             table.clone(),
-            std::fs::read_to_string(table)
-                .map_err(|e| format!("{}: cannot read the table: {e}", table.display()))?,
+            table::read(table).map_err(|e| e.to_string())?,
         )),
         None => None,
     };

@@ -60,6 +60,16 @@ impl Table {
     }
 }
 
+/// The text of the table file `path`: an unreadable file is an error naming it.
+pub fn read(path: &Path) -> Result<String, SceneError> {
+    std::fs::read_to_string(path).map_err(|e| SceneError {
+        file: path.to_path_buf(),
+        key: None,
+        location: None,
+        problem: format!("cannot read the table: {e}"),
+    })
+}
+
 /// Reads the table `text` of the file `path` (named in messages).
 pub fn parse(path: &Path, text: &str) -> Result<Table, SceneError> {
     let error = |problem: String| SceneError {
