@@ -611,97 +611,95 @@ fn the_json_report_carries_every_printed_figure() {
 // ---------------------------------------------------------------------------------------------------------------
 // Bad input
 
-#[test]
-fn bad_tables_and_options_exit_2_naming_the_row_or_flag_and_write_nothing() {
+/// Runs `balance --measured` on the fan with the table `text` and `extra` flags (and `-o`) in a fresh directory:
+/// exit 2, a message containing `expect`, no panic, nothing written.
+fn assert_refused(name: &str, text: &str, extra: &[&str], expect: &str) {
     let dir = tempfile::tempdir().unwrap();
     let scene = write_file(dir.path(), "fan.toml", fan_text());
+    let path = write_file(dir.path(), "t.csv", text);
+    let out = dir.path().join("balanced.toml");
+    let args = [
+        "--measured",
+        path.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let result = fan_balance(&scene, &[&args[..], extra].concat());
+    assert_eq!(result.code, Some(2), "{name}: {}", result.stderr);
+    assert!(result.stderr.contains(expect), "{name}: {}", result.stderr);
+    assert!(!result.panicked(), "{name}");
+    let written = dir_entries(dir.path());
+    assert_eq!(written, ["fan.toml", "t.csv"], "{name}: nothing written");
+}
+
+#[test]
+fn bad_tables_exit_2_naming_the_file_and_row_and_write_nothing() {
     let good = std::fs::read_to_string(repo_path(FAN_TABLE)).unwrap();
     let lines: Vec<&str> = good.lines().collect();
     let table = |rows: &[&str]| format!("{HEADER}\n{}\n", rows.join("\n"));
     let (initial, trial_a, trial_b) = (lines[1], lines[2], lines[3]);
-    let cases: Vec<(&str, String, &[&str], &str)> = vec![
-        ("no initial run", table(&lines[2..]), &[], "no initial run"),
+    let singular = ["2,A,20,0,90,30,60,30", "3,B,20,0,90,30,60,30"];
+    for (name, text, expect) in [
+        (
+            "no initial run",
+            table(&lines[2..]),
+            "t.csv: no initial run",
+        ),
         (
             "no trial in B",
             table(&[initial, trial_a, lines[4]]),
-            &[],
             "none in plane B",
         ),
         (
             "no trial in A",
             table(&[initial, trial_b]),
-            &[],
             "trial runs in plane B (line 3 (run 3))",
         ),
         (
             "a non-numeric cell",
             table(&[initial, "2,A,20,0,abc,15,58.4,15", trial_b]),
-            &[],
             "line 3 (run 2), A_amp `abc`",
         ),
         (
             "an unknown plane",
             table(&[initial, "2,C,20,0,1,15,58.4,15", trial_b]),
-            &[],
             "line 3 (run 2), trial_plane `C`",
         ),
         (
             "a trial without its mass",
             table(&[initial, "2,A,,0,1,15,58.4,15", trial_b]),
-            &[],
             "line 3 (run 2), trial_mass_g",
         ),
         (
             "a singular system",
-            table(&[initial, "2,A,20,0,90,30,60,30", "3,B,20,0,90,30,60,30"]),
-            &[],
+            table(&[&[initial][..], &singular].concat()),
             "singular",
         ),
         (
             "a wrong header",
             good.replacen("A_amp", "A_ampl", 1),
-            &[],
             "the header must be",
         ),
         (
             "a short row",
             table(&[initial, "2,A,20,0", trial_b]),
-            &[],
             "line 3: a row has the header's 8 cells",
         ),
-        ("--grade 0", good.clone(), &["--grade", "0"], "--grade 0"),
-        (
-            "--grade < 0",
-            good.clone(),
-            &["--grade", "-6.3"],
-            "--grade -6.3",
-        ),
-        ("--rpm 0", good.clone(), &["--rpm", "0"], "--rpm 0"),
-        (
-            "--rpm < 0",
-            good.clone(),
-            &["--rpm", "-1500"],
-            "--rpm -1500",
-        ),
-    ];
-    let out = dir.path().join("balanced.toml");
-    for (name, text, extra, expect) in cases {
-        let path = write_file(dir.path(), "t.csv", text);
-        let args = [
-            "--measured",
-            path.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-        ];
-        let result = fan_balance(&scene, &[&args[..], extra].concat());
-        assert_eq!(result.code, Some(2), "{name}: {}", result.stderr);
-        assert!(result.stderr.contains(expect), "{name}: {}", result.stderr);
-        assert!(!result.panicked(), "{name}");
-        assert_eq!(
-            dir_entries(dir.path()),
-            ["fan.toml", "t.csv"],
-            "{name}: nothing written"
-        );
+    ] {
+        assert_refused(name, &text, &[], expect);
+    }
+}
+
+#[test]
+fn a_grade_or_speed_not_above_zero_exits_2_naming_the_flag_and_writes_nothing() {
+    let good = std::fs::read_to_string(repo_path(FAN_TABLE)).unwrap();
+    for (flag, value) in [
+        ("--grade", "0"),
+        ("--grade", "-6.3"),
+        ("--rpm", "0"),
+        ("--rpm", "-1500"),
+    ] {
+        assert_refused(flag, &good, &[flag, value], &format!("{flag} {value}: "));
     }
 }
 
