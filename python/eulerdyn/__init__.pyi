@@ -38,7 +38,15 @@ def compare(scene: SceneLike, *, method: Optional[str] = None) -> Dict[str, Any]
 def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
     """The work-precision study's table (``eulerdyn accuracy``)."""
 
-def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
+def balance(
+    scene: SceneLike,
+    *,
+    planes: Tuple[float, float],
+    radius: float,
+    grade: Optional[float] = None,
+    rpm: Optional[float] = None,
+    measured: Optional[Union[str, "os.PathLike[str]"]] = None,
+) -> Dict[str, Any]:
     """Two-plane balancing (``eulerdyn balance``)."""
 
 def sweep(

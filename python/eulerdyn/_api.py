@@ -237,22 +237,51 @@ def _counts(name: str, cells: "list[str]") -> Any:
     return np.array([int(c) for c in cells], dtype=np.int64)
 
 
-def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
-    """Two-plane balancing of a fixed-axis or hinge scene, as ``eulerdyn balance SCENE --planes A,B --radius R``.
+def balance(
+    scene: SceneLike,
+    *,
+    planes: Tuple[float, float],
+    radius: float,
+    grade: Optional[float] = None,
+    rpm: Optional[float] = None,
+    measured: Optional[Union[str, "os.PathLike[str]"]] = None,
+) -> Dict[str, Any]:
+    """Two-plane balancing of a fixed-axis or hinge scene, as ``eulerdyn balance SCENE --planes A,B --radius R``
+    (with ``--grade``, ``--rpm``, ``--measured`` for the keywords of the same names).
 
     Args:
         scene: the path of a scene file, or a dict of its keys.
         planes: axial positions (A, B) of the correction planes, m from ``motion.point`` along the axis.
         radius: distance of the correction masses from the axis, m.
+        grade: the balance grade G (mm/s, ISO 21940-11) to judge the rotor against.
+        rpm: the speed (r/min) for the grade and the one-shot coefficients, instead of the scene's rate.
+        measured: the path of a table of measured 1x phasors (``run,trial_plane,trial_mass_g,trial_angle_deg,
+            A_amp,A_phase_deg,B_amp,B_phase_deg``): balance by influence coefficients.
 
     Returns:
-        A dict: ``corrections`` (per plane: ``plane``, ``z``, ``mass`` kg, ``angle_deg``, ``at_b`` — the position
-        in body axes, the scene file's ``at``), ``reference_b`` and ``reference_name`` (the direction angles are
-        measured from), ``rate`` (rad/s), ``largest_reaction_before`` and ``largest_reaction_after`` (N),
-        ``scene`` (the balanced scene as a dict, ready for :func:`run`), ``toml`` (it as a scene file) and ``text``
-        (what the command prints).
+        The report of ``eulerdyn balance --json`` as a dict — ``mode`` (``model``, ``measured`` or ``one_shot``),
+        ``planes``, ``corrections`` (per plane: ``plane``, ``z``, ``mass`` kg, ``mass_g``, ``angle_deg``, ``at_b``
+        — the position in body axes, the scene file's ``at``), ``reference_b`` and ``reference_name`` (the
+        direction angles are measured from), ``rate`` (rad/s), ``largest_reaction_before`` and
+        ``largest_reaction_after`` (N), ``unbalance_gmm`` (``before``/``after``, per plane ``amp`` g·mm,
+        ``phase_deg``, ``re``, ``im``), ``grade`` (None without a speed; ``shares``, ``met_before``, ``met_after``,
+        ``target`` with ``u_per_gmm``, ``u_per_planes_gmm``, ``pass_before``, ``pass``) and ``influence`` (None
+        without ``measured``; ``coefficients``, ``condition_number``, ``condition_warning``, ``corrections_g``,
+        ``initial_readings``, ``predicted_residual_readings``) — and ``scene`` (the balanced scene as a dict, ready
+        for :func:`run`), ``toml`` (it as a scene file) and ``text`` (what the command prints).
 
     Raises:
-        SceneError: the scene is not valid or cannot be balanced (a free body, A = B, radius <= 0).
+        SceneError: the scene is not valid or cannot be balanced (a free body, A = B, radius <= 0), the table
+            cannot be used (no initial run, a plane without a trial, a bad cell, a singular system; the message
+            names the line), or grade or rpm <= 0.
     """
-    return dict(_eulerdyn.balance(_scene(scene), planes=tuple(planes), radius=radius))
+    return dict(
+        _eulerdyn.balance(
+            _scene(scene),
+            planes=tuple(planes),
+            radius=radius,
+            grade=grade,
+            rpm=rpm,
+            measured=None if measured is None else os.fspath(measured),
+        )
+    )

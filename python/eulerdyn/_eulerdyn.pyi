@@ -46,7 +46,15 @@ def compare(scene: _Scene, *, method: Optional[str] = None) -> Dict[str, Any]:
 def accuracy(scene: _Scene, *, quick: bool = False) -> Tuple[str, str]:
     """The study's table (CSV text) and summary."""
 
-def balance(scene: _Scene, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
+def balance(
+    scene: _Scene,
+    *,
+    planes: Tuple[float, float],
+    radius: float,
+    grade: Optional[float] = None,
+    rpm: Optional[float] = None,
+    measured: Optional[str] = None,
+) -> Dict[str, Any]:
     """The correction masses and the balanced scene, as a dict."""
 
 def sweep(sweep: _Scene, *, jobs: Optional[int] = None, shard: Optional[str] = None) -> str:

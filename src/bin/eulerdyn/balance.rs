@@ -1,12 +1,13 @@
-//! `eulerdyn balance`: the two correction masses of a fixed-axis or hinge scene, printed, and the balanced scene
-//! written with `-o`.
+//! `eulerdyn balance`: the two correction masses of a fixed-axis or hinge scene (from the model, or from a measured
+//! table), the unbalance per plane and the balance grade, printed (or as JSON), and the balanced scene written
+//! with `-o`.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use eulerdyn::analysis::balance::{Balance, Planes, balance_scene};
+use eulerdyn::analysis::balance::{Planes, Report, Request, balance_report, check_options, table};
 use eulerdyn::output::AtomicFile;
 use eulerdyn::scene;
 
@@ -20,6 +21,19 @@ pub struct BalanceArgs {
     /// Distance of the correction masses from the axis (m).
     #[arg(long, value_name = "R", allow_negative_numbers = true)]
     pub radius: f64,
+    /// Balance grade G (mm/s, ISO 21940-11, e.g. 6.3 for a fan): U_per, its shares, pass/fail.
+    #[arg(long, value_name = "G", allow_negative_numbers = true)]
+    pub grade: Option<f64>,
+    /// The speed (revolutions per minute) for the grade and the one-shot coefficients, instead of the scene's rate.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub rpm: Option<f64>,
+    /// Balance from measured 1× phasors (CSV: run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,
+    /// B_amp,B_phase_deg) by influence coefficients; only an initial row: one-shot, with the model's coefficients.
+    #[arg(long, value_name = "PHASORS.csv")]
+    pub measured: Option<PathBuf>,
+    /// Print the report as JSON (every figure of the text).
+    #[arg(long)]
+    pub json: bool,
     /// Write the scene with both correction masses added (TOML, atomically).
     #[arg(short = 'o', long = "output", value_name = "BALANCED.toml")]
     pub output: Option<PathBuf>,
@@ -40,23 +54,45 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
             args.planes
         ));
     };
-    let planes = Planes {
-        a,
-        b,
-        radius: args.radius,
+    check_options(args.grade, args.rpm).map_err(|e| e.to_string())?;
+    let measured = match &args.measured {
+        Some(table) => Some((
+            table.clone(),
+            table::read(table).map_err(|e| e.to_string())?,
+        )),
+        None => None,
     };
-    let result = balance_scene(path, &text, &planes).map_err(|e| e.to_string())?;
-    let mut report = result.report();
+    let request = Request {
+        planes: Planes {
+            a,
+            b,
+            radius: args.radius,
+        },
+        grade: args.grade,
+        rpm: args.rpm,
+        measured,
+    };
+    let result = balance_report(path, &text, &request).map_err(|e| e.to_string())?;
+    let mut wrote = None;
     if let Some(out) = &args.output {
         write_scene(out, &result).map_err(|e| format!("{}: {e}", out.display()))?;
-        report += &format!("wrote the balanced scene to {}\n", out.display());
+        wrote = Some(out.display().to_string());
+    }
+    if args.json {
+        let mut json = result.json();
+        json["wrote"] = wrote.into();
+        return Ok(format!("{json:#}\n"));
+    }
+    let mut report = result.text();
+    if let Some(out) = wrote {
+        report += &format!("wrote the balanced scene to {out}\n");
     }
     Ok(report)
 }
 
 /// The balanced scene as TOML, written atomically.
-fn write_scene(out: &Path, result: &Balance) -> Result<(), String> {
-    let text = result.balanced_toml()?;
+fn write_scene(out: &Path, result: &Report) -> Result<(), String> {
+    let text = result.balance.balanced_toml()?;
     let mut file = AtomicFile::create(out).map_err(|e| format!("cannot create the file: {e}"))?;
     file.file()
         .write_all(text.as_bytes())

@@ -79,9 +79,10 @@ pub enum Command {
     )]
     Accuracy(AccuracyArgs),
     /// Two-plane balancing of a fixed-axis or hinge scene: the correction masses that remove the static and the
-    /// dynamic imbalance, so that the rotating bearing reactions vanish at every rate.
+    /// dynamic imbalance, so that the rotating bearing reactions vanish at every rate; from the scene's mass
+    /// distribution or from measured 1x phasors, with the ISO 21940-11 balance grade before and after.
     #[command(
-        after_help = "Example:\n  eulerdyn balance scenarios/rotor_bearings.toml --planes -0.1,0.1 --radius 0.2 -o balanced.toml"
+        after_help = "Examples:\n  eulerdyn balance scenarios/rotor_bearings.toml --planes -0.1,0.1 --radius 0.2 -o balanced.toml\n  eulerdyn balance scenarios/fan_rotor_g63.toml --planes -0.1,0.08 --radius 0.25 --grade 6.3 \\\n      --measured scenarios/fan_rotor_measured.csv      from measured phasors, to grade G 6.3\n\nPhasors: amp*cos(theta + phase), theta turned since the reference mark passed the sensor; trial angles\nfrom the mark in the direction of rotation (or both the other way: the corrections follow the trials' convention)."
     )]
     Balance(BalanceArgs),
     /// Sweeps and Monte Carlo: many runs of a base scene with numeric keys set from grids or random draws, run in

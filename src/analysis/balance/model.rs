@@ -139,71 +139,145 @@ impl Balance {
 /// assert!(result.largest_reaction[1] < 1e-9 * result.largest_reaction[0]);
 /// ```
 pub fn balance(spec: &SceneSpec, planes: &Planes) -> Result<Balance, BalanceError> {
-    let refuse = |why: &str| Err(BalanceError::Unbalanceable(why.to_string()));
-    if !(planes.a.is_finite() && planes.b.is_finite()) || planes.a == planes.b {
-        return refuse("the planes must be two different finite positions along the axis (A != B)");
-    }
-    if !(planes.radius.is_finite() && planes.radius > 0.0) {
-        return refuse("the radius must be a finite number > 0 (m)");
-    }
-    let scene = spec.build()?;
-    let Some(axis) = axis_of(&scene.motion) else {
-        return refuse(
-            "balancing needs an axis: the scene's motion must be a fixed_axis or a hinge (a free body has no bearings)",
-        );
-    };
-    let u_b = axis.axis_b().into_inner();
-    let (s, d) = axis.imbalance();
-    let v_b = (d + s * planes.a) / (planes.b - planes.a);
-    let v_a = -s - v_b;
-    let (reference_b, reference_name) = reference_direction(&u_b);
-    // Tiny vectors are round-off of a balanced rotor: no mass.
-    let negligible = 1e-14 * (s.norm() + d.norm() / planes.a.abs().max(planes.b.abs()));
-    let origin_b = axis.point_b() + scene.center_b;
-    let correction = |z: f64, v: Vector3<f64>| {
-        let (mass, r_b) = if v.norm() <= negligible {
-            (0.0, Vector3::zeros())
-        } else {
-            (v.norm() / planes.radius, v.normalize() * planes.radius)
+    let rotor = Rotor::new(spec, planes)?;
+    let [v_a, v_b] = rotor.plane_vectors();
+    let corrections = [
+        rotor.correction(planes.a, v_a),
+        rotor.correction(planes.b, v_b),
+    ];
+    rotor.apply(spec, corrections)
+}
+
+/// A fixed-axis or hinge scene with its correction planes: where the masses go and how their angles are measured.
+#[derive(Debug, Clone)]
+pub(crate) struct Rotor {
+    /// The scene's axis (its motion, at the scene's rate).
+    pub axis: FixedAxis,
+    /// The correction planes and radius, checked.
+    pub planes: Planes,
+    /// The unit axis, body axes.
+    pub u_b: Vector3<f64>,
+    /// The body direction angles are measured from, across the axis, and its name.
+    pub reference_b: Vector3<f64>,
+    pub reference_name: &'static str,
+    /// The axis point from the reference origin, body axes: the origin of the planes' positions.
+    pub origin_b: Vector3<f64>,
+}
+
+impl Rotor {
+    /// Checks the planes (A ≠ B, finite; R > 0) and that the scene turns about an axis.
+    pub fn new(spec: &SceneSpec, planes: &Planes) -> Result<Self, BalanceError> {
+        let refuse = |why: &str| Err(BalanceError::Unbalanceable(why.to_string()));
+        if !(planes.a.is_finite() && planes.b.is_finite()) || planes.a == planes.b {
+            return refuse(
+                "the planes must be two different finite positions along the axis (A != B)",
+            );
+        }
+        if !(planes.radius.is_finite() && planes.radius > 0.0) {
+            return refuse("the radius must be a finite number > 0 (m)");
+        }
+        let scene = spec.build()?;
+        let Some(axis) = axis_of(&scene.motion) else {
+            return refuse(
+                "balancing needs an axis: the scene's motion must be a fixed_axis or a hinge (a free body has no bearings)",
+            );
         };
-        let angle = u_b
-            .dot(&reference_b.cross(&r_b))
-            .atan2(reference_b.dot(&r_b));
+        let u_b = axis.axis_b().into_inner();
+        let (reference_b, reference_name) = reference_direction(&u_b);
+        Ok(Self {
+            axis: axis.clone(),
+            planes: *planes,
+            u_b,
+            reference_b,
+            reference_name,
+            origin_b: axis.point_b() + scene.center_b,
+        })
+    }
+
+    /// The vectors v_A, v_B = m_i r_i (kg·m, body axes) of the two masses that cancel the static imbalance s
+    /// and the dynamic imbalance d: v_B = (d + z_A s)/(z_B − z_A), v_A = −s − v_B (module doc).
+    pub fn plane_vectors(&self) -> [Vector3<f64>; 2] {
+        let (s, d) = self.axis.imbalance();
+        let Planes { a, b, .. } = self.planes;
+        let v_b = (d + s * a) / (b - a);
+        let v_a = -s - v_b;
+        // Tiny vectors are round-off of a balanced rotor.
+        let negligible = 1e-14 * (s.norm() + d.norm() / a.abs().max(b.abs()));
+        [v_a, v_b].map(|v| {
+            if v.norm() <= negligible {
+                Vector3::zeros()
+            } else {
+                v
+            }
+        })
+    }
+
+    /// The correction m r = `v` (kg·m) in the plane at `z`: mass |v|/R at R along v (0 for a zero `v`).
+    pub fn correction(&self, z: f64, v: Vector3<f64>) -> Correction {
+        let radius = self.planes.radius;
+        if v.norm() == 0.0 {
+            return self.correction_at(z, 0.0, 0.0);
+        }
+        let r_b = v.normalize() * radius;
+        self.correction_at(z, v.norm() / radius, self.angle_of(&r_b))
+    }
+
+    /// A mass `mass` (kg) in the plane at `z`, at the radius R and `angle` (rad) about the axis from the
+    /// reference direction.
+    pub fn correction_at(&self, z: f64, mass: f64, angle: f64) -> Correction {
+        let across =
+            self.reference_b * angle.cos() + self.u_b.cross(&self.reference_b) * angle.sin();
         Correction {
             z,
             mass,
             angle_deg: angle.to_degrees(),
-            at_b: origin_b + u_b * z + r_b,
+            at_b: self.origin_b + self.u_b * z + across * self.planes.radius,
         }
-    };
-    let corrections = [correction(planes.a, v_a), correction(planes.b, v_b)];
-    let mut balanced = spec.clone();
-    for c in corrections.iter().filter(|c| c.mass > 0.0) {
-        balanced.body.point_mass.push(PointMassSpec {
-            mass: c.mass,
-            at: Some(c.at_b.into()),
-        });
     }
-    let bearings = axis.bearings().copied().unwrap_or(Bearings {
-        a: planes.a,
-        b: planes.b,
-    });
-    let rate = if axis.rate() == 0.0 { 1.0 } else { axis.rate() };
-    let after = balanced.build()?;
-    let Some(after_axis) = axis_of(&after.motion) else {
-        return refuse("the balanced scene lost its axis");
-    };
-    Ok(Balance {
-        corrections,
-        reference_b,
-        reference_name,
-        rate,
-        largest_reaction: [
-            rotating_reaction(axis, &bearings, rate),
-            rotating_reaction(after_axis, &bearings, rate),
-        ],
-        balanced,
-    })
+
+    /// The angle (rad) of a vector `r_b` across the axis, right-handed about it from the reference direction.
+    pub fn angle_of(&self, r_b: &Vector3<f64>) -> f64 {
+        self.u_b
+            .dot(&self.reference_b.cross(r_b))
+            .atan2(self.reference_b.dot(r_b))
+    }
+
+    /// `spec` with the `corrections` added as point masses (those with a mass), and the largest rotating bearing
+    /// reaction before and after.
+    pub fn apply(
+        &self,
+        spec: &SceneSpec,
+        corrections: [Correction; 2],
+    ) -> Result<Balance, BalanceError> {
+        let mut balanced = spec.clone();
+        for c in corrections.iter().filter(|c| c.mass > 0.0) {
+            balanced.body.point_mass.push(PointMassSpec {
+                mass: c.mass,
+                at: Some(c.at_b.into()),
+            });
+        }
+        let bearings = self.axis.bearings().copied().unwrap_or(Bearings {
+            a: self.planes.a,
+            b: self.planes.b,
+        });
+        let rate = if self.axis.rate() == 0.0 {
+            1.0
+        } else {
+            self.axis.rate()
+        };
+        let after = Rotor::new(&balanced, &self.planes)?;
+        Ok(Balance {
+            corrections,
+            reference_b: self.reference_b,
+            reference_name: self.reference_name,
+            rate,
+            largest_reaction: [
+                rotating_reaction(&self.axis, &bearings, rate),
+                rotating_reaction(&after.axis, &bearings, rate),
+            ],
+            balanced,
+        })
+    }
 }
 
 /// The axis of a fixed-axis or hinge motion.
