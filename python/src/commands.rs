@@ -55,7 +55,7 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
         d.set_item("motion", motion_kind(&s))?;
         let solver = &s.solver;
         d.set_item("method", solver.method.name())?;
-        d.set_item("frame", solver.frame.name())?;
+        d.set_item("frame", solver.form.name())?;
         d.set_item("backend", solver.backend.name())?;
         d.set_item("rtol", solver.rtol)?;
         d.set_item("atol", solver.atol)?;

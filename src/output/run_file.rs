@@ -73,7 +73,9 @@ pub fn write_run_with(
     };
     if csv_file.writes_through() {
         // A device or a FIFO: no sidecar beside it (`/dev/null.meta.json`).
-        csv_file.commit().map_err(|e| save(path, "cannot write", e))?;
+        csv_file
+            .commit()
+            .map_err(|e| save(path, "cannot write", e))?;
         return Ok(report);
     }
     let meta_path = sidecar_path(path);

@@ -379,7 +379,7 @@ fn an_output_path_that_is_a_directory_is_refused() {
 fn a_full_device_is_a_failed_run_not_a_panic() {
     // A full device made in a temporary directory (never the system's /dev/full through -o); needs root.
     let dir = tempfile::tempdir().unwrap();
-    let Some(full) = common::device_node(dir.path(), "full", "7") else {
+    let Some(full) = crate::common::device_node(dir.path(), "full", "7") else {
         eprintln!("skipped: mknod is not permitted here (not root)");
         return;
     };

@@ -419,11 +419,22 @@ fn run_and_sweep_warn_of_unit_slips_where_the_run_is_and_the_sidecar_lists_them(
 fn rate_rpm_is_the_rate_in_revolutions_per_minute_and_both_is_an_error() {
     let dir = tempfile::tempdir().unwrap();
     let disk = std::fs::read_to_string(scenario("tilted_disk")).unwrap();
-    assert!(disk.contains("rate = 10.0"), "the scenario spins at 10 rad/s");
+    assert!(
+        disk.contains("rate = 10.0"),
+        "the scenario spins at 10 rad/s"
+    );
     // 3000 rpm = 3000 · 2π/60 rad/s = 100π rad/s.
     let rad_s = 3000.0 * std::f64::consts::TAU / 60.0;
-    let by_rad_s = write_file(dir.path(), "rad_s.toml", &disk.replace("rate = 10.0", &format!("rate = {rad_s:?}")));
-    let by_rpm = write_file(dir.path(), "rpm.toml", &disk.replace("rate = 10.0", "rate_rpm = 3000.0"));
+    let by_rad_s = write_file(
+        dir.path(),
+        "rad_s.toml",
+        disk.replace("rate = 10.0", &format!("rate = {rad_s:?}")),
+    );
+    let by_rpm = write_file(
+        dir.path(),
+        "rpm.toml",
+        disk.replace("rate = 10.0", "rate_rpm = 3000.0"),
+    );
     let a = eulerdyn(["run", text(&by_rad_s)]);
     let b = eulerdyn(["run", text(&by_rpm)]);
     a.expect_code(0);
@@ -432,7 +443,7 @@ fn rate_rpm_is_the_rate_in_revolutions_per_minute_and_both_is_an_error() {
     let both = write_file(
         dir.path(),
         "both.toml",
-        &disk.replace("rate = 10.0", "rate = 10.0\nrate_rpm = 3000.0"),
+        disk.replace("rate = 10.0", "rate = 10.0\nrate_rpm = 3000.0"),
     );
     let out = eulerdyn(["check", text(&both)]);
     out.expect_code(2);

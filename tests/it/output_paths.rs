@@ -16,7 +16,9 @@ use std::os::unix::fs::FileTypeExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use crate::common::{FREE_SCENE, Outcome, device_node, dir_entries, eulerdyn, repo_path, write_file};
+use crate::common::{
+    FREE_SCENE, Outcome, device_node, dir_entries, eulerdyn, repo_path, write_file,
+};
 
 /// A path as command-line text (temporary paths are UTF-8).
 fn text(path: &Path) -> &str {
