@@ -1,8 +1,9 @@
 //! Free rotation: Euler's equation integrated in body axes, state (ω_b, q), or in space axes, state (H_s, q),
 //! about the moment center (C, or the fixed pivot of a gravity effect).
 //!
-//! The applied moment is a type parameter: a torque-free run uses [`TorqueFree`](crate::effects::TorqueFree), whose zero moment the compiler
-//! removes, so an absent effect costs nothing per step; otherwise [`EffectMoments`](crate::effects::EffectMoments) sums the scene's effects.
+//! The applied moment is a type parameter ([`AppliedMoment`]): a torque-free run uses
+//! [`TorqueFree`](crate::effects::TorqueFree), whose zero moment the compiler removes, so an absent effect costs
+//! nothing per step; otherwise [`EffectMoments`](crate::effects::EffectMoments) sums the scene's effects.
 
 use nalgebra::{Matrix3, Quaternion, Rotation3, SVector, UnitQuaternion, Vector3};
 
