@@ -238,7 +238,8 @@ pub fn balance<'py>(
             rpm,
             measured,
         };
-        let report = balance_report(&input.path, &input.text, &request).map_err(|e| match e {
+        let scene = input.scene(py, &Overrides::default())?;
+        let report = balance_report(&scene, &request).map_err(|e| match e {
             RequestError::Option(message) => crate::errors::SceneError::new_err(message),
             RequestError::Scene(e) => input.error(py, e),
             RequestError::Table(e) => scene_error(py, e, false),

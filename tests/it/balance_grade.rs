@@ -46,7 +46,8 @@ fn report(
         rpm: None,
         measured: table.map(|t| (Path::new("table.csv").to_path_buf(), t.to_string())),
     };
-    balance_report(Path::new(path), text, &request).unwrap()
+    let scene = eulerdyn::scene::parse(Path::new(path), text, &Default::default()).unwrap();
+    balance_report(&scene, &request).unwrap()
 }
 
 /// `eulerdyn balance SCENE --planes -0.1,0.08 --radius 0.25` (the fan's planes) with `extra` arguments.
@@ -152,7 +153,10 @@ fn the_skewed_disk_couple_unbalance_splits_into_two_equal_opposite_plane_unbalan
         rpm: None,
         measured: None,
     };
-    let result = balance_report(Path::new("rotor_bearings.toml"), &text, &request).unwrap();
+    let scene =
+        eulerdyn::scene::parse(Path::new("rotor_bearings.toml"), &text, &Default::default())
+            .unwrap();
+    let result = balance_report(&scene, &request).unwrap();
     let theta = 30f64.to_radians();
     let couple_gmm = 0.25 * 2.0 * 0.09 * theta.sin() * theta.cos() / (b - a) * 1e6;
     let [u_a, u_b] = result.unbalance[0];

@@ -15,7 +15,7 @@ use nalgebra::{Complex, Matrix2, Vector2, Vector3};
 
 pub use model::{Balance, BalanceError, Correction, Planes, balance, balance_scene};
 
-use crate::scene::{self, Overrides, SceneError, SceneSpec};
+use crate::scene::{Scene, SceneError, SceneSpec};
 use influence::Phasor;
 use iso::Assessment;
 use model::Rotor;
@@ -120,13 +120,18 @@ pub fn check_options(grade: Option<f64>, rpm: Option<f64>) -> Result<(), Request
     Ok(())
 }
 
-/// Balances the scene file `path` (text `text`) as `request` asks (`eulerdyn balance`): the model's corrections,
-/// or with a measured table those of its influence coefficients; the unbalance per plane before and after; the
-/// balance grade at the speed (`--rpm` or the scene's rate) when it is known.
-pub fn balance_report(path: &Path, text: &str, request: &Request) -> Result<Report, RequestError> {
+/// Balances `scene` as `request` asks (`eulerdyn balance`): the model's corrections, or with a measured table
+/// those of its influence coefficients; the unbalance per plane before and after; the balance grade at the speed
+/// (`--rpm` or the scene's rate) when it is known. The balanced scene is the scene as simulated
+/// ([`Scene::spec`], defaults written in) with the two correction masses added.
+pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, RequestError> {
     check_options(request.grade, request.rpm)?;
-    scene::parse(path, text, &Overrides::default()).map_err(RequestError::Scene)?;
-    let spec = scene::parse_spec(path, text).map_err(RequestError::Scene)?;
+    let path_buf = scene
+        .source
+        .as_ref()
+        .map_or_else(|| PathBuf::from("<scene>"), |s| s.path.clone());
+    let path = path_buf.as_path();
+    let spec = scene.spec.clone();
     let refuse = |problem: String| SceneError {
         file: path.to_path_buf(),
         key: None,

@@ -9,7 +9,7 @@ use clap::Args;
 
 use eulerdyn::analysis::balance::{Planes, Report, Request, balance_report, check_options, table};
 use eulerdyn::output::AtomicFile;
-use eulerdyn::scene;
+use eulerdyn::scene::{self, Overrides};
 
 #[derive(Debug, Args)]
 pub struct BalanceArgs {
@@ -72,7 +72,8 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
         rpm: args.rpm,
         measured,
     };
-    let result = balance_report(path, &text, &request).map_err(|e| e.to_string())?;
+    let scene = scene::parse(path, &text, &Overrides::default()).map_err(|e| e.to_string())?;
+    let result = balance_report(&scene, &request).map_err(|e| e.to_string())?;
     let mut wrote = None;
     if let Some(out) = &args.output {
         write_scene(out, &result).map_err(|e| format!("{}: {e}", out.display()))?;
