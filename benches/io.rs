@@ -8,8 +8,9 @@
 //!   into a file (flushed, not synced); median of 5.
 //! - Peak memory: VmHWM (the kernel's high-water mark of resident memory) of (a) this bench re-run as a child that
 //!   integrates 10^7 RK4 steps through the library, streaming 10^4 rows as CSV into /dev/null, read from
-//!   /proc/self/status at its end; (b) the release binary `eulerdyn run` on the same scene with `-o /dev/null`,
-//!   read from /proc/PID/status every 2 ms while it runs (the last reading before it exits).
+//!   /proc/self/status at its end; (b) the release binary `eulerdyn run` on the same scene with the CSV to stdout,
+//!   redirected to /dev/null (never `-o` at a system device), read from /proc/PID/status every 2 ms while it runs
+//!   (the last reading before it exits).
 //! - Process: the release binary spawned 50 times on scenarios/asymmetric_free.toml, median wall time from spawn to
 //!   exit, with the CSV to stdout (redirected to /dev/null) and with `-o FILE` (atomic write: temporary file,
 //!   fsync, rename, and the FILE.meta.json sidecar).
@@ -137,13 +138,12 @@ fn csv_writing(tmp: &Path) {
     );
 }
 
-/// Runs `eulerdyn run SCENE -o /dev/null` and polls its VmHWM; returns (last reading in MB, wall time).
+/// Runs `eulerdyn run SCENE > /dev/null` and polls its VmHWM; returns (last reading in MB, wall time).
 fn polled_peak(bin: &Path, scene: &Path) -> Option<(f64, f64)> {
     let start = Instant::now();
     let mut child = Command::new(bin)
         .args(["run"])
         .arg(scene)
-        .args(["-o", "/dev/null"])
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
@@ -197,7 +197,7 @@ fn peak_memory(bin: &Path, tmp: &Path) {
     }
     match polled_peak(bin, &scene) {
         Some((mb, wall)) => println!(
-            "  binary (eulerdyn run SCENE -o /dev/null): {mb:.2} MB (last reading before exit), {wall:.2} s   (target <= 16: {})",
+            "  binary (eulerdyn run SCENE > /dev/null): {mb:.2} MB (last reading before exit), {wall:.2} s   (target <= 16: {})",
             if mb <= 16.0 { "ok" } else { "MISSED" }
         ),
         None => println!("  binary: cannot run {}", bin.display()),

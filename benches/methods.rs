@@ -848,7 +848,10 @@ fn fastest_to_1e10(scene_file: &str) {
         max_fixed_steps: 2e7,
         slow_curve_seconds: 0.5,
     };
-    let study = match study::accuracy(&path, &text, &options, |_, _, _| {}) {
+    let study = match scene::parse(&path, &text, &Overrides::default())
+        .map_err(study::StudyError::from)
+        .and_then(|scene| study::accuracy(&scene, &options, |_, _, _| {}))
+    {
         Ok(s) => s,
         Err(e) => {
             println!("  {}: {e}", path.display());

@@ -1,6 +1,8 @@
-//! Two words that the first round spelled alike: the axes a vector is expressed in, and the form of Euler's
+//! Two words for two things that are easily spelled alike: the axes a vector is expressed in, and the form of Euler's
 //! equation that is integrated. A vector `v_b` is in [`Axes::Body`], `v_s` in [`Axes::Space`]; the attitude
 //! `r_sb` (the quaternion q) maps body to space, `v_s = r_sb · v_b`.
+
+use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::named::{Named, serde_by_name};
 
@@ -72,3 +74,53 @@ impl Named for Form {
 }
 
 serde_by_name!(Form);
+
+/// The rotation R of the attitude held in a state, q = (w, x, y, z) of norm near but not exactly 1, without
+/// normalising q first: R(q/|q|) = A(q) / |q|², with A(q) the quadratic form
+///
+/// A = [w²+x²−y²−z², 2(xy−wz), 2(xz+wy); 2(xy+wz), w²−x²+y²−z², 2(yz−wx); 2(xz−wy), 2(yz+wx), w²−x²−y²+z²].
+///
+/// The square root and divisions of a normalisation would sit on the path from one stage to the next; here the
+/// one division, 1/|q|², is computed alongside the products.
+#[derive(Debug, Clone, Copy)]
+pub struct StateRotation {
+    a: Matrix3<f64>,
+    inv_norm2: f64,
+}
+
+impl StateRotation {
+    /// The rotation of a state's quaternion part q_state = (w, x, y, z).
+    #[inline(always)]
+    pub fn of(q_state: &Quaternion<f64>) -> Self {
+        let (w, x, y, z) = (q_state.w, q_state.i, q_state.j, q_state.k);
+        let (ww, xx, yy, zz) = (w * w, x * x, y * y, z * z);
+        let (xy, xz, yz) = (x * y, x * z, y * z);
+        let (wx, wy, wz) = (w * x, w * y, w * z);
+        Self {
+            a: Matrix3::new(
+                ww + xx - yy - zz,
+                2.0 * (xy - wz),
+                2.0 * (xz + wy),
+                2.0 * (xy + wz),
+                ww - xx + yy - zz,
+                2.0 * (yz - wx),
+                2.0 * (xz - wy),
+                2.0 * (yz + wx),
+                ww - xx - yy + zz,
+            ),
+            inv_norm2: 1.0 / ((ww + xx) + (yy + zz)),
+        }
+    }
+
+    /// v_b = Rᵀ v_s.
+    #[inline(always)]
+    pub fn to_body(&self, v_s: &Vector3<f64>) -> Vector3<f64> {
+        self.a.tr_mul(v_s) * self.inv_norm2
+    }
+
+    /// v_s = R v_b.
+    #[inline(always)]
+    pub fn to_space(&self, v_b: &Vector3<f64>) -> Vector3<f64> {
+        (self.a * v_b) * self.inv_norm2
+    }
+}

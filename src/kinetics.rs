@@ -8,11 +8,6 @@ pub fn momentum(mass: f64, v_c: &Vector3<f64>) -> Vector3<f64> {
     v_c * mass
 }
 
-/// Central moment of momentum H_C = I_C · ω (Theorem 24, eq. 8.2).
-pub fn moment_of_momentum_c(inertia_c: &Matrix3<f64>, omega: &Vector3<f64>) -> Vector3<f64> {
-    inertia_c * omega
-}
-
 /// Moment of momentum about a body point A: H_A = m ρ_C × v_A + I_A · ω (Theorem 25, eq. 8.4), with ρ_C the
 /// position of C relative to A and I_A the inertia about A. When A is fixed (v_A = 0), A = C, or ρ_C ∥ v_A it
 /// reduces to H_A = I_A · ω (eq. 8.6).

@@ -38,12 +38,11 @@
 //!
 //! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`body`], [`kinetics`],
 //! [`effects`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions ([`motion`]) → the
-//! validated [`scene`] → [`simulate`] → [`analysis`] and [`output`] → the command line (not public API).
+//! validated [`scene`] → [`simulate`] → [`analysis`] and [`output`]. The command line is a binary over the
+//! library (feature `cli`, on by default); `default-features = false` leaves out clap, indicatif and ctrlc.
 //! ARCHITECTURE.md draws them and says where a new motion, effect, method or command goes.
 
 pub mod analysis;
-#[doc(hidden)]
-pub mod app;
 pub mod body;
 pub mod effects;
 pub mod exact;
@@ -63,3 +62,7 @@ pub use frames::{Axes, Form};
 pub use method::{Backend, Method};
 pub use sample::Sample;
 pub use scene::{BodySpec, EffectSpec, MotionSpec, Scene, SceneSpec, ShapeSpec};
+
+/// The crate's version (`Cargo.toml`), as the sidecar's `eulerdyn_version` and Python's `eulerdyn.__version__`
+/// give it.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

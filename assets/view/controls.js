@@ -32,7 +32,13 @@ window.eulerdynControls = function (api, data) {
     legend.push(`<li><span class="swatch" style="background:${v.color}"></span>${v.label}, ${unitOf(name)}` +
       ` — arrow scaled so the longest (${fmt(longest)}) fits</li>`);
   }
+  legend.push('<li><span class="swatch origin"></span>ω, H and M are drawn from the grey ball beside the body, not from' +
+    ' O, so that they do not hide it (free vectors; M is the moment about O)</li>');
   if (api.vectors.includes('H_s')) legend.push('<li><span class="swatch trail"></span>trail of H\'s tip in space</li>');
+  if (api.geometry.body && api.geometry.body.drawn_thicker) {
+    const said = api.geometry.body.drawn_thicker.replace(/&/g, '&amp;').replace(/</g, '&lt;');
+    legend.push(`<li><span class="swatch body"></span>the body: ${said}</li>`);
+  }
   legend.push('</ul>');
   $('legend').innerHTML = legend.join('');
 
@@ -43,8 +49,27 @@ window.eulerdynControls = function (api, data) {
   const slider = $('time');
   const span = api.t_end - api.t_start;
   const toSlider = (t) => (span > 0 ? Math.round(((t - api.t_start) / span) * Number(slider.max)) : 0);
-  slider.addEventListener('input', () => api.setTime(api.t_start + (span * Number(slider.value)) / Number(slider.max)));
-  $('play').addEventListener('click', () => (api.clock.playing ? api.pause() : api.play()));
+  // The URL's fragment follows the time shown when the user scrubs or pauses (#t=…), so that the address opens the
+  // page at that time; written 0.2 s after the last change (browsers throttle frequent history updates).
+  let fragmentTimer = null;
+  function keepFragment() {
+    clearTimeout(fragmentTimer);
+    fragmentTimer = setTimeout(() => {
+      const t = Number(api.clock.t.toPrecision(7));
+      if (api.fragmentTime() !== t) history.replaceState(null, '', '#t=' + t);
+    }, 200);
+  }
+  slider.addEventListener('input', () => {
+    api.setTime(api.t_start + (span * Number(slider.value)) / Number(slider.max));
+    keepFragment();
+  });
+  $('play').addEventListener('click', () => {
+    if (api.clock.playing) { api.pause(); keepFragment(); } else api.play();
+  });
+  speedChoices($('speed'), api.default_speed);
+  $('speed-rule').textContent = api.typical_rate > 0
+    ? `${api.default_speed}× ≈ 1 turn/s (median |ω| ${fmt(api.typical_rate)} ${unitOf('omega_s')})`
+    : 'the body does not turn: default 1× (real time)';
   $('speed').addEventListener('change', (e) => { api.clock.speed = Number(e.target.value); });
   document.addEventListener('keydown', (e) => {
     if (e.key === ' ' && e.target.tagName !== 'SELECT') { e.preventDefault(); $('play').click(); }
@@ -64,6 +89,24 @@ window.eulerdynControls = function (api, data) {
     const q = state.q.map(fmt).join(', ');
     lines.push(`</table><div class="q">q = (${q})</div>`);
     return lines.join('');
+  }
+
+  /** The speed menu: 1, 2 and 5 × 10^k from 1/1000 of the default (and 0.01×) up to 1000 × it (and 100×), real
+   * time marked, the default selected. */
+  function speedChoices(select, chosen) {
+    const low = Math.min(0.01, chosen / 1000);
+    const high = Math.max(100, chosen * 1000);
+    const values = [];
+    for (let e = Math.floor(Math.log10(low)); e <= Math.ceil(Math.log10(high)); e++) {
+      for (const m of [1, 2, 5]) {
+        const v = Number((m * Math.pow(10, e)).toPrecision(1));
+        if (v >= low * 0.999 && v <= high * 1.001) values.push(v);
+      }
+    }
+    select.innerHTML = values.map((v) => {
+      const label = v + '×' + (v === 1 ? ' (real time)' : '') + (v === chosen ? ' (default)' : '');
+      return `<option value="${v}"${v === chosen ? ' selected' : ''}>${label}</option>`;
+    }).join('');
   }
 
   api.onTime((state, t) => {

@@ -1,6 +1,7 @@
 // eulerdyn view: the 3D scene. Space axes are three.js world axes with z up; the moment center O is the origin.
 // The body group turns by the run's attitude q (body -> space) and holds the body's shape, point masses and body
-// axes, all placed in body axes from O. Vectors are drawn in space axes from O (bearing forces from the bearings).
+// axes, all placed in body axes from O. Vectors are drawn in space axes: ω, H and M from a point beside the body
+// (vectorAnchor), the bearing forces from the bearings.
 'use strict';
 
 window.eulerdynScene = function (THREE, OrbitControls, api) {
@@ -23,27 +24,33 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
   scene.add(body);
   const shape = makeShape(THREE, geometry);
   body.add(shape);
+  // What show(part, visible) hides and shows.
+  const parts = { body: [shape], axes: [], vectors: [] };
   const bodyRadius = Math.max(1e-6, new THREE.Box3().setFromObject(shape).getBoundingSphere(new THREE.Sphere()).radius +
     v3(geometry.body.center || [0, 0, 0]).length());
+  const samples = bodySamples(THREE, shape);
   for (const p of geometry.point_masses || []) {
     const ball = new THREE.Mesh(new THREE.SphereGeometry(0.07 * bodyRadius, 20, 12),
       new THREE.MeshStandardMaterial({ color: 0x333844, roughness: 0.4 }));
     ball.position.copy(v3(p.at));
     body.add(ball);
+    parts.body.push(ball);
+    samples.push(v3(p.at));
   }
   const bodyBox = new THREE.Box3().setFromObject(body);
   const size = Math.max(bodyBox.getBoundingSphere(new THREE.Sphere()).radius + bodyBox.getCenter(new THREE.Vector3()).length(), 1e-6);
 
   // Body axes at C, turning with the body; space axes at O.
   const c = v3(geometry.mass_center || [0, 0, 0]);
-  body.add(axesLines(THREE, 1.3 * size, c, 0.7, ['x_b', 'y_b', 'z_b']));
-  scene.add(axesLines(THREE, 2.1 * size, new THREE.Vector3(), 1.0, ['x_s', 'y_s', 'z_s']));
+  parts.axes.push(axesLines(THREE, 1.3 * size, c, 0.7, ['x_b', 'y_b', 'z_b']));
+  parts.axes.push(axesLines(THREE, 2.1 * size, new THREE.Vector3(), 1.0, ['x_s', 'y_s', 'z_s']));
+  body.add(parts.axes[0]);
+  scene.add(parts.axes[1]);
 
   const q0 = quat(api.rows[0].q);
   const bearings = addAxisAndBearings(THREE, scene, geometry, q0, size);
 
-  // One arrow per vector; each kind scaled so that its longest value over the run is 1.8 body sizes long.
-  const arrows = {};
+  // Each kind of vector scaled so that its longest value over the run is 1.3 body sizes long.
   const longest = {};
   for (const name of api.vectors) {
     const look = window.eulerdynVectors[name];
@@ -51,27 +58,49 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     let max = 0;
     for (const row of api.rows) max = Math.max(max, Math.hypot(...row[name]));
     longest[look.kind] = Math.max(longest[look.kind] || 0, max);
+  }
+  const scaleOf = (name) => {
+    const max = longest[window.eulerdynVectors[name].kind];
+    return max > 0 ? (1.3 * size) / max : 0;
+  };
+
+  // The first view: from (4.3, −3.6, 2.6) body sizes with z up — or, with gravity, the same turned so that −g is up.
+  const up = geometry.gravity_s ? v3(geometry.gravity_s).normalize().negate() : new THREE.Vector3(0, 0, 1);
+  const turn = new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 0, 1), up);
+  const camera = new THREE.PerspectiveCamera(40, 1, size / 100, size * 100);
+  camera.up.copy(up);
+  camera.position.set(4.3 * size, -3.6 * size, 2.6 * size).applyQuaternion(turn);
+  const target = up.clone().multiplyScalar(0.6 * size);
+
+  // ω, H and M start from a point beside the body (a small grey ball), not from O, so that they do not lie over it.
+  const anchor = vectorAnchor(THREE, api, samples, size, scaleOf, camera.position.clone().sub(target), up);
+  api.vector_origin = [anchor.x, anchor.y, anchor.z];
+  const anchorBall = new THREE.Mesh(new THREE.SphereGeometry(0.025 * size, 16, 8),
+    new THREE.MeshStandardMaterial({ color: 0x5a6070, roughness: 0.5 }));
+  anchorBall.position.copy(anchor);
+  scene.add(anchorBall);
+  parts.vectors.push(anchorBall);
+
+  const arrows = {};
+  for (const name of api.vectors) {
+    const look = window.eulerdynVectors[name];
+    if (!look) continue;
     const arrow = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, look.color);
     arrow.line.material.linewidth = 2;
+    if (look.kind !== 'R') arrow.position.copy(anchor);
     if (name === 'R_A_s' && bearings) arrow.position.copy(bearings[0]);
     if (name === 'R_B_s' && bearings) arrow.position.copy(bearings[1]);
     scene.add(arrow);
     arrows[name] = arrow;
+    parts.vectors.push(arrow);
   }
-  const scaleOf = (name) => {
-    const max = longest[window.eulerdynVectors[name].kind];
-    return max > 0 ? (1.8 * size) / max : 0;
-  };
 
-  const trail = makeTrail(THREE, api, scaleOf);
+  const trail = makeTrail(THREE, api, scaleOf, anchor);
   if (trail) scene.add(trail);
   const polhode = makePolhode(THREE, api, geometry);
 
-  const camera = new THREE.PerspectiveCamera(40, 1, size / 100, size * 100);
-  camera.up.set(0, 0, 1);
-  camera.position.set(4.3 * size, -3.6 * size, 2.6 * size);
   const controls = new OrbitControls(camera, canvas);
-  controls.target.set(0, 0, 0.6 * size);
+  controls.target.copy(target);
   controls.update();
 
   document.getElementById('show-trail').addEventListener('change', (e) => {
@@ -100,31 +129,42 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     api.drawn = true;
   }
   api.onTime((s) => { state = s; draw(); });
+  /** Hides or shows a part of the drawing — 'body' (shape and point masses), 'axes' (space and body axes) or
+   * 'vectors' (the arrows and the point ω, H and M start from) — and redraws. */
+  api.show = (part, visible) => {
+    if (!parts[part]) throw new Error('eulerdyn view: no part ' + part + '; the parts are ' + Object.keys(parts).join(', '));
+    for (const object of parts[part]) object.visible = Boolean(visible);
+    draw();
+  };
   controls.addEventListener('change', draw);
   window.addEventListener('resize', draw);
   api.redraw = draw;
   draw();
 };
 
-/** The body's shape in body axes from O (a group): its mesh, edges and a marker on its +x side. */
+/** The body's shape in body axes from O (a group): its mesh, edges and a marker on its +x side. Every dimension is
+ * drawn at least `min_drawn_thickness` (from the page's data: 5 % of the body's longest dimension), so that a thin
+ * rod or disk shows as a solid, not a line hidden behind the axes. */
 function makeShape(THREE, geometry) {
   const b = geometry.body || { kind: 'unknown' };
+  const thick = (x) => Math.max(x || 0, b.min_drawn_thickness || 0);
   let g;
   let marker;
   switch (b.kind) {
     case 'thin_disk':
     case 'disk':
     case 'cylinder': {
-      const r = b.radius;
-      const h = b.kind === 'thin_disk' ? r / 25 : b.kind === 'disk' ? b.thickness : b.height;
+      const r = thick(b.radius);
+      const h = thick(b.kind === 'thin_disk' ? r / 25 : b.kind === 'disk' ? b.thickness : b.height);
       g = new THREE.CylinderGeometry(r, r, h, 64).rotateX(Math.PI / 2);
       marker = new THREE.BoxGeometry(r, r / 12, h * 1.06 + r / 200).translate(r / 2, 0, 0);
       break;
     }
     case 'thin_rod': {
       const l = b.length;
-      g = new THREE.CylinderGeometry(l / 60, l / 60, l, 24).rotateZ(Math.PI / 2);
-      marker = new THREE.SphereGeometry(l / 35, 16, 8).translate(l / 2, 0, 0);
+      const r = thick(l / 30) / 2;
+      g = new THREE.CylinderGeometry(r, r, l, 24).rotateZ(Math.PI / 2);
+      marker = new THREE.SphereGeometry(1.4 * r, 16, 8).translate(l / 2, 0, 0);
       break;
     }
     case 'sphere': {
@@ -134,7 +174,7 @@ function makeShape(THREE, geometry) {
     }
     case 'box':
     case 'inertia_box': {
-      const s = b.size;
+      const s = b.size.map(thick);
       g = new THREE.BoxGeometry(s[0], s[1], s[2]);
       marker = new THREE.BoxGeometry(s[0] * 0.02 + 1e-6, s[1] * 0.6, s[2] * 0.6).translate(s[0] / 2, 0, 0);
       break;
@@ -219,6 +259,75 @@ function addAxisAndBearings(THREE, scene, geometry, q0, size) {
   });
 }
 
+/** Points of the body in body axes from O, to keep the vectors clear of: the center of the shape's bounding box
+ * and points along its 12 edges (the body group is not turned yet when this is called). */
+function bodySamples(THREE, shape) {
+  const box = new THREE.Box3().setFromObject(shape);
+  const corner = (k) => new THREE.Vector3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y,
+    k & 4 ? box.max.z : box.min.z);
+  const points = [box.getCenter(new THREE.Vector3())];
+  for (let a = 0; a < 8; a++) {
+    for (const bit of [1, 2, 4]) {
+      if (a & bit) continue;
+      for (let s = 0; s <= 4; s++) points.push(corner(a).lerp(corner(a | bit), s / 4));
+    }
+  }
+  return points;
+}
+
+/** The point ω, H and M are drawn from: beside the body, not at O. Candidates: the 20 directions from O to the
+ * edges' midpoints and the corners of a cube about O (not along the space axes, whose lines are drawn), at 1.2 body
+ * sizes. Seen from the first view (`eye`: the camera's direction from its target; `screenUp` up), the arrows from each candidate
+ * are compared with the body's `samples` at up to 400 kept rows: the candidate whose arrows lie over the body
+ * (within 0.04 body sizes of it, on the screen) at the fewest rows, then the one farthest from the body on
+ * average, then the highest. */
+function vectorAnchor(THREE, api, samples, size, scaleOf, eye, screenUp) {
+  const w = eye.clone().normalize();
+  const right = screenUp.clone().cross(w).normalize();
+  const up = w.clone().cross(right);
+  const flat = (v) => [v.dot(right), v.dot(up)];
+  const names = ['omega_s', 'H_s', 'M_s'].filter((n) => api.vectors.includes(n));
+  const step = Math.max(1, Math.ceil(api.rows.length / 400));
+  const rows = api.rows.filter((_, k) => k % step === 0);
+  const bodies = rows.map((row) => {
+    const q = new THREE.Quaternion(row.q[1], row.q[2], row.q[3], row.q[0]);
+    return samples.map((s) => flat(s.clone().applyQuaternion(q)));
+  });
+  const tips = rows.map((row) => names.map((n) => flat(new THREE.Vector3(...row[n]).multiplyScalar(scaleOf(n)))));
+  let choice = null;
+  for (const x of [0, 1, -1]) {
+    for (const y of [0, 1, -1]) {
+      for (const z of [1, -1, 0]) {
+        if (Math.abs(x) + Math.abs(y) + Math.abs(z) < 2) continue;
+        const d = new THREE.Vector3(x, y, z).normalize();
+        const a = flat(d.clone().multiplyScalar(1.2 * size));
+        let over = 0;
+        let sum = 0;
+        rows.forEach((_, k) => {
+          let near = Infinity;
+          for (const tip of tips[k]) {
+            const b = [a[0] + tip[0], a[1] + tip[1]];
+            for (const p of bodies[k]) near = Math.min(near, segmentDistance(p, a, b));
+          }
+          if (near < 0.04 * size) over++;
+          sum += Math.min(near, size);
+        });
+        const better = !choice || over < choice.over || (over === choice.over && sum > choice.sum + 1e-9 * size);
+        if (better) choice = { d, over, sum };
+      }
+    }
+  }
+  return choice.d.clone().multiplyScalar(1.2 * size);
+}
+
+/** The distance in the plane from point p to the segment from a to b. */
+function segmentDistance(p, a, b) {
+  const ab = [b[0] - a[0], b[1] - a[1]];
+  const len2 = ab[0] * ab[0] + ab[1] * ab[1];
+  const s = len2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1]) / len2)) : 0;
+  return Math.hypot(p[0] - a[0] - s * ab[0], p[1] - a[1] - s * ab[1]);
+}
+
 /** Points `v` (space axes, already scaled) from the arrow's origin; hidden when v is 0. */
 function setArrow(arrow, v, size) {
   const length = v.length();
@@ -229,13 +338,14 @@ function setArrow(arrow, v, size) {
   arrow.setLength(length, head, 0.5 * head);
 }
 
-/** The trail of H's tip in space over the kept rows, drawn up to the current time. */
-function makeTrail(THREE, api, scaleOf) {
+/** The trail of H's tip in space over the kept rows (H drawn from `origin`), drawn up to the current time. */
+function makeTrail(THREE, api, scaleOf, origin) {
   if (!api.vectors.includes('H_s')) return null;
   const scale = scaleOf('H_s');
+  const from = [origin.x, origin.y, origin.z];
   const points = new Float32Array(api.rows.length * 3);
   api.rows.forEach((row, k) => {
-    for (let i = 0; i < 3; i++) points[3 * k + i] = row.H_s[i] * scale;
+    for (let i = 0; i < 3; i++) points[3 * k + i] = from[i] + row.H_s[i] * scale;
   });
   const g = new THREE.BufferGeometry();
   g.setAttribute('position', new THREE.BufferAttribute(points, 3));

@@ -82,14 +82,42 @@
     return out;
   }
 
+  /** The run's typical rotation rate: the median of |ω| over the kept rows (rad/s). */
+  function typicalRate() {
+    const ix = vectorIndex.omega_s;
+    const rates = table.map((row) => Math.hypot(row[ix[0]], row[ix[1]], row[ix[2]])).sort((a, b) => a - b);
+    const n = rates.length;
+    return n % 2 ? rates[(n - 1) / 2] : (rates[n / 2 - 1] + rates[n / 2]) / 2;
+  }
+
+  /** The default playback speed (simulated seconds per wall-clock second): about one turn per second at the
+   * typical rate, 2π / median|ω| rounded to the nearest of 1, 2 and 5 × 10^k (in log scale); real time (1) when the
+   * body does not turn. */
+  function defaultSpeed(rate) {
+    if (!(rate > 0) || !Number.isFinite(rate)) return 1;
+    const exact = (2 * Math.PI) / rate;
+    const decade = Math.pow(10, Math.floor(Math.log10(exact)));
+    const ladder = [1, 2, 5, 10].map((m) => m * decade);
+    return Number(ladder.reduce((a, b) => (Math.abs(Math.log(b / exact)) < Math.abs(Math.log(a / exact)) ? b : a))
+      .toPrecision(1));
+  }
+  const typicalOmega = typicalRate();
+
   // The clock: the time shown, playing or not, and the speed (simulated seconds per wall-clock second).
-  const clock = { t: t0, playing: false, speed: 1, last: null };
+  const clock = { t: t0, playing: false, speed: defaultSpeed(typicalOmega), last: null };
   const listeners = [];
   let current = stateAt(t0);
 
   function show() {
     current = stateAt(clock.t);
     for (const f of listeners) f(current, clock.t);
+  }
+
+  /** The time in the URL's fragment (`VIEW.html#t=0.44`), or null when it has none. */
+  function fragmentTime() {
+    const m = /(?:^#|&)t=([^&]*)/.exec(window.location.hash);
+    const t = m ? Number(decodeURIComponent(m[1])) : NaN;
+    return Number.isFinite(t) ? t : null;
   }
 
   /** Jumps to time t and pauses. */
@@ -118,6 +146,9 @@
     play: () => { if (clock.t >= tEnd) clock.t = t0; clock.playing = true; clock.last = null; show(); },
     pause: () => { clock.playing = false; show(); },
     clock: clock,
+    typical_rate: typicalOmega,
+    default_speed: clock.speed,
+    fragmentTime: fragmentTime,
   };
   window.eulerdyn = api;
 
@@ -136,6 +167,14 @@
     requestAnimationFrame(frame);
   }
   requestAnimationFrame(frame);
+
+  // Open at the fragment's time (VIEW.html#t=0.44), and follow it when it is edited.
+  const opened = fragmentTime();
+  if (opened !== null) setTime(opened);
+  window.addEventListener('hashchange', () => {
+    const t = fragmentTime();
+    if (t !== null && t !== clock.t) setTime(t);
+  });
 
   window.eulerdynControls(api, data);
 })();

@@ -6,235 +6,29 @@ Each function mirrors a command of the ``eulerdyn`` command line and calls the s
 - :func:`check` — what a scene will simulate, as a dict;
 - :func:`compare` — both forms of Euler's equation against each other and the closed form;
 - :func:`accuracy` — the work-precision study, as a DataFrame;
-- :func:`balance` — two-plane balancing of a fixed-axis or hinge scene.
+- :func:`balance` — two-plane balancing of a fixed-axis or hinge scene;
+- :func:`sweep` — many runs of a scene with keys varied, a row per run.
 
 A scene is the path of a scene file (TOML) or a dict of the same keys, e.g.
-``{"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.1}}``.
-Bad input raises :class:`SceneError` (a ``ValueError``) with the command line's message, naming the file (or
-``<dict>``) and the key; a failed run raises :class:`RunError` with the time and the reason. Runs release the GIL,
-and Ctrl-C (KeyboardInterrupt) stops them.
+``{"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.1}}``;
+a sweep likewise. Bad input raises :class:`SceneError` (a ``ValueError``) with the command line's message, naming
+the file (or ``<dict>``) and the key, and the keyword argument that set it (``solver.dt (from dt=)``); a failed
+run raises :class:`RunError` with the time and the reason. Runs release the GIL, and Ctrl-C (KeyboardInterrupt)
+stops them. A column has one dtype whatever its cells: see ``README.md`` (From Python). ``__version__`` is the
+version of the eulerdyn crate the extension was built from.
 """
 
-from __future__ import annotations
+from ._api import SceneLike, accuracy, balance, check, compare, run, sweep
+from ._eulerdyn import RunError, SceneError, __version__
 
-import csv
-import io
-import math
-import os
-from typing import Any, Dict, Mapping, Optional, Tuple, Union
-
-import numpy as np
-import pandas as pd
-
-from . import _eulerdyn
-from ._eulerdyn import RunError, SceneError
-
-__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run", "sweep"]
-
-#: A scene: the path of a scene file, or a dict of its keys (nested dicts for its tables, lists of dicts for
-#: ``[[effect]]`` and ``[[body.point_mass]]``).
-SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
-
-
-def _scene(scene: SceneLike) -> Any:
-    """The scene as the extension takes it: a path, or a plain dict (any other mapping is copied into one)."""
-    if isinstance(scene, Mapping) and not isinstance(scene, dict):
-        return {k: _scene(v) if isinstance(v, Mapping) else v for k, v in scene.items()}
-    return scene
-
-
-def run(
-    scene: SceneLike,
-    *,
-    method: Optional[str] = None,
-    frame: Optional[str] = None,
-    backend: Optional[str] = None,
-    rtol: Optional[float] = None,
-    atol: Optional[float] = None,
-    dt: Optional[float] = None,
-    t_end: Optional[float] = None,
-    every: Optional[float] = None,
-) -> pd.DataFrame:
-    """Simulate a scene; its rows as a DataFrame, as ``eulerdyn run SCENE`` writes them as CSV.
-
-    The columns are the CSV's, in its order (``t``, ``q_w`` … ``H_norm``, then the motion's own columns such as
-    ``theta`` or ``R_A_s_x``), and every value is the float the CSV holds, bit for bit.
-
-    Args:
-        scene: the path of a scene file, or a dict of its keys.
-        method: integration method instead of the scene's: ``rk4``, ``dopri5``, ``dop853``, ``split2``,
-            ``split4`` or ``exact`` (torque-free only) — the command line's ``--method``.
-        frame: form of Euler's equation, ``body`` or ``space`` (``--frame``).
-        backend: Runge–Kutta implementation, ``own`` or ``ode_solvers`` (``--backend``).
-        rtol: relative tolerance of adaptive methods (``--rtol``).
-        atol: absolute tolerance of adaptive methods (``--atol``).
-        dt: step of fixed-step methods, s (``--dt``).
-        t_end: end time, s (``--t-end``).
-        every: time between rows, s (``--every``).
-
-    Returns:
-        The rows, one per output time. ``df.attrs["report"]`` holds what the run did: ``rows``, ``steps``,
-        ``rejected``, ``evals``, ``wall_seconds``.
-
-    Raises:
-        SceneError: the scene or an override is not valid (the message names the key, e.g.
-            ``solver.method (from --method)``).
-        RunError: the run failed (diverged, the step size collapsed); ``.t`` is the time it stopped at.
-        KeyboardInterrupt: Ctrl-C during the run.
-    """
-    names, data, report = _eulerdyn.run(
-        _scene(scene),
-        method=method,
-        frame=frame,
-        backend=backend,
-        rtol=rtol,
-        atol=atol,
-        dt=dt,
-        t_end=t_end,
-        every=every,
-    )
-    values = np.frombuffer(data, dtype=np.float64).reshape(-1, len(names)).copy()
-    df = pd.DataFrame(values, columns=list(names))
-    df.attrs["report"] = dict(report)
-    return df
-
-
-def check(scene: SceneLike) -> Dict[str, Any]:
-    """What a scene will simulate, as ``eulerdyn check SCENE`` prints it, without running it.
-
-    Returns:
-        A dict: ``text`` (the printout), ``items`` (each label of the printout with its lines, e.g.
-        ``items["method"]``), and the settings as values: ``name``, ``description``, ``motion`` (``free``,
-        ``fixed_axis`` or ``hinge``), ``method``, ``frame``, ``backend``, ``rtol``, ``atol``, ``dt``, ``t_end``,
-        ``every``, ``rows`` (how many rows :func:`run` returns) and ``columns`` (its columns).
-
-    Raises:
-        SceneError: the scene is not valid.
-    """
-    return dict(_eulerdyn.check(_scene(scene)))
-
-
-def compare(scene: SceneLike, *, method: Optional[str] = None) -> Dict[str, Any]:
-    """Run a scene in both forms of Euler's equation and against its closed form, as ``eulerdyn compare SCENE``.
-
-    Args:
-        scene: the path of a scene file, or a dict of its keys.
-        method: integration method instead of the scene's (``--method``).
-
-    Returns:
-        A dict: ``differences`` (a DataFrame indexed by quantity with the columns ``body vs space``,
-        ``body vs exact`` and ``space vs exact``: relative differences, the attitude's in rad; NaN where the closed
-        form does not give the quantity), ``passes`` (False where the command exits 1), ``tolerance`` (the scene's
-        ``[compare]`` tolerance), ``rows``, ``closed_form`` (its name, or None), ``note`` and ``text`` (what the
-        command prints).
-
-    Raises:
-        SceneError: the scene or the method is not valid.
-        RunError: a run failed.
-    """
-    result = dict(_eulerdyn.compare(_scene(scene), method=method))
-    table = result.pop("table")
-    differences = pd.DataFrame(
-        [row[1:] for row in table],
-        index=pd.Index([row[0] for row in table], name="quantity"),
-        columns=["body vs space", "body vs exact", "space vs exact"],
-        dtype=float,
-    )
-    return {"differences": differences, **result}
-
-
-def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
-    """The work-precision study of a scene, as ``eulerdyn accuracy SCENE``: every applicable method over a sweep of
-    tolerances or step sizes, its error against the closed form (or a reference run) and its cost.
-
-    Args:
-        scene: the path of a scene file, or a dict of its keys.
-        quick: the library's quick study (4 tolerances, 4 step sizes, one repeat, own backend, body form) instead
-            of the command's full one.
-
-    Returns:
-        The command's table, a row per run: ``method``, ``frame``, ``rtol``, ``dt``, ``err_omega``,
-        ``err_attitude``, ``energy_drift``, ``H_drift``, ``wall_s``, ``steps``, ``rejected``, ``evals``,
-        ``err_H_s``, ``atol``, ``backend``, ``repeats``, ``status`` (NaN where the CSV has an empty cell).
-        ``df.attrs["summary"]`` is the summary the command prints.
-
-    Raises:
-        SceneError: the scene is not valid, or the study cannot use it.
-        RunError: the reference run failed.
-        KeyboardInterrupt: Ctrl-C (the study stops before its next run).
-    """
-    table, summary = _eulerdyn.accuracy(_scene(scene), quick=quick)
-    df = _table(table)
-    df.attrs["summary"] = summary
-    return df
-
-
-def sweep(
-    sweep_file: Union[str, "os.PathLike[str]"], *, jobs: Optional[int] = None, shard: Optional[str] = None
-) -> pd.DataFrame:
-    """The runs of a sweep file, as ``eulerdyn sweep SWEEP.toml``: a base scene run many times with numeric keys
-    set from grids (``values``, ``linspace``, ``logspace``) or drawn at random (``normal``, ``uniform``), in
-    parallel, each run reduced to one row.
-
-    Args:
-        sweep_file: the path of the sweep file (its ``scene`` is relative to it).
-        jobs: threads (None: all cores).
-        shard: ``"K/N"``: only the runs with ``run % N == K - 1`` (for N processes that split a sweep).
-
-    Returns:
-        The results table, a row per run sorted by ``run``: ``run``, one column per varied key, ``status``
-        (``ok``, ``failed``, ``invalid``), ``message``, ``max_M_norm`` (and ``max_F_sup_norm``, ``max_R_A_norm``,
-        ``max_R_B_norm`` where the scene has them), ``energy_drift``, ``H_drift``, ``final_omega_b_x/y/z``,
-        ``steps``, ``evals``, ``wall_s``, then ``min_X``, ``max_X``, ``final_X`` of each ``[summary]`` column.
-        A failed or invalid run is a row with its message (NaN in its numeric columns); nothing is raised for it.
-
-    Raises:
-        SceneError: the sweep file or its base scene is not valid (unknown key, empty grid, ...), a bad shard,
-            or ``jobs=0``.
-        KeyboardInterrupt: Ctrl-C (the sweep stops between runs).
-    """
-    return _table(_eulerdyn.sweep(os.fspath(sweep_file), jobs=jobs, shard=shard))
-
-
-def _table(text: str) -> pd.DataFrame:
-    """A CSV table as a DataFrame, each number read by Python's float (correctly rounded: the f64 the table was
-    written from). A column of numbers and empty cells is float (NaN for empty), of whole numbers int, else str."""
-    reader = csv.reader(io.StringIO(text))
-    header = next(reader)
-    rows = list(reader)
-    columns: Dict[str, Any] = {}
-    for k, name in enumerate(header):
-        cells = [row[k] for row in rows]
-        columns[name] = _column(cells)
-    return pd.DataFrame(columns, columns=header)
-
-
-def _column(cells: "list[str]") -> Any:
-    """The cells of one column as ints, floats or strings (see :func:`_table`)."""
-    if cells and all(c.isdigit() for c in cells):
-        return np.array([int(c) for c in cells], dtype=np.int64)
-    try:
-        return np.array([float(c) if c else math.nan for c in cells], dtype=np.float64)
-    except ValueError:
-        return cells
-
-
-def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
-    """Two-plane balancing of a fixed-axis or hinge scene, as ``eulerdyn balance SCENE --planes A,B --radius R``.
-
-    Args:
-        scene: the path of a scene file, or a dict of its keys.
-        planes: axial positions (A, B) of the correction planes, m from ``motion.point`` along the axis.
-        radius: distance of the correction masses from the axis, m.
-
-    Returns:
-        A dict: ``corrections`` (per plane: ``plane``, ``z``, ``mass`` kg, ``angle_deg``, ``at_b`` — the position
-        in body axes, the scene file's ``at``), ``reference_b`` and ``reference_name`` (the direction angles are
-        measured from), ``rate`` (rad/s), ``largest_reaction_before`` and ``largest_reaction_after`` (N),
-        ``scene`` (the balanced scene as a dict, ready for :func:`run`), ``toml`` (it as a scene file) and ``text``
-        (what the command prints).
-
-    Raises:
-        SceneError: the scene is not valid or cannot be balanced (a free body, A = B, radius <= 0).
-    """
-    return dict(_eulerdyn.balance(_scene(scene), planes=tuple(planes), radius=radius))
+__all__ = [
+    "RunError",
+    "SceneError",
+    "SceneLike",
+    "accuracy",
+    "balance",
+    "check",
+    "compare",
+    "run",
+    "sweep",
+]

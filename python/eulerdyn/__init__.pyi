@@ -8,7 +8,10 @@ import pandas as pd
 from ._eulerdyn import RunError as RunError
 from ._eulerdyn import SceneError as SceneError
 
-__all__ = ["RunError", "SceneError", "accuracy", "balance", "check", "compare", "run", "sweep"]
+__all__ = ["RunError", "SceneError", "SceneLike", "accuracy", "balance", "check", "compare", "run", "sweep"]
+
+__version__: str
+"""The version of the eulerdyn crate the extension was built from."""
 
 SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 
@@ -35,10 +38,21 @@ def compare(scene: SceneLike, *, method: Optional[str] = None) -> Dict[str, Any]
 def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
     """The work-precision study's table (``eulerdyn accuracy``)."""
 
-def balance(scene: SceneLike, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
+def balance(
+    scene: SceneLike,
+    *,
+    planes: Tuple[float, float],
+    radius: float,
+    grade: Optional[float] = None,
+    rpm: Optional[float] = None,
+    measured: Optional[Union[str, "os.PathLike[str]"]] = None,
+) -> Dict[str, Any]:
     """Two-plane balancing (``eulerdyn balance``)."""
 
 def sweep(
-    sweep_file: Union[str, "os.PathLike[str]"], *, jobs: Optional[int] = None, shard: Optional[str] = None
+    sweep_file: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    *,
+    jobs: Optional[int] = None,
+    shard: Optional[str] = None,
 ) -> pd.DataFrame:
-    """The results table of a sweep file (``eulerdyn sweep``), a row per run."""
+    """The results table of a sweep file or a dict of its keys (``eulerdyn sweep``), a row per run."""

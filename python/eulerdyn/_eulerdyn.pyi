@@ -5,6 +5,8 @@ from typing import Any, Dict, List, Optional, Tuple, Union
 
 _Scene = Union[str, "os.PathLike[str]", Dict[str, Any]]
 
+__version__: str
+
 class SceneError(ValueError):
     """A scene or an argument that is not valid; the message is the command line's."""
 
@@ -44,8 +46,16 @@ def compare(scene: _Scene, *, method: Optional[str] = None) -> Dict[str, Any]:
 def accuracy(scene: _Scene, *, quick: bool = False) -> Tuple[str, str]:
     """The study's table (CSV text) and summary."""
 
-def balance(scene: _Scene, *, planes: Tuple[float, float], radius: float) -> Dict[str, Any]:
+def balance(
+    scene: _Scene,
+    *,
+    planes: Tuple[float, float],
+    radius: float,
+    grade: Optional[float] = None,
+    rpm: Optional[float] = None,
+    measured: Optional[str] = None,
+) -> Dict[str, Any]:
     """The correction masses and the balanced scene, as a dict."""
 
-def sweep(sweep: str, *, jobs: Optional[int] = None, shard: Optional[str] = None) -> str:
+def sweep(sweep: _Scene, *, jobs: Optional[int] = None, shard: Optional[str] = None) -> str:
     """The sweep's results table as CSV text."""

@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use eulerdyn::analysis::balance::{Planes, balance_scene};
+use eulerdyn::analysis::balance::{Planes, Request, RequestError, balance_report, table};
 use eulerdyn::analysis::compare::{Comparison, compare_until};
 use eulerdyn::analysis::describe::describe;
 use eulerdyn::analysis::study::{self, StudyError, StudyOptions};
@@ -11,8 +11,8 @@ use eulerdyn::simulate::{self, RunFailed};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::{toml_to_py, vec3};
-use crate::errors::{no_panic, run_error, run_error_message};
+use crate::convert::{json_to_py, toml_to_py, vec3};
+use crate::errors::{no_panic, run_error, run_error_message, scene_error};
 use crate::input::SceneInput;
 use crate::run::{SignalCheck, stop_on};
 
@@ -33,7 +33,7 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
     no_panic(|| {
         let input = SceneInput::from_py(scene)?;
         let s = input.scene(py, &Overrides::default())?;
-        let warnings = input.warnings(py, &s)?;
+        let warnings = eulerdyn::scene::advice::warnings(&s);
         let description = describe(&s, &warnings);
         let d = PyDict::new(py);
         d.set_item("text", description.text())?;
@@ -55,7 +55,7 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
         d.set_item("motion", motion_kind(&s))?;
         let solver = &s.solver;
         d.set_item("method", solver.method.name())?;
-        d.set_item("frame", solver.frame.name())?;
+        d.set_item("frame", solver.form.name())?;
         d.set_item("backend", solver.backend.name())?;
         d.set_item("rtol", solver.rtol)?;
         d.set_item("atol", solver.atol)?;
@@ -185,11 +185,11 @@ pub fn accuracy(
         } else {
             StudyOptions::default()
         };
-        let (path, text): (PathBuf, &str) = (input.path.clone(), &input.text);
+        let scene = input.scene(py, &Overrides::default())?;
         let result = py.detach(|| {
             let mut signals = SignalCheck::new();
             let mut interrupted = None;
-            let study = study::accuracy_until(&path, text, &options, |_, _, _| {
+            let study = study::accuracy_until(&scene, &options, |_, _, _| {
                 stop_on(signals.poll(), &mut interrupted)
             });
             (study, interrupted)
@@ -203,34 +203,57 @@ pub fn accuracy(
 }
 
 /// Two-plane balancing of a fixed-axis or hinge scene (a path or a dict), as `eulerdyn balance --planes A,B
-/// --radius R`. Returns a dict: text (what the command prints), corrections (per plane: plane, z, mass, angle_deg,
-/// at_b), reference_b, reference_name, rate, largest_reaction_before/after, scene (the balanced scene as a dict)
-/// and toml (it as a scene file). Raises SceneError for bad input or a scene that cannot be balanced.
+/// --radius R [--grade G] [--rpm N] [--measured PHASORS.csv]`. Returns a dict: every key of `--json` (mode,
+/// planes, unbalance_gmm, grade, influence, …), and text (what the command prints), corrections (per plane: plane,
+/// z, mass, mass_g, angle_deg, at_b), reference_b, reference_name, rate, largest_reaction_before/after, scene (the
+/// balanced scene as a dict) and toml (it as a scene file). Raises SceneError for bad input or a scene that cannot
+/// be balanced.
 #[pyfunction]
-#[pyo3(signature = (scene, *, planes, radius))]
+#[pyo3(signature = (scene, *, planes, radius, grade=None, rpm=None, measured=None))]
 pub fn balance<'py>(
     py: Python<'py>,
     scene: &Bound<'py, PyAny>,
     planes: (f64, f64),
     radius: f64,
+    grade: Option<f64>,
+    rpm: Option<f64>,
+    measured: Option<PathBuf>,
 ) -> PyResult<Bound<'py, PyDict>> {
     no_panic(|| {
         let input = SceneInput::from_py(scene)?;
-        let planes = Planes {
-            a: planes.0,
-            b: planes.1,
-            radius,
+        let measured = match measured {
+            Some(path) => {
+                let text = table::read(&path).map_err(|e| scene_error(py, e, false))?;
+                Some((path, text))
+            }
+            None => None,
         };
-        let result =
-            balance_scene(&input.path, &input.text, &planes).map_err(|e| input.error(py, e))?;
-        let d = PyDict::new(py);
-        d.set_item("text", result.report())?;
+        let request = Request {
+            planes: Planes {
+                a: planes.0,
+                b: planes.1,
+                radius,
+            },
+            grade,
+            rpm,
+            measured,
+        };
+        let scene = input.scene(py, &Overrides::default())?;
+        let report = balance_report(&scene, &request).map_err(|e| match e {
+            RequestError::Option(message) => crate::errors::SceneError::new_err(message),
+            RequestError::Scene(e) => input.error(py, e),
+            RequestError::Table(e) => scene_error(py, e, false),
+        })?;
+        let d = json_to_py(py, &report.json())?.cast_into::<PyDict>()?;
+        d.set_item("text", report.text())?;
+        let result = &report.balance;
         let corrections = PyList::empty(py);
         for (name, c) in ["A", "B"].iter().zip(&result.corrections) {
             let item = PyDict::new(py);
             item.set_item("plane", name)?;
             item.set_item("z", c.z)?;
             item.set_item("mass", c.mass)?;
+            item.set_item("mass_g", c.mass * 1e3)?;
             item.set_item("angle_deg", c.angle_deg)?;
             item.set_item("at_b", vec3(&c.at_b))?;
             corrections.append(item)?;

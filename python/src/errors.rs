@@ -25,11 +25,13 @@ create_exception!(
 );
 
 /// The `SceneError` exception for the library's error; `from_dict` drops the line and column (they would point
-/// into TOML text the user never saw).
+/// into TOML text the user never saw). A key set by a keyword argument is named by it, as Python calls it:
+/// `solver.dt (from dt=)` where the command line says `solver.dt (from --dt)`.
 pub fn scene_error(py: Python<'_>, mut e: scene::SceneError, from_dict: bool) -> PyErr {
     if from_dict {
         e.location = None;
     }
+    e.key = e.key.map(|key| keyword_key(&key));
     let err = SceneError::new_err(e.to_string());
     let value = err.value(py);
     let set = value
@@ -41,6 +43,18 @@ pub fn scene_error(py: Python<'_>, mut e: scene::SceneError, from_dict: bool) ->
     match set {
         Ok(()) => err,
         Err(e) => e,
+    }
+}
+
+/// A key as Python names it: `solver.t_end (from --t-end)` (the command line's flag) becomes
+/// `solver.t_end (from t_end=)` (the keyword argument that set it); any other key is unchanged.
+fn keyword_key(key: &str) -> String {
+    match key
+        .strip_suffix(')')
+        .and_then(|rest| rest.rsplit_once(" (from --"))
+    {
+        Some((path, flag)) => format!("{path} (from {}=)", flag.replace('-', "_")),
+        None => key.to_string(),
     }
 }
 

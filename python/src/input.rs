@@ -40,12 +40,7 @@ impl SceneInput {
                 from_dict: true,
             });
         }
-        let path: PathBuf = scene.extract().map_err(|_| {
-            PyTypeError::new_err(format!(
-                "scene: expected a scene file's path (str or os.PathLike) or a dict of its keys, got {}",
-                type_name(scene)
-            ))
-        })?;
+        let path = path_of(scene, "scene")?;
         let text = scene::read(&path).map_err(|e| scene_error(py, e, false))?;
         Ok(Self {
             path,
@@ -59,13 +54,6 @@ impl SceneInput {
         scene_error(py, e, self.from_dict)
     }
 
-    /// What `check` warns about in the scene as written (unit slips, the separatrix): see
-    /// `eulerdyn::scene::advice`.
-    pub fn warnings(&self, py: Python<'_>, scene: &Scene) -> PyResult<Vec<String>> {
-        let spec = scene::parse_spec(&self.path, &self.text).map_err(|e| self.error(py, e))?;
-        Ok(scene::advice::warnings(&spec, scene))
-    }
-
     /// The validated scene with `overrides` (as the command line's flags).
     pub fn scene(&self, py: Python<'_>, overrides: &Overrides) -> PyResult<Scene> {
         scene::parse(&self.path, &self.text, overrides).map_err(|e| self.error(py, e))
@@ -73,7 +61,7 @@ impl SceneInput {
 }
 
 /// A `SceneError` about a dict's key.
-fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
+pub fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
     let e = scene::SceneError {
         file: PathBuf::from(DICT_ORIGIN),
         key: key.map(str::to_string),
@@ -83,8 +71,19 @@ fn dict_error(py: Python<'_>, key: Option<&str>, problem: String) -> PyErr {
     scene_error(py, e, true)
 }
 
+/// The path a `what` argument (`scene`, `sweep`) gives when it is not a dict: a str or an os.PathLike, else a
+/// TypeError that says what it may be.
+pub fn path_of(value: &Bound<'_, PyAny>, what: &str) -> PyResult<PathBuf> {
+    value.extract().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{what}: expected a {what} file's path (str or os.PathLike) or a dict of its keys, got {}",
+            type_name(value)
+        ))
+    })
+}
+
 /// The Python type's name of `value`, for messages.
-fn type_name(value: &Bound<'_, PyAny>) -> String {
+pub fn type_name(value: &Bound<'_, PyAny>) -> String {
     value
         .get_type()
         .name()
@@ -92,7 +91,7 @@ fn type_name(value: &Bound<'_, PyAny>) -> String {
 }
 
 /// A dict as a TOML table; `key` is its key path (empty for the scene itself).
-fn table_of(dict: &Bound<'_, PyDict>, key: &str) -> PyResult<toml::Table> {
+pub fn table_of(dict: &Bound<'_, PyDict>, key: &str) -> PyResult<toml::Table> {
     let mut table = toml::Table::new();
     for (k, v) in dict.iter() {
         let Ok(name) = k.cast::<PyString>() else {

@@ -17,10 +17,11 @@ mod sweep;
 
 use pyo3::prelude::*;
 
-/// The extension module: its functions and exceptions.
+/// The extension module: its functions, exceptions and `__version__` (the eulerdyn crate's).
 #[pymodule]
 fn _eulerdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
+    m.add("__version__", eulerdyn::VERSION)?;
     m.add("SceneError", py.get_type::<errors::SceneError>())?;
     m.add("RunError", py.get_type::<errors::RunError>())?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;

@@ -136,8 +136,8 @@ pub fn run<'py>(
             .overrides(&input.path)
             .map_err(|e| input.error(py, e))?;
         let scene_model = input.scene(py, &overrides)?;
-        if let Some(coarse) = simulate::CoarseStep::of(&scene_model) {
-            warn(py, format!("{}: {coarse}", input.path.display()))?;
+        for warning in simulate::warnings_before_run(&scene_model) {
+            warn(py, format!("{}: {warning}", input.path.display()))?;
         }
         let columns = simulate::columns(&scene_model);
         let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();

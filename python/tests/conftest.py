@@ -1,6 +1,6 @@
 """Shared helpers: the repository's scenarios and the command-line binary the module is compared with.
 
-The binary is ``$EULERDYN_BIN`` or ``target/debug/eulerdyn`` (``cargo build`` makes it; ``.ci/python-tests`` does).
+The binary is ``$EULERDYN_BIN`` or ``target/release/eulerdyn`` (``cargo build --release`` makes it; ``.ci/python-tests`` does).
 A missing binary fails the tests that need it: nothing is skipped.
 """
 
@@ -18,7 +18,7 @@ SCENARIOS = REPO / "scenarios"
 
 def cli_binary() -> Path:
     path = Path(os.environ.get("EULERDYN_BIN", REPO / "target" / "debug" / "eulerdyn"))
-    assert path.is_file(), f"{path}: no eulerdyn binary; run `cargo build` first (or set EULERDYN_BIN)"
+    assert path.is_file(), f"{path}: no eulerdyn binary; run `cargo build --release` first (or set EULERDYN_BIN)"
     return path
 
 

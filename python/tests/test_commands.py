@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import eulerdyn
@@ -95,6 +96,21 @@ def test_accuracy_quick_study_of_a_dict():
     assert table[table["method"] == "rk4"]["dt"].notna().all()
     assert set(table["frame"]) == {"body"} and set(table["backend"]) == {"own"}
     assert "dop853" in table.attrs["summary"]
+    # Typed by column, not by cells: the same dtypes for the rk4 rows alone (rtol empty) and the others.
+    for name, dtype in table.dtypes.items():
+        if name in ("steps", "rejected", "evals", "repeats"):
+            assert dtype == np.int64, name
+        elif name in ("method", "frame", "backend", "status"):
+            assert pd.api.types.is_string_dtype(dtype) and dtype != np.float64, name
+        else:
+            assert dtype == np.float64, name
+    rk4 = eulerdyn._api._table(
+        table[table["method"] == "rk4"].to_csv(index=False, na_rep=""),
+        eulerdyn._api._STUDY_COUNTS,
+        eulerdyn._api._STUDY_TEXTS,
+    )
+    assert rk4["rtol"].isna().all()
+    assert rk4.dtypes.to_dict() == table.dtypes.to_dict()
 
 
 def test_accuracy_refuses_a_scene_it_cannot_study():
@@ -135,3 +151,57 @@ def test_balance_refuses_a_free_body():
     scene = {"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.5}}
     with pytest.raises(eulerdyn.SceneError, match="<dict>: cannot balance: .*fixed_axis or a hinge"):
         eulerdyn.balance(scene, planes=(-0.1, 0.1), radius=0.2)
+
+
+FAN_ARGS = ("--planes", "-0.1,0.08", "--radius", "0.25")
+
+
+def test_balance_to_a_grade_from_measurements_is_what_the_cli_prints(scenario):
+    """The fan of "Balancing to a grade": the dict is `--json`'s report, its text the command's output."""
+    import json
+
+    path, table = scenario("fan_rotor_g63.toml"), scenario("fan_rotor_measured.csv")
+    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, measured=table)
+    flags = (*FAN_ARGS, "--grade", "6.3", "--measured", str(table))
+    assert result["text"] == run_cli("balance", str(path), *flags).stdout
+    report = json.loads(run_cli("balance", str(path), *flags, "--json").stdout)
+    for key in ("mode", "unbalance_gmm", "grade", "influence", "planes"):
+        assert result[key] == report[key], key
+    assert result["mode"] == "measured"
+    assert result["grade"]["target"]["pass"] and not result["grade"]["target"]["pass_before"]
+    assert not result["influence"]["condition_warning"]
+    masses = [c["mass_g"] for c in result["corrections"]]
+    assert masses == pytest.approx([c["amp"] for c in result["influence"]["corrections_g"]], rel=1e-12)
+
+
+def test_balance_one_shot_and_at_another_speed(scenario):
+    path = scenario("fan_rotor_g63.toml")
+    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, measured=scenario("fan_rotor_initial.csv"))
+    assert result["mode"] == "one_shot" and "one-shot balancing" in result["text"]
+    # ISO 21940-11: U_per = 1000 G m / Ω, at --rpm's speed.
+    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, rpm=3000.0)
+    target = result["grade"]["target"]
+    assert target["u_per_gmm"] == pytest.approx(1000 * 6.3 * result["grade"]["mass"] / (3000 * math.pi / 30), rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    "keywords, cli_flags",
+    [({"grade": 0.0}, ("--grade", "0")), ({"rpm": -1500.0}, ("--rpm", "-1500"))],
+)
+def test_balance_refuses_a_bad_grade_or_speed_as_the_cli_does(scenario, keywords, cli_flags):
+    path = scenario("fan_rotor_g63.toml")
+    message = run_cli("balance", str(path), *FAN_ARGS, *cli_flags, expect=2).stderr.strip()[len("error: "):]
+    with pytest.raises(eulerdyn.SceneError) as e:
+        eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, **keywords)
+    assert str(e.value) == message
+
+
+def test_balance_names_the_line_of_a_bad_table(scenario, tmp_path):
+    table = tmp_path / "t.csv"
+    table.write_text(
+        "run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,B_amp,B_phase_deg\n"
+        "1,,,,41.4,41,16.0,78\n2,A,20,0,lots,15,58.4,15\n3,B,20,0,75.0,21,89.4,10\n"
+    )
+    with pytest.raises(eulerdyn.SceneError, match=r"t\.csv: line 3 \(run 2\), A_amp `lots`: not a finite number") as e:
+        eulerdyn.balance(scenario("fan_rotor_g63.toml"), planes=(-0.1, 0.08), radius=0.25, measured=table)
+    assert e.value.file == str(table)

@@ -87,23 +87,36 @@ def test_a_dict_gives_the_message_of_the_same_file(tmp_path):
 
 
 @pytest.mark.parametrize(
-    "kwargs, flags, key",
+    "kwargs, flags, flag, key",
     [
-        ({"method": "euler"}, ["--method", "euler"], "solver.method (from --method)"),
-        ({"frame": "lab"}, ["--frame", "lab"], "solver.frame (from --frame)"),
-        ({"backend": "gsl"}, ["--backend", "gsl"], "solver.backend (from --backend)"),
-        ({"rtol": -1.0}, ["--rtol", "-1"], "solver.rtol (from --rtol)"),
-        ({"dt": 0.0, "method": "rk4"}, ["--dt", "0", "--method", "rk4"], "solver.dt (from --dt)"),
-        ({"every": -0.1}, ["--every", "-0.1"], "output.every (from --every)"),
-        ({"t_end": math.inf}, ["--t-end", "inf"], "solver.t_end (from --t-end)"),
+        ({"method": "euler"}, ["--method", "euler"], "--method", "solver.method (from method=)"),
+        ({"frame": "lab"}, ["--frame", "lab"], "--frame", "solver.frame (from frame=)"),
+        ({"backend": "gsl"}, ["--backend", "gsl"], "--backend", "solver.backend (from backend=)"),
+        ({"rtol": -1.0}, ["--rtol", "-1"], "--rtol", "solver.rtol (from rtol=)"),
+        ({"atol": 0.0}, ["--atol", "0"], "--atol", "solver.atol (from atol=)"),
+        ({"dt": 0.0, "method": "rk4"}, ["--dt", "0", "--method", "rk4"], "--dt", "solver.dt (from dt=)"),
+        ({"dt": -1.0, "method": "rk4"}, ["--dt", "-1", "--method", "rk4"], "--dt", "solver.dt (from dt=)"),
+        ({"every": -0.1}, ["--every", "-0.1"], "--every", "output.every (from every=)"),
+        ({"t_end": math.inf}, ["--t-end", "inf"], "--t-end", "solver.t_end (from t_end=)"),
     ],
 )
-def test_a_bad_override_is_the_cli_flag_message(scenario, kwargs, flags, key):
+def test_a_bad_override_names_the_keyword_argument(scenario, kwargs, flags, flag, key):
+    """The command line's message, with the keyword argument that set the key in place of the flag (issue 27)."""
     path = scenario("asymmetric_free.toml")
     with pytest.raises(eulerdyn.SceneError) as e:
         eulerdyn.run(path, **kwargs)
-    assert str(e.value) == cli_error("run", str(path), *flags)
+    cli = cli_error("run", str(path), *flags)
+    assert f"(from {flag})" in cli
+    assert str(e.value) == cli.replace(f"(from {flag})", f"(from {key.split('(from ')[1]}")
     assert e.value.key == key
+    assert "--" not in str(e.value)
+
+
+def test_a_bad_method_in_compare_names_the_keyword_argument(scenario):
+    with pytest.raises(eulerdyn.SceneError) as e:
+        eulerdyn.compare(scenario("asymmetric_free.toml"), method="euler")
+    assert e.value.key == "solver.method (from method=)"
+    assert "key `solver.method (from method=)`" in str(e.value)
 
 
 def test_a_scene_of_the_wrong_type_is_a_type_error():

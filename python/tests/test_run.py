@@ -131,3 +131,13 @@ def test_a_coarse_fixed_step_and_a_drifting_energy_are_user_warnings(scenario):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         eulerdyn.run(scenario("heavy_top.toml"))
+
+
+def test_a_unit_slip_is_a_user_warning_and_a_real_skew_is_not():
+    # tilt_deg = 0.5236 is 30 degrees written in radians: warned of, as the command line's `run` does on stderr.
+    with pytest.warns(UserWarning, match=r"motion.tilt_deg = 0.5236 is 0.5236 degrees; if radians were meant, that is 30.0 degrees"):
+        eulerdyn.run(disk_dict(tilt_deg=0.5236))
+    # A rotor's real skew of 1 degree: no warning.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        eulerdyn.run(disk_dict(tilt_deg=1.0))

@@ -364,9 +364,9 @@ pub fn compare_until(
     mut poll: impl FnMut() -> ControlFlow<()>,
 ) -> Result<Comparison, RunError<HandOver>> {
     let mut body_scene = scene.clone();
-    body_scene.solver.frame = Form::Body;
+    body_scene.solver.form = Form::Body;
     let mut space_scene = scene.clone();
-    space_scene.solver.frame = Form::Space;
+    space_scene.solver.form = Form::Space;
     let oracle = Oracle::for_scene(scene);
     let (sender, receiver) = mpsc::sync_channel::<Sample>(1024);
     let space_run = thread::spawn(move || {

@@ -374,7 +374,7 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         ),
     );
     axis_point_lines(w, &motion.point_b());
-    fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.frame));
+    fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
 }
 
 /// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
@@ -545,7 +545,7 @@ fn effect_lines(w: &mut Description, scene: &Scene) {
 /// The equation and the method with its step or tolerances; returns the estimate of the steps (one line or more).
 fn method_lines(w: &mut Description, scene: &Scene) -> String {
     let s = &scene.solver;
-    let form = match s.frame {
+    let form = match s.form {
         Form::Body => "body axes: I*omega' + omega x I*omega = M",
         Form::Space => "space axes: dH_s/dt = M_s with I_s(theta)",
     };

@@ -5,5 +5,6 @@
 pub mod balance;
 pub mod compare;
 pub mod describe;
+pub mod facts;
 pub mod study;
 pub mod sweep;

@@ -2,7 +2,7 @@
 //! `ode_solvers` 0.6.2, as an independent cross-check of the own implementations.
 //!
 //! Known defects of ode_solvers 0.6.2 and how this path avoids them (each has a regression
-//! test in `tests/integrate_methods.rs` that shows the raw defect):
+//! test in `tests/it/integrate_methods.rs` that shows the raw defect):
 //!
 //! * (a) DOP853 tabulates the nodes c12 = c13 = 0 instead of 1, so stage 12 is evaluated at t
 //!   instead of t + h — wrong whenever f depends on t. Workaround: integrate the autonomous

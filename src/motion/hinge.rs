@@ -11,10 +11,10 @@
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
+use crate::effects::{AppliedMoment, EffectMoments};
 use crate::frames::Form;
 use crate::integrate::OdeSystem;
 use crate::motion::fixed_axis::{AxisAngle, FixedAxis};
-use crate::motion::free::{AppliedMoment, EffectMoments};
 use crate::sample::Sample;
 
 /// State of a hinge: (θ, θ̇) in the body form, (θ, L = I_uu θ̇) in the space form.

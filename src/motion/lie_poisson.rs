@@ -19,9 +19,10 @@
 
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
+use crate::effects::{AppliedMoment, EffectMoments, TorqueFree};
 use crate::frames::Form;
 use crate::integrate::FixedStep;
-use crate::motion::free::{AppliedMoment, EffectMoments, FreeBody, TorqueFree, free_sample};
+use crate::motion::free::{FreeBody, free_sample};
 use crate::sample::Sample;
 use crate::trig::small_sin_cos;
 
@@ -261,7 +262,7 @@ pub enum Splitting {
     /// integrated exactly at any step (one difference vanishes), a near-symmetric one with an error proportional to
     /// its asymmetry, and a body with a near-zero moment (a thin rod) keeps its spin about that axis (the
     /// planar-only splitting mixes the large transverse H into the tiny H about it and gets that spin wrong: 12× too
-    /// large on the near-singular rod of tests/hard_cases.rs). For how much the choice of
+    /// large on the near-singular rod of tests/it/hard_cases.rs). For how much the choice of
     /// splitting matters, see Fassò (2003), "Comparison of splitting algorithms for the rigid body", J. Comput.
     /// Phys. 189, 527. The default.
     Casimir,

@@ -29,11 +29,6 @@ impl CsvInputError {
     }
 }
 
-/// The sidecar `RUN.csv.meta.json` that `eulerdyn run -o RUN.csv` writes next to the CSV.
-pub fn sidecar_path(csv: &Path) -> PathBuf {
-    PathBuf::from(format!("{}.meta.json", csv.display()))
-}
-
 /// A run's CSV being read: its header, then data rows one at a time.
 pub struct RunCsvReader<R: Read> {
     /// The file, for messages.

@@ -1,19 +1,33 @@
 //! Warnings about a valid scene: values that look like a unit slip, and a free body started near the separatrix,
-//! where a tiny change of ω₀ or of the inertia decides the motion. `check` prints them; nothing is refused.
+//! where a tiny change of ω₀ or of the inertia decides the motion. `check`, `run`, `sweep` (for its base scene)
+//! and Python print them, and a run's sidecar lists them; nothing is refused.
 
 use crate::scene::{Motion, Scene, SceneSpec};
 
 /// A body dimension above this looks like millimetres written as metres (m).
 pub const LARGEST_PLAUSIBLE_SIZE: f64 = 100.0;
 
-/// A tilt in degrees of magnitude below this (and not 0) looks like radians written as degrees.
-pub const SMALLEST_PLAUSIBLE_DEGREES: f64 = 2.0;
+/// A tilt in degrees looks like radians written as degrees when, read as radians, it is within this of a whole
+/// number of degrees (0.5236 → 30.0001°) — and is not itself a round number of degrees (see [`looks_like_radians`]).
+pub const RADIANS_TO_WHOLE_DEGREES: f64 = 0.01;
 
 /// A free asymmetric body is near the separatrix when |δ| < this, δ = (H² − 2E·I₂) / (2E·(I₃ − I₁)).
 pub const SEPARATRIX_DISTANCE: f64 = 1e-3;
 
+/// Whether an angle written in degrees, `deg`, looks like radians: 0 < |deg| < 2π, its value read as radians is
+/// within [`RADIANS_TO_WHOLE_DEGREES`] of a whole number of degrees, and it has more than one decimal (a skew of
+/// 0.5°, 1° or 1.5° is a real rotor's, not a slip; 0.5236 or 0.0349 is 30° or 2° in radians).
+pub fn looks_like_radians(deg: f64) -> bool {
+    let as_degrees = deg.to_degrees();
+    let round_itself = ((deg * 10.0).round() - deg * 10.0).abs() < 1e-9;
+    deg != 0.0
+        && deg.abs() < std::f64::consts::TAU
+        && (as_degrees - as_degrees.round()).abs() < RADIANS_TO_WHOLE_DEGREES
+        && !round_itself
+}
+
 /// Values of `spec` that look like a unit slip: a body dimension over [`LARGEST_PLAUSIBLE_SIZE`], an angle in
-/// degrees under [`SMALLEST_PLAUSIBLE_DEGREES`] that would be a plausible angle in radians.
+/// degrees that [`looks_like_radians`].
 pub fn unit_slips(spec: &SceneSpec) -> Vec<String> {
     let mut out = Vec::new();
     if let Some(shape) = &spec.body.shape {
@@ -35,10 +49,7 @@ pub fn unit_slips(spec: &SceneSpec) -> Vec<String> {
         }
     }
     if let Some(motion) = &spec.motion {
-        if let Some(v) = motion
-            .tilt_deg
-            .filter(|v| *v != 0.0 && v.abs() < SMALLEST_PLAUSIBLE_DEGREES)
-        {
+        if let Some(v) = motion.tilt_deg.filter(|v| looks_like_radians(*v)) {
             out.push(format!(
                 "motion.tilt_deg = {v} is {v} degrees; if radians were meant, that is {:.1} degrees",
                 v.to_degrees()
@@ -76,9 +87,9 @@ pub fn separatrix_distance(scene: &Scene) -> Option<f64> {
     (two_e > 0.0).then(|| (h2 - two_e * i2) / (two_e * (i3 - i1)))
 }
 
-/// Everything `check` warns about in a valid scene (its spec and the scene built from it).
-pub fn warnings(spec: &SceneSpec, scene: &Scene) -> Vec<String> {
-    let mut out = unit_slips(spec);
+/// Everything `check` warns about in a valid scene (unit slips in its spec, the separatrix).
+pub fn warnings(scene: &Scene) -> Vec<String> {
+    let mut out = unit_slips(&scene.spec);
     if let Some(delta) = separatrix_distance(scene).filter(|d| d.abs() < SEPARATRIX_DISTANCE) {
         out.push(format!(
             "the initial omega lies near the separatrix of this asymmetric body (delta = (H^2 - 2E*I2) / \
@@ -87,4 +98,23 @@ pub fn warnings(spec: &SceneSpec, scene: &Scene) -> Vec<String> {
         ));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn radians_written_as_degrees_are_told_from_real_skews() {
+        // 30°, 2°, 90° and 45° in radians, as a user types them (4 decimals): slips.
+        #[allow(clippy::approx_constant)]
+        let slips = [0.5236, 0.0349, 1.5708, 0.7854];
+        for slip in slips {
+            assert!(looks_like_radians(slip), "{slip}");
+        }
+        // A rotor's skew of 0.5–2°, round tilts, and 0: as meant.
+        for skew in [0.5, 1.0, 1.5, 2.0, 0.25, 30.0, 0.0, 7.5] {
+            assert!(!looks_like_radians(skew), "{skew}");
+        }
+    }
 }

@@ -5,7 +5,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use super::model::Scene;
+use super::model::{Scene, SceneSource};
 use super::source_map::{KeyPath, SourceMap};
 use super::spec::SceneSpec;
 use super::validate::Overrides;
@@ -89,12 +89,17 @@ pub fn read(path: &Path) -> Result<String, SceneError> {
 /// ```
 pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, SceneError> {
     let doc = parse_spec(path, text)?;
-    doc.build_with(overrides).map_err(|inv| SceneError {
+    let mut scene = doc.build_with(overrides).map_err(|inv| SceneError {
         file: path.to_path_buf(),
         location: SourceMap::new(text).locate(&inv.key),
         key: Some(inv.key.to_string()),
         problem: inv.problem,
-    })
+    })?;
+    scene.source = Some(SceneSource {
+        path: path.to_path_buf(),
+        text: text.to_string(),
+    });
+    Ok(scene)
 }
 
 /// Parses scene text into its typed value; errors name the key, line and column.

@@ -11,7 +11,7 @@ mod validate;
 
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
-pub use model::{Motion, Scene, SolverConfig};
+pub use model::{Motion, Scene, SceneSource, SolverConfig};
 pub use spec::{
     BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,
     MotionSpec, OutputSpec, PointMassSpec, ProfileKind, SceneSpec, ShapeKind, ShapeSpec,

@@ -1,6 +1,6 @@
 //! The validated scene: everything a run needs, in the types the simulation uses. Built by [`crate::scene`].
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::effects::Effect;
@@ -11,11 +11,14 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 
+use super::spec::SceneSpec;
+
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverConfig {
     pub method: Method,
-    pub frame: Form,
+    /// The form of Euler's equation integrated (the scene file's `solver.frame`).
+    pub form: Form,
     pub backend: Backend,
     pub rtol: f64,
     pub atol: f64,
@@ -36,6 +39,36 @@ pub enum Motion {
     FixedAxis(FixedAxis),
     /// Rotation about a fixed axis driven by the effects (θ integrated from their moment about the axis).
     Hinge(Hinge),
+}
+
+impl Motion {
+    /// The motion's `type` in a scene file: `free`, `fixed_axis` or `hinge`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Motion::Free { .. } => "free",
+            Motion::FixedAxis(_) => "fixed_axis",
+            Motion::Hinge(_) => "hinge",
+        }
+    }
+
+    /// The fixed axis of a fixed-axis or hinge motion (its direction, point, bearings); `None` for free motion.
+    pub fn axis(&self) -> Option<&FixedAxis> {
+        match self {
+            Motion::Free { .. } => None,
+            Motion::FixedAxis(axis) => Some(axis),
+            Motion::Hinge(hinge) => Some(hinge.axis()),
+        }
+    }
+
+    /// C from the moment center O (the pivot, the axis point, or C itself), and the inertia about O, body axes.
+    pub fn about_moment_center(&self) -> (Vector3<f64>, Matrix3<f64>) {
+        match (self, self.axis()) {
+            (Motion::Free { body, .. }, _) => (*body.rho_c_b(), *body.inertia_b()),
+            (_, axis) => axis.map_or((Vector3::zeros(), Matrix3::zeros()), |a| {
+                (*a.rho_c_b(), *a.inertia_a_b())
+            }),
+        }
+    }
 }
 
 impl Scene {
@@ -67,4 +100,17 @@ pub struct Scene {
     pub schedule: Schedule,
     /// Largest allowed difference for `eulerdyn compare`.
     pub compare_tolerance: f64,
+    /// The scene as simulated: the spec it was built from, with the overrides applied and every default that a
+    /// key leaves out written in (the solver and output values as run, each effect's and motion's defaults). The
+    /// analyses that vary a scene (accuracy, balance, sweeps) start from it, and the run's sidecar records it.
+    pub spec: SceneSpec,
+    /// The scene file it was read from and that file's text; `None` for a scene built in code.
+    pub source: Option<SceneSource>,
+}
+
+/// Where a scene came from: its file (or `<dict>` for a Python dict) and the text as written.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneSource {
+    pub path: std::path::PathBuf,
+    pub text: String,
 }

@@ -156,6 +156,9 @@ pub struct MotionSpec {
     /// rad/s at t = 0.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rate: Option<f64>,
+    /// The same in revolutions per minute, instead of `rate` (rate = rate_rpm · 2π/60).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rate_rpm: Option<f64>,
     /// rad/s², constant.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub accel: Option<f64>,

@@ -122,11 +122,20 @@ pub fn drift_warning(energy_drift: Option<f64>) -> Option<String> {
     })
 }
 
-/// Everything a finished run is warned about: a coarse fixed step ([`CoarseStep`]) and a drifting energy
-/// ([`drift_warning`]).
-pub fn warnings(scene: &Scene, energy_drift: Option<f64>) -> Vec<String> {
+/// What a run is warned of before it starts: the scene's own warnings ([`crate::scene::advice::warnings`]: unit
+/// slips, the separatrix) and a coarse fixed step ([`CoarseStep`]). The command line prints them on stderr, Python
+/// issues them as `UserWarning`s.
+pub fn warnings_before_run(scene: &Scene) -> Vec<String> {
     let coarse = CoarseStep::of(scene).map(|c| c.to_string());
-    coarse
+    crate::scene::advice::warnings(scene)
+        .into_iter()
+        .chain(coarse)
+        .collect()
+}
+
+/// Everything a finished run is warned about: [`warnings_before_run`] and a drifting energy ([`drift_warning`]).
+pub fn warnings(scene: &Scene, energy_drift: Option<f64>) -> Vec<String> {
+    warnings_before_run(scene)
         .into_iter()
         .chain(drift_warning(energy_drift))
         .collect()

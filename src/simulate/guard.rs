@@ -5,8 +5,8 @@ use std::fmt;
 
 use nalgebra::Vector3;
 
+use crate::effects::EffectMoments;
 use crate::method::Method;
-use crate::motion::free::EffectMoments;
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 
@@ -103,7 +103,7 @@ enum Accuracy {
 /// ```
 ///
 /// — a thousand times the global error of a method honouring its accuracy over Ω t radians (measured constants
-/// are ≤ 0.15, see tests/free_rotation.rs), never below 1e-6 (round-off over long runs), never above 50 % (a
+/// are ≤ 0.15, see tests/it/free_rotation.rs), never below 1e-6 (round-off over long runs), never above 50 % (a
 /// conserved quantity off by half is garbage whatever the settings).
 ///
 /// * Torque-free, E, |H| and H_s are conserved: |E − E₀| ≤ δ E₀, ||H| − |H₀|| ≤ δ |H₀|,

@@ -10,12 +10,13 @@ use std::time::Instant;
 
 use nalgebra::{SVector, Vector3};
 
+use crate::effects::{EffectMoments, TorqueFree};
 use crate::frames::Form;
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::{self, BodyForm, EffectMoments, FreeBody, SpaceForm, TorqueFree};
+use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::{ColumnSet, Sample};
@@ -26,7 +27,7 @@ mod guard;
 
 pub use advice::{
     CoarseStep, EnergyWatch, MAX_ENERGY_DRIFT, MAX_TURN_PER_STEP, drift_warning, fixed_step,
-    warnings,
+    warnings, warnings_before_run,
 };
 pub use guard::{Divergence, DivergenceGuard, GuardedQuantity};
 
@@ -257,7 +258,7 @@ fn run_free<M: KickMoment + Clone, E>(
     moment: M,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
-    let frame = scene.solver.frame;
+    let frame = scene.solver.form;
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
             let mut split = LiePoisson::new(body, frame, scheme, moment);
@@ -274,7 +275,7 @@ fn run_free<M: KickMoment + Clone, E>(
         }
         Runner::Exact => {
             if !M::ZERO {
-                // Validation refuses this (scene.rs); a scene built by hand still gets a clear error.
+                // Validation refuses this (scene/validate/solver.rs); a scene built by hand still gets a clear error.
                 return Err(IntegrateError::InvalidSettings {
                     reason:
                         "method \"exact\" is the torque-free closed form; the scene has effects"
@@ -343,7 +344,7 @@ fn run_fixed_axis<E>(
     motion: &FixedAxis,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
-    let frame = scene.solver.frame;
+    let frame = scene.solver.form;
     let h_s0: Vector3<f64> = motion.sample(0.0, frame).h_s;
     let mut system = RequiredMomentRate { motion, frame };
     let mut on_row = |t: f64, h_s_int: &Vector3<f64>| {
@@ -388,7 +389,7 @@ fn run_hinge<E>(
     hinge: &Hinge,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<Stats, IntegrateError<E>> {
-    let form = scene.solver.frame;
+    let form = scene.solver.form;
     let Runner::RungeKutta(settings) = runner(scene) else {
         return Err(IntegrateError::InvalidSettings {
             reason: format!(

@@ -6,10 +6,11 @@ page's `window.eulerdyn.state()` is checked against the run's CSV at the row tim
 canvas, and two times against each other.
 
 Run by `.ci/browser-tests` (which builds the binary and makes the venv). Environment:
-  EULERDYN_BIN                the eulerdyn binary (default: target/debug/eulerdyn)
+  EULERDYN_BIN                the eulerdyn binary (default: target/release/eulerdyn)
   CHROMIUM                    the browser (default: /usr/bin/chromium)
   EULERDYN_VIEW_SCREENSHOT    if set, the tilted disk's screenshot is written there (docs/tilted_disk_view.png)
   EULERDYN_VIEW_REPORT        if set, page sizes and open times are appended there (measurements, not checks)
+  EULERDYN_VIEW_SCREENSHOT_DIR  if set, the rod pendulum's view at t = 0 is written there as rod_t0.png
 """
 
 import csv
@@ -55,7 +56,7 @@ def report(line):
 
 @pytest.fixture(scope="session")
 def work(tmp_path_factory):
-    assert BIN.is_file(), f"{BIN} is missing: build it first (cargo build)"
+    assert BIN.is_file(), f"{BIN} is missing: build it first (cargo build --release)"
     return tmp_path_factory.mktemp("view")
 
 
@@ -92,7 +93,7 @@ def browser():
 class Page:
     """An open page with its requests and console errors recorded; network requests are blocked."""
 
-    def __init__(self, browser, html_path):
+    def __init__(self, browser, html_path, fragment=""):
         self.url = html_path.resolve().as_uri()
         self.context = browser.new_context(viewport=VIEWPORT)
         self.page = self.context.new_page()
@@ -103,7 +104,7 @@ class Page:
         self.page.on("pageerror", lambda e: self.errors.append(f"pageerror: {e}"))
         self.context.route("**/*", self._route)
         started = time.monotonic()
-        self.page.goto(self.url)
+        self.page.goto(self.url + fragment)
         self.wait_drawn()
         self.open_seconds = time.monotonic() - started
 
@@ -161,8 +162,8 @@ class Page:
 def open_page(browser):
     pages = []
 
-    def opener(html_path):
-        p = Page(browser, html_path)
+    def opener(html_path, fragment=""):
+        p = Page(browser, html_path, fragment)
         pages.append(p)
         return p
 
@@ -376,3 +377,100 @@ def test_the_page_embeds_everything_and_names_its_three_js(disk):
     for tag in ("<link", "src=\"http", "src='http", "@import", "url(http"):
         assert tag not in html, tag
     assert json.loads(html.split('id="eulerdyn-data">', 1)[1].split("</script>", 1)[0])["columns"][0] == "t"
+
+
+@pytest.fixture(scope="session")
+def rod(work):
+    return make_page(work, "rod_pendulum.toml", "rod")
+
+
+def visible_pixels(page, part):
+    """How many canvas pixels change when `part` ('body', 'axes', 'vectors') is hidden: what of it shows."""
+    page.canvas_pixels()
+    page.js("(p) => window.eulerdyn.show(p, false)", part)
+    changed = page.canvas_pixels()["changed"]
+    page.js("(p) => window.eulerdyn.show(p, true)", part)
+    page.canvas_pixels()
+    return changed
+
+
+def test_a_thin_rod_shows_at_t0_and_no_arrow_or_axis_lies_over_it(rod, open_page):
+    _, html_path, _ = rod
+    page = open_page(html_path)
+    page.js("() => window.eulerdyn.setTime(0)")
+    geometry = page.js("() => window.eulerdyn.geometry.body")
+    assert geometry["kind"] == "thin_rod" and geometry["min_drawn_thickness"] == 0.05
+    assert "at least 0.050 m thick" in page.page.inner_text("#legend")
+    with_all = visible_pixels(page, "body")
+    page.js("() => { window.eulerdyn.show('vectors', false); window.eulerdyn.show('axes', false); }")
+    alone = visible_pixels(page, "body")
+    page.js("() => { window.eulerdyn.show('vectors', true); window.eulerdyn.show('axes', true); }")
+    if os.environ.get("EULERDYN_VIEW_SCREENSHOT_DIR"):
+        page.page.screenshot(path=os.path.join(os.environ["EULERDYN_VIEW_SCREENSHOT_DIR"], "rod_t0.png"))
+    report(f"rod at t = 0: {alone} pixels of the body alone, {with_all} with the axes and the vectors drawn")
+    # The 1 m rod, 5 cm thick, seen from the first view at 1200 x 800 (with -g up): a solid, not a line (about
+    # 1470 pixels; drawn 3.3 cm thick and seen along its length, as before, it covered about 750).
+    assert alone > 1200, f"the rod covers only {alone} pixels"
+    # The vectors start beside the body and the axes are thin lines: together they hide at most 10 % of it.
+    assert with_all >= 0.9 * alone, f"{alone} pixels of the rod alone, {with_all} with the vectors and axes"
+    origin = page.js("() => window.eulerdyn.vector_origin")
+    assert math.hypot(*origin) > 1.0, f"the vectors start at {origin}, inside the rod's reach of 1 m"
+
+
+def test_the_page_opens_at_the_time_in_its_fragment_and_keeps_it_in_step(rod, open_page):
+    csv_path, html_path, _ = rod
+    rows = read_csv(csv_path)
+    page = open_page(html_path, "#t=0.44")
+    s = page.js("() => window.eulerdyn.state()")
+    row = next(r for r in rows if r["t"] == 0.44)
+    assert s["t"] == 0.44 and s["H_s"] == [row["H_s_x"], row["H_s_y"], row["H_s_z"]], s
+    assert "t = 0.4400" in page.page.inner_text("#readout")
+    # Scrubbing to the middle writes the fragment (after a short pause), so that the address reopens there.
+    page.js("() => { const s = document.getElementById('time'); s.value = '50000'; "
+            "s.dispatchEvent(new Event('input')); }")
+    end = time.monotonic() + 10
+    while page.js("() => location.hash") != "#t=2.5":
+        assert time.monotonic() < end, page.js("() => location.hash")
+        time.sleep(0.05)
+    # Editing the fragment moves the time.
+    page.js("() => { location.hash = '#t=1.25'; }")
+    end = time.monotonic() + 10
+    while page.js("() => window.eulerdyn.state().t") != 1.25:
+        assert time.monotonic() < end, page.js("() => window.eulerdyn.state().t")
+        time.sleep(0.05)
+
+
+def test_the_default_speed_plays_about_one_turn_per_second(work, disk, open_page):
+    # A steel disk at 3000 rpm for 0.1 s: five turns, which 1x would play in 0.1 s.
+    scene = work / "fast_disk.toml"
+    scene.write_text('''name = "fast-disk"
+[body]
+mass = 4.9
+shape = { type = "disk", radius = 0.1, thickness = 0.02 }
+[motion]
+type = "fixed_axis"
+axis = [0.0, 0.0, 1.0]
+rate = 314.1592653589793
+[solver]
+t_end = 0.1
+[output]
+every = 0.0002
+''')
+    csv_path = work / "fast_disk.csv"
+    html_path = work / "fast_disk.html"
+    assert eulerdyn("run", scene, "-o", csv_path).returncode == 0
+    assert eulerdyn("view", csv_path, "-o", html_path).returncode == 0
+    page = open_page(html_path)
+    api = page.js("() => ({ speed: window.eulerdyn.clock.speed, rate: window.eulerdyn.typical_rate, "
+                  "default: window.eulerdyn.default_speed })")
+    # The rule: 2 pi / median |omega| = 0.02 s per second, already on the 1-2-5 ladder.
+    assert abs(api["rate"] - 314.1592653589793) < 1e-9
+    assert api["speed"] == api["default"] == 0.02
+    turns_per_second = api["speed"] * api["rate"] / (2 * math.pi)
+    assert 0.6 < turns_per_second < 1.6
+    assert page.js("() => document.getElementById('speed').value") == "0.02"
+    said = page.page.inner_text("#speed-rule")
+    assert "0.02×" in said and "1 turn/s" in said and "314.2" in said, said
+    # The tilted disk at 10 rad/s: 2 pi / 10 = 0.628, nearest on the ladder 0.5.
+    page = open_page(disk[1])
+    assert page.js("() => window.eulerdyn.clock.speed") == 0.5

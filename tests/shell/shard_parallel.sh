@@ -5,7 +5,7 @@
 #   tests/shell/shard_parallel.sh [EULERDYN_BINARY] [SWEEP.toml]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-bin=${1:-target/debug/eulerdyn}
+bin=${1:-target/release/eulerdyn}
 sweep=${2:-scenarios/sweeps/tumble_monte_carlo.toml}
 command -v parallel >/dev/null || { echo "shard test: GNU parallel is not installed (apt-get install parallel)" >&2; exit 1; }
 [ -x "$bin" ] || { echo "shard test: no eulerdyn binary at $bin (cargo build first)" >&2; exit 1; }

@@ -3,16 +3,19 @@
 //! Every method of [`Method::ALL`] that the scene accepts is run over a sweep (adaptive methods over relative
 //! tolerances, fixed-step methods over halved step sizes), each run's error measured against a reference (a closed
 //! form, or a tight DOP853 run), and its integration timed. The outcome is a [`Study`]: a table (one row per run,
-//! [`TABLE_COLUMNS`]), and a summary naming the cheapest method for each of [`TARGETS`]. How the sweep is chosen,
-//! what each measure means and how the time is taken: `docs/accuracy_study.md`.
+//! [`TABLE_COLUMNS`]), and a summary naming the cheapest method for each of [`TARGETS`] — among the runs whose
+//! curve converges there ([`convergence`]), so that a run reaching a target by chance is not named. How the sweep
+//! is chosen, what each measure means and how the time is taken: `docs/accuracy_study.md`.
 //!
 //! - this module: the options, the plan of runs, and [`accuracy`], which runs it;
+//! - `convergence`: whether a run counts for a target (its curve's error falls with the setting there);
 //! - `reference`: the closed form or reference run the errors are taken against;
 //! - `sweep`: one curve of runs, and one run: its scene, its errors, its timing;
 //! - `measure`: the errors of one run against the reference, row by row;
 //! - `timing`: the timed repeats of a run;
 //! - `table`, `summary`: the study as CSV and in words.
 
+pub mod convergence;
 mod measure;
 mod reference;
 mod summary;
@@ -26,7 +29,7 @@ use std::time::Instant;
 
 use crate::frames::Form;
 use crate::method::{Backend, Method};
-use crate::scene::{self, Overrides, Scene, SceneError};
+use crate::scene::{Scene, SceneError};
 
 pub use measure::Measure;
 pub use summary::{CurveCost, format_seconds};
@@ -150,11 +153,15 @@ impl StudyRow {
 pub struct Cheapest {
     /// The error level.
     pub target: f64,
-    /// Index into [`Study::rows`] of the fastest run with error ≤ target, if any.
+    /// Index into [`Study::rows`] of the fastest run with error ≤ target that counts for it (its curve converges
+    /// there: [`convergence`]), if any.
     pub row: Option<usize>,
     /// The same among the methods that integrate (fixed-step or adaptive: not `exact`, which evaluates the closed
     /// form at every row).
     pub integrator: Option<usize>,
+    /// The fastest run with error ≤ target that does not count for it (its curve does not converge there), when
+    /// it is faster than [`Cheapest::integrator`] or there is none: reported, never named the cheapest.
+    pub unconverged: Option<usize>,
 }
 
 /// A method (or backend) the study did not sweep, and why.
@@ -284,15 +291,22 @@ impl Runs {
     }
 }
 
-/// The scene as written, refused when the study cannot use it (t_end = 0, too many rows for the reference).
-fn studied_scene(scene_path: &Path, text: &str) -> Result<Scene, StudyError> {
-    let base = scene::parse(scene_path, text, &Overrides::default())?;
+/// The scene's file (or `<scene>` for one built in code), for messages and the summary.
+fn scene_file(scene: &Scene) -> PathBuf {
+    scene
+        .source
+        .as_ref()
+        .map_or_else(|| PathBuf::from("<scene>"), |s| s.path.clone())
+}
+
+/// Refuses a scene the study cannot use (t_end = 0, too many rows for the reference).
+fn check_studied(scene: &Scene, scene_path: &Path) -> Result<(), StudyError> {
     let unsuitable = |problem: String| StudyError::Unsuitable {
         file: scene_path.to_path_buf(),
         problem,
     };
-    let n_rows = base.schedule.len();
-    if base.solver.t_end <= 0.0 {
+    let n_rows = scene.schedule.len();
+    if scene.solver.t_end <= 0.0 {
         return Err(unsuitable(
             "solver.t_end = 0: there is nothing to integrate; give t_end > 0".into(),
         ));
@@ -302,41 +316,48 @@ fn studied_scene(scene_path: &Path, text: &str) -> Result<Scene, StudyError> {
             "the scene writes {n_rows} rows; the accuracy study keeps the reference at every row in memory and takes at most {REFERENCE_MAX_ROWS}: use a larger output.every (or --every)"
         )));
     }
-    Ok(base)
+    Ok(())
 }
 
-/// For each of [`TARGETS`], the fastest run reaching it, and the fastest among the methods that integrate.
+/// For each of [`TARGETS`], the fastest run reaching it that counts for it ([`convergence`]), the same among the
+/// methods that integrate, and the fastest run reaching it by chance when that one is faster.
 fn cheapest(rows: &[StudyRow], measure: Measure) -> Vec<Cheapest> {
-    let fastest = |target: f64, integrators_only: bool| {
+    let fastest = |target: f64, integrators_only: bool, counted: bool| {
         rows.iter()
             .enumerate()
             .filter(|(_, r)| r.error(measure).is_some_and(|e| e <= target))
             .filter(|(_, r)| {
                 !integrators_only || r.method_name.is_fixed_step() || r.method_name.is_adaptive()
             })
+            .filter(|(i, _)| convergence::counts(rows, measure, *i, target) == counted)
             .min_by(|a, b| a.1.wall_s.total_cmp(&b.1.wall_s))
             .map(|(i, _)| i)
     };
     TARGETS
         .iter()
-        .map(|&target| Cheapest {
-            target,
-            row: fastest(target, false),
-            integrator: fastest(target, true),
+        .map(|&target| {
+            let integrator = fastest(target, true, true);
+            let unconverged = fastest(target, true, false)
+                .filter(|&u| integrator.is_none_or(|i| rows[u].wall_s < rows[i].wall_s));
+            Cheapest {
+                target,
+                row: fastest(target, false, true),
+                integrator,
+                unconverged,
+            }
         })
         .collect()
 }
 
-/// Runs the work-precision study of the scene file `scene_path` whose text is `text`. `progress(done, total,
-/// what)` is called before every run (and once at the end with done = total); `total` is the planned number of
+/// Runs the work-precision study of `scene` (every run a variant of its [`Scene::spec`], the scene as simulated).
+/// `progress(done, total, what)` is called before every run (and once at the end with done = total); `total` is the planned number of
 /// runs, some of which a curve may skip (the count then jumps).
 pub fn accuracy(
-    scene_path: &Path,
-    text: &str,
+    scene: &Scene,
     options: &StudyOptions,
     mut progress: impl FnMut(usize, usize, &str),
 ) -> Result<Study, StudyError> {
-    accuracy_until(scene_path, text, options, |done, total, what| {
+    accuracy_until(scene, options, |done, total, what| {
         progress(done, total, what);
         ControlFlow::Continue(())
     })
@@ -345,23 +366,24 @@ pub fn accuracy(
 /// [`accuracy`], stopped before the next run with [`StudyError::Interrupted`] once `progress` breaks (the Python
 /// module's Ctrl-C).
 pub fn accuracy_until(
-    scene_path: &Path,
-    text: &str,
+    base: &Scene,
     options: &StudyOptions,
     mut progress: impl FnMut(usize, usize, &str) -> ControlFlow<()>,
 ) -> Result<Study, StudyError> {
     let started = Instant::now();
-    let base = studied_scene(scene_path, text)?;
-    // Every run changes the typed scene, parsed once (never the text).
-    let spec = scene::parse_spec(scene_path, text)?;
+    let path = scene_file(base);
+    let scene_path = path.as_path();
+    check_studied(base, scene_path)?;
+    // Every run changes the typed scene as simulated (never the text).
+    let spec = &base.spec;
     let interrupted = || StudyError::Interrupted {
         file: scene_path.to_path_buf(),
     };
     if progress(0, 1, "reference").is_break() {
         return Err(interrupted());
     }
-    let reference = reference::StudyReference::for_scene(&base, scene_path, &spec)?;
-    let sweep = sweep::Sweep::new(&spec, &base, &reference, options);
+    let reference = reference::StudyReference::for_scene(base, scene_path, spec)?;
+    let sweep = sweep::Sweep::new(spec, base, &reference, options);
     let curves = plan(options);
     let total: usize = curves.iter().map(|c| c.planned).sum();
     let mut done = 0usize;

@@ -5,6 +5,7 @@ use std::fmt::{self, Write as _};
 
 use crate::frames::Form;
 
+use super::convergence::{self, NotCounted};
 use super::{Cheapest, Study, StudyRow, TARGETS};
 
 /// A number for people: its shortest form when that is short (`1e-10`, `6.25e-2`), else 4 digits (`5.623e-11`).
@@ -34,8 +35,11 @@ pub struct CurveCost {
     /// The curve's label (`dop853`, `dop853/ode_solvers`).
     pub method: String,
     pub frame: Form,
-    /// Index into [`Study::rows`] of the fastest run of the curve reaching each target.
+    /// Index into [`Study::rows`] of the fastest run of the curve reaching each target and counting for it (the
+    /// curve converges there: [`convergence`]).
     pub rows: [Option<usize>; 3],
+    /// For each target: a run of the curve reaches it, but none counts for it (shown `n.c.`).
+    pub unconverged: [bool; 3],
 }
 
 impl Study {
@@ -95,39 +99,28 @@ impl Study {
         )
     }
 
-    /// The cheapest run for one error level (or the closest any run came), and the cheapest that integrates when
-    /// that is another run.
+    /// The cheapest run for one error level (or the closest any run came), the cheapest that integrates when that
+    /// is another run, and a faster run that reached the level without converging to it ([`convergence`]).
     fn write_cheapest(&self, out: &mut String, c: &Cheapest) {
         let column = self.measure.column();
-        let _ = match c.row.map(|i| &self.rows[i]) {
-            Some(r) => writeln!(
+        let head = format!("cheapest for {column} <= {:e}:", c.target);
+        let _ = match (c.row.map(|i| &self.rows[i]), c.unconverged) {
+            (Some(r), _) => writeln!(out, "{head} {}", self.describe_run(r)),
+            (None, Some(u)) => writeln!(
                 out,
-                "cheapest for {column} <= {:e}: {}",
-                c.target,
-                self.describe_run(r)
+                "{head} no run converges to it: {}",
+                self.not_counted(u, c.target)
             ),
-            None => {
-                let best = self
-                    .rows
-                    .iter()
-                    .filter_map(|r| r.error(self.measure).map(|e| (e, r)))
-                    .min_by(|a, b| a.0.total_cmp(&b.0));
-                match best {
-                    Some((e, r)) => writeln!(
-                        out,
-                        "cheapest for {column} <= {:e}: no run reaches it (smallest: {e:.2e}, {} {} form {})",
-                        c.target,
-                        r.method,
-                        r.frame.name(),
-                        r.setting()
-                    ),
-                    None => writeln!(
-                        out,
-                        "cheapest for {column} <= {:e}: no run completed",
-                        c.target
-                    ),
-                }
-            }
+            (None, None) => match self.closest() {
+                Some((e, r)) => writeln!(
+                    out,
+                    "{head} no run reaches it (smallest: {e:.2e}, {} {} form {})",
+                    r.method,
+                    r.frame.name(),
+                    r.setting()
+                ),
+                None => writeln!(out, "{head} no run completed"),
+            },
         };
         if c.integrator != c.row
             && let Some(r) = c.integrator.map(|i| &self.rows[i])
@@ -138,6 +131,60 @@ impl Study {
                 self.describe_run(r)
             );
         }
+        if let (Some(u), Some(_)) = (c.unconverged, c.row) {
+            let lead = if c.integrator.is_some() {
+                "faster, not counted"
+            } else {
+                "no run that integrates converges to it"
+            };
+            let _ = writeln!(out, "    {lead}: {}", self.not_counted(u, c.target));
+        }
+    }
+
+    /// The completed run with the smallest error, and that error.
+    fn closest(&self) -> Option<(f64, &StudyRow)> {
+        self.rows
+            .iter()
+            .filter_map(|r| r.error(self.measure).map(|e| (e, r)))
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+    }
+
+    /// Run `i`, which reaches `target` without counting for it, and why it does not count.
+    fn not_counted(&self, i: usize, target: f64) -> String {
+        let r = &self.rows[i];
+        let error = |k: usize| self.rows[k].error(self.measure).unwrap_or(f64::NAN);
+        let at = |k: usize| format!("{:.2e} at {}", error(k), self.rows[k].setting());
+        let (knob, tightens) = if r.rtol.is_some() {
+            ("tolerance", "tightens")
+        } else {
+            ("step", "shrinks")
+        };
+        let why = match convergence::verdict(&self.rows, self.measure, i, target) {
+            Ok(()) => "it counts".to_string(),
+            Err(NotCounted::TighterMisses(k)) => format!(
+                "its error does not stay below the target as the {knob} {tightens} ({})",
+                at(k)
+            ),
+            Err(NotCounted::NoFall(a, b)) if a == b => {
+                format!("its curve has one run ({}): no convergence to see", at(b))
+            }
+            Err(NotCounted::NoFall(a, b)) => format!(
+                "its error does not fall with the {knob} in the measured range ({}, {})",
+                at(a),
+                at(b)
+            ),
+        };
+        format!(
+            "{} reaches {:.2e} in {}, but {why}: reached by chance, not named",
+            self.describe_setting(r),
+            error(i),
+            format_seconds(r.wall_s)
+        )
+    }
+
+    /// `dop853 (body form, rtol 1e-8)`.
+    fn describe_setting(&self, r: &StudyRow) -> String {
+        format!("{} ({} form, {})", r.method, r.frame.name(), r.setting())
     }
 
     /// The table of the wall time each curve takes to reach each of [`TARGETS`].
@@ -149,7 +196,8 @@ impl Study {
         let column = self.measure.column();
         let _ = writeln!(
             out,
-            "\nwall time to reach {column} <= {} (the cheapest run of each method and form; - : not reached):",
+            "\nwall time to reach {column} <= {} (the cheapest run of each method and form; - : not reached; \
+             n.c.: reached, but the method does not converge there):",
             TARGETS.map(|t| format!("{t:e}")).join(" / ")
         );
         let _ = write!(out, "{:<20} {:<6}", "method", "form");
@@ -159,16 +207,20 @@ impl Study {
         let _ = writeln!(out);
         for c in &curves {
             let _ = write!(out, "{:<20} {:<6}", c.method, c.frame.name());
-            for i in c.rows {
-                let cell =
-                    i.map_or_else(|| "-".to_string(), |i| format_seconds(self.rows[i].wall_s));
+            for (i, unconverged) in c.rows.into_iter().zip(c.unconverged) {
+                let cell = match i {
+                    Some(i) => format_seconds(self.rows[i].wall_s),
+                    None if unconverged => "n.c.".to_string(),
+                    None => "-".to_string(),
+                };
                 let _ = write!(out, " {cell:>10}");
             }
             let _ = writeln!(out);
         }
     }
 
-    /// For every curve (method label and form, in the order run), the fastest run reaching each of [`TARGETS`].
+    /// For every curve (method label and form, in the order run), the fastest run reaching each of [`TARGETS`]
+    /// that counts for it, and whether a run reached it without counting.
     pub fn costs(&self) -> Vec<CurveCost> {
         let mut curves: Vec<CurveCost> = Vec::new();
         for (i, r) in self.rows.iter().enumerate() {
@@ -182,6 +234,7 @@ impl Study {
                         method: r.method.clone(),
                         frame: r.frame,
                         rows: [None; 3],
+                        unconverged: [false; 3],
                     });
                     curves.len() - 1
                 }
@@ -189,11 +242,21 @@ impl Study {
             let Some(err) = r.error(self.measure) else {
                 continue;
             };
-            for (slot, target) in curves[k].rows.iter_mut().zip(TARGETS) {
-                let faster = slot.is_none_or(|j| r.wall_s < self.rows[j].wall_s);
-                if err <= target && faster {
-                    *slot = Some(i);
+            let curve = &mut curves[k];
+            for (j, target) in TARGETS.into_iter().enumerate() {
+                if err > target {
+                    continue;
                 }
+                if !convergence::counts(&self.rows, self.measure, i, target) {
+                    curve.unconverged[j] = true;
+                } else if curve.rows[j].is_none_or(|o| r.wall_s < self.rows[o].wall_s) {
+                    curve.rows[j] = Some(i);
+                }
+            }
+        }
+        for curve in &mut curves {
+            for j in 0..TARGETS.len() {
+                curve.unconverged[j] &= curve.rows[j].is_none();
             }
         }
         curves

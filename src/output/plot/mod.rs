@@ -63,7 +63,7 @@ pub enum Panel {
     /// |x(t) − x(0)| / |x(0)| of |H| and of the energy, on a log scale.
     Drift,
     /// The bearings' forces on the body: |R_A|, |R_B| and their components in body axes (A solid, B dashed).
-    /// Drawn when asked for (`--panels …,bearings`): only runs with bearings have its columns.
+    /// Only runs with bearings have its columns.
     Bearings,
     /// The force the support applies to the body, F_sup, in space axes, and |F_sup| (fixed_axis and hinge runs).
     Support,
@@ -72,7 +72,7 @@ pub enum Panel {
 }
 
 impl Panel {
-    /// Every panel, in the order they are drawn by default.
+    /// The panels every run has, in the order they are drawn by default (`--panels all`).
     pub const ALL: [Panel; 6] = [
         Panel::HBody,
         Panel::HSpace,
@@ -82,8 +82,18 @@ impl Panel {
         Panel::Drift,
     ];
 
-    /// The panels of fixed-axis and hinge runs, drawn when asked for.
+    /// The panels of fixed-axis and hinge runs (bearings: with bearings only), drawn after [`Panel::ALL`] by
+    /// default when the run has their columns.
     pub const AXIS_ONLY: [Panel; 3] = [Panel::Theta, Panel::Support, Panel::Bearings];
+
+    /// The panels a run has, drawn when none are asked for: every panel of [`Panel::ALL`], then those of
+    /// [`Panel::AXIS_ONLY`] whose columns the run's header has (`has`).
+    pub fn of_run(has: impl Fn(&str) -> bool) -> Vec<Panel> {
+        let axis = Panel::AXIS_ONLY
+            .into_iter()
+            .filter(|p| p.columns().iter().all(|c| has(c)));
+        Panel::ALL.into_iter().chain(axis).collect()
+    }
 
     /// The name used with `--panels`.
     pub fn name(self) -> &'static str {
@@ -143,8 +153,26 @@ impl Panel {
         }
     }
 
+    /// What a run of `eulerdyn run` lacks when it has not the panel's columns, in words ("this run has …"), for
+    /// panels that not every run can draw.
+    pub fn absence(self) -> Option<&'static str> {
+        match self {
+            Panel::Bearings => Some(
+                "no bearings (only runs of scenes with `bearings` have the bearing forces, columns R_A_b_x … \
+                 R_B_b_z, that the bearings panel draws)",
+            ),
+            Panel::Theta => Some(
+                "no fixed axis, so no angle `theta` (needed by theta; only fixed_axis and hinge runs have them)",
+            ),
+            Panel::Support => Some(
+                "no support force `F_sup_s_*` (needed by support; only fixed_axis and hinge runs have them)",
+            ),
+            _ => None,
+        }
+    }
+
     /// A comma-separated list of panel names (`h_body,h_space`), in the order given; a name given twice is drawn
-    /// once. `all` stands for every panel.
+    /// once. `all` stands for the six panels every run has ([`Panel::ALL`]).
     pub fn parse_list(text: &str) -> Result<Vec<Panel>, String> {
         let mut panels = Vec::new();
         for name in text.split(',').map(str::trim) {
@@ -262,17 +290,18 @@ fn check_title(title: &str) -> Result<(), PlotError> {
     Ok(())
 }
 
-/// The figure for `panels` (all when empty) of `run`, as SVG text.
+/// The figure for `panels` of `run` (when empty, the panels `run` was read for: [`RunSeries::panels`]), as SVG
+/// text.
 pub fn render_svg(
     run: &RunSeries,
     panels: &[Panel],
     options: &FigureOptions,
     out_name: &Path,
 ) -> Result<String, PlotError> {
-    let panels: Vec<Panel> = if panels.is_empty() {
-        Panel::ALL.to_vec()
+    let panels = if panels.is_empty() {
+        &run.panels
     } else {
-        panels.to_vec()
+        panels
     };
     let title = match &options.title {
         Some(t) => {
@@ -281,8 +310,8 @@ pub fn render_svg(
         }
         None => draw::default_title(run),
     };
-    let size = figure_size(&panels, options)?;
-    draw::render_svg(run, &panels, size, &title, out_name)
+    let size = figure_size(panels, options)?;
+    draw::render_svg(run, panels, size, &title, out_name)
 }
 
 /// What [`plot_file`] drew.
@@ -298,19 +327,16 @@ pub struct PlotSummary {
     pub pixels: (u32, u32),
 }
 
-/// Reads the run's CSV `csv` (`-`: stdin), draws `panels` (all when empty) and writes the figure to `out`
-/// atomically, as PNG when its name ends in `.png`, else SVG: on any error an existing `out` is left untouched.
+/// Reads the run's CSV `csv` (`-`: stdin), draws `panels` (when empty, the panels the run has:
+/// [`Panel::of_run`]) and writes the figure to `out` through [`super::AtomicFile`] (atomically, or written
+/// through to a device or FIFO), as PNG when its name ends in `.png`, else SVG: on any error an existing regular
+/// `out` is left untouched.
 pub fn plot_file(
     csv: &Path,
     out: &Path,
     panels: &[Panel],
     options: &FigureOptions,
 ) -> Result<PlotSummary, PlotError> {
-    let panels: Vec<Panel> = if panels.is_empty() {
-        Panel::ALL.to_vec()
-    } else {
-        panels.to_vec()
-    };
     let format = FigureFormat::of(out);
     if format == FigureFormat::Svg && options.dpi.is_some() {
         return Err(PlotError::Option(
@@ -318,7 +344,8 @@ pub fn plot_file(
                 .into(),
         ));
     }
-    let run = read_run(csv, &panels)?;
+    let run = read_run(csv, panels)?;
+    let panels = run.panels.clone();
     let svg = render_svg(&run, &panels, options, out)?;
     let size = figure_size(&panels, options)?;
     let (bytes, pixels) = match format {
@@ -349,7 +376,8 @@ fn figure_size(panels: &[Panel], options: &FigureOptions) -> Result<FigureSize, 
         .map_err(|e| PlotError::Option(format!("--size: {e}")))
 }
 
-/// Writes `bytes` to `out` through a temporary file renamed over it.
+/// Writes `bytes` to `out` through [`super::AtomicFile`]: a temporary file renamed over it (or, for a device or
+/// FIFO, written through).
 fn write_atomically(out: &Path, bytes: &[u8]) -> Result<(), PlotError> {
     let file = super::AtomicFile::create(out).map_err(|e| PlotError::Input {
         file: out.to_path_buf(),

@@ -9,7 +9,9 @@ use std::path::{Path, PathBuf};
 
 use super::decimator::Decimator;
 use super::{Panel, PlotError};
-use crate::output::run_csv::{RunCsvReader, sidecar_path};
+use crate::output::run_csv::RunCsvReader;
+use crate::output::sidecar::Sidecar;
+use crate::scene::EffectKind;
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -63,6 +65,8 @@ pub struct RunSeries {
     pub(super) norms: Vec<Norm>,
     /// The scene, from the run's sidecar, when there is one.
     pub(super) scene: Option<SceneFacts>,
+    /// The panels read for: those asked for or, when none were, the panels the run has ([`Panel::of_run`]).
+    pub panels: Vec<Panel>,
 }
 
 /// The vectors whose magnitude a panel draws, by column prefix.
@@ -111,6 +115,7 @@ impl RunSeries {
             drifts,
             norms,
             scene: None,
+            panels: panels.to_vec(),
         }
     }
 
@@ -154,7 +159,7 @@ impl RunSeries {
     }
 }
 
-/// Reads the CSV file `path` (or stdin when `path` is `-`) for `panels`.
+/// Reads the CSV file `path` (or stdin when `path` is `-`) for `panels` (when empty, the panels the run has).
 pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     if path.as_os_str() == "-" {
         let reader = RunCsvReader::new(Path::new("stdin"), std::io::stdin().lock())?;
@@ -165,7 +170,7 @@ pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     Ok(series)
 }
 
-/// Reads a run's CSV from `reader`; `file` names it in messages.
+/// Reads a run's CSV from `reader` for `panels` (when empty, the panels the run has); `file` names it in messages.
 pub fn read_run_from(
     file: &Path,
     reader: impl Read,
@@ -174,12 +179,20 @@ pub fn read_run_from(
     read_rows(RunCsvReader::new(file, reader)?, panels)
 }
 
-/// Reads the data rows of `csv` (its header read) into the curves of `panels`.
+/// Reads the data rows of `csv` (its header read) into the curves of `panels` (when empty, those the run has).
 fn read_rows(mut csv: RunCsvReader<impl Read>, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     let file = csv.file().to_path_buf();
-    let wanted = wanted_columns(panels, |c| csv.index_of(c).is_some());
-    let index = column_indices(&csv, &wanted, panels)?;
-    let mut series = RunSeries::new(&file, &wanted, panels);
+    if csv.index_of("t").is_none() && looks_like_a_scene(&csv) {
+        return Err(PlotError::input(&file, scene_file_advice(&file)));
+    }
+    let panels = if panels.is_empty() {
+        Panel::of_run(|c| csv.index_of(c).is_some())
+    } else {
+        panels.to_vec()
+    };
+    let wanted = wanted_columns(&panels, |c| csv.index_of(c).is_some());
+    let index = column_indices(&csv, &wanted, &panels)?;
+    let mut series = RunSeries::new(&file, &wanted, &panels);
     let drift_index: Vec<usize> = series
         .drifts
         .iter()
@@ -241,6 +254,9 @@ fn column_indices(
     if missing.is_empty() {
         return Ok(index);
     }
+    if let Some(absent) = absent_axis_panels(csv, &missing, panels) {
+        return Err(PlotError::input(csv.file(), absent));
+    }
     let list: Vec<String> = missing
         .iter()
         .map(|(name, users)| format!("`{name}` (needed by {})", users.join(", ")))
@@ -271,41 +287,88 @@ fn column_indices(
     ))
 }
 
-/// The scene's name, method, motion and effects from `FILE.meta.json`, if the run left one next to the CSV.
-fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
-    let text = std::fs::read_to_string(sidecar_path(csv)).ok()?;
-    let doc: serde_json::Value = serde_json::from_str(&text).ok()?;
-    let text_of = |pointer: &str| Some(doc.pointer(pointer)?.as_str()?.to_string());
-    let effects = doc
-        .pointer("/scene/effects")?
-        .as_array()?
+/// When `csv` is a run of `eulerdyn run` (it has every column of [`Panel::ALL`]) and the `missing` columns are
+/// only those of fixed-axis panels asked for, what the run has not, in words: "this run has no bearings (…)".
+fn absent_axis_panels(
+    csv: &RunCsvReader<impl Read>,
+    missing: &[(&str, Vec<&str>)],
+    panels: &[Panel],
+) -> Option<String> {
+    let a_run = std::iter::once("t")
+        .chain(Panel::ALL.iter().flat_map(|p| p.columns().iter().copied()))
+        .all(|c| csv.index_of(c).is_some());
+    if !a_run {
+        return None;
+    }
+    let absent: Vec<&str> = panels
         .iter()
-        .filter_map(|e| e.as_str().map(str::to_string))
+        .filter(|p| missing.iter().any(|(name, _)| p.columns().contains(name)))
+        .map(|p| p.absence())
+        .collect::<Option<_>>()?;
+    let has: Vec<&str> = Panel::of_run(|c| csv.index_of(c).is_some())
+        .iter()
+        .map(|p| p.name())
         .collect();
-    // The angular acceleration of a prescribed motion and the direction of gravity are in the scene text only.
-    let scene = text_of("/scene/text").and_then(|t| toml::from_str::<toml::Table>(&t).ok());
-    let number = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|a| a as f64));
-    let accel = scene
-        .as_ref()
-        .and_then(|t| number(t.get("motion")?.get("accel")?));
-    let vertical_gravity = scene
-        .as_ref()
-        .and_then(|t| t.get("effect")?.as_array())
-        .is_some_and(|effects| {
-            effects
-                .iter()
-                .filter(|e| e.get("type").and_then(|t| t.as_str()) == Some("gravity"))
-                .all(|e| {
-                    let g = e.get("g").and_then(|g| g.as_array());
-                    g.is_some_and(|g| g.len() == 3 && g[..2].iter().all(|c| number(c) == Some(0.0)))
-                })
-        });
+    Some(format!(
+        "this run has {}. Its panels (drawn without --panels): {}",
+        absent.join("; and "),
+        has.join(", ")
+    ))
+}
+
+/// Whether the text read as a CSV looks like a scene file: named `*.toml`, or its first line a TOML comment,
+/// table header or `key = value`.
+fn looks_like_a_scene(csv: &RunCsvReader<impl Read>) -> bool {
+    let toml_name = csv
+        .file()
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
+    let first = csv.header().first().map_or("", |c| c.trim());
+    let key = first.split('=').next().unwrap_or("").trim();
+    let key_value = first.contains('=')
+        && !key.is_empty()
+        && key
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.' | '"'));
+    toml_name || first.starts_with('#') || first.starts_with('[') || key_value
+}
+
+/// The message for a scene file given to `plot`: what it is and the commands that run it and plot its run.
+fn scene_file_advice(file: &Path) -> String {
+    let (scene, csv, figure) = if file == Path::new("stdin") {
+        (
+            "SCENE.toml".to_string(),
+            "RUN.csv".to_string(),
+            "FIG.svg".to_string(),
+        )
+    } else {
+        let named = |ext: &str| file.with_extension(ext).display().to_string();
+        (file.display().to_string(), named("csv"), named("svg"))
+    };
+    format!(
+        "this is a scene file (TOML), not a run's CSV; run it, then plot the run: `eulerdyn run {scene} -o {csv}`, \
+         then `eulerdyn plot {csv} -o {figure}`"
+    )
+}
+
+/// The scene's name, method, motion and effects from the run's sidecar ([`Sidecar`]), if it left one next to the
+/// CSV; the scene as simulated (defaults written in) says whether a prescribed motion accelerates and where
+/// gravity points.
+fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
+    let sidecar = Sidecar::read(csv).ok()?;
+    let spec = &sidecar.scene.spec;
+    let accel = spec.motion.as_ref().and_then(|m| m.accel);
+    let vertical_gravity = spec
+        .effect
+        .iter()
+        .filter(|e| e.kind == Some(EffectKind::Gravity))
+        .all(|e| e.g.is_some_and(|g| g[0] == 0.0 && g[1] == 0.0));
     Some(SceneFacts {
-        name: text_of("/scene/name")?,
-        method: text_of("/solver/method")?,
-        frame: text_of("/solver/frame")?,
-        motion: text_of("/scene/motion").unwrap_or_else(|| "free".into()),
-        effects,
+        name: sidecar.scene.name,
+        method: sidecar.solver.method,
+        frame: sidecar.solver.frame,
+        motion: sidecar.scene.motion,
+        effects: sidecar.scene.effects,
         accelerated: accel.is_some_and(|a| a != 0.0),
         vertical_gravity,
     })

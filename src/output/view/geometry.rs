@@ -1,6 +1,6 @@
 //! What the page draws besides the rows: the body's shape, its point masses, the fixed axis and the bearings, the
-//! inertia for the polhode — all read from the run's sidecar (`RUN.csv.meta.json`), whose `scene.text` is the scene
-//! file the run was made from. Without a usable sidecar the page draws what the CSV allows, and says what is missing.
+//! inertia for the polhode — all read from the run's sidecar (`RUN.csv.meta.json`), whose `scene.spec` is the scene
+//! as the run simulated it. Without a usable sidecar the page draws what the CSV allows, and says what is missing.
 //!
 //! Every position is given in body axes from the moment center O (C, the gravity pivot, or the fixed axis's
 //! point), which the page puts at the origin of space.
@@ -11,7 +11,9 @@ use nalgebra::{Matrix3, Vector3};
 use serde_json::{Value, json};
 
 use crate::body::Principal;
-use crate::scene::{self, Motion, Overrides, SceneSpec, ShapeSpec};
+use crate::effects::Effect;
+use crate::output::sidecar::{Sidecar, sidecar_path};
+use crate::scene::{Overrides, SceneSpec, ShapeSpec};
 
 /// The page's picture of the body and its supports, and notes on what could not be drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,34 +24,26 @@ pub struct Geometry {
     pub notes: Vec<String>,
 }
 
-/// The geometry of the run whose sidecar is `sidecar`: the sidecar's scene, or, when the sidecar is missing or
+/// The geometry of the run whose CSV is `csv`, from its sidecar's scene; when the sidecar is missing or
 /// unusable, an unknown body with a note saying why.
-pub fn read_geometry(sidecar: &Path) -> Geometry {
-    let text = match std::fs::read_to_string(sidecar) {
-        Ok(text) => text,
-        Err(e) => {
-            let why = if e.kind() == std::io::ErrorKind::NotFound {
-                "there is no sidecar".to_string()
-            } else {
-                format!("the sidecar cannot be read ({e})")
-            };
+pub fn read_geometry(csv: &Path) -> Geometry {
+    let name = sidecar_path(csv);
+    let sidecar = match std::fs::exists(&name) {
+        Ok(false) => {
             return Geometry::unknown(format!(
-                "{why} {}: the body's shape, inertia and supports are unknown, so the body is drawn as a unit \
-                 cube (not to scale), with no fixed axis, bearings or polhode; the vectors and the attitude are \
-                 the CSV's",
-                sidecar.display()
+                "there is no sidecar {}: the body's shape, inertia and supports are unknown, so the body is \
+                 drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode; the vectors and \
+                 the attitude are the CSV's",
+                name.display()
             ));
         }
+        _ => Sidecar::read(csv),
     };
-    read_geometry_text(&sidecar.display().to_string(), &text)
-}
-
-/// The geometry of the sidecar document `text`, read from the file named `name`.
-fn read_geometry_text(name: &str, text: &str) -> Geometry {
-    match geometry_of_sidecar(text) {
+    match sidecar.and_then(|sidecar| geometry_of_sidecar(&sidecar)) {
         Ok(geometry) => geometry,
         Err(problem) => Geometry::unknown(format!(
-            "{name}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode"
+            "{}: {problem}; the body is drawn as a unit cube (not to scale), with no fixed axis, bearings or polhode",
+            name.display()
         )),
     }
 }
@@ -64,40 +58,21 @@ impl Geometry {
     }
 }
 
-/// The geometry from the sidecar document `text`.
-fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
-    let doc: Value =
-        serde_json::from_str(text).map_err(|e| format!("the sidecar is not valid JSON ({e})"))?;
-    let scene_text = doc
-        .pointer("/scene/text")
-        .and_then(Value::as_str)
-        .ok_or("the sidecar has no scene text (`scene.text`)")?;
-    let scene_path = doc
-        .pointer("/scene/path")
-        .and_then(Value::as_str)
-        .unwrap_or("scene");
-    let path = Path::new(scene_path);
-    let spec = scene::parse_spec(path, scene_text)
-        .map_err(|e| format!("the sidecar's scene cannot be read ({e})"))?;
+/// The geometry from the sidecar's scene (as simulated).
+fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
+    let spec = &sidecar.scene.spec;
     let scene = spec.build_with(&Overrides::default()).map_err(|e| {
         format!(
             "the sidecar's scene is not valid ({}: {})",
             e.key, e.problem
         )
     })?;
-    let (rho_c_b, inertia_o_b, axis) = match &scene.motion {
-        Motion::Free { body, .. } => (*body.rho_c_b(), *body.inertia_b(), None),
-        Motion::FixedAxis(fixed) => (*fixed.rho_c_b(), *fixed.inertia_a_b(), Some(fixed)),
-        Motion::Hinge(hinge) => (
-            *hinge.axis().rho_c_b(),
-            *hinge.axis().inertia_a_b(),
-            Some(hinge.axis()),
-        ),
-    };
+    let (rho_c_b, inertia_o_b) = scene.motion.about_moment_center();
+    let axis = scene.motion.axis();
     // The reference origin (shape center) from O: from C it is −center_b, and C is at ρ_C from O.
     let reference_o = rho_c_b - scene.center_b;
     let mut notes = Vec::new();
-    let body = body_json(&spec, &reference_o, &mut notes);
+    let body = body_json(spec, &reference_o, &mut notes);
     let point_masses: Vec<Value> = spec
         .body
         .point_mass
@@ -108,13 +83,11 @@ fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
         })
         .collect();
     let principal = Principal::of(&inertia_o_b);
-    let motion = doc.pointer("/scene/motion").and_then(Value::as_str);
-    let units: serde_json::Map<String, Value> = doc
-        .pointer("/columns")
-        .and_then(Value::as_array)
-        .into_iter()
-        .flatten()
-        .filter_map(|c| Some((c.get("name")?.as_str()?.to_string(), c.get("unit")?.clone())))
+    let motion = &sidecar.scene.motion;
+    let units: serde_json::Map<String, Value> = sidecar
+        .columns
+        .iter()
+        .map(|c| (c.name.clone(), Value::from(c.unit.clone())))
         .collect();
     Ok(Geometry {
         json: json!({
@@ -123,6 +96,7 @@ fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
             "description": scene.description,
             "motion": motion,
             "effects": scene.effects.iter().map(|e| e.kind()).collect::<Vec<_>>(),
+            "gravity_s": gravity_s(&scene.effects).map(|g| vec3(&g)),
             "body": body,
             "point_masses": point_masses,
             "mass_center": vec3(&rho_c_b),
@@ -136,17 +110,69 @@ fn geometry_of_sidecar(text: &str) -> Result<Geometry, String> {
     })
 }
 
-/// The body's shape as the page draws it: its kind, dimensions (m) and center (the reference origin, from O);
-/// a body given by its inertia is the box of equal principal moments, turned to its principal axes.
+/// Thin parts of a body are drawn at least this fraction of its longest dimension thick: a thin rod or a thin disk
+/// (no thickness at all) or a flat box would otherwise be a line or a sheet, lost behind the axes and the arrows.
+pub const MIN_DRAWN_THICKNESS: f64 = 0.05;
+
+/// The body's shape as the page draws it: its kind, dimensions (m), center (the reference origin, from O) and
+/// `min_drawn_thickness` (m, [`MIN_DRAWN_THICKNESS`] of its longest dimension), with `drawn_thicker` saying so
+/// (for the legend; not a warning) when a part is drawn thicker than it is.
 fn body_json(spec: &SceneSpec, reference_o: &Vector3<f64>, notes: &mut Vec<String>) -> Value {
+    let mut body = shape_or_inertia_box(spec, reference_o, notes);
+    if let Some((thinnest, longest)) = extent(&body) {
+        let min = MIN_DRAWN_THICKNESS * longest;
+        if thinnest < min {
+            body["drawn_thicker"] = json!(format!(
+                "drawn at least {min:.3} m thick ({:.0} % of its longest dimension, {longest:.3} m) so that it \
+                 shows; its thinnest dimension is {thinnest:.3} m",
+                MIN_DRAWN_THICKNESS * 100.0
+            ));
+        }
+        body["min_drawn_thickness"] = json!(min);
+    }
+    body
+}
+
+/// The thinnest and the longest dimension (m) of a body as [`body_json`] describes it, if its kind is known.
+fn extent(body: &Value) -> Option<(f64, f64)> {
+    let get = |key: &str| body.get(key).and_then(Value::as_f64);
+    let pair = |a: f64, b: f64| Some((a.min(b), a.max(b)));
+    match body.get("kind")?.as_str()? {
+        "thin_rod" => Some((0.0, get("length")?)),
+        "thin_disk" => Some((0.0, 2.0 * get("radius")?)),
+        "disk" => pair(get("thickness")?, 2.0 * get("radius")?),
+        "cylinder" => pair(get("height")?, 2.0 * get("radius")?),
+        "sphere" => pair(2.0 * get("radius")?, 2.0 * get("radius")?),
+        "box" | "inertia_box" => {
+            let edges: Vec<f64> = body
+                .get("size")?
+                .as_array()?
+                .iter()
+                .filter_map(Value::as_f64)
+                .collect();
+            let min = edges.iter().cloned().fold(f64::INFINITY, f64::min);
+            let max = edges.iter().cloned().fold(0.0, f64::max);
+            (edges.len() == 3).then_some((min, max))
+        }
+        _ => None,
+    }
+}
+
+/// The body's shape from the scene file, or, for a body given by its inertia, the box of equal principal moments
+/// turned to its principal axes; centered at the reference origin (from O).
+fn shape_or_inertia_box(
+    spec: &SceneSpec,
+    reference_o: &Vector3<f64>,
+    notes: &mut Vec<String>,
+) -> Value {
     let center = vec3(reference_o);
     if let Some(shape) = &spec.body.shape {
         return shape_json(shape, json!(center));
     }
     let mass = spec.body.mass;
     let inertia = match spec.body.inertia {
-        Some(scene::InertiaSpec::Principal(m)) => Matrix3::from_diagonal(&Vector3::from(m)),
-        Some(scene::InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
+        Some(crate::scene::InertiaSpec::Principal(m)) => Matrix3::from_diagonal(&Vector3::from(m)),
+        Some(crate::scene::InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
         None => Matrix3::identity() * mass,
     };
     let principal = Principal::of(&inertia);
@@ -186,6 +212,14 @@ pub fn equal_moment_box(m: f64, moments: &Vector3<f64>) -> [f64; 3] {
     edges.map(|e| e.max(0.02 * longest))
 }
 
+/// Gravity's g (space axes, m/s²) when the scene has it: the page draws −g up.
+fn gravity_s(effects: &[Effect]) -> Option<Vector3<f64>> {
+    effects.iter().find_map(|e| match e {
+        Effect::Gravity { g_s, .. } if g_s.norm() > 0.0 => Some(*g_s),
+        _ => None,
+    })
+}
+
 /// `[x, y, z]`.
 fn vec3(v: &Vector3<f64>) -> [f64; 3] {
     [v[0], v[1], v[2]]
@@ -215,9 +249,12 @@ mod tests {
         }
     }
 
-    /// A sidecar document whose scene is `scene_text`.
-    fn sidecar(scene_text: &str) -> String {
-        json!({ "scene": { "path": "s.toml", "motion": "free", "text": scene_text } }).to_string()
+    /// A sidecar whose scene is `scene_text`.
+    fn sidecar(scene_text: &str) -> Sidecar {
+        let spec = crate::scene::parse_spec(Path::new("s.toml"), scene_text).expect("a scene");
+        let scene = spec.build().expect("a valid scene");
+        let report = crate::simulate::RunReport::default();
+        Sidecar::of_run(&scene, &report, &[])
     }
 
     #[test]
@@ -237,6 +274,28 @@ mod tests {
         let moments = g.json["inertia_p"].as_array().expect("moments");
         assert!((moments[0].as_f64().expect("I1") - i_xx).abs() < 1e-15);
         assert!(g.notes.is_empty());
+        // 2 cm tall, 8 cm across: thicker than 5 % of 8 cm, drawn as it is.
+        assert!(
+            (g.json["body"]["min_drawn_thickness"].as_f64().expect("min") - 0.004).abs() < 1e-15
+        );
+        assert!(g.json["body"].get("drawn_thicker").is_none());
+    }
+
+    #[test]
+    fn a_thin_rod_is_drawn_a_twentieth_of_its_length_thick_and_the_legend_says_so() {
+        let text = "[body]\nmass = 1.0\nshape = { type = \"thin_rod\", length = 1.0 }\n\
+                    [motion]\ntype = \"fixed_axis\"\naxis = [0.0, 0.0, 1.0]\nrate = 1.0\n\
+                    [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        assert_eq!(g.json["body"]["min_drawn_thickness"], 0.05);
+        let said = g.json["body"]["drawn_thicker"]
+            .as_str()
+            .expect("a legend text");
+        assert!(
+            said.contains("at least 0.050 m thick (5 % of its longest dimension, 1.000 m)"),
+            "{said}"
+        );
+        assert!(g.notes.is_empty(), "not a warning: {:?}", g.notes);
     }
 
     #[test]
@@ -263,10 +322,17 @@ mod tests {
 
     #[test]
     fn a_sidecar_whose_scene_is_invalid_is_named_with_the_key() {
-        let g = read_geometry_text("x.meta.json", &sidecar("[body]\nmass = -1.0\n"));
+        let dir = tempfile::tempdir().expect("a temporary directory");
+        let csv = dir.path().join("x.csv");
+        let mut bad = sidecar(
+            "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[solver]\nt_end = 1.0\n[output]\nevery = 0.1\n",
+        );
+        bad.scene.spec.body.mass = -1.0;
+        std::fs::write(sidecar_path(&csv), bad.to_json()).expect("written");
+        let g = read_geometry(&csv);
         assert_eq!(g.json["body"]["kind"], "unknown");
         assert!(
-            g.notes[0].contains("x.meta.json: the sidecar's scene"),
+            g.notes[0].contains("x.csv.meta.json: the sidecar's scene is not valid (body.mass"),
             "{:?}",
             g.notes
         );
@@ -274,7 +340,7 @@ mod tests {
 
     #[test]
     fn a_missing_sidecar_gives_an_unknown_body_and_a_note_naming_it() {
-        let g = read_geometry(Path::new("/nonexistent/run.csv.meta.json"));
+        let g = read_geometry(Path::new("/nonexistent/run.csv"));
         assert_eq!(g.json["body"]["kind"], "unknown");
         assert!(g.notes[0].contains("there is no sidecar /nonexistent/run.csv.meta.json"));
     }

@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 pub use geometry::{Geometry, read_geometry};
 pub use rows::{MAX_DRAWN_ROWS, Rows, read_rows};
 
-use super::run_csv::{CsvInputError, RunCsvReader, sidecar_path};
+use super::run_csv::{CsvInputError, RunCsvReader};
 
 /// Why a page could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -89,7 +89,7 @@ pub fn read_view_run(csv: &Path, max_rows: usize) -> Result<ViewRun, ViewError> 
     Ok(ViewRun {
         file: csv.to_path_buf(),
         rows,
-        geometry: read_geometry(&sidecar_path(csv)),
+        geometry: read_geometry(csv),
     })
 }
 

@@ -3,7 +3,7 @@
 use super::super::spec::{EffectKind, EffectSpec, MotionKind, ProfileKind, SceneSpec};
 use super::{Checked, KeyPath, finite, invalid, only_keys, required, vector};
 use crate::body::RigidBody;
-use crate::effects::{Effect, TorqueProfile};
+use crate::effects::{DEFAULT_GRAVITY, Effect, TorqueProfile};
 use crate::frames::Axes;
 use nalgebra::Vector3;
 
@@ -138,7 +138,7 @@ fn validate_effect(
     Ok(match kind {
         EffectKind::Torque => validate_torque(&table, doc, &kind_text)?,
         EffectKind::Gravity => Effect::Gravity {
-            g_s: vector(key("g"), doc.g.unwrap_or([0.0, 0.0, -9.81]), "m/s^2")?,
+            g_s: vector(key("g"), doc.g.unwrap_or(DEFAULT_GRAVITY), "m/s^2")?,
             pivot_b: match (axis_point, doc.pivot) {
                 (Some(_), Some(_)) => {
                     return invalid(

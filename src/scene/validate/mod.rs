@@ -5,6 +5,7 @@
 mod body;
 mod effect;
 mod motion;
+mod resolved;
 mod solver;
 
 use std::fmt;
@@ -105,6 +106,8 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         solver,
         schedule,
         compare_tolerance,
+        spec: doc.resolved(&solver, schedule.every(), compare_tolerance),
+        source: None,
     })
 }
 

@@ -7,8 +7,9 @@ use super::super::spec::{MotionKind, MotionSpec, SceneSpec};
 use super::{Checked, Invalid, KeyPath, finite, invalid, only_keys, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
+use crate::effects::EffectMoments;
 use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::{EffectMoments, FreeBody};
+use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::motion::support::Bearings;
 
@@ -58,8 +59,9 @@ pub(super) fn validate_motion(
 }
 
 /// Every optional key of `[motion]` and whether it is given.
-fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 8] {
+fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 9] {
     [
+        ("rate_rpm", m.rate_rpm.is_some()),
         ("axis", m.axis.is_some()),
         ("tilt_deg", m.tilt_deg.is_some()),
         ("rate", m.rate.is_some()),
@@ -134,6 +136,7 @@ fn axis_geometry(
                 "axis",
                 "tilt_deg",
                 "rate",
+                "rate_rpm",
                 "point",
                 "angle_deg",
                 "bearings",
@@ -147,6 +150,7 @@ fn axis_geometry(
                 "axis",
                 "tilt_deg",
                 "rate",
+                "rate_rpm",
                 "accel",
                 "point",
                 "bearings",
@@ -157,7 +161,7 @@ fn axis_geometry(
     only_keys(&motion(), kind_text, takes, &given_keys(m))?;
     let axis_b = axis_direction(m)?;
     let attitude0 = axis_attitude(m, &axis_b, attitude0)?;
-    let rate = finite(motion().key("rate"), m.rate.unwrap_or(0.0), "rad/s")?;
+    let rate = axis_rate(m)?;
     let accel = finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?;
     // The required moment M = I α + ω × I ω is of order I_max (ω² + |α|): it must be a number at t = 0.
     let inertia_max = body.inertia_c().abs().max();
@@ -194,6 +198,22 @@ fn axis_geometry(
         axis = axis.with_bearings(Bearings { a, b });
     }
     Ok(axis)
+}
+
+/// θ̇ at t = 0 (rad/s): `rate`, or `rate_rpm` · 2π/60 (revolutions per minute, as rotor engineers give it); 0
+/// when neither is given, an error when both are.
+fn axis_rate(m: &MotionSpec) -> Checked<f64> {
+    let motion = || KeyPath::root().key("motion");
+    match (m.rate, m.rate_rpm) {
+        (Some(_), Some(_)) => invalid(
+            motion().key("rate_rpm"),
+            "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both",
+        ),
+        (None, Some(rpm)) => {
+            Ok(finite(motion().key("rate_rpm"), rpm, "rpm")? * std::f64::consts::TAU / 60.0)
+        }
+        (rate, None) => finite(motion().key("rate"), rate.unwrap_or(0.0), "rad/s"),
+    }
 }
 
 /// A hinge on the axis: θ from `angle_deg`, θ̇ from `rate`, driven by the effects about the axis point.

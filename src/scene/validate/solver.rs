@@ -50,7 +50,7 @@ pub(super) fn validate_solver(doc: &SolverSpec, o: &Overrides) -> Checked<Solver
     }
     Ok(SolverConfig {
         method,
-        frame,
+        form: frame,
         backend,
         rtol,
         atol,

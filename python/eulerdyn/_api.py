@@ -1,0 +1,287 @@
+"""The module's functions (re-exported by ``eulerdyn``): each calls the extension ``eulerdyn._eulerdyn`` and turns
+its plain data into pandas. Kept apart from ``__init__.py`` so that ``dir(eulerdyn)`` shows the module's names only,
+not the ones imported here.
+
+Tables (the study's and the sweep's) are typed by column, never by their cells, so that the same column has the same
+dtype in every table, with or without empty cells and with no rows at all: counts (``run``, ``steps``, ``rejected``,
+``evals``, ``repeats``) are int64 (the tables write every count), names and messages (``method``, ``frame``,
+``backend``, ``status``, ``message``) pandas' string dtype (``""`` for an empty cell), every other column float64
+(NaN for an empty cell).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import os
+from typing import Any, Dict, Mapping, Optional, Tuple, Union
+
+import numpy as np
+import pandas as pd
+
+from . import _eulerdyn
+
+#: A scene: the path of a scene file, or a dict of its keys (nested dicts for its tables, lists of dicts for
+#: ``[[effect]]`` and ``[[body.point_mass]]``).
+SceneLike = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+
+#: The columns of whole numbers (int64) and of names and messages (str) in the study's table and the sweep's; every
+#: other column of theirs is float64.
+_STUDY_COUNTS = ("steps", "rejected", "evals", "repeats")
+_STUDY_TEXTS = ("method", "frame", "backend", "status")
+_SWEEP_COUNTS = ("run", "steps", "evals")
+_SWEEP_TEXTS = ("status", "message")
+
+
+def _scene(scene: Any) -> Any:
+    """A scene (or a sweep) as the extension takes it: a path, or plain dicts and lists (any other mapping is
+    copied into a dict, a tuple into a list, at every depth)."""
+    if isinstance(scene, Mapping):
+        return {k: _scene(v) for k, v in scene.items()}
+    if isinstance(scene, (list, tuple)):
+        return [_scene(v) for v in scene]
+    return scene
+
+
+def run(
+    scene: SceneLike,
+    *,
+    method: Optional[str] = None,
+    frame: Optional[str] = None,
+    backend: Optional[str] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    dt: Optional[float] = None,
+    t_end: Optional[float] = None,
+    every: Optional[float] = None,
+) -> pd.DataFrame:
+    """Simulate a scene; its rows as a DataFrame, as ``eulerdyn run SCENE`` writes them as CSV.
+
+    The columns are the CSV's, in its order (``t``, ``q_w`` … ``H_norm``, then the motion's own columns such as
+    ``theta`` or ``R_A_s_x``), and every value is the float the CSV holds, bit for bit.
+
+    Args:
+        scene: the path of a scene file, or a dict of its keys.
+        method: integration method instead of the scene's: ``rk4``, ``dopri5``, ``dop853``, ``split2``,
+            ``split4`` or ``exact`` (torque-free only) — the command line's ``--method``.
+        frame: form of Euler's equation, ``body`` or ``space`` (``--frame``).
+        backend: Runge–Kutta implementation, ``own`` or ``ode_solvers`` (``--backend``).
+        rtol: relative tolerance of adaptive methods (``--rtol``).
+        atol: absolute tolerance of adaptive methods (``--atol``).
+        dt: step of fixed-step methods, s (``--dt``).
+        t_end: end time, s (``--t-end``).
+        every: time between rows, s (``--every``).
+
+    Returns:
+        The rows, one per output time. ``df.attrs["report"]`` holds what the run did: ``rows``, ``steps``,
+        ``rejected``, ``evals``, ``wall_seconds``.
+
+    Raises:
+        SceneError: the scene or an override is not valid (the message names the key, and the keyword argument
+            that set it, e.g. ``solver.dt (from dt=)``).
+        RunError: the run failed (diverged, the step size collapsed); ``.t`` is the time it stopped at.
+        KeyboardInterrupt: Ctrl-C during the run.
+    """
+    names, data, report = _eulerdyn.run(
+        _scene(scene),
+        method=method,
+        frame=frame,
+        backend=backend,
+        rtol=rtol,
+        atol=atol,
+        dt=dt,
+        t_end=t_end,
+        every=every,
+    )
+    values = np.frombuffer(data, dtype=np.float64).reshape(-1, len(names)).copy()
+    df = pd.DataFrame(values, columns=list(names))
+    df.attrs["report"] = dict(report)
+    return df
+
+
+def check(scene: SceneLike) -> Dict[str, Any]:
+    """What a scene will simulate, as ``eulerdyn check SCENE`` prints it, without running it.
+
+    Returns:
+        A dict: ``text`` (the printout), ``items`` (each label of the printout with its lines, e.g.
+        ``items["method"]``), and the settings as values: ``name``, ``description``, ``motion`` (``free``,
+        ``fixed_axis`` or ``hinge``), ``method``, ``frame``, ``backend``, ``rtol``, ``atol``, ``dt``, ``t_end``,
+        ``every``, ``rows`` (how many rows :func:`run` returns) and ``columns`` (its columns).
+
+    Raises:
+        SceneError: the scene is not valid.
+    """
+    return dict(_eulerdyn.check(_scene(scene)))
+
+
+def compare(scene: SceneLike, *, method: Optional[str] = None) -> Dict[str, Any]:
+    """Run a scene in both forms of Euler's equation and against its closed form, as ``eulerdyn compare SCENE``.
+
+    Args:
+        scene: the path of a scene file, or a dict of its keys.
+        method: integration method instead of the scene's (``--method``).
+
+    Returns:
+        A dict: ``differences`` (a DataFrame indexed by quantity with the columns ``body vs space``,
+        ``body vs exact`` and ``space vs exact``: relative differences, the attitude's in rad; NaN where the closed
+        form does not give the quantity), ``passes`` (False where the command exits 1), ``tolerance`` (the scene's
+        ``[compare]`` tolerance), ``rows``, ``closed_form`` (its name, or None), ``note`` and ``text`` (what the
+        command prints).
+
+    Raises:
+        SceneError: the scene or the method is not valid.
+        RunError: a run failed.
+    """
+    result = dict(_eulerdyn.compare(_scene(scene), method=method))
+    table = result.pop("table")
+    differences = pd.DataFrame(
+        [row[1:] for row in table],
+        index=pd.Index([row[0] for row in table], name="quantity"),
+        columns=["body vs space", "body vs exact", "space vs exact"],
+        dtype=float,
+    )
+    return {"differences": differences, **result}
+
+
+def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
+    """The work-precision study of a scene, as ``eulerdyn accuracy SCENE``: every applicable method over a sweep of
+    tolerances or step sizes, its error against the closed form (or a reference run) and its cost.
+
+    Args:
+        scene: the path of a scene file, or a dict of its keys.
+        quick: the library's quick study (4 tolerances, 4 step sizes, one repeat, own backend, body form) instead
+            of the command's full one.
+
+    Returns:
+        The command's table, a row per run: ``method``, ``frame``, ``rtol``, ``dt``, ``err_omega``,
+        ``err_attitude``, ``energy_drift``, ``H_drift``, ``wall_s``, ``steps``, ``rejected``, ``evals``,
+        ``err_H_s``, ``atol``, ``backend``, ``repeats``, ``status``: the counts int64, the names str, the rest
+        float64 (NaN where the CSV has an empty cell), whatever the rows.
+        ``df.attrs["summary"]`` is the summary the command prints.
+
+    Raises:
+        SceneError: the scene is not valid, or the study cannot use it.
+        RunError: the reference run failed.
+        KeyboardInterrupt: Ctrl-C (the study stops before its next run).
+    """
+    table, summary = _eulerdyn.accuracy(_scene(scene), quick=quick)
+    df = _table(table, _STUDY_COUNTS, _STUDY_TEXTS)
+    df.attrs["summary"] = summary
+    return df
+
+
+def sweep(
+    sweep_file: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    *,
+    jobs: Optional[int] = None,
+    shard: Optional[str] = None,
+) -> pd.DataFrame:
+    """The runs of a sweep, as ``eulerdyn sweep SWEEP.toml``: a base scene run many times with numeric keys set from
+    grids (``values``, ``linspace``, ``logspace``) or drawn at random (``normal``, ``uniform``), in parallel, each
+    run reduced to one row.
+
+    Args:
+        sweep_file: the path of a sweep file (its ``scene`` is relative to it), or a dict of its keys, e.g.
+            ``{"scene": disk, "vary": [{"key": "motion.rate", "values": [5.0, 10.0]}]}``, whose ``scene`` is the
+            base scene: a dict of its keys, or its path (relative to the working directory).
+        jobs: threads (None: all cores).
+        shard: ``"K/N"``: only the runs with ``run % N == K - 1`` (for N processes that split a sweep).
+
+    Returns:
+        The results table, a row per run sorted by ``run``: ``run``, one column per varied key, ``status``
+        (``ok``, ``failed``, ``invalid``), ``message``, ``max_M_norm`` (and ``max_F_sup_norm``, ``max_R_A_norm``,
+        ``max_R_B_norm`` where the scene has them), ``energy_drift``, ``H_drift``, ``final_omega_b_x/y/z``,
+        ``steps``, ``evals``, ``wall_s``, then ``min_X``, ``max_X``, ``final_X`` of each ``[summary]`` column:
+        ``run``, ``steps`` and ``evals`` int64, ``status`` and ``message`` str (``""`` for a run that is ok), the
+        rest float64, whatever the rows. A failed or invalid run is a row with its message (NaN in its numeric
+        columns); nothing is raised for it.
+
+    Raises:
+        SceneError: the sweep or its base scene is not valid (unknown key, empty grid, ...), a bad shard, or
+            ``jobs=0``. The message names the file, or ``<dict>`` and the key within the dict (``vary[0].key``,
+            ``scene.body.mass`` for a base scene given as a dict).
+        KeyboardInterrupt: Ctrl-C (the sweep stops between runs).
+    """
+    return _sweep_table(_eulerdyn.sweep(_scene(sweep_file), jobs=jobs, shard=shard))
+
+
+def _sweep_table(text: str) -> pd.DataFrame:
+    """The sweep's results table (CSV text, as ``eulerdyn sweep`` writes it) as a DataFrame."""
+    return _table(text, _SWEEP_COUNTS, _SWEEP_TEXTS)
+
+
+def _table(text: str, counts: Tuple[str, ...], texts: Tuple[str, ...]) -> pd.DataFrame:
+    """A CSV table as a DataFrame, typed by column whatever its cells: the ``counts`` int64, the ``texts`` str
+    (pandas' string dtype, ``""`` for an empty cell), every other column float64, each number read by Python's
+    float (correctly rounded: the f64 the table was written from), NaN for an empty cell."""
+    reader = csv.reader(io.StringIO(text))
+    header = next(reader)
+    rows = list(reader)
+    columns: Dict[str, Any] = {}
+    for k, name in enumerate(header):
+        cells = [row[k] for row in rows]
+        if name in counts:
+            columns[name] = _counts(name, cells)
+        elif name in texts:
+            columns[name] = pd.Series(cells, dtype=str)
+        else:
+            columns[name] = np.array([float(c) if c else math.nan for c in cells], dtype=np.float64)
+    return pd.DataFrame(columns, columns=header)
+
+
+def _counts(name: str, cells: "list[str]") -> Any:
+    """A column of counts as int64; the tables write every count, so an empty cell is the library's error."""
+    if not all(cells):
+        raise _eulerdyn.RunError(f"internal error in eulerdyn (please report it): the column `{name}` has an empty count")
+    return np.array([int(c) for c in cells], dtype=np.int64)
+
+
+def balance(
+    scene: SceneLike,
+    *,
+    planes: Tuple[float, float],
+    radius: float,
+    grade: Optional[float] = None,
+    rpm: Optional[float] = None,
+    measured: Optional[Union[str, "os.PathLike[str]"]] = None,
+) -> Dict[str, Any]:
+    """Two-plane balancing of a fixed-axis or hinge scene, as ``eulerdyn balance SCENE --planes A,B --radius R``
+    (with ``--grade``, ``--rpm``, ``--measured`` for the keywords of the same names).
+
+    Args:
+        scene: the path of a scene file, or a dict of its keys.
+        planes: axial positions (A, B) of the correction planes, m from ``motion.point`` along the axis.
+        radius: distance of the correction masses from the axis, m.
+        grade: the balance grade G (mm/s, ISO 21940-11) to judge the rotor against.
+        rpm: the speed (r/min) for the grade and the one-shot coefficients, instead of the scene's rate.
+        measured: the path of a table of measured 1x phasors (``run,trial_plane,trial_mass_g,trial_angle_deg,
+            A_amp,A_phase_deg,B_amp,B_phase_deg``): balance by influence coefficients.
+
+    Returns:
+        The report of ``eulerdyn balance --json`` as a dict — ``mode`` (``model``, ``measured`` or ``one_shot``),
+        ``planes``, ``corrections`` (per plane: ``plane``, ``z``, ``mass`` kg, ``mass_g``, ``angle_deg``, ``at_b``
+        — the position in body axes, the scene file's ``at``), ``reference_b`` and ``reference_name`` (the
+        direction angles are measured from), ``rate`` (rad/s), ``largest_reaction_before`` and
+        ``largest_reaction_after`` (N), ``unbalance_gmm`` (``before``/``after``, per plane ``amp`` g·mm,
+        ``phase_deg``, ``re``, ``im``), ``grade`` (None without a speed; ``shares``, ``met_before``, ``met_after``,
+        ``target`` with ``u_per_gmm``, ``u_per_planes_gmm``, ``pass_before``, ``pass``) and ``influence`` (None
+        without ``measured``; ``coefficients``, ``condition_number``, ``condition_warning``, ``corrections_g``,
+        ``initial_readings``, ``predicted_residual_readings``) — and ``scene`` (the balanced scene as a dict, ready
+        for :func:`run`), ``toml`` (it as a scene file) and ``text`` (what the command prints).
+
+    Raises:
+        SceneError: the scene is not valid or cannot be balanced (a free body, A = B, radius <= 0), the table
+            cannot be used (no initial run, a plane without a trial, a bad cell, a singular system; the message
+            names the line), or grade or rpm <= 0.
+    """
+    return dict(
+        _eulerdyn.balance(
+            _scene(scene),
+            planes=tuple(planes),
+            radius=radius,
+            grade=grade,
+            rpm=rpm,
+            measured=None if measured is None else os.fspath(measured),
+        )
+    )

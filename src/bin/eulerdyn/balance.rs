@@ -1,0 +1,102 @@
+//! `eulerdyn balance`: the two correction masses of a fixed-axis or hinge scene (from the model, or from a measured
+//! table), the unbalance per plane and the balance grade, printed (or as JSON), and the balanced scene written
+//! with `-o`.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use eulerdyn::analysis::balance::{Planes, Report, Request, balance_report, check_options, table};
+use eulerdyn::output::AtomicFile;
+use eulerdyn::scene::{self, Overrides};
+
+#[derive(Debug, Args)]
+pub struct BalanceArgs {
+    /// Scene file (TOML) with a fixed_axis or hinge motion.
+    pub scene: PathBuf,
+    /// Axial positions A,B of the two correction planes (m, from `motion.point` along the axis).
+    #[arg(long, value_name = "A,B", allow_hyphen_values = true)]
+    pub planes: String,
+    /// Distance of the correction masses from the axis (m).
+    #[arg(long, value_name = "R", allow_negative_numbers = true)]
+    pub radius: f64,
+    /// Balance grade G (mm/s, ISO 21940-11, e.g. 6.3 for a fan): U_per, its shares, pass/fail.
+    #[arg(long, value_name = "G", allow_negative_numbers = true)]
+    pub grade: Option<f64>,
+    /// The speed (revolutions per minute) for the grade and the one-shot coefficients, instead of the scene's rate.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub rpm: Option<f64>,
+    /// Balance from measured 1× phasors (CSV: run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,
+    /// B_amp,B_phase_deg) by influence coefficients; only an initial row: one-shot, with the model's coefficients.
+    #[arg(long, value_name = "PHASORS.csv")]
+    pub measured: Option<PathBuf>,
+    /// Print the report as JSON (every figure of the text).
+    #[arg(long)]
+    pub json: bool,
+    /// Write the scene with both correction masses added (TOML, atomically).
+    #[arg(short = 'o', long = "output", value_name = "BALANCED.toml")]
+    pub output: Option<PathBuf>,
+}
+
+/// Runs the command; `Err` is bad input (exit 2) with its message.
+pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
+    let path = &args.scene;
+    let text = scene::read(path).map_err(|e| e.to_string())?;
+    let planes: Vec<Result<f64, _>> = args
+        .planes
+        .split(',')
+        .map(|p| p.trim().parse::<f64>())
+        .collect();
+    let [Ok(a), Ok(b)] = planes[..] else {
+        return Err(format!(
+            "--planes {}: give two positions A,B in metres, e.g. --planes -0.1,0.1",
+            args.planes
+        ));
+    };
+    check_options(args.grade, args.rpm).map_err(|e| e.to_string())?;
+    let measured = match &args.measured {
+        Some(table) => Some((
+            table.clone(),
+            table::read(table).map_err(|e| e.to_string())?,
+        )),
+        None => None,
+    };
+    let request = Request {
+        planes: Planes {
+            a,
+            b,
+            radius: args.radius,
+        },
+        grade: args.grade,
+        rpm: args.rpm,
+        measured,
+    };
+    let scene = scene::parse(path, &text, &Overrides::default()).map_err(|e| e.to_string())?;
+    let result = balance_report(&scene, &request).map_err(|e| e.to_string())?;
+    let mut wrote = None;
+    if let Some(out) = &args.output {
+        write_scene(out, &result).map_err(|e| format!("{}: {e}", out.display()))?;
+        wrote = Some(out.display().to_string());
+    }
+    if args.json {
+        let mut json = result.json();
+        json["wrote"] = wrote.into();
+        return Ok(format!("{json:#}\n"));
+    }
+    let mut report = result.text();
+    if let Some(out) = wrote {
+        report += &format!("wrote the balanced scene to {out}\n");
+    }
+    Ok(report)
+}
+
+/// The balanced scene as TOML, written atomically.
+fn write_scene(out: &Path, result: &Report) -> Result<(), String> {
+    let text = result.balance.balanced_toml()?;
+    let mut file = AtomicFile::create(out).map_err(|e| format!("cannot create the file: {e}"))?;
+    file.file()
+        .write_all(text.as_bytes())
+        .map_err(|e| format!("cannot write: {e}"))?;
+    file.commit().map_err(|e| format!("cannot write: {e}"))
+}

@@ -1,0 +1,219 @@
+//! The scene's effects compiled for the right-hand side: [`AppliedMoment`] is the moment a motion's equation
+//! asks for at (t, q, ω); [`TorqueFree`] is none (the compiler removes it, so a torque-free run pays nothing), and
+//! [`EffectMoments`] sums a scene's torques, gravity and damping.
+
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+
+use super::{Effect, TorqueSum};
+use crate::frames::{Axes, StateRotation};
+
+/// The external moment acting on the body, about the moment center.
+pub trait AppliedMoment {
+    /// Whether the moment is identically zero. The forms then skip the arithmetic that applies it, which the
+    /// compiler cannot drop by itself (in IEEE arithmetic 0·x is not 0 for every x).
+    const ZERO: bool = false;
+
+    /// The moment in body axes at time t, attitude q (body → space) and angular velocity ω_b.
+    fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64>;
+
+    /// [`Self::moment_b`] at the attitude held in a state, `q_state` = (q_w, q_x, q_y, q_z) of norm near but not
+    /// exactly 1: the moment at q = q_state / |q_state|. `rotation` gives [`StateRotation::of`]`(q_state)`, called
+    /// only by a moment that needs the attitude, so that a form which has computed it already passes it on instead
+    /// of having it computed twice. A moment that does not depend on the attitude skips both.
+    #[inline(always)]
+    fn moment_b_at_state(
+        &self,
+        t: f64,
+        q_state: &Quaternion<f64>,
+        _rotation: impl FnOnce() -> StateRotation,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        self.moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
+    }
+}
+
+/// No effects: M = 0.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TorqueFree;
+
+impl AppliedMoment for TorqueFree {
+    const ZERO: bool = true;
+
+    #[inline(always)]
+    fn moment_b(&self, _t: f64, _q: &UnitQuaternion<f64>, _omega_b: &Vector3<f64>) -> Vector3<f64> {
+        Vector3::zeros()
+    }
+}
+
+/// The sum of a scene's effects, about the moment center:
+/// torque `value·f(t)` (rotated into the body when given in space axes); gravity about the pivot
+/// M = ρ_C × m Rᵀg with ρ_C = −pivot the position of C relative to the pivot; damping M = −c ω.
+///
+/// Split as M_b(t, q, ω) = [`EffectMoments::rest_moment_b`](t, q) − c·ω: the part that does not depend on ω
+/// (torques, gravity) and the total damping coefficient c = Σ c_k, which the splitting methods apply as exact kicks.
+///
+/// The effects are compiled once: the body-axis torques into one [`TorqueSum`], the space-axis torques into another
+/// (rotated into the body once per evaluation), so that only space torques and gravity need the attitude.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EffectMoments {
+    effects: Vec<Effect>,
+    mass: f64,
+    torques_b: TorqueSum,
+    torques_s: TorqueSum,
+    gravity: Vec<GravityMoment>,
+    pub(crate) needs_attitude: bool,
+    damping_c: f64,
+}
+
+/// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct GravityMoment {
+    g_s: Vector3<f64>,
+    rho_c_b: Vector3<f64>,
+}
+
+impl EffectMoments {
+    /// The moments of `effects` on a body of mass `mass` (kg).
+    pub fn new(effects: &[Effect], mass: f64) -> Self {
+        let mut torques_b = TorqueSum::default();
+        let mut torques_s = TorqueSum::default();
+        let mut gravity = Vec::new();
+        let mut damping_c = 0.0;
+        for effect in effects {
+            match effect {
+                Effect::Torque {
+                    frame: Axes::Body,
+                    value,
+                    profile,
+                } => torques_b.add(value, profile),
+                Effect::Torque {
+                    frame: Axes::Space,
+                    value,
+                    profile,
+                } => torques_s.add(value, profile),
+                Effect::Gravity { g_s, pivot_b } => gravity.push(GravityMoment {
+                    g_s: *g_s,
+                    rho_c_b: -pivot_b,
+                }),
+                Effect::Damping { c } => damping_c += c,
+            }
+        }
+        Self {
+            effects: effects.to_vec(),
+            mass,
+            needs_attitude: !torques_s.is_zero() || !gravity.is_empty(),
+            torques_b,
+            torques_s,
+            gravity,
+            damping_c,
+        }
+    }
+
+    /// The effects summed.
+    pub fn effects(&self) -> &[Effect] {
+        &self.effects
+    }
+
+    /// The part of the moment that does not depend on ω, body axes: Σ torques + ρ_C × m (Rᵀ g_s).
+    #[inline]
+    pub fn rest_moment_b(&self, t: f64, q: &UnitQuaternion<f64>) -> Vector3<f64> {
+        self.rest_moment_b_with(t, || {
+            self.attitude_moment_b(t, |v_s| q.inverse_transform_vector(v_s))
+        })
+    }
+
+    /// [`Self::rest_moment_b`]: the body-axis torques M_b(t), plus `attitude_part()` only if an effect depends on
+    /// the attitude.
+    #[inline(always)]
+    fn rest_moment_b_with(
+        &self,
+        t: f64,
+        attitude_part: impl FnOnce() -> Vector3<f64>,
+    ) -> Vector3<f64> {
+        let m_b = self.torques_b.at(t);
+        if self.needs_attitude {
+            m_b + attitude_part()
+        } else {
+            m_b
+        }
+    }
+
+    /// The moments that depend on the attitude, body axes, given the rotation `to_body`: v_s ↦ Rᵀ v_s:
+    /// Rᵀ M_s(t) for the space-axis torques and ρ_C × m (Rᵀ g_s) for gravity.
+    #[inline(always)]
+    fn attitude_moment_b(
+        &self,
+        t: f64,
+        to_body: impl Fn(&Vector3<f64>) -> Vector3<f64>,
+    ) -> Vector3<f64> {
+        let mut m_b = if self.torques_s.is_zero() {
+            Vector3::zeros()
+        } else {
+            to_body(&self.torques_s.at(t))
+        };
+        for gravity in &self.gravity {
+            let weight_b = to_body(&gravity.g_s) * self.mass;
+            m_b += gravity.rho_c_b.cross(&weight_b);
+        }
+        m_b
+    }
+
+    /// [`Self::attitude_moment_b`] at the attitude held in a state ([`StateRotation`]). Out of line: only scenes
+    /// with space torques or gravity call it, and the right-hand sides, inlined at every stage of an integrator,
+    /// stay small.
+    #[inline(never)]
+    fn attitude_moment_at_state_b(
+        &self,
+        t: f64,
+        rotation: impl FnOnce() -> StateRotation,
+    ) -> Vector3<f64> {
+        let rotation = rotation();
+        self.attitude_moment_b(t, |v_s| rotation.to_body(v_s))
+    }
+
+    /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
+    #[inline(always)]
+    fn with_damping(&self, rest_b: Vector3<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
+        if self.damping_c == 0.0 {
+            rest_b
+        } else {
+            rest_b - omega_b * self.damping_c
+        }
+    }
+
+    /// The total viscous damping coefficient c = Σ c_k (N·m·s): the damping moment is −c ω.
+    pub fn damping_c(&self) -> f64 {
+        self.damping_c
+    }
+
+    /// An upper bound of |M_rest| over all times and attitudes (N·m): Σ |torque value| (every profile factor is
+    /// at most 1 in magnitude) + m |g| |ρ_C| for gravity. Damping is left out: its power −c|ω|² is never positive.
+    pub fn rest_moment_bound(&self) -> f64 {
+        self.effects
+            .iter()
+            .filter_map(|e| e.largest_moment(self.mass))
+            .sum()
+    }
+}
+
+impl AppliedMoment for EffectMoments {
+    /// M_b = M_rest_b(t, q) − c ω_b.
+    #[inline]
+    fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
+        self.with_damping(self.rest_moment_b(t, q), omega_b)
+    }
+
+    /// M_b = M_rest_b(t, q) − c ω_b, rotating by q = q_state / |q_state| ([`StateRotation`]) only for space
+    /// torques and gravity.
+    #[inline(always)]
+    fn moment_b_at_state(
+        &self,
+        t: f64,
+        _q_state: &Quaternion<f64>,
+        rotation: impl FnOnce() -> StateRotation,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, rotation));
+        self.with_damping(rest_b, omega_b)
+    }
+}

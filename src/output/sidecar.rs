@@ -1,0 +1,166 @@
+//! The `RUN.csv.meta.json` sidecar: what was simulated (the scene as run, defaults written in), by which version
+//! and method, with what effort, and the unit of every column. One type, written by a run ([`Sidecar::of_run`])
+//! and read back by `plot`, `view` and Python ([`Sidecar::read`]).
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use crate::sample::Column;
+use crate::scene::{Scene, SceneSpec};
+use crate::simulate::{self, RunReport};
+
+/// The sidecar of the run whose CSV is `csv`: `csv` with `.meta.json` appended.
+///
+/// ```
+/// use std::path::Path;
+/// assert_eq!(eulerdyn::output::sidecar::sidecar_path(Path::new("runs/disk.csv")), Path::new("runs/disk.csv.meta.json"));
+/// ```
+pub fn sidecar_path(csv: &Path) -> PathBuf {
+    PathBuf::from(format!("{}.meta.json", csv.display()))
+}
+
+/// The whole document.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Sidecar {
+    pub eulerdyn_version: String,
+    pub scene: SidecarScene,
+    pub solver: SidecarSolver,
+    pub statistics: Statistics,
+    /// What the run warned of (a coarse fixed step, a drifting energy), as printed on stderr.
+    pub warnings: Vec<String>,
+    /// Every CSV column, in order.
+    pub columns: Vec<SidecarColumn>,
+}
+
+/// `scene`: the scene as simulated, and the file it came from.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SidecarScene {
+    /// The scene file as given on the command line (`<dict>` from Python, absent for a scene built in code).
+    pub path: Option<String>,
+    pub name: String,
+    pub description: String,
+    /// `free`, `fixed_axis` or `hinge`.
+    pub motion: String,
+    /// The effects' types, in order.
+    pub effects: Vec<String>,
+    /// The scene file's text as written (absent for a scene built in code).
+    pub text: Option<String>,
+    /// The scene as simulated: overrides applied, defaults written in ([`Scene::spec`]).
+    pub spec: SceneSpec,
+}
+
+/// `solver`: the method and its settings as run.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SidecarSolver {
+    pub method: String,
+    pub backend: String,
+    /// The form of Euler's equation integrated (`body` or `space`).
+    pub frame: String,
+    pub rtol: f64,
+    pub atol: f64,
+    pub dt: f64,
+    pub fixed_step: bool,
+    /// The fixed step actually taken (s), for fixed-step methods.
+    pub step_used: Option<f64>,
+    pub t_end: f64,
+    pub every: f64,
+}
+
+/// `statistics`: the run's effort.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Statistics {
+    pub steps: u64,
+    pub rejected_steps: u64,
+    pub rhs_evaluations: u64,
+    pub rows: u64,
+    pub wall_seconds: f64,
+    /// Relative drift of T + V where the scene conserves it.
+    pub energy_drift: Option<f64>,
+}
+
+/// One CSV column: its name, SI unit and meaning.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SidecarColumn {
+    pub name: String,
+    pub unit: String,
+    pub meaning: String,
+}
+
+impl Sidecar {
+    /// The sidecar of a run of `scene` that wrote `columns` and ended with `report`.
+    pub fn of_run(scene: &Scene, report: &RunReport, columns: &[Column]) -> Self {
+        let s = &scene.solver;
+        let source = scene.source.as_ref();
+        Self {
+            eulerdyn_version: env!("CARGO_PKG_VERSION").to_string(),
+            scene: SidecarScene {
+                path: source.map(|s| s.path.display().to_string()),
+                name: scene.name.clone(),
+                description: scene.description.clone(),
+                motion: scene.motion.kind().to_string(),
+                effects: scene.effects.iter().map(|e| e.kind().to_string()).collect(),
+                text: source.map(|s| s.text.clone()),
+                spec: scene.spec.clone(),
+            },
+            solver: SidecarSolver {
+                method: s.method.name().to_string(),
+                backend: s.backend.name().to_string(),
+                frame: s.form.name().to_string(),
+                rtol: s.rtol,
+                atol: s.atol,
+                dt: s.dt,
+                fixed_step: s.method.is_fixed_step(),
+                step_used: simulate::fixed_step(scene),
+                t_end: s.t_end,
+                every: scene.schedule.every(),
+            },
+            statistics: Statistics {
+                steps: report.stats.steps,
+                rejected_steps: report.stats.rejected,
+                rhs_evaluations: report.stats.evals,
+                rows: report.rows,
+                wall_seconds: report.wall_seconds,
+                energy_drift: report.energy_drift,
+            },
+            warnings: simulate::warnings(scene, report.energy_drift),
+            columns: columns
+                .iter()
+                .map(|c| SidecarColumn {
+                    name: c.name.into(),
+                    unit: c.unit.into(),
+                    meaning: c.meaning.into(),
+                })
+                .collect(),
+        }
+    }
+
+    /// The document as pretty JSON with a final newline.
+    pub fn to_json(&self) -> String {
+        let mut text = serde_json::to_string_pretty(self).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+
+    /// Reads the sidecar of the run whose CSV is `csv` ([`sidecar_path`]); the error says, in a few words, why
+    /// there is none to use (missing, unreadable, not JSON, not an eulerdyn sidecar).
+    pub fn read(csv: &Path) -> Result<Sidecar, String> {
+        let text = match std::fs::read_to_string(sidecar_path(csv)) {
+            Ok(text) => text,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                return Err("there is no sidecar".into());
+            }
+            Err(e) => return Err(format!("the sidecar cannot be read ({e})")),
+        };
+        Self::from_json(&text)
+    }
+
+    /// Parses a sidecar document.
+    pub fn from_json(text: &str) -> Result<Sidecar, String> {
+        let value: serde_json::Value = serde_json::from_str(text)
+            .map_err(|e| format!("the sidecar is not valid JSON ({e})"))?;
+        serde_json::from_value(value).map_err(|e| {
+            format!("the sidecar is not one that this eulerdyn writes ({e}); run the scene again")
+        })
+    }
+}

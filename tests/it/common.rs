@@ -1,0 +1,197 @@
+//! Helpers shared by the tests: running the real `eulerdyn` binary, writing scenes into temporary directories,
+//! checking what a run left on disk, and reading rows.
+
+// Each test file uses its own subset of these helpers.
+#![allow(dead_code)]
+
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::{self, Overrides, Scene};
+
+/// A free-motion scene: asymmetric body, torque-free, t_end = 1 s, a row every 0.1 s.
+pub const FREE_SCENE: &str = r#"name = "free"
+
+[body]
+mass = 1.0
+inertia = [1.0, 2.0, 3.0]
+
+[initial]
+omega = [0.3, 0.0, 2.0]
+
+[solver]
+t_end = 1.0
+
+[output]
+every = 0.1
+"#;
+
+/// What a run of the binary gave.
+#[derive(Debug)]
+pub struct Outcome {
+    /// The exit code; `None` when a signal ended the process.
+    pub code: Option<i32>,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+impl Outcome {
+    /// Panics with the whole outcome unless the exit code is `code`.
+    pub fn expect_code(&self, code: i32) -> &Self {
+        assert_eq!(
+            self.code,
+            Some(code),
+            "expected exit code {code}\nstdout:\n{}\nstderr:\n{}",
+            self.stdout,
+            self.stderr
+        );
+        self
+    }
+
+    /// Whether the process panicked (exit 101 or a panic message).
+    pub fn panicked(&self) -> bool {
+        self.code == Some(101) || self.stderr.contains("panicked")
+    }
+}
+
+/// Runs `eulerdyn` with `args` and collects its output.
+pub fn eulerdyn<I, S>(args: I) -> Outcome
+where
+    I: IntoIterator<Item = S>,
+    S: AsRef<OsStr>,
+{
+    let out = Command::new(env!("CARGO_BIN_EXE_eulerdyn"))
+        .args(args)
+        .output()
+        .expect("the eulerdyn binary runs");
+    Outcome {
+        code: out.status.code(),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+/// Runs `eulerdyn` with `args` and its stdout sent to `stdout` (e.g. a file); collects stderr.
+pub fn eulerdyn_to<I, S>(args: I, stdout: std::fs::File) -> Outcome
+where
+    I: IntoIterator<Item = S>,
+    S: AsRef<OsStr>,
+{
+    let out = Command::new(env!("CARGO_BIN_EXE_eulerdyn"))
+        .args(args)
+        .stdout(stdout)
+        .output()
+        .expect("the eulerdyn binary runs");
+    Outcome {
+        code: out.status.code(),
+        stdout: String::new(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+/// A file of the repository, e.g. `scenarios/tilted_disk.toml`.
+pub fn repo_path(relative: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(relative)
+}
+
+/// Writes `text` to `dir/name` and returns the path.
+pub fn write_file(dir: &Path, name: &str, text: impl AsRef<[u8]>) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("the test can write its scene");
+    path
+}
+
+/// The names of the entries of `dir`, sorted.
+pub fn dir_entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("the test directory is readable")
+        .map(|e| {
+            e.expect("a directory entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    names.sort();
+    names
+}
+
+/// The CSV header row of `text` (split on commas).
+pub fn header(text: &str) -> Vec<String> {
+    text.lines()
+        .next()
+        .unwrap_or("")
+        .split(',')
+        .map(str::to_string)
+        .collect()
+}
+
+/// The header and the records of a CSV text, read with the `csv` crate.
+pub fn read_csv(text: &str) -> (Vec<String>, Vec<csv::StringRecord>) {
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let head = reader
+        .headers()
+        .expect("a CSV header")
+        .iter()
+        .map(str::to_string)
+        .collect();
+    let records = reader
+        .records()
+        .collect::<Result<Vec<_>, _>>()
+        .expect("well-formed CSV records");
+    (head, records)
+}
+
+/// The values of the column `name`, parsed as f64.
+pub fn column(head: &[String], records: &[csv::StringRecord], name: &str) -> Vec<f64> {
+    let i = head
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name} in {head:?}"));
+    records
+        .iter()
+        .map(|r| r[i].parse::<f64>().expect("a number"))
+        .collect()
+}
+
+/// The row times the contract prescribes: k·every (computed, not summed) for k·every < t_end, then t_end.
+pub fn expected_times(every: f64, t_end: f64) -> Vec<f64> {
+    let mut times = Vec::new();
+    let mut k = 0u64;
+    while (k as f64) * every < t_end {
+        times.push(k as f64 * every);
+        k += 1;
+    }
+    times.push(t_end);
+    times
+}
+
+/// Times where ω_b[axis] changes sign, by linear interpolation between rows.
+pub fn sign_changes(rows: &[Sample], axis: usize) -> Vec<f64> {
+    rows.windows(2)
+        .filter(|w| w[0].omega_b[axis].signum() != w[1].omega_b[axis].signum())
+        .map(|w| {
+            let (a, b) = (w[0].omega_b[axis], w[1].omega_b[axis]);
+            w[0].t + (w[1].t - w[0].t) * a / (a - b)
+        })
+        .collect()
+}
+
+/// The scene of `text` with `overrides`; panics with the scene error (a test's own scene text is valid).
+pub fn scene_from(text: &str, overrides: &Overrides) -> Scene {
+    scene::parse(Path::new("test.toml"), text, overrides).unwrap_or_else(|e| panic!("{e}\n{text}"))
+}
+
+/// A character device node `dir/name` made with `mknod` (major 1: minor 3 is the null device, 7 the full device),
+/// so that no test writes to a system device through `-o`; `None` where that is not permitted (not root).
+pub fn device_node(dir: &Path, name: &str, minor: &str) -> Option<PathBuf> {
+    let path = dir.join(name);
+    let made = Command::new("mknod")
+        .arg(&path)
+        .args(["c", "1", minor])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    made.then_some(path)
+}

@@ -1,0 +1,79 @@
+//! The outputs the README shows are the commands' outputs, so that they cannot go stale: the code block after a
+//! line `<!-- output of: eulerdyn ARGS -->` must be exactly what `eulerdyn ARGS` prints on stdout, run from the
+//! repository root. `EULERDYN_BLESS=1 cargo test --test readme` rewrites the blocks from the commands.
+
+use crate::common::{eulerdyn, repo_path};
+
+const MARK: &str = "<!-- output of: eulerdyn ";
+
+/// One shown output: the command's arguments and the lines of the README its block spans (fences excluded).
+struct Shown {
+    args: Vec<String>,
+    lines: std::ops::Range<usize>,
+}
+
+/// Every marked block of `lines`.
+fn shown_outputs(lines: &[&str]) -> Vec<Shown> {
+    let mut found = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let Some(rest) = line.strip_prefix(MARK) else {
+            continue;
+        };
+        let args = rest
+            .strip_suffix(" -->")
+            .unwrap_or_else(|| panic!("README.md:{}: the mark must end with ` -->`", i + 1));
+        assert!(
+            lines.get(i + 1).is_some_and(|l| l.starts_with("```")),
+            "README.md:{}: the mark must be followed by a code block",
+            i + 1
+        );
+        let end = (i + 2..lines.len())
+            .find(|&k| lines[k] == "```")
+            .unwrap_or_else(|| panic!("README.md:{}: the code block is not closed", i + 2));
+        found.push(Shown {
+            args: args.split_whitespace().map(str::to_string).collect(),
+            lines: i + 2..end,
+        });
+    }
+    found
+}
+
+#[test]
+fn the_readme_shows_what_the_commands_print() {
+    let path = repo_path("README.md");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let shown = shown_outputs(&lines);
+    assert!(!shown.is_empty(), "no `{MARK}…-->` mark in README.md");
+    let bless = std::env::var_os("EULERDYN_BLESS").is_some();
+    let mut blessed: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    let mut stale = Vec::new();
+    for s in shown.iter().rev() {
+        let out = eulerdyn(&s.args);
+        assert!(
+            matches!(out.code, Some(0 | 1)),
+            "eulerdyn {}: {}",
+            s.args.join(" "),
+            out.stderr
+        );
+        let printed: Vec<String> = out.stdout.lines().map(str::to_string).collect();
+        if printed.as_slice() != &blessed[s.lines.clone()] {
+            stale.push(format!(
+                "README.md:{}: `eulerdyn {}` now prints\n{}",
+                s.lines.start + 1,
+                s.args.join(" "),
+                out.stdout
+            ));
+            blessed.splice(s.lines.clone(), printed);
+        }
+    }
+    if bless && !stale.is_empty() {
+        std::fs::write(&path, blessed.join("\n") + "\n").unwrap();
+        return;
+    }
+    assert!(
+        stale.is_empty(),
+        "{}\n(EULERDYN_BLESS=1 cargo test --test readme rewrites the README's blocks)",
+        stale.join("\n")
+    );
+}
