@@ -127,10 +127,17 @@ fn process_cpu_seconds() -> f64 {
     let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
     let fields: Vec<f64> = stat
         .rsplit_once(')')
-        .map(|(_, rest)| rest.split_whitespace().filter_map(|f| f.parse().ok()).collect())
+        .map(|(_, rest)| {
+            rest.split_whitespace()
+                .filter_map(|f| f.parse().ok())
+                .collect()
+        })
         .unwrap_or_default();
     // After the command name: state (not a number, skipped), then ppid … cmajflt (10 fields), utime, stime.
-    fields.get(10).zip(fields.get(11)).map_or(f64::NAN, |(u, s)| (u + s) / 100.0)
+    fields
+        .get(10)
+        .zip(fields.get(11))
+        .map_or(f64::NAN, |(u, s)| (u + s) / 100.0)
 }
 
 /// `f`'s result and the CPU seconds the process used meanwhile, added to `cpu`.
@@ -161,7 +168,14 @@ fn every_method(dir: &Path, quick: bool) {
     );
     println!(
         "  {:<8} {:>6} {:>12} {:>12} {:>12} {:>12} {:>18} {:>8}",
-        "method", "runs", "alone", "1 thread", "overhead", "2 threads", "2 vs 1 (>= 1.7)", "CPU 2/1"
+        "method",
+        "runs",
+        "alone",
+        "1 thread",
+        "overhead",
+        "2 threads",
+        "2 vs 1 (>= 1.7)",
+        "CPU 2/1"
     );
     let mut dop853_two = f64::NAN;
     for (method, runs) in cases {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The mpmath oracle of tests/exact_grid.rs: the benchmark body's torque-free motion on an equal grid.
+"""The mpmath oracle of tests/it/exact_grid.rs: the benchmark body's torque-free motion on an equal grid.
 
 Body: principal moments I = (1, 2, 3) kg m^2 (body axes principal), omega(0) = (0.3, 0, 2) rad/s, q(0) = identity;
 rows t_k = k * 1e-3 s (the binary64 product, as eulerdyn's schedule forms it), k = 0 .. 100 000 (10^5 row intervals over 100 s). The oracle keeps every 331st row (331 is

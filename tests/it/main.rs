@@ -7,6 +7,7 @@ mod cli_end_to_end;
 mod cli_usability;
 mod common;
 mod exact_closed_forms;
+mod exact_grid;
 mod fixed_axis;
 mod free_rotation;
 mod gallery;

@@ -1,8 +1,6 @@
 //! The exact torque-free flow on an equal grid (`exact`, issue 26): rows advanced by addition theorems
 //! (`TorqueFreeBody::equal_grid`), against an mpmath oracle and against the direct evaluation of the closed form.
 
-mod common;
-
 use std::convert::Infallible;
 
 use eulerdyn::exact::{ANCHOR_ROWS, TorqueFreeBody};
@@ -13,12 +11,12 @@ use eulerdyn::scene::Overrides;
 use eulerdyn::simulate;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
-use common::scene_from;
+use crate::common::scene_from;
 
 /// The oracle: tests/data/make_exact_grid_oracle.py (mpmath, 40 digits; ω by Jacobi's functions, the precession
 /// angle by quadrature of its rate, checked against mpmath's Taylor ODE solver), every 331st row of
 /// t_k = k·1e-3 s, k ≤ 10⁵, for I = (1, 2, 3), ω(0) = (0.3, 0, 2), q(0) = 1.
-const ORACLE: &str = include_str!("data/exact_grid_oracle.csv");
+const ORACLE: &str = include_str!("../data/exact_grid_oracle.csv");
 
 struct OracleRow {
     k: usize,
@@ -317,7 +315,7 @@ fn a_full_inertia_tensor_gets_the_rows_of_the_direct_evaluation() {
         let flow = ExactFlow::new(body, omega0_b, &scene.attitude0).unwrap();
         let (mut rows, mut err_omega, mut err_h, mut err_q) = (0, 0.0f64, 0.0f64, 0.0f64);
         simulate::run(&scene, |s: &Sample| {
-            let d = flow.sample(s.t, scene.solver.frame);
+            let d = flow.sample(s.t, scene.solver.form);
             err_omega = err_omega.max((s.omega_b - d.omega_b).norm() / d.omega_b.norm());
             err_h = err_h.max((s.h_s - d.h_s).norm() / d.h_s.norm());
             err_q = err_q.max(angle(&s.q, &d.q));
