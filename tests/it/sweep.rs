@@ -276,3 +276,31 @@ fn a_missing_base_scene_exits_2() {
     );
     assert!(!out.exists());
 }
+
+#[test]
+fn outcomes_arrive_in_run_order_across_batches_and_a_delivery_error_stops_the_sweep() {
+    // 300 runs go in several batches (2·threads, doubling), the next batch running while the last is delivered:
+    // every run once, in order. A failing delivery ends the sweep with that error, at that outcome.
+    let dir = tempfile::tempdir().unwrap();
+    let path = free_sweep(
+        dir.path(),
+        "runs = 300\n[[vary]]\nkey = \"initial.omega.0\"\nnormal = { mean = 0.3, sd = 0.01 }\n",
+    );
+    let sweep = Sweep::load(&path).unwrap();
+    for jobs in [1, 2] {
+        let runs: Vec<u64> = outcomes(&sweep, jobs, Shard::ALL).iter().map(|o| o.run).collect();
+        assert_eq!(runs, (0..300).collect::<Vec<u64>>(), "jobs {jobs}");
+        let mut delivered = 0;
+        let result = sweep.run_all(jobs, Shard::ALL, None, |o| {
+            delivered += 1;
+            if o.run == 40 {
+                Err(std::io::Error::other("disk full"))
+            } else {
+                Ok(())
+            }
+        });
+        let message = result.err().map(|e| e.to_string());
+        assert_eq!(message.as_deref(), Some("disk full"), "jobs {jobs}");
+        assert_eq!(delivered, 41, "jobs {jobs}");
+    }
+}

@@ -16,6 +16,7 @@ mod outcome;
 mod table;
 
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -246,7 +247,7 @@ impl Sweep {
     /// order. Runs go in batches (the first small, growing while a batch takes under a quarter second), so that
     /// memory holds two batches of outcomes and progress comes often; while the pool runs a batch, the calling
     /// thread delivers the one before (so the table and the progress bar never leave the pool idle); `deliver`'s
-    /// error stops the sweep (the batch being run is finished and dropped).
+    /// error stops the sweep (the runs of the batch in flight not yet started are skipped, its others dropped).
     pub fn run_all<E: std::fmt::Display>(
         &self,
         jobs: usize,
@@ -261,13 +262,17 @@ impl Sweep {
         let threads = pool.current_num_threads() as u64;
         let mut runs = shard.runs(self.total);
         let mut batch_len = 2 * threads;
+        // Set when `deliver` fails: the runs of the batch in flight not yet started are skipped.
+        let stop = AtomicBool::new(false);
         std::thread::scope(|scope| {
             let run_batch = |batch: Vec<u64>| {
-                let pool = &pool;
+                let (pool, stop) = (&pool, &stop);
                 scope.spawn(move || {
                     let started = Instant::now();
-                    let outcomes: Vec<RunOutcome> = pool
-                        .install(|| batch.par_iter().map(|&i| self.run_one(i, series)).collect());
+                    let run =
+                        |&i: &u64| (!stop.load(Ordering::Relaxed)).then(|| self.run_one(i, series));
+                    let outcomes: Vec<Option<RunOutcome>> =
+                        pool.install(|| batch.par_iter().map(run).collect());
                     (outcomes, started.elapsed().as_secs_f64())
                 })
             };
@@ -278,8 +283,11 @@ impl Sweep {
                 let (outcomes, seconds) = handle
                     .join()
                     .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-                for o in &outcomes {
-                    deliver(o).map_err(SweepError::Deliver)?;
+                for o in outcomes.iter().flatten() {
+                    if let Err(e) = deliver(o) {
+                        stop.store(true, Ordering::Relaxed);
+                        return Err(SweepError::Deliver(e));
+                    }
                 }
                 if seconds < 0.25 {
                     batch_len = (batch_len * 2).min(MAX_BATCH);
