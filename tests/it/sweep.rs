@@ -288,7 +288,10 @@ fn outcomes_arrive_in_run_order_across_batches_and_a_delivery_error_stops_the_sw
     );
     let sweep = Sweep::load(&path).unwrap();
     for jobs in [1, 2] {
-        let runs: Vec<u64> = outcomes(&sweep, jobs, Shard::ALL).iter().map(|o| o.run).collect();
+        let runs: Vec<u64> = outcomes(&sweep, jobs, Shard::ALL)
+            .iter()
+            .map(|o| o.run)
+            .collect();
         assert_eq!(runs, (0..300).collect::<Vec<u64>>(), "jobs {jobs}");
         let mut delivered = 0;
         let result = sweep.run_all(jobs, Shard::ALL, None, |o| {
