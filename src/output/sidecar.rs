@@ -157,10 +157,13 @@ impl Sidecar {
 
     /// Parses a sidecar document.
     pub fn from_json(text: &str) -> Result<Sidecar, String> {
-        let value: serde_json::Value = serde_json::from_str(text)
-            .map_err(|e| format!("the sidecar is not valid JSON ({e})"))?;
-        serde_json::from_value(value).map_err(|e| {
-            format!("the sidecar is not one that this eulerdyn writes ({e}); run the scene again")
+        serde_json::from_str(text).map_err(|e| match e.classify() {
+            serde_json::error::Category::Data => {
+                format!(
+                    "the sidecar is not one that this eulerdyn writes ({e}); run the scene again"
+                )
+            }
+            _ => format!("the sidecar is not valid JSON ({e})"),
         })
     }
 }

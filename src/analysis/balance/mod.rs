@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 use nalgebra::{Complex, Matrix2, Vector2, Vector3};
 
-pub use model::{Balance, BalanceError, Correction, Planes, balance, balance_scene};
+pub use model::{Balance, BalanceError, Correction, Planes, balance};
 
 use crate::scene::{Scene, SceneError, SceneSpec};
 use influence::Phasor;

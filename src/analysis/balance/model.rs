@@ -13,13 +13,11 @@
 //! m_i = |v_i|/R. For the notes' skewed disk (s = 0, |d| = ¼ m R² sin θ cos θ) this is two equal masses
 //! ¼ m R² sin θ cos θ / (R_c (z_2 − z_1)) on opposite sides.
 
-use std::path::Path;
-
 use nalgebra::{Unit, Vector3};
 
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::support::Bearings;
-use crate::scene::{self, InvalidScene, Motion, Overrides, PointMassSpec, SceneError, SceneSpec};
+use crate::scene::{InvalidScene, Motion, PointMassSpec, SceneSpec};
 
 /// The correction planes: axial positions `a` and `b` from the axis point, and the radius of the masses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -72,20 +70,6 @@ pub enum BalanceError {
     /// The scene or the planes do not allow balancing.
     #[error("{0}")]
     Unbalanceable(String),
-}
-
-/// Balances the scene file `path` whose text is `text` (`eulerdyn balance`): validated first, for the scene's
-/// messages with line and column; a scene that cannot be balanced is an error naming the file
-/// (`FILE: cannot balance: …`).
-pub fn balance_scene(path: &Path, text: &str, planes: &Planes) -> Result<Balance, SceneError> {
-    scene::parse(path, text, &Overrides::default())?;
-    let spec = scene::parse_spec(path, text)?;
-    balance(&spec, planes).map_err(|e| SceneError {
-        file: path.to_path_buf(),
-        key: None,
-        location: None,
-        problem: format!("cannot balance: {e}"),
-    })
 }
 
 impl Balance {
