@@ -26,7 +26,10 @@ impl InvalidBody {
 ///
 /// As in the reference notes, disks and cylinders have their symmetry axis along body z and the thin rod lies
 /// along body x.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// Serialized as a scene file writes it: `{ type = "thin_disk", radius = 0.3 }`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
 pub enum Shape {
     /// Thin disk of radius R: I = mR²·diag(1/4, 1/4, 1/2).
     ThinDisk { radius: f64 },
@@ -43,6 +46,66 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// A thin disk of `radius` (m), symmetry axis along body z.
+    ///
+    /// ```
+    /// use eulerdyn::body::Shape;
+    /// assert_eq!(Shape::thin_disk(0.3), Shape::ThinDisk { radius: 0.3 });
+    /// ```
+    pub fn thin_disk(radius: f64) -> Self {
+        Self::ThinDisk { radius }
+    }
+
+    /// A disk of `radius` and `thickness` (m), symmetry axis along body z.
+    ///
+    /// ```
+    /// use eulerdyn::body::Shape;
+    /// assert_eq!(Shape::disk(0.3, 0.02), Shape::Disk { radius: 0.3, thickness: 0.02 });
+    /// ```
+    pub fn disk(radius: f64, thickness: f64) -> Self {
+        Self::Disk { radius, thickness }
+    }
+
+    /// A thin rod of `length` (m) along body x.
+    ///
+    /// ```
+    /// use eulerdyn::body::Shape;
+    /// assert_eq!(Shape::thin_rod(1.0), Shape::ThinRod { length: 1.0 });
+    /// ```
+    pub fn thin_rod(length: f64) -> Self {
+        Self::ThinRod { length }
+    }
+
+    /// A sphere of `radius` (m).
+    ///
+    /// ```
+    /// use eulerdyn::body::Shape;
+    /// assert_eq!(Shape::sphere(0.1), Shape::Sphere { radius: 0.1 });
+    /// ```
+    pub fn sphere(radius: f64) -> Self {
+        Self::Sphere { radius }
+    }
+
+    /// A rectangular box of edges `size` = [x, y, z] (m) along the body axes.
+    ///
+    /// ```
+    /// use eulerdyn::body::Shape;
+    /// assert_eq!(Shape::cuboid([0.1, 0.2, 0.3]), Shape::Box { size: [0.1, 0.2, 0.3] });
+    /// ```
+    pub fn cuboid(size: [f64; 3]) -> Self {
+        Self::Box { size }
+    }
+
+    /// A solid cylinder of `radius` and `height` (m), symmetry axis along body z.
+    ///
+    /// ```
+    /// use eulerdyn::body::Shape;
+    /// assert_eq!(Shape::cylinder(0.1, 0.5), Shape::Cylinder { radius: 0.1, height: 0.5 });
+    /// ```
+    pub fn cylinder(radius: f64, height: f64) -> Self {
+        Self::Cylinder { radius, height }
+    }
+
     /// Checks the dimensions (finite and > 0, or ≥ 0 for a disk's thickness) and returns the central
     /// inertia tensor of the shape with mass `mass`, in body axes (formulas on each variant; e.g.
     /// Meriam & Kraige, Engineering Mechanics: Dynamics, Appendix B).

@@ -13,12 +13,12 @@
 //! what the bearings must supply — has the magnitude ¼ m R² ω² sin θ cos θ.
 //!
 //! ```
-//! use eulerdyn::scene::{BodySpec, MotionSpec, SceneSpec, ShapeSpec};
+//! use eulerdyn::scene::{BodySpec, FixedAxisSpec, SceneSpec, ShapeSpec};
 //! use eulerdyn::Form;
 //!
 //! let (m, r, omega, tilt) = (2.0, 0.3, 10.0, 30f64.to_radians());
 //! let scene = SceneSpec::new(BodySpec::shape(m, ShapeSpec::thin_disk(r)), 1.0, 0.01)
-//!     .with_motion(MotionSpec::fixed_axis_tilted(30.0, omega))
+//!     .with_motion(FixedAxisSpec::tilted(30.0, omega))
 //!     // The spin axis along space z: body → space is a rotation of −θ about x.
 //!     .with_attitude([(tilt / 2.0).cos(), -(tilt / 2.0).sin(), 0.0, 0.0])
 //!     .with_form(Form::Space)
@@ -61,7 +61,10 @@ pub mod trig;
 pub use frames::{Axes, Form};
 pub use method::{Backend, Method};
 pub use sample::Sample;
-pub use scene::{BodySpec, EffectSpec, MotionSpec, Scene, SceneSpec, ShapeSpec};
+pub use scene::{
+    BodySpec, EffectSpec, FixedAxisSpec, HingeSpec, MotionSpec, Scene, SceneSpec, ShapeSpec,
+    TorqueSpec,
+};
 
 /// The crate's version (`Cargo.toml`), as the sidecar's `eulerdyn_version` and Python's `eulerdyn.__version__`
 /// give it.

@@ -2,7 +2,7 @@
 //! where a tiny change of ω₀ or of the inertia decides the motion. `check`, `run`, `sweep` (for its base scene)
 //! and Python print them, and a run's sidecar lists them; nothing is refused.
 
-use crate::scene::{Motion, Scene, SceneSpec};
+use crate::scene::{AxisDirection, Motion, MotionSpec, Scene, SceneSpec, ShapeSpec};
 
 /// A body dimension above this looks like millimetres written as metres (m).
 pub const LARGEST_PLAUSIBLE_SIZE: f64 = 100.0;
@@ -30,31 +30,42 @@ pub fn looks_like_radians(deg: f64) -> bool {
 /// degrees that [`looks_like_radians`].
 pub fn unit_slips(spec: &SceneSpec) -> Vec<String> {
     let mut out = Vec::new();
-    if let Some(shape) = &spec.body.shape {
-        let sizes = [
-            ("radius", shape.radius),
-            ("thickness", shape.thickness),
-            ("length", shape.length),
-            ("height", shape.height),
-        ];
-        let boxed = shape.size.iter().flatten().map(|&s| ("size", Some(s)));
-        for (key, value) in sizes.into_iter().chain(boxed) {
-            if let Some(v) = value.filter(|v| *v > LARGEST_PLAUSIBLE_SIZE) {
-                out.push(format!(
-                    "body.shape.{key} = {v} m: a body over {LARGEST_PLAUSIBLE_SIZE} m across; if millimetres were \
-                     meant, write {} m",
-                    v / 1000.0
-                ));
+    if let Some(shape) = spec.body.shape_spec() {
+        let sizes: Vec<(&str, f64)> = match *shape {
+            ShapeSpec::ThinDisk { radius } | ShapeSpec::Sphere { radius } => {
+                vec![("radius", radius)]
             }
-        }
-    }
-    if let Some(motion) = &spec.motion {
-        if let Some(v) = motion.tilt_deg.filter(|v| looks_like_radians(*v)) {
+            ShapeSpec::Disk { radius, thickness } => {
+                vec![("radius", radius), ("thickness", thickness)]
+            }
+            ShapeSpec::ThinRod { length } => vec![("length", length)],
+            ShapeSpec::Box { size } => size.iter().map(|&s| ("size", s)).collect(),
+            ShapeSpec::Cylinder { radius, height } => vec![("radius", radius), ("height", height)],
+        };
+        for (key, v) in sizes
+            .into_iter()
+            .filter(|(_, v)| *v > LARGEST_PLAUSIBLE_SIZE)
+        {
             out.push(format!(
-                "motion.tilt_deg = {v} is {v} degrees; if radians were meant, that is {:.1} degrees",
-                v.to_degrees()
+                "body.shape.{key} = {v} m: a body over {LARGEST_PLAUSIBLE_SIZE} m across; if millimetres were \
+                 meant, write {} m",
+                v / 1000.0
             ));
         }
+    }
+    let tilt = spec
+        .motion
+        .as_ref()
+        .and_then(MotionSpec::axis)
+        .and_then(|a| match a.direction {
+            AxisDirection::TiltDeg(v) => Some(v),
+            AxisDirection::Body(_) => None,
+        });
+    if let Some(v) = tilt.filter(|v| looks_like_radians(*v)) {
+        out.push(format!(
+            "motion.tilt_deg = {v} is {v} degrees; if radians were meant, that is {:.1} degrees",
+            v.to_degrees()
+        ));
     }
     out
 }

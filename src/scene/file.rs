@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 
 use super::model::{Scene, SceneSource};
 use super::source_map::{KeyPath, SourceMap};
-use super::spec::SceneSpec;
-use super::validate::Overrides;
+use super::spec::{SceneFile, SceneSpec};
+use super::validate::{InvalidScene, Overrides};
 use crate::named::Named;
 
 /// A scene that could not be read or is not valid.
@@ -89,12 +89,9 @@ pub fn read(path: &Path) -> Result<String, SceneError> {
 /// ```
 pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, SceneError> {
     let doc = parse_spec(path, text)?;
-    let mut scene = doc.build_with(overrides).map_err(|inv| SceneError {
-        file: path.to_path_buf(),
-        location: SourceMap::new(text).locate(&inv.key),
-        key: Some(inv.key.to_string()),
-        problem: inv.problem,
-    })?;
+    let mut scene = doc
+        .build_with(overrides)
+        .map_err(|inv| located(path, text, inv))?;
     scene.source = Some(SceneSource {
         path: path.to_path_buf(),
         text: text.to_string(),
@@ -114,7 +111,18 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
                     .into(),
         });
     }
-    parse_toml(path, text)
+    let file: SceneFile = parse_toml(path, text)?;
+    file.into_spec().map_err(|inv| located(path, text, inv))
+}
+
+/// A scene that is not valid as an error of the file `path` with text `text`: its key's line and column.
+fn located(path: &Path, text: &str, inv: InvalidScene) -> SceneError {
+    SceneError {
+        file: path.to_path_buf(),
+        location: SourceMap::new(text).locate(&inv.key),
+        key: Some(inv.key.to_string()),
+        problem: inv.problem,
+    }
 }
 
 /// Parses TOML text into any typed value with the scene file's messages (file, key, line and column, in plain

@@ -2,6 +2,7 @@
 //! its validation ([`SceneSpec::build`]) and the validated [`Scene`] a run needs.
 
 pub mod advice;
+mod checks;
 mod file;
 mod model;
 pub mod source_map;
@@ -13,9 +14,9 @@ pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SceneSource, SolverConfig};
 pub use spec::{
-    BodySpec, CompareSpec, EffectKind, EffectSpec, InertiaSpec, InitialSpec, MotionKind,
-    MotionSpec, OutputSpec, PointMassSpec, ProfileKind, SceneSpec, ShapeKind, ShapeSpec,
-    SolverSpec,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CompareSpec, Distribution, EffectSpec,
+    FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionSpec, OutputSpec, PointMassSpec,
+    ProfileSpec, RateSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -161,11 +161,11 @@ fn not_table(path: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{BodySpec, MotionSpec, ShapeSpec};
+    use crate::scene::{AxisDirection, BodySpec, FixedAxisSpec, MotionSpec, ShapeSpec};
 
     fn disk() -> SceneTemplate {
         let spec = SceneSpec::new(BodySpec::shape(2.0, ShapeSpec::thin_disk(0.3)), 1.0, 0.1)
-            .with_motion(MotionSpec::fixed_axis_tilted(30.0, 10.0))
+            .with_motion(FixedAxisSpec::tilted(30.0, 10.0))
             .with_omega([0.0, 0.0, 1.0]);
         SceneTemplate::from_spec(&spec).unwrap()
     }
@@ -185,7 +185,12 @@ mod tests {
                 (key("solver.rtol"), 1e-8),
             ])
             .unwrap();
-        assert_eq!(spec.motion.unwrap().tilt_deg, Some(45.0));
+        let direction = spec
+            .motion
+            .as_ref()
+            .and_then(MotionSpec::axis)
+            .map(|a| a.direction);
+        assert_eq!(direction, Some(AxisDirection::TiltDeg(45.0)));
         assert_eq!(spec.body.mass, 3.0);
         assert_eq!(spec.initial.unwrap().omega, Some([0.0, 0.0, 5.0]));
         assert_eq!(spec.solver.rtol, Some(1e-8));

@@ -14,7 +14,9 @@
 
 use crate::common::{dir_entries, eulerdyn, write_file};
 use eulerdyn::sample::Sample;
-use eulerdyn::scene::{BodySpec, EffectSpec, MotionSpec, SceneSpec, ShapeSpec};
+use eulerdyn::scene::{
+    BodySpec, EffectSpec, FixedAxisSpec, HingeSpec, MotionSpec, SceneSpec, ShapeSpec, TorqueSpec,
+};
 use eulerdyn::{Axes, Form, Method, simulate};
 use nalgebra::Vector3;
 
@@ -33,9 +35,7 @@ fn rows(spec: &SceneSpec) -> Vec<Sample> {
 /// The notes' disk on an axis tilted `tilt_deg` from its symmetry axis, with bearings.
 fn tilted_disk(tilt_deg: f64, form: Form) -> SceneSpec {
     SceneSpec::new(BodySpec::shape(M, ShapeSpec::thin_disk(R)), 1.0, 0.01)
-        .with_motion(
-            MotionSpec::fixed_axis_tilted(tilt_deg, OMEGA).with_bearings(BEARINGS.0, BEARINGS.1),
-        )
+        .with_motion(FixedAxisSpec::tilted(tilt_deg, OMEGA).with_bearings(BEARINGS.0, BEARINGS.1))
         .with_form(form)
 }
 
@@ -129,7 +129,7 @@ fn an_offset_mass_needs_a_rotating_force_m_e_omega_squared() {
         // A sphere on a vertical axis through a point e from C: C runs on a circle of radius e.
         let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::sphere(0.1)), 1.0, 0.05)
             .with_motion(
-                MotionSpec::fixed_axis([0.0, 0.0, 1.0], OMEGA)
+                FixedAxisSpec::new([0.0, 0.0, 1.0], OMEGA)
                     .with_point([e, 0.0, 0.0])
                     .with_bearings(BEARINGS.0, BEARINGS.1),
             )
@@ -154,7 +154,7 @@ fn a_resting_rotor_under_gravity_loads_its_bearings_by_the_lever_rule() {
     let (a, b) = (-0.2, 0.6);
     // A disk on a horizontal axis (space x) through C, at rest: the bearings carry the weight W = m g.
     let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::thin_disk(R)), 0.5, 0.1)
-        .with_motion(MotionSpec::fixed_axis([1.0, 0.0, 0.0], 0.0).with_bearings(a, b))
+        .with_motion(FixedAxisSpec::new([1.0, 0.0, 0.0], 0.0).with_bearings(a, b))
         .with_effect(EffectSpec::weight([0.0, 0.0, -9.81]));
     let weight = M * 9.81;
     for s in rows(&spec) {
@@ -176,7 +176,7 @@ fn spin_up_needs_a_drive_moment_i_alpha() {
     let alpha = 3.0;
     for form in Form::ALL {
         let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::thin_disk(R)), 1.0, 0.1)
-            .with_motion(MotionSpec::fixed_axis_tilted(30.0, 0.0).with_accel(alpha))
+            .with_motion(FixedAxisSpec::tilted(30.0, 0.0).with_accel(alpha))
             .with_form(form);
         // I_uu = u·I u for u = (0, −sin θ, cos θ): ¼ m R² sin²θ + ½ m R² cos²θ.
         let theta = 30f64.to_radians();
@@ -199,8 +199,8 @@ fn a_hinge_under_a_constant_axial_torque_accelerates_uniformly() {
     for form in Form::ALL {
         for method in [Method::Rk4, Method::Dopri5, Method::Dop853] {
             let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::thin_disk(R)), 2.0, 0.1)
-                .with_motion(MotionSpec::hinge([0.0, 0.0, 1.0], 1.0).with_bearings(-0.1, 0.1))
-                .with_effect(EffectSpec::torque(Axes::Body, [0.0, 0.0, torque]))
+                .with_motion(HingeSpec::new([0.0, 0.0, 1.0], 1.0).with_bearings(-0.1, 0.1))
+                .with_effect(TorqueSpec::new(Axes::Body, [0.0, 0.0, torque]))
                 .with_method(method)
                 .with_form(form)
                 .with_dt(1e-3);
@@ -231,7 +231,7 @@ fn rod_pendulum(amplitude_deg: f64, form: Form) -> SceneSpec {
     let h = std::f64::consts::FRAC_1_SQRT_2;
     SceneSpec::new(BodySpec::shape(1.0, ShapeSpec::thin_rod(1.0)), 4.0, 0.001)
         .with_motion(
-            MotionSpec::hinge([0.0, 0.0, 1.0], 0.0)
+            HingeSpec::new([0.0, 0.0, 1.0], 0.0)
                 .with_point([-0.5, 0.0, 0.0])
                 .with_angle_deg(amplitude_deg)
                 .with_bearings(-0.05, 0.05),
@@ -346,7 +346,7 @@ fn balancing_an_offset_sphere_puts_half_its_static_imbalance_in_each_plane() {
     let e = 0.01;
     // A sphere whose axis (body z) passes e from C: static imbalance m e only.
     let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::sphere(0.1)), 1.0, 0.1).with_motion(
-        MotionSpec::fixed_axis([0.0, 0.0, 1.0], OMEGA)
+        FixedAxisSpec::new([0.0, 0.0, 1.0], OMEGA)
             .with_point([e, 0.0, 0.0])
             .with_bearings(-0.2, 0.2),
     );
@@ -384,7 +384,7 @@ fn point_masses_move_the_mass_center_and_positions_stay_from_the_reference_origi
         0.5,
         0.1,
     )
-    .with_motion(MotionSpec::fixed_axis([0.0, 0.0, 1.0], OMEGA));
+    .with_motion(FixedAxisSpec::new([0.0, 0.0, 1.0], OMEGA));
     let scene = spec.build().unwrap();
     let c = m_p * p / (M + m_p);
     assert!((scene.center_b - Vector3::new(c, 0.0, 0.0)).norm() <= 1e-16);
@@ -588,7 +588,7 @@ fn attitudes_can_be_written_as_euler_angles_or_by_the_axis_in_space() {
     let body = BodySpec::principal(1.0, [1.0, 2.0, 3.0]);
     let mut spec = SceneSpec::new(body, 1.0, 0.5);
     spec.initial = Some(eulerdyn::scene::InitialSpec {
-        attitude_euler_deg: Some([30.0, 20.0, 10.0]),
+        attitude: Some(eulerdyn::scene::AttitudeSpec::EulerDeg([30.0, 20.0, 10.0])),
         ..Default::default()
     });
     let expected = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 30f64.to_radians())
@@ -598,7 +598,10 @@ fn attitudes_can_be_written_as_euler_angles_or_by_the_axis_in_space() {
     // The notes' disk with its shaft put on space z by `axis_in_space`: the attitude of tilted_disk.toml, written
     // there as a quaternion (−30° about x).
     let mut disk = tilted_disk(30.0, Form::Body);
-    disk.motion.as_mut().unwrap().axis_in_space = Some([0.0, 0.0, 1.0]);
+    let Some(MotionSpec::FixedAxis(axis)) = disk.motion.as_mut() else {
+        panic!("the tilted disk is on a fixed axis")
+    };
+    axis.axis.axis_in_space = Some([0.0, 0.0, 1.0]);
     let by_axis = rows(&disk);
     let by_quaternion = rows(&tilted_disk(30.0, Form::Body).with_attitude([
         0.9659258262890683,
@@ -707,8 +710,8 @@ fn a_hinge_follows_a_sine_torque_given_in_space_axes() {
     let i_uu = 0.5 * M * R * R;
     for form in Form::ALL {
         let spec = SceneSpec::new(BodySpec::shape(M, ShapeSpec::thin_disk(R)), 3.0, 0.05)
-            .with_motion(MotionSpec::hinge([0.0, 0.0, 1.0], 0.0).with_bearings(-0.1, 0.1))
-            .with_effect(EffectSpec::torque(Axes::Space, [0.2, 0.0, torque]).sine(freq, 0.0))
+            .with_motion(HingeSpec::new([0.0, 0.0, 1.0], 0.0).with_bearings(-0.1, 0.1))
+            .with_effect(TorqueSpec::new(Axes::Space, [0.2, 0.0, torque]).sine(freq, 0.0))
             .with_tolerances(1e-12, 1e-14)
             .with_form(form);
         for s in rows(&spec) {

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use crate::common::{eulerdyn, write_file};
 use eulerdyn::output::Sidecar;
+use eulerdyn::scene::EffectSpec;
 
 /// The bundled heavy top with `g` left at its default, and the same scene with every default the sidecar fills
 /// in written out (gravity's g, the solver's form and backend, and `dt`, which an adaptive method does not use).
@@ -62,7 +63,10 @@ fn a_default_left_out_and_written_out_give_the_same_csv_sidecar_scene_and_plots(
         sidecar_a.scene.spec, sidecar_b.scene.spec,
         "the same scene as simulated"
     );
-    let g = sidecar_a.scene.spec.effect[0].g;
+    let g = match sidecar_a.scene.spec.effect[0] {
+        EffectSpec::Gravity { g, .. } => Some(g),
+        _ => None,
+    };
     assert_eq!(g, Some([0.0, 0.0, -9.81]), "the default g is written in");
     // The regression: with g left out the drift panel had dropped H_s,z, the heavy top's second invariant.
     assert!(

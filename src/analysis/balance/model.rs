@@ -113,9 +113,9 @@ impl Balance {
 ///
 /// ```
 /// use eulerdyn::analysis::balance::{Planes, balance};
-/// use eulerdyn::scene::{BodySpec, MotionSpec, SceneSpec, ShapeSpec};
+/// use eulerdyn::scene::{BodySpec, FixedAxisSpec, SceneSpec, ShapeSpec};
 /// let disk = SceneSpec::new(BodySpec::shape(2.0, ShapeSpec::thin_disk(0.3)), 1.0, 0.1)
-///     .with_motion(MotionSpec::fixed_axis_tilted(30.0, 10.0).with_bearings(-0.1, 0.15));
+///     .with_motion(FixedAxisSpec::tilted(30.0, 10.0).with_bearings(-0.1, 0.15));
 /// let result = balance(&disk, &Planes { a: -0.1, b: 0.1, radius: 0.2 }).unwrap();
 /// // The notes' skewed disk: two equal masses ¼ m R² sin θ cos θ / (R_c (b − a)) on opposite sides.
 /// let expected = 0.25 * 2.0 * 0.09 * 0.5 * 0.75f64.sqrt() / (0.2 * 0.2);
@@ -237,7 +237,7 @@ impl Rotor {
         for c in corrections.iter().filter(|c| c.mass > 0.0) {
             balanced.body.point_mass.push(PointMassSpec {
                 mass: c.mass,
-                at: Some(c.at_b.into()),
+                at: c.at_b.into(),
             });
         }
         let bearings = self.axis.bearings().copied().unwrap_or(Bearings {

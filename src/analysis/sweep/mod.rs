@@ -23,7 +23,7 @@ use rayon::prelude::*;
 
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::source_map::KeyPath;
-use crate::scene::{self, MotionKind, Scene, SceneError, SceneSpec, SceneTemplate};
+use crate::scene::{self, MotionSpec, Scene, SceneError, SceneSpec, SceneTemplate};
 use crate::simulate;
 
 pub use axis::{Axis, run_rng};
@@ -332,12 +332,9 @@ fn layout(
     varied: &[Varied],
     summary: Vec<String>,
 ) -> Result<TableLayout, String> {
-    let motion = base.motion.as_ref();
-    let support = matches!(
-        motion.and_then(|m| m.kind),
-        Some(MotionKind::FixedAxis | MotionKind::Hinge)
-    );
-    let bearings = support && motion.and_then(|m| m.bearings).is_some();
+    let axis = base.motion.as_ref().and_then(MotionSpec::axis);
+    let support = axis.is_some();
+    let bearings = axis.is_some_and(|a| a.bearings.is_some());
     let probe: Vec<(KeyPath, f64)> = varied
         .iter()
         .map(|v| (v.key.clone(), v.axis.probe()))

@@ -11,7 +11,7 @@ use super::decimator::Decimator;
 use super::{Panel, PlotError};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
-use crate::scene::EffectKind;
+use crate::scene::{EffectSpec, MotionSpec};
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -357,19 +357,21 @@ fn scene_file_advice(file: &Path) -> String {
 fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
     let sidecar = Sidecar::read(csv).ok()?;
     let spec = &sidecar.scene.spec;
-    let accel = spec.motion.as_ref().and_then(|m| m.accel);
-    let vertical_gravity = spec
-        .effect
-        .iter()
-        .filter(|e| e.kind == Some(EffectKind::Gravity))
-        .all(|e| e.g.is_some_and(|g| g[0] == 0.0 && g[1] == 0.0));
+    let accel = match &spec.motion {
+        Some(MotionSpec::FixedAxis(m)) => m.accel,
+        _ => 0.0,
+    };
+    let vertical_gravity = spec.effect.iter().all(|e| match e {
+        EffectSpec::Gravity { g, .. } => g[0] == 0.0 && g[1] == 0.0,
+        _ => true,
+    });
     Some(SceneFacts {
         name: sidecar.scene.name,
         method: sidecar.solver.method,
         frame: sidecar.solver.frame,
         motion: sidecar.scene.motion,
         effects: sidecar.scene.effects,
-        accelerated: accel.is_some_and(|a| a != 0.0),
+        accelerated: accel != 0.0,
         vertical_gravity,
     })
 }

@@ -13,7 +13,7 @@ use serde_json::{Value, json};
 use crate::body::Principal;
 use crate::effects::Effect;
 use crate::output::sidecar::{Sidecar, sidecar_path};
-use crate::scene::{Overrides, SceneSpec, ShapeSpec};
+use crate::scene::{Distribution, InertiaSpec, Overrides, SceneSpec, ShapeSpec};
 
 /// The page's picture of the body and its supports, and notes on what could not be drawn.
 #[derive(Debug, Clone, PartialEq)]
@@ -78,7 +78,7 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
         .point_mass
         .iter()
         .map(|p| {
-            let at = Vector3::from(p.at.unwrap_or_default()) + reference_o;
+            let at = Vector3::from(p.at) + reference_o;
             json!({ "mass": p.mass, "at": vec3(&at) })
         })
         .collect();
@@ -166,14 +166,13 @@ fn shape_or_inertia_box(
     notes: &mut Vec<String>,
 ) -> Value {
     let center = vec3(reference_o);
-    if let Some(shape) = &spec.body.shape {
-        return shape_json(shape, json!(center));
-    }
     let mass = spec.body.mass;
-    let inertia = match spec.body.inertia {
-        Some(crate::scene::InertiaSpec::Principal(m)) => Matrix3::from_diagonal(&Vector3::from(m)),
-        Some(crate::scene::InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
-        None => Matrix3::identity() * mass,
+    let inertia = match spec.body.distribution {
+        Distribution::Shape(shape) => return shape_json(&shape, json!(center)),
+        Distribution::Inertia(InertiaSpec::Principal(m)) => {
+            Matrix3::from_diagonal(&Vector3::from(m))
+        }
+        Distribution::Inertia(InertiaSpec::Full(rows)) => Matrix3::from_fn(|i, j| rows[i][j]),
     };
     let principal = Principal::of(&inertia);
     let size = equal_moment_box(mass, &principal.moments);

@@ -1,10 +1,9 @@
 //! `[[effect]]`: torques (with their time profiles), gravity about a pivot, viscous damping.
 
-use super::super::spec::{EffectKind, EffectSpec, MotionKind, ProfileKind, SceneSpec};
-use super::{Checked, KeyPath, finite, invalid, only_keys, required, vector};
+use super::super::spec::{EffectSpec, MotionSpec, ProfileSpec, SceneSpec, TorqueSpec};
+use super::{Checked, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
-use crate::effects::{DEFAULT_GRAVITY, Effect, TorqueProfile};
-use crate::frames::Axes;
+use crate::effects::{Effect, TorqueProfile};
 use nalgebra::Vector3;
 
 /// Every `[[effect]]`, in order; a fixed-axis motion takes gravity only, and at most one gravity (its pivot is the
@@ -14,14 +13,11 @@ pub(super) fn validate_effects(
     body: &RigidBody,
     center_b: &Vector3<f64>,
 ) -> Checked<Vec<Effect>> {
-    let kind = doc.motion.as_ref().and_then(|m| m.kind);
-    let axis_point = match doc.motion.as_ref() {
-        Some(m) if matches!(kind, Some(MotionKind::FixedAxis | MotionKind::Hinge)) => Some(
-            m.point.map_or(Ok(Vector3::zeros()), |p| {
-                vector(KeyPath::root().key("motion").key("point"), p, "m")
-            })? - center_b,
-        ),
-        _ => None,
+    let axis_point = match doc.motion.as_ref().and_then(MotionSpec::axis) {
+        Some(axis) => {
+            Some(vector(KeyPath::root().key("motion").key("point"), axis.point, "m")? - center_b)
+        }
+        None => None,
     };
     let effects = doc
         .effect
@@ -32,7 +28,7 @@ pub(super) fn validate_effects(
     let not_gravity = effects
         .iter()
         .position(|e| !matches!(e, Effect::Gravity { .. }));
-    if let (Some(MotionKind::FixedAxis), Some(index)) = (kind, not_gravity) {
+    if let (Some(MotionSpec::FixedAxis(_)), Some(index)) = (&doc.motion, not_gravity) {
         return invalid(
             KeyPath::root().key("effect").index(index),
             "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no torque or damping (only gravity, whose weight its bearings carry); remove the effect, or use type = \"hinge\" to let the effects drive the rotation",
@@ -42,7 +38,7 @@ pub(super) fn validate_effects(
         .effect
         .iter()
         .enumerate()
-        .filter(|(_, e)| e.kind == Some(EffectKind::Gravity))
+        .filter(|(_, e)| matches!(e, EffectSpec::Gravity { .. }))
         .nth(1);
     if let Some((second, _)) = second_gravity {
         return invalid(
@@ -95,51 +91,11 @@ fn validate_effect(
 ) -> Checked<Effect> {
     let table = KeyPath::root().key("effect").index(index);
     let key = |name: &str| table.clone().key(name);
-    let Some(kind) = doc.kind else {
-        return invalid(
-            key("type"),
-            "missing: an effect needs `type` = \"torque\", \"gravity\" or \"damping\"",
-        );
-    };
-    let (name, takes): (&str, &[&str]) = match kind {
-        EffectKind::Torque => (
-            "torque",
-            &[
-                "frame",
-                "value",
-                "profile",
-                "freq_hz",
-                "phase_deg",
-                "t_on",
-                "t_off",
-            ],
-        ),
-        EffectKind::Gravity => ("gravity", &["g", "pivot"]),
-        EffectKind::Damping => ("damping", &["c"]),
-    };
-    let kind_text = format!("effect type = \"{name}\"");
-    only_keys(
-        &table,
-        &kind_text,
-        takes,
-        &[
-            ("frame", doc.frame.is_some()),
-            ("value", doc.value.is_some()),
-            ("profile", doc.profile.is_some()),
-            ("freq_hz", doc.freq_hz.is_some()),
-            ("phase_deg", doc.phase_deg.is_some()),
-            ("t_on", doc.t_on.is_some()),
-            ("t_off", doc.t_off.is_some()),
-            ("g", doc.g.is_some()),
-            ("pivot", doc.pivot.is_some()),
-            ("c", doc.c.is_some()),
-        ],
-    )?;
-    Ok(match kind {
-        EffectKind::Torque => validate_torque(&table, doc, &kind_text)?,
-        EffectKind::Gravity => Effect::Gravity {
-            g_s: vector(key("g"), doc.g.unwrap_or(DEFAULT_GRAVITY), "m/s^2")?,
-            pivot_b: match (axis_point, doc.pivot) {
+    Ok(match *doc {
+        EffectSpec::Torque(torque) => validate_torque(&table, &torque)?,
+        EffectSpec::Gravity { g, pivot } => Effect::Gravity {
+            g_s: vector(key("g"), g, "m/s^2")?,
+            pivot_b: match (axis_point, pivot) {
                 (Some(_), Some(_)) => {
                     return invalid(
                         key("pivot"),
@@ -147,17 +103,17 @@ fn validate_effect(
                     );
                 }
                 (Some(point_b), None) => *point_b,
-                (None, pivot) => {
-                    vector(
+                (None, Some(pivot)) => vector(key("pivot"), pivot, "m")? - center_b,
+                (None, None) => {
+                    return invalid(
                         key("pivot"),
-                        required(key("pivot"), pivot, &kind_text)?,
-                        "m",
-                    )? - center_b
+                        "missing: effect type = \"gravity\" needs `pivot`",
+                    );
                 }
             },
         },
-        EffectKind::Damping => {
-            let c = finite(key("c"), required(key("c"), doc.c, &kind_text)?, "N*m*s")?;
+        EffectSpec::Damping { c } => {
+            let c = finite(key("c"), c, "N*m*s")?;
             if c < 0.0 {
                 return invalid(
                     key("c"),
@@ -170,50 +126,22 @@ fn validate_effect(
 }
 
 /// A torque: its axes, value and time profile.
-fn validate_torque(table: &KeyPath, doc: &EffectSpec, kind_text: &str) -> Checked<Effect> {
+fn validate_torque(table: &KeyPath, doc: &TorqueSpec) -> Checked<Effect> {
     let key = |name: &str| table.clone().key(name);
-    let misplaced = |name: &str, present: bool, kind: &str| -> Checked<()> {
-        if present {
-            invalid(
-                key(name),
-                format!("`{name}` applies to profile = \"{kind}\" only"),
-            )
-        } else {
-            Ok(())
-        }
-    };
-    let profile = match doc.profile.as_ref().unwrap_or(&ProfileKind::Constant) {
-        ProfileKind::Constant => {
-            misplaced("freq_hz", doc.freq_hz.is_some(), "sine")?;
-            misplaced("phase_deg", doc.phase_deg.is_some(), "sine")?;
-            misplaced("t_on", doc.t_on.is_some(), "step")?;
-            misplaced("t_off", doc.t_off.is_some(), "step")?;
-            TorqueProfile::Constant
-        }
-        ProfileKind::Sine => {
-            misplaced("t_on", doc.t_on.is_some(), "step")?;
-            misplaced("t_off", doc.t_off.is_some(), "step")?;
-            let Some(f) = doc.freq_hz else {
-                return invalid(
-                    key("freq_hz"),
-                    "a sine torque needs `freq_hz` (Hz, finite, >= 0)",
-                );
-            };
-            let f = finite(key("freq_hz"), f, "Hz")?;
+    let profile = match doc.profile {
+        ProfileSpec::Constant => TorqueProfile::Constant,
+        ProfileSpec::Sine { freq_hz, phase_deg } => {
+            let f = finite(key("freq_hz"), freq_hz, "Hz")?;
             if f < 0.0 {
                 return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f:?}"));
             }
             TorqueProfile::Sine {
                 freq_hz: f,
-                phase_rad: finite(key("phase_deg"), doc.phase_deg.unwrap_or(0.0), "degrees")?
-                    .to_radians(),
+                phase_rad: finite(key("phase_deg"), phase_deg, "degrees")?.to_radians(),
             }
         }
-        ProfileKind::Step => {
-            misplaced("freq_hz", doc.freq_hz.is_some(), "sine")?;
-            misplaced("phase_deg", doc.phase_deg.is_some(), "sine")?;
-            let t_on = finite(key("t_on"), doc.t_on.unwrap_or(0.0), "s")?;
-            let t_off = doc.t_off.unwrap_or(f64::INFINITY);
+        ProfileSpec::Step { t_on, t_off } => {
+            let t_on = finite(key("t_on"), t_on, "s")?;
             if t_off.is_nan() || t_off <= t_on {
                 return invalid(
                     key("t_off"),
@@ -224,12 +152,8 @@ fn validate_torque(table: &KeyPath, doc: &EffectSpec, kind_text: &str) -> Checke
         }
     };
     Ok(Effect::Torque {
-        frame: doc.frame.unwrap_or(Axes::Body),
-        value: vector(
-            key("value"),
-            required(key("value"), doc.value, kind_text)?,
-            "N*m",
-        )?,
+        frame: doc.frame,
+        value: vector(key("value"), doc.value, "N*m")?,
         profile,
     })
 }

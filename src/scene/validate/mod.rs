@@ -8,16 +8,16 @@ mod motion;
 mod resolved;
 mod solver;
 
-use std::fmt;
+use nalgebra::{Quaternion, UnitQuaternion};
 
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
-
+use super::checks::{Checked, Invalid, finite, invalid, positive, vector};
 use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
-use super::spec::SceneSpec;
+use super::spec::{AttitudeSpec, MotionSpec, SceneSpec};
 use crate::frames::Form;
 use crate::method::{Backend, Method, defaults};
 
+pub use super::checks::InvalidScene;
 pub use solver::{MAX_FIXED_STEPS, MAX_ROWS};
 
 /// Values that replace the scene's `[solver]` and `[output]` values (the command line's `--method`, `--dt`, …).
@@ -33,26 +33,6 @@ pub struct Overrides {
     pub t_end: Option<f64>,
     pub every: Option<f64>,
 }
-
-/// A scene that is not valid: the key at fault (e.g. `body.mass`, `effect[1].c`) and what is wrong.
-#[derive(Debug, Clone, PartialEq)]
-pub struct InvalidScene {
-    /// The key at fault.
-    pub key: KeyPath,
-    /// What is wrong and what would be valid.
-    pub problem: String,
-}
-
-impl fmt::Display for InvalidScene {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "key `{}`: {}", self.key, self.problem)
-    }
-}
-
-impl std::error::Error for InvalidScene {}
-
-type Invalid = InvalidScene;
-type Checked<T> = Result<T, Invalid>;
 
 impl SceneSpec {
     /// Validates the scene: the [`Scene`] a run needs, or the first key at fault.
@@ -114,123 +94,41 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
 /// `initial.attitude`, normalised, or the rotation of `initial.attitude_euler_deg` = [z, y, x], intrinsic
 /// z-y'-x'' (R = R_z R_y' R_x''); the identity when neither is given.
 fn attitude(doc: &SceneSpec) -> Checked<UnitQuaternion<f64>> {
-    let initial = doc.initial.as_ref();
     let key = |name: &str| KeyPath::root().key("initial").key(name);
-    let axis_in_space = doc
-        .motion
-        .as_ref()
-        .is_some_and(|m| m.axis_in_space.is_some());
-    let euler = initial.and_then(|i| i.attitude_euler_deg);
-    let given = initial.and_then(|i| i.attitude);
-    match (given.is_some(), euler.is_some(), axis_in_space) {
-        (true, true, _) => {
-            return invalid(
-                key("attitude_euler_deg"),
-                "give either `attitude` or `attitude_euler_deg`, not both",
-            );
-        }
-        (true, _, true) | (_, true, true) => {
-            return invalid(
-                KeyPath::root().key("motion").key("axis_in_space"),
-                "`motion.axis_in_space` sets the attitude at t = 0: remove initial.attitude / attitude_euler_deg",
-            );
-        }
-        _ => {}
-    }
-    if let Some(angles) = euler {
-        let [z, y, x] = vector(key("attitude_euler_deg"), angles, "degrees")?.into();
-        return Ok(UnitQuaternion::from_euler_angles(
-            x.to_radians(),
-            y.to_radians(),
-            z.to_radians(),
-        ));
-    }
-    let Some(q) = given else {
-        return Ok(UnitQuaternion::identity());
-    };
-    let key = KeyPath::root().key("initial").key("attitude");
-    if !q.iter().all(|x| x.is_finite()) {
-        return invalid(key, format!("every component must be finite, got {q:?}"));
-    }
-    let quat = Quaternion::new(q[0], q[1], q[2], q[3]);
-    if quat.norm() < 1e-12 {
+    let axis_in_space = (doc.motion.as_ref())
+        .and_then(MotionSpec::axis)
+        .is_some_and(|a| a.axis_in_space.is_some());
+    let given = doc.initial.as_ref().and_then(|i| i.attitude);
+    if given.is_some() && axis_in_space {
         return invalid(
-            key,
-            "the zero quaternion is not an attitude; give [w, x, y, z] with a nonzero norm (identity: [1, 0, 0, 0])",
+            KeyPath::root().key("motion").key("axis_in_space"),
+            "`motion.axis_in_space` sets the attitude at t = 0: remove initial.attitude / attitude_euler_deg",
         );
     }
-    Ok(UnitQuaternion::from_quaternion(quat))
-}
-
-pub(super) fn invalid<T>(key: KeyPath, problem: impl Into<String>) -> Checked<T> {
-    Err(Invalid {
-        key,
-        problem: problem.into(),
-    })
-}
-
-/// The value of a key that `kind` requires.
-pub(super) fn required<T>(key: KeyPath, value: Option<T>, kind: &str) -> Checked<T> {
-    value.ok_or_else(|| Invalid {
-        problem: format!("missing: {kind} needs `{}`", key.last_key()),
-        key,
-    })
-}
-
-/// Refuses the keys of `table` that are given (`given`: every optional key and whether it is present) but that
-/// `kind` does not take (`takes`).
-pub(super) fn only_keys(
-    table: &KeyPath,
-    kind: &str,
-    takes: &[&str],
-    given: &[(&str, bool)],
-) -> Checked<()> {
-    match given
-        .iter()
-        .find(|(name, present)| *present && !takes.contains(name))
-    {
-        None => Ok(()),
-        Some((name, _)) => invalid(
-            table.clone().key(name),
-            if takes.is_empty() {
-                format!("{kind} takes no `{name}`")
-            } else {
-                format!(
-                    "{kind} takes no `{name}`; its keys are: {}",
-                    takes.join(", ")
-                )
-            },
-        ),
-    }
-}
-
-pub(super) fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        invalid(key, format!("must be a finite number ({unit}), got {v:?}"))
-    }
-}
-
-pub(super) fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        invalid(
-            key,
-            format!("must be a finite number > 0 ({unit}), got {v:?}"),
-        )
-    }
-}
-
-pub(super) fn vector(key: KeyPath, v: [f64; 3], unit: &str) -> Checked<Vector3<f64>> {
-    if v.iter().all(|x| x.is_finite()) {
-        Ok(Vector3::from(v))
-    } else {
-        invalid(
-            key,
-            format!("every component must be a finite number ({unit}), got {v:?}"),
-        )
+    match given {
+        None => Ok(UnitQuaternion::identity()),
+        Some(AttitudeSpec::EulerDeg(angles)) => {
+            let [z, y, x] = vector(key("attitude_euler_deg"), angles, "degrees")?.into();
+            Ok(UnitQuaternion::from_euler_angles(
+                x.to_radians(),
+                y.to_radians(),
+                z.to_radians(),
+            ))
+        }
+        Some(AttitudeSpec::Quaternion(q)) => {
+            let key = key("attitude");
+            if !q.iter().all(|x| x.is_finite()) {
+                return invalid(key, format!("every component must be finite, got {q:?}"));
+            }
+            let quat = Quaternion::new(q[0], q[1], q[2], q[3]);
+            if quat.norm() < 1e-12 {
+                return invalid(
+                    key,
+                    "the zero quaternion is not an attitude; give [w, x, y, z] with a nonzero norm (identity: [1, 0, 0, 0])",
+                );
+            }
+            Ok(UnitQuaternion::from_quaternion(quat))
+        }
     }
 }
 

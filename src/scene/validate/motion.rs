@@ -3,8 +3,8 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::super::model::Motion;
-use super::super::spec::{MotionKind, MotionSpec, SceneSpec};
-use super::{Checked, Invalid, KeyPath, finite, invalid, only_keys, vector};
+use super::super::spec::{AxisDirection, AxisSpec, Distribution, MotionSpec, RateSpec, SceneSpec};
+use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
@@ -21,56 +21,22 @@ pub(super) fn validate_motion(
     center_b: &Vector3<f64>,
 ) -> Checked<Motion> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
-    let motion = || KeyPath::root().key("motion");
-    // The axis table, or `None` for free motion (no [motion] table, or type = "free").
-    let axis_motion = match &doc.motion {
-        None => None,
-        Some(m) => match m.kind {
-            None => {
-                return invalid(
-                    motion().key("type"),
-                    "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
-                );
-            }
-            Some(MotionKind::Free) => {
-                only_keys(&motion(), "motion type = \"free\"", &[], &given_keys(m))?;
-                None
-            }
-            Some(kind) => Some((m, kind)),
-        },
+    let (axis_spec, accel, angle_deg) = match &doc.motion {
+        None | Some(MotionSpec::Free) => return free_motion(doc, body, initial_omega, effects),
+        Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
+        Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
-    match axis_motion {
-        None => free_motion(doc, body, initial_omega, effects),
-        Some((m, kind)) => {
-            if initial_omega.is_some() {
-                return invalid(
-                    KeyPath::root().key("initial").key("omega"),
-                    "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.omega",
-                );
-            }
-            let axis = axis_geometry(m, body, attitude0, effects, center_b)?;
-            if kind == MotionKind::Hinge {
-                hinge_motion(m, axis, body, effects)
-            } else {
-                Ok(Motion::FixedAxis(axis))
-            }
-        }
+    if initial_omega.is_some() {
+        return invalid(
+            KeyPath::root().key("initial").key("omega"),
+            "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.omega",
+        );
     }
-}
-
-/// Every optional key of `[motion]` and whether it is given.
-fn given_keys(m: &MotionSpec) -> [(&'static str, bool); 9] {
-    [
-        ("rate_rpm", m.rate_rpm.is_some()),
-        ("axis", m.axis.is_some()),
-        ("tilt_deg", m.tilt_deg.is_some()),
-        ("rate", m.rate.is_some()),
-        ("accel", m.accel.is_some()),
-        ("point", m.point.is_some()),
-        ("angle_deg", m.angle_deg.is_some()),
-        ("bearings", m.bearings.is_some()),
-        ("axis_in_space", m.axis_in_space.is_some()),
-    ]
+    let axis = axis_geometry(axis_spec, accel, body, attitude0, effects, center_b)?;
+    match angle_deg {
+        Some(angle_deg) => hinge_motion(angle_deg, axis, body, effects),
+        None => Ok(Motion::FixedAxis(axis)),
+    }
 }
 
 /// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect.
@@ -91,10 +57,9 @@ fn free_motion(
             _ => None,
         })
         .unwrap_or_else(Vector3::zeros);
-    let body_key = if doc.body.shape.is_some() {
-        "shape"
-    } else {
-        "inertia"
+    let body_key = match doc.body.distribution {
+        Distribution::Shape(_) => "shape",
+        Distribution::Inertia(_) => "inertia",
     };
     let free_body = FreeBody::new(body, &center_b).map_err(|e| Invalid {
         key: KeyPath::root().key("body").key(body_key),
@@ -122,47 +87,18 @@ fn free_motion(
 /// The axis of a fixed-axis or hinge motion: its direction, rate, acceleration, point, bearings and the gravity
 /// its support carries.
 fn axis_geometry(
-    m: &MotionSpec,
+    m: &AxisSpec,
+    accel: f64,
     body: &RigidBody,
     attitude0: &UnitQuaternion<f64>,
     effects: &[Effect],
     center_b: &Vector3<f64>,
 ) -> Checked<FixedAxis> {
     let motion = || KeyPath::root().key("motion");
-    let (kind_text, takes): (&str, &[&str]) = if m.kind == Some(MotionKind::Hinge) {
-        (
-            "motion type = \"hinge\"",
-            &[
-                "axis",
-                "tilt_deg",
-                "rate",
-                "rate_rpm",
-                "point",
-                "angle_deg",
-                "bearings",
-                "axis_in_space",
-            ],
-        )
-    } else {
-        (
-            "motion type = \"fixed_axis\"",
-            &[
-                "axis",
-                "tilt_deg",
-                "rate",
-                "rate_rpm",
-                "accel",
-                "point",
-                "bearings",
-                "axis_in_space",
-            ],
-        )
-    };
-    only_keys(&motion(), kind_text, takes, &given_keys(m))?;
     let axis_b = axis_direction(m)?;
     let attitude0 = axis_attitude(m, &axis_b, attitude0)?;
     let rate = axis_rate(m)?;
-    let accel = finite(motion().key("accel"), m.accel.unwrap_or(0.0), "rad/s^2")?;
+    let accel = finite(motion().key("accel"), accel, "rad/s^2")?;
     // The required moment M = I α + ω × I ω is of order I_max (ω² + |α|): it must be a number at t = 0.
     let inertia_max = body.inertia_c().abs().max();
     if !(inertia_max * (rate * rate + accel.abs())).is_finite() {
@@ -174,10 +110,7 @@ fn axis_geometry(
             ),
         );
     }
-    let point_b = match m.point {
-        None => Vector3::zeros(),
-        Some(p) => vector(motion().key("point"), p, "m")?,
-    } - center_b;
+    let point_b = vector(motion().key("point"), m.point, "m")? - center_b;
     let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, attitude0);
     if let Some(g_s) = effects.iter().find_map(|e| match e {
         Effect::Gravity { g_s, .. } => Some(*g_s),
@@ -200,31 +133,26 @@ fn axis_geometry(
     Ok(axis)
 }
 
-/// θ̇ at t = 0 (rad/s): `rate`, or `rate_rpm` · 2π/60 (revolutions per minute, as rotor engineers give it); 0
-/// when neither is given, an error when both are.
-fn axis_rate(m: &MotionSpec) -> Checked<f64> {
+/// θ̇ at t = 0 (rad/s): `rate`, or `rate_rpm` · 2π/60 (revolutions per minute, as rotor engineers give it).
+fn axis_rate(m: &AxisSpec) -> Checked<f64> {
     let motion = || KeyPath::root().key("motion");
-    match (m.rate, m.rate_rpm) {
-        (Some(_), Some(_)) => invalid(
-            motion().key("rate_rpm"),
-            "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both",
-        ),
-        (None, Some(rpm)) => {
-            Ok(finite(motion().key("rate_rpm"), rpm, "rpm")? * std::f64::consts::TAU / 60.0)
+    match m.rate {
+        RateSpec::Rpm(rpm) => {
+            finite(motion().key("rate_rpm"), rpm, "rpm").map(|_| m.rate.rad_per_second())
         }
-        (rate, None) => finite(motion().key("rate"), rate.unwrap_or(0.0), "rad/s"),
+        RateSpec::RadPerSecond(rate) => finite(motion().key("rate"), rate, "rad/s"),
     }
 }
 
 /// A hinge on the axis: θ from `angle_deg`, θ̇ from `rate`, driven by the effects about the axis point.
 fn hinge_motion(
-    m: &MotionSpec,
+    angle_deg: f64,
     axis: FixedAxis,
     body: &RigidBody,
     effects: &[Effect],
 ) -> Checked<Motion> {
     let key = KeyPath::root().key("motion").key("angle_deg");
-    let theta0 = finite(key, m.angle_deg.unwrap_or(0.0), "degrees")?.to_radians();
+    let theta0 = finite(key, angle_deg, "degrees")?.to_radians();
     let i_uu = axis.i_uu();
     if i_uu.is_nan() || i_uu <= 0.0 {
         return invalid(
@@ -242,22 +170,10 @@ fn hinge_motion(
 }
 
 /// The unit axis in body axes, from `axis` or `tilt_deg`.
-fn axis_direction(m: &MotionSpec) -> Checked<Vector3<f64>> {
+fn axis_direction(m: &AxisSpec) -> Checked<Vector3<f64>> {
     let motion = || KeyPath::root().key("motion");
-    Ok(match (m.axis, m.tilt_deg) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                motion().key("tilt_deg"),
-                "give either `axis` or `tilt_deg`, not both",
-            );
-        }
-        (None, None) => {
-            return invalid(
-                motion(),
-                "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
-            );
-        }
-        (Some(a), None) => {
+    Ok(match m.direction {
+        AxisDirection::Body(a) => {
             let a = vector(motion().key("axis"), a, "direction")?;
             let norm = a.norm();
             if !(norm > 1e-300 && norm.is_finite()) {
@@ -268,7 +184,7 @@ fn axis_direction(m: &MotionSpec) -> Checked<Vector3<f64>> {
             }
             a / norm
         }
-        (None, Some(tilt)) => {
+        AxisDirection::TiltDeg(tilt) => {
             let tilt = finite(motion().key("tilt_deg"), tilt, "degrees")?.to_radians();
             Vector3::new(0.0, -tilt.sin(), tilt.cos())
         }
@@ -279,7 +195,7 @@ fn axis_direction(m: &MotionSpec) -> Checked<Vector3<f64>> {
 /// space direction (a half turn about a body direction across the axis when they are opposite); else the
 /// scene's `initial.attitude`.
 fn axis_attitude(
-    m: &MotionSpec,
+    m: &AxisSpec,
     axis_b: &Vector3<f64>,
     attitude0: &UnitQuaternion<f64>,
 ) -> Checked<UnitQuaternion<f64>> {

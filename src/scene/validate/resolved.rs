@@ -4,18 +4,15 @@
 
 use super::super::model::SolverConfig;
 use super::super::spec::{
-    CompareSpec, EffectKind, EffectSpec, InitialSpec, MotionKind, OutputSpec, ProfileKind,
-    SceneSpec, SolverSpec,
+    CompareSpec, InitialSpec, MotionSpec, OutputSpec, RateSpec, SceneSpec, SolverSpec,
 };
-use crate::effects::DEFAULT_GRAVITY;
-use crate::frames::Axes;
 
 impl SceneSpec {
     /// This spec, validated into `solver`, `every` and `compare_tolerance`, with the defaults written in: the
-    /// solver's and output's values as run; each torque's `frame` and `profile` (with a sine's `phase_deg` and a
-    /// step's `t_on`); gravity's `g`; an axis motion's `rate`, `accel` (fixed axis), `angle_deg` (hinge) and
-    /// `point`; a free motion as no `[motion]` table with `initial.omega`; `name`, `description` and
-    /// `compare.tolerance`. Alternatives (`axis` or `tilt_deg`, `attitude` or `attitude_euler_deg`) stay as given.
+    /// solver's and output's values as run; an axis motion's `rate_rpm` as `rate` (rad/s); a free motion as no
+    /// `[motion]` table with `initial.omega`; `name`, `description` and `compare.tolerance`. (The typed spec
+    /// already holds the other defaults: a torque's frame and profile, gravity's `g`, an axis's point.)
+    /// Alternatives (`axis` or `tilt_deg`, `attitude` or `attitude_euler_deg`) stay as given.
     pub(in crate::scene) fn resolved(
         &self,
         solver: &SolverConfig,
@@ -38,21 +35,10 @@ impl SceneSpec {
         spec.compare = Some(CompareSpec {
             tolerance: compare_tolerance,
         });
-        spec.effect.iter_mut().for_each(resolve_effect);
         match spec.motion.as_mut() {
-            Some(m) if m.kind != Some(MotionKind::Free) => {
-                // `rate_rpm` becomes `rate` (rad/s), the one the run used.
-                if let Some(rpm) = m.rate_rpm.take() {
-                    m.rate = Some(rpm * std::f64::consts::TAU / 60.0);
-                }
-                m.rate.get_or_insert(0.0);
-                m.point.get_or_insert([0.0; 3]);
-                match m.kind {
-                    Some(MotionKind::Hinge) => m.angle_deg.get_or_insert(0.0),
-                    _ => m.accel.get_or_insert(0.0),
-                };
-            }
-            _ => {
+            Some(MotionSpec::FixedAxis(m)) => m.axis.rate = resolved_rate(m.axis.rate),
+            Some(MotionSpec::Hinge(m)) => m.axis.rate = resolved_rate(m.axis.rate),
+            Some(MotionSpec::Free) | None => {
                 spec.motion = None;
                 let initial = spec.initial.get_or_insert_with(InitialSpec::default);
                 initial.omega.get_or_insert([0.0; 3]);
@@ -62,18 +48,7 @@ impl SceneSpec {
     }
 }
 
-/// One effect's defaults written in.
-fn resolve_effect(effect: &mut EffectSpec) {
-    match effect.kind {
-        Some(EffectKind::Torque) => {
-            effect.frame.get_or_insert(Axes::Body);
-            match *effect.profile.get_or_insert(ProfileKind::Constant) {
-                ProfileKind::Sine => _ = effect.phase_deg.get_or_insert(0.0),
-                ProfileKind::Step => _ = effect.t_on.get_or_insert(0.0),
-                ProfileKind::Constant => {}
-            }
-        }
-        Some(EffectKind::Gravity) => _ = effect.g.get_or_insert(DEFAULT_GRAVITY),
-        Some(EffectKind::Damping) | None => {}
-    }
+/// `rate_rpm` becomes `rate` (rad/s), the one the run used.
+fn resolved_rate(rate: RateSpec) -> RateSpec {
+    RateSpec::RadPerSecond(rate.rad_per_second())
 }

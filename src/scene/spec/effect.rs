@@ -1,0 +1,167 @@
+//! `[[effect]]`: an applied torque with its time profile, uniform gravity, viscous damping.
+
+use crate::effects::DEFAULT_GRAVITY;
+use crate::frames::Axes;
+
+/// One `[[effect]]`, by its `type`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum EffectSpec {
+    /// `type = "torque"`.
+    Torque(TorqueSpec),
+    /// `type = "gravity"`: uniform gravity acting at C.
+    Gravity {
+        /// `g`: m/s², space axes (absent: [`DEFAULT_GRAVITY`]).
+        g: [f64; 3],
+        /// `pivot`: the fixed point of a free body, body axes, from the reference origin (m); absent on a fixed
+        /// axis or hinge, whose axis point is the moment center.
+        pivot: Option<[f64; 3]>,
+    },
+    /// `type = "damping"`: M = −c ω.
+    Damping {
+        /// `c`: N·m·s, ≥ 0.
+        c: f64,
+    },
+}
+
+/// `type = "torque"`: `value` in `frame` axes times its time profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TorqueSpec {
+    /// `frame`: the axes the value is given in (absent: body).
+    pub frame: Axes,
+    /// `value`: N·m.
+    pub value: [f64; 3],
+    /// `profile` and its keys (absent: constant).
+    pub profile: ProfileSpec,
+}
+
+/// A torque's `profile`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ProfileSpec {
+    /// `profile = "constant"`.
+    Constant,
+    /// `profile = "sine"`: the value times sin(2π f t + φ).
+    Sine {
+        /// `freq_hz`: f, Hz, ≥ 0.
+        freq_hz: f64,
+        /// `phase_deg`: φ in degrees (absent: 0).
+        phase_deg: f64,
+    },
+    /// `profile = "step"`: the value for t_on ≤ t < t_off, zero otherwise.
+    Step {
+        /// `t_on`: s (absent: 0).
+        t_on: f64,
+        /// `t_off`: s, later than t_on (absent: never, +∞).
+        t_off: f64,
+    },
+}
+
+impl EffectSpec {
+    /// Uniform gravity `g_s` (m/s², space axes) acting at C, the free body turning about `pivot_b` (body axes,
+    /// from the reference origin, m).
+    ///
+    /// ```
+    /// use eulerdyn::scene::EffectSpec;
+    /// let top = EffectSpec::gravity([0.0, 0.0, -9.81], [0.0, 0.0, -0.05]);
+    /// assert!(matches!(top, EffectSpec::Gravity { pivot: Some(_), .. }));
+    /// ```
+    pub fn gravity(g_s: [f64; 3], pivot_b: [f64; 3]) -> Self {
+        EffectSpec::Gravity {
+            g: g_s,
+            pivot: Some(pivot_b),
+        }
+    }
+
+    /// Uniform gravity `g_s` (m/s², space axes) acting at C of a body on a fixed axis or hinge, whose axis point
+    /// is the moment center (no pivot).
+    ///
+    /// ```
+    /// use eulerdyn::scene::EffectSpec;
+    /// assert_eq!(EffectSpec::weight([0.0, -9.81, 0.0]), EffectSpec::Gravity { g: [0.0, -9.81, 0.0], pivot: None });
+    /// ```
+    pub fn weight(g_s: [f64; 3]) -> Self {
+        EffectSpec::Gravity {
+            g: g_s,
+            pivot: None,
+        }
+    }
+
+    /// Standard gravity [`DEFAULT_GRAVITY`] on a body on a fixed axis or hinge (what `type = "gravity"` without `g`
+    /// means).
+    ///
+    /// ```
+    /// use eulerdyn::scene::EffectSpec;
+    /// assert_eq!(EffectSpec::standard_weight(), EffectSpec::weight([0.0, 0.0, -9.81]));
+    /// ```
+    pub fn standard_weight() -> Self {
+        Self::weight(DEFAULT_GRAVITY)
+    }
+
+    /// Viscous damping M = −c ω, `c` in N·m·s.
+    ///
+    /// ```
+    /// use eulerdyn::scene::EffectSpec;
+    /// assert_eq!(EffectSpec::damping(0.1), EffectSpec::Damping { c: 0.1 });
+    /// ```
+    pub fn damping(c: f64) -> Self {
+        EffectSpec::Damping { c }
+    }
+
+    /// The effect's `type` in a scene file: `torque`, `gravity` or `damping`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            EffectSpec::Torque(_) => "torque",
+            EffectSpec::Gravity { .. } => "gravity",
+            EffectSpec::Damping { .. } => "damping",
+        }
+    }
+}
+
+impl From<TorqueSpec> for EffectSpec {
+    fn from(torque: TorqueSpec) -> Self {
+        EffectSpec::Torque(torque)
+    }
+}
+
+impl TorqueSpec {
+    /// A constant torque `value` (N·m) in `axes`.
+    ///
+    /// ```
+    /// use eulerdyn::frames::Axes;
+    /// use eulerdyn::scene::{ProfileSpec, TorqueSpec};
+    /// let t = TorqueSpec::new(Axes::Space, [0.0, 0.0, 0.2]);
+    /// assert_eq!(t.profile, ProfileSpec::Constant);
+    /// ```
+    pub fn new(axes: Axes, value: [f64; 3]) -> Self {
+        Self {
+            frame: axes,
+            value,
+            profile: ProfileSpec::Constant,
+        }
+    }
+
+    /// This torque times sin(2π f t + φ), f = `freq_hz`, φ = `phase_deg`.
+    ///
+    /// ```
+    /// use eulerdyn::frames::Axes;
+    /// use eulerdyn::scene::{ProfileSpec, TorqueSpec};
+    /// let t = TorqueSpec::new(Axes::Body, [0.0, 0.0, 1.0]).sine(2.0, 90.0);
+    /// assert_eq!(t.profile, ProfileSpec::Sine { freq_hz: 2.0, phase_deg: 90.0 });
+    /// ```
+    pub fn sine(mut self, freq_hz: f64, phase_deg: f64) -> Self {
+        self.profile = ProfileSpec::Sine { freq_hz, phase_deg };
+        self
+    }
+
+    /// This torque for t_on ≤ t < t_off only.
+    ///
+    /// ```
+    /// use eulerdyn::frames::Axes;
+    /// use eulerdyn::scene::{ProfileSpec, TorqueSpec};
+    /// let t = TorqueSpec::new(Axes::Body, [0.0, 0.0, 1.0]).step(0.5, 1.5);
+    /// assert_eq!(t.profile, ProfileSpec::Step { t_on: 0.5, t_off: 1.5 });
+    /// ```
+    pub fn step(mut self, t_on: f64, t_off: f64) -> Self {
+        self.profile = ProfileSpec::Step { t_on, t_off };
+        self
+    }
+}

@@ -1,0 +1,208 @@
+//! A scene as a typed value: what a scene file says, with each table whose keys depend on a `type` (shape, motion,
+//! effect, a torque's profile) an enum whose variants hold exactly that type's keys — a wrong combination does not
+//! compile. TOML is one way to write it ([`crate::scene::parse`]); Rust code builds it with the constructors below.
+//! [`SceneSpec::build`] runs the validation that every front end shares and gives a [`Scene`](crate::scene::Scene).
+//!
+//! Serde reads and writes a `SceneSpec` in the scene file's form (`file_form.rs`: one flat table per `[section]`,
+//! key for key), converted by `from_file.rs`, which names the key at fault when a table is not one of its type's.
+
+mod body;
+mod effect;
+mod file_form;
+mod from_file;
+mod motion;
+
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+use crate::frames::Form;
+use crate::method::{Backend, Method};
+
+pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
+pub use effect::{EffectSpec, ProfileSpec, TorqueSpec};
+pub(in crate::scene) use file_form::SceneFile;
+pub use motion::{AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionSpec, RateSpec};
+
+/// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneSpec {
+    /// `name`.
+    pub name: Option<String>,
+    /// `description`.
+    pub description: Option<String>,
+    /// `[body]`.
+    pub body: BodySpec,
+    /// `[motion]`; absent: free rotation.
+    pub motion: Option<MotionSpec>,
+    /// `[initial]`.
+    pub initial: Option<InitialSpec>,
+    /// `[[effect]]`, in order; none: torque-free.
+    pub effect: Vec<EffectSpec>,
+    /// `[solver]`.
+    pub solver: SolverSpec,
+    /// `[output]`.
+    pub output: OutputSpec,
+    /// `[compare]`.
+    pub compare: Option<CompareSpec>,
+}
+
+/// `[initial]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct InitialSpec {
+    /// `omega`: rad/s, body axes.
+    pub omega: Option<[f64; 3]>,
+    /// `attitude` or `attitude_euler_deg`; absent: the identity (or what the motion's `axis_in_space` sets).
+    pub attitude: Option<AttitudeSpec>,
+}
+
+/// The attitude at t = 0, body → space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AttitudeSpec {
+    /// `attitude = [w, x, y, z]` (normalised by validation).
+    Quaternion([f64; 4]),
+    /// `attitude_euler_deg = [z, y, x]`: intrinsic z-y'-x'' angles in degrees.
+    EulerDeg([f64; 3]),
+}
+
+/// `[solver]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SolverSpec {
+    /// Default [`Method::DEFAULT`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub method: Option<Method>,
+    /// The form of Euler's equation (default body).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub frame: Option<Form>,
+    /// Default own.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub backend: Option<Backend>,
+    /// Default [`crate::method::defaults::RTOL`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rtol: Option<f64>,
+    /// Default [`crate::method::defaults::ATOL`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub atol: Option<f64>,
+    /// Default [`crate::method::defaults::DT`] (s).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    /// s, ≥ 0, required.
+    pub t_end: f64,
+}
+
+/// `[output]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSpec {
+    /// s between rows, > 0, required.
+    pub every: f64,
+}
+
+/// `[compare]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CompareSpec {
+    /// Largest allowed difference for `eulerdyn compare`.
+    pub tolerance: f64,
+}
+
+impl Serialize for SceneSpec {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        SceneFile::from(self).serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for SceneSpec {
+    /// Reads the scene file's form; a table that is not one of its type's is an error naming the key
+    /// ("key `effect[0].c`: effect type = \"torque\" takes no `c`; …").
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        SceneFile::deserialize(deserializer)?
+            .into_spec()
+            .map_err(serde::de::Error::custom)
+    }
+}
+
+impl SceneSpec {
+    /// A torque-free scene of `body` from rest, run to `t_end` (s) with rows every `every` (s); the rest as the
+    /// scene format's defaults.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 10.0, 0.1)
+    ///     .with_omega([0.1, 2.0, 0.0]);
+    /// let scene = spec.build().unwrap();
+    /// assert_eq!(scene.schedule.len(), 101);
+    /// ```
+    pub fn new(body: BodySpec, t_end: f64, every: f64) -> Self {
+        Self {
+            name: None,
+            description: None,
+            body,
+            motion: None,
+            initial: None,
+            effect: Vec::new(),
+            solver: SolverSpec {
+                t_end,
+                ..SolverSpec::default()
+            },
+            output: OutputSpec { every },
+            compare: None,
+        }
+    }
+
+    /// With `name`.
+    pub fn with_name(mut self, name: &str) -> Self {
+        self.name = Some(name.to_string());
+        self
+    }
+
+    /// With the `[motion]` table: a [`FixedAxisSpec`], a [`HingeSpec`] or [`MotionSpec::Free`].
+    pub fn with_motion(mut self, motion: impl Into<MotionSpec>) -> Self {
+        self.motion = Some(motion.into());
+        self
+    }
+
+    /// With `initial.omega` (rad/s, body axes).
+    pub fn with_omega(mut self, omega_b: [f64; 3]) -> Self {
+        self.initial.get_or_insert_with(InitialSpec::default).omega = Some(omega_b);
+        self
+    }
+
+    /// With `initial.attitude` ([w, x, y, z], body → space).
+    pub fn with_attitude(mut self, q_sb: [f64; 4]) -> Self {
+        self.initial
+            .get_or_insert_with(InitialSpec::default)
+            .attitude = Some(AttitudeSpec::Quaternion(q_sb));
+        self
+    }
+
+    /// With one more `[[effect]]`: a [`TorqueSpec`] or an [`EffectSpec`].
+    pub fn with_effect(mut self, effect: impl Into<EffectSpec>) -> Self {
+        self.effect.push(effect.into());
+        self
+    }
+
+    /// With `solver.method`.
+    pub fn with_method(mut self, method: Method) -> Self {
+        self.solver.method = Some(method);
+        self
+    }
+
+    /// With `solver.frame`: the form of Euler's equation.
+    pub fn with_form(mut self, form: Form) -> Self {
+        self.solver.frame = Some(form);
+        self
+    }
+
+    /// With `solver.rtol` and `solver.atol`.
+    pub fn with_tolerances(mut self, rtol: f64, atol: f64) -> Self {
+        self.solver.rtol = Some(rtol);
+        self.solver.atol = Some(atol);
+        self
+    }
+
+    /// With `solver.dt` (s).
+    pub fn with_dt(mut self, dt: f64) -> Self {
+        self.solver.dt = Some(dt);
+        self
+    }
+}
