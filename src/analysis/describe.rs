@@ -136,14 +136,7 @@ pub fn adaptive_steps_estimate(scene: &Scene, rate: f64) -> Option<f64> {
 /// The fastest rate (rad/s) in the scene: |ω| at the start (and end, for a spin-up), or a sine torque's angular
 /// frequency. Sets the step an adaptive method needs.
 fn characteristic_rate(scene: &Scene) -> f64 {
-    let motion_rate = match &scene.motion {
-        Motion::Free { omega0_b, .. } => omega0_b.norm(),
-        Motion::FixedAxis(m) => m
-            .rate()
-            .abs()
-            .max((m.rate() + m.accel() * scene.solver.t_end).abs()),
-        Motion::Hinge(h) => h.axis().rate().abs(),
-    };
+    let motion_rate = scene.motion.largest_rate(scene.solver.t_end);
     scene
         .effects
         .iter()
@@ -492,10 +485,8 @@ fn support_lines(w: &mut Description, scene: &Scene) {
             ),
         );
     }
-    let axis = match &scene.motion {
-        Motion::FixedAxis(axis) => axis,
-        Motion::Hinge(hinge) => hinge.axis(),
-        Motion::Free { .. } => return,
+    let Some(axis) = scene.motion.axis() else {
+        return;
     };
     let u_b = axis.axis_b().into_inner();
     if let Some(b) = axis.bearings() {

@@ -5,7 +5,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;
 
 use crate::body::Principal;
-use crate::scene::{Scene, SceneSpec};
+use crate::scene::{MotionKind, Scene, SceneSpec};
 use crate::simulate;
 
 /// A scene's facts at full precision (SI units; body axes unless the name says otherwise).
@@ -23,7 +23,7 @@ pub struct SceneFacts {
     pub principal_moments_c: [f64; 3],
     pub principal_axes_b: [[f64; 3]; 3],
     /// `free`, `fixed_axis` or `hinge`.
-    pub motion: &'static str,
+    pub motion: MotionKind,
     /// The moment center O (C, a gravity pivot, or the axis point) from C (m), and the inertia about it.
     pub moment_center_from_c_b: [f64; 3],
     pub inertia_o_b: [[f64; 3]; 3],

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use crate::sample::Column;
-use crate::scene::{Scene, SceneSpec};
+use crate::scene::{MotionKind, Scene, SceneSpec};
 use crate::simulate::{self, RunReport};
 
 /// The sidecar of the run whose CSV is `csv`: `csv` with `.meta.json` appended.
@@ -41,7 +41,7 @@ pub struct SidecarScene {
     pub name: String,
     pub description: String,
     /// `free`, `fixed_axis` or `hinge`.
-    pub motion: String,
+    pub motion: MotionKind,
     /// The effects' types, in order.
     pub effects: Vec<String>,
     /// The scene file's text as written (absent for a scene built in code).
@@ -98,7 +98,7 @@ impl Sidecar {
                 path: source.map(|s| s.path.display().to_string()),
                 name: scene.name.clone(),
                 description: scene.description.clone(),
-                motion: scene.motion.kind().to_string(),
+                motion: scene.motion.kind(),
                 effects: scene.effects.iter().map(|e| e.kind().to_string()).collect(),
                 text: source.map(|s| s.text.clone()),
                 spec: scene.spec.clone(),

@@ -15,8 +15,8 @@ pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec
 pub use model::{Motion, Scene, SceneSource, SolverConfig};
 pub use spec::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CompareSpec, Distribution, EffectSpec,
-    FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionSpec, OutputSpec, PointMassSpec,
-    ProfileSpec, RateSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
+    FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec,
+    PointMassSpec, ProfileSpec, RateSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -11,7 +11,8 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 
-use super::spec::SceneSpec;
+use super::spec::{MotionKind, SceneSpec};
+use crate::sample::ColumnSet;
 
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,12 +43,49 @@ pub enum Motion {
 }
 
 impl Motion {
-    /// The motion's `type` in a scene file: `free`, `fixed_axis` or `hinge`.
-    pub fn kind(&self) -> &'static str {
+    /// The motion's `type` in a scene file.
+    pub fn kind(&self) -> MotionKind {
         match self {
-            Motion::Free { .. } => "free",
-            Motion::FixedAxis(_) => "fixed_axis",
-            Motion::Hinge(_) => "hinge",
+            Motion::Free { .. } => MotionKind::Free,
+            Motion::FixedAxis(_) => MotionKind::FixedAxis,
+            Motion::Hinge(_) => MotionKind::Hinge,
+        }
+    }
+
+    /// The optional columns the motion writes: θ, the support's force, moment and bearing loads on an axis (the
+    /// force only when C is off the axis, the loads only with bearings), H_s integrated for a prescribed motion.
+    pub fn columns(&self) -> ColumnSet {
+        let Some(axis) = self.axis() else {
+            return ColumnSet::default();
+        };
+        ColumnSet {
+            theta: true,
+            force: axis.center_off_axis(),
+            h_s_integrated: matches!(self, Motion::FixedAxis(_)),
+            support: true,
+            bearings: axis.bearings().is_some(),
+            ..ColumnSet::default()
+        }
+    }
+
+    /// The attitude at t = 0: an axis motion's own (its `axis_in_space`, and a hinge's θ₀), else `given`.
+    pub fn attitude0(&self, given: UnitQuaternion<f64>) -> UnitQuaternion<f64> {
+        match self {
+            Motion::FixedAxis(axis) => axis.attitude(0.0),
+            Motion::Hinge(hinge) => hinge.axis().attitude(hinge.theta0()),
+            Motion::Free { .. } => given,
+        }
+    }
+
+    /// The largest rate (rad/s) the motion has at its start or, for a prescribed spin-up, its end `t_end`: |ω₀|
+    /// of a free body, the hinge's θ̇₀, max(|θ̇₀|, |θ̇₀ + α t_end|) of a fixed axis.
+    pub fn largest_rate(&self, t_end: f64) -> f64 {
+        match self {
+            Motion::Free { omega0_b, .. } => omega0_b.norm(),
+            Motion::FixedAxis(axis) => {
+                (axis.rate().abs()).max((axis.rate() + axis.accel() * t_end).abs())
+            }
+            Motion::Hinge(hinge) => hinge.rate0().abs(),
         }
     }
 

@@ -41,11 +41,7 @@ impl CoarseStep {
     /// rate of a free body or a hinge, and the largest rate of a prescribed motion over the run.
     pub fn of(scene: &Scene) -> Option<Self> {
         let step = fixed_step(scene)?;
-        let omega = match &scene.motion {
-            Motion::Free { omega0_b, .. } => omega0_b.norm(),
-            Motion::FixedAxis(axis) => axis.rate().abs() + axis.accel().abs() * scene.solver.t_end,
-            Motion::Hinge(hinge) => hinge.rate0().abs(),
-        };
+        let omega = scene.motion.largest_rate(scene.solver.t_end);
         (omega * step > MAX_TURN_PER_STEP).then_some(Self { step, omega })
     }
 }

@@ -97,28 +97,9 @@ impl RunFailed {
 /// The optional columns a scene's run writes.
 pub fn columns(scene: &Scene) -> ColumnSet {
     let potential = scene.gravity_potential(&scene.attitude0).is_some();
-    let motion_columns = match &scene.motion {
-        Motion::FixedAxis(motion) => ColumnSet {
-            theta: true,
-            force: motion.center_off_axis(),
-            h_s_integrated: true,
-            support: true,
-            bearings: motion.bearings().is_some(),
-            ..ColumnSet::default()
-        },
-        Motion::Hinge(hinge) => ColumnSet {
-            theta: true,
-            force: hinge.axis().center_off_axis(),
-            h_s_integrated: false,
-            support: true,
-            bearings: hinge.axis().bearings().is_some(),
-            ..ColumnSet::default()
-        },
-        Motion::Free { .. } => ColumnSet::default(),
-    };
     ColumnSet {
         potential,
-        ..motion_columns
+        ..scene.motion.columns()
     }
 }
 

@@ -84,7 +84,7 @@ fn the_sidecar_round_trips_through_its_type() {
     let (_, sidecar, _, _) = run_and_plot(dir.path(), "top", &scene_text);
     let again = Sidecar::from_json(&sidecar.to_json()).expect("reads back");
     assert_eq!(again, sidecar);
-    assert_eq!(sidecar.scene.motion, "free");
+    assert_eq!(sidecar.scene.motion, eulerdyn::scene::MotionKind::Free);
     assert_eq!(sidecar.scene.effects, ["gravity"]);
     assert_eq!(sidecar.solver.method, "dop853");
     // The scene as simulated builds the same scene as the file.

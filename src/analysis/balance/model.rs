@@ -17,7 +17,7 @@ use nalgebra::{Unit, Vector3};
 
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::support::Bearings;
-use crate::scene::{InvalidScene, Motion, PointMassSpec, SceneSpec};
+use crate::scene::{InvalidScene, PointMassSpec, SceneSpec};
 
 /// The correction planes: axial positions `a` and `b` from the axis point, and the radius of the masses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -161,7 +161,7 @@ impl Rotor {
             return refuse("the radius must be a finite number > 0 (m)");
         }
         let scene = spec.build()?;
-        let Some(axis) = axis_of(&scene.motion) else {
+        let Some(axis) = scene.motion.axis() else {
             return refuse(
                 "balancing needs an axis: the scene's motion must be a fixed_axis or a hinge (a free body has no bearings)",
             );
@@ -261,15 +261,6 @@ impl Rotor {
             ],
             balanced,
         })
-    }
-}
-
-/// The axis of a fixed-axis or hinge motion.
-fn axis_of(motion: &Motion) -> Option<&FixedAxis> {
-    match motion {
-        Motion::FixedAxis(axis) => Some(axis),
-        Motion::Hinge(hinge) => Some(hinge.axis()),
-        Motion::Free { .. } => None,
     }
 }
 

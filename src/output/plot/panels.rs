@@ -7,6 +7,7 @@ use plotters::style::RGBColor;
 
 use super::Panel;
 use super::series::{RunSeries, SceneFacts};
+use crate::scene::MotionKind;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
 /// legend says so.
@@ -211,11 +212,13 @@ fn body_and_space_panel(run: &RunSeries, title: &str, symbol: &str, quantity: &s
 pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>> {
     let scene = scene?;
     let only_gravity = scene.effects.iter().all(|e| e == "gravity");
-    Some(match scene.motion.as_str() {
-        "fixed_axis" if scene.accelerated => vec![],
-        "fixed_axis" => vec!["H_norm", "energy"],
+    Some(match scene.motion {
+        MotionKind::FixedAxis if scene.accelerated => vec![],
+        MotionKind::FixedAxis => vec!["H_norm", "energy"],
         _ if scene.effects.is_empty() => vec!["H_norm", "energy"],
-        "free" if only_gravity && scene.vertical_gravity => vec!["energy_total", "H_s_z"],
+        MotionKind::Free if only_gravity && scene.vertical_gravity => {
+            vec!["energy_total", "H_s_z"]
+        }
         _ if only_gravity => vec!["energy_total"],
         _ => vec![],
     })
@@ -300,12 +303,12 @@ fn drift_panel(run: &RunSeries) -> PanelPlot {
 mod tests {
     use super::*;
 
-    fn scene(motion: &str, effects: &[&str], accelerated: bool) -> SceneFacts {
+    fn scene(motion: MotionKind, effects: &[&str], accelerated: bool) -> SceneFacts {
         SceneFacts {
             name: "s".into(),
             method: "dop853".into(),
             frame: "body".into(),
-            motion: motion.into(),
+            motion,
             effects: effects.iter().map(|e| e.to_string()).collect(),
             accelerated,
             vertical_gravity: true,
@@ -316,38 +319,45 @@ mod tests {
     fn the_invariants_are_those_the_scene_has() {
         assert_eq!(invariants(None), None);
         let both = Some(vec!["H_norm", "energy"]);
-        assert_eq!(invariants(Some(&scene("free", &[], false))), both);
-        assert_eq!(invariants(Some(&scene("hinge", &[], false))), both);
+        assert_eq!(invariants(Some(&scene(MotionKind::Free, &[], false))), both);
         assert_eq!(
-            invariants(Some(&scene("fixed_axis", &["gravity"], false))),
+            invariants(Some(&scene(MotionKind::Hinge, &[], false))),
             both
         );
         assert_eq!(
-            invariants(Some(&scene("fixed_axis", &[], true))),
+            invariants(Some(&scene(MotionKind::FixedAxis, &["gravity"], false))),
+            both
+        );
+        assert_eq!(
+            invariants(Some(&scene(MotionKind::FixedAxis, &[], true))),
             Some(vec![])
         );
         assert_eq!(
-            invariants(Some(&scene("free", &["gravity"], false))),
+            invariants(Some(&scene(MotionKind::Free, &["gravity"], false))),
             Some(vec!["energy_total", "H_s_z"])
         );
         let tilted_gravity = SceneFacts {
             vertical_gravity: false,
-            ..scene("free", &["gravity"], false)
+            ..scene(MotionKind::Free, &["gravity"], false)
         };
         assert_eq!(
             invariants(Some(&tilted_gravity)),
             Some(vec!["energy_total"])
         );
         assert_eq!(
-            invariants(Some(&scene("hinge", &["gravity"], false))),
+            invariants(Some(&scene(MotionKind::Hinge, &["gravity"], false))),
             Some(vec!["energy_total"])
         );
         assert_eq!(
-            invariants(Some(&scene("hinge", &["gravity", "torque"], false))),
+            invariants(Some(&scene(
+                MotionKind::Hinge,
+                &["gravity", "torque"],
+                false
+            ))),
             Some(vec![])
         );
         assert_eq!(
-            invariants(Some(&scene("free", &["damping"], false))),
+            invariants(Some(&scene(MotionKind::Free, &["damping"], false))),
             Some(vec![])
         );
     }

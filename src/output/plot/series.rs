@@ -11,7 +11,7 @@ use super::decimator::Decimator;
 use super::{Panel, PlotError};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
-use crate::scene::{EffectSpec, MotionSpec};
+use crate::scene::{EffectSpec, MotionKind, MotionSpec};
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -39,8 +39,7 @@ pub(super) struct SceneFacts {
     pub(super) name: String,
     pub(super) method: String,
     pub(super) frame: String,
-    /// `free`, `fixed_axis` or `hinge`.
-    pub(super) motion: String,
+    pub(super) motion: MotionKind,
     /// The effects' types (`gravity`, `torque`, `damping`), as listed.
     pub(super) effects: Vec<String>,
     /// A prescribed fixed-axis motion with a nonzero angular acceleration (`motion.accel`).

@@ -6,7 +6,7 @@
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize};
 
-use super::{CompareSpec, InertiaSpec, OutputSpec, SolverSpec};
+use super::{CompareSpec, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
 use crate::frames::Axes;
 
 /// A whole scene, as a scene file writes it.
@@ -110,15 +110,6 @@ pub(super) struct ShapeFile {
     /// m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) height: Option<f64>,
-}
-
-/// The `type` of a motion.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub(super) enum MotionKind {
-    Free,
-    FixedAxis,
-    Hinge,
 }
 
 /// `[motion]`.

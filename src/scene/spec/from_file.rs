@@ -4,13 +4,13 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, InitialFile, MotionFile, MotionKind, PointMassFile,
-    ProfileKind, SceneFile, ShapeFile, ShapeKind,
+    BodyFile, EffectFile, EffectKind, InitialFile, MotionFile, PointMassFile, ProfileKind,
+    SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, Distribution, EffectSpec, FixedAxisSpec,
-    HingeSpec, InitialSpec, MotionSpec, PointMassSpec, ProfileSpec, RateSpec, SceneSpec, ShapeSpec,
-    TorqueSpec,
+    HingeSpec, InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec,
+    SceneSpec, ShapeSpec, TorqueSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;

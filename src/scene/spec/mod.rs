@@ -20,7 +20,9 @@ use crate::method::{Backend, Method};
 pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
 pub use effect::{EffectSpec, ProfileSpec, TorqueSpec};
 pub(in crate::scene) use file_form::SceneFile;
-pub use motion::{AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionSpec, RateSpec};
+pub use motion::{
+    AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionKind, MotionSpec, RateSpec,
+};
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).
 #[derive(Debug, Clone, PartialEq)]

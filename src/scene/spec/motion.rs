@@ -1,5 +1,16 @@
 //! `[motion]`: free rotation, a prescribed rotation about a fixed axis, or a hinge driven by the effects.
 
+use serde::{Deserialize, Serialize};
+
+/// A motion's `type`, as the scene file and the sidecar write it: `free`, `fixed_axis`, `hinge`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MotionKind {
+    Free,
+    FixedAxis,
+    Hinge,
+}
+
 /// `[motion]`, by its `type`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum MotionSpec {
@@ -102,12 +113,12 @@ impl MotionSpec {
         }
     }
 
-    /// The motion's `type` in a scene file: `free`, `fixed_axis` or `hinge`.
-    pub fn kind(&self) -> &'static str {
+    /// The motion's `type`.
+    pub fn kind(&self) -> MotionKind {
         match self {
-            MotionSpec::Free => "free",
-            MotionSpec::FixedAxis(_) => "fixed_axis",
-            MotionSpec::Hinge(_) => "hinge",
+            MotionSpec::Free => MotionKind::Free,
+            MotionSpec::FixedAxis(_) => MotionKind::FixedAxis,
+            MotionSpec::Hinge(_) => MotionKind::Hinge,
         }
     }
 }

@@ -11,7 +11,7 @@ mod solver;
 use nalgebra::{Quaternion, UnitQuaternion};
 
 use super::checks::{Checked, Invalid, finite, invalid, positive, vector};
-use super::model::{Motion, Scene};
+use super::model::Scene;
 use super::source_map::KeyPath;
 use super::spec::{AttitudeSpec, MotionSpec, SceneSpec};
 use crate::frames::Form;
@@ -59,11 +59,7 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     let effects = effect::validate_effects(doc, &body, &center_b)?;
     let motion = motion::validate_motion(doc, &body, &attitude0, &effects, &center_b)?;
     // An axis motion may set the attitude itself (`axis_in_space`, a hinge's `angle_deg`).
-    let attitude0 = match &motion {
-        Motion::FixedAxis(axis) => axis.attitude(0.0),
-        Motion::Hinge(hinge) => hinge.axis().attitude(hinge.theta0()),
-        Motion::Free { .. } => attitude0,
-    };
+    let attitude0 = motion.attitude0(attitude0);
     let solver = solver::validate_solver(&doc.solver, overrides)?;
     solver::validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let schedule = solver::validate_schedule(doc, &solver, overrides)?;
