@@ -44,7 +44,10 @@ pub struct SupportLoads {
     pub theta_ddot: f64,
     /// Force the support applies to the body (N, space axes).
     pub f_sup_s: Vector3<f64>,
-    /// Moment about the axis that the drive supplies (N·m).
+    /// Moment the support (bearings and drive) applies about the axis point, M_sup = dH/dt − Σ M_effects (N·m,
+    /// space axes): with `f_sup_s`, the support's share of the resultant.
+    pub m_sup_s: Vector3<f64>,
+    /// Moment about the axis that the drive supplies, M_sup·u (N·m).
     pub m_drive: f64,
     /// The bearings' forces on the body, where the scene places two bearings.
     pub bearings: Option<BearingLoads>,
@@ -68,7 +71,8 @@ pub struct ColumnSet {
     pub force: bool,
     /// `H_s_int_x,H_s_int_y,H_s_int_z`.
     pub h_s_integrated: bool,
-    /// `theta_dot,theta_ddot,F_sup_s_x,F_sup_s_y,F_sup_s_z,M_drive`.
+    /// `theta_dot,theta_ddot,F_sup_s_x,F_sup_s_y,F_sup_s_z,M_drive`, and `M_sup_s_x,M_sup_s_y,M_sup_s_z` after the
+    /// potential's columns (added in the third round: appended, so that earlier columns keep their places).
     pub support: bool,
     /// `R_A_s_*,R_B_s_*,R_A_b_*,R_B_b_*`.
     pub bearings: bool,
@@ -242,6 +246,24 @@ const BEARING_COLUMNS: [Column; 12] = [
     bearing("R_B_b_z", "force of bearing B on the body, body axes"),
 ];
 
+const SUPPORT_MOMENT_COLUMNS: [Column; 3] = [
+    col(
+        "M_sup_s_x",
+        "N*m",
+        "moment of the support (bearings and drive) about the axis point, space axes",
+    ),
+    col(
+        "M_sup_s_y",
+        "N*m",
+        "moment of the support (bearings and drive) about the axis point, space axes",
+    ),
+    col(
+        "M_sup_s_z",
+        "N*m",
+        "moment of the support (bearings and drive) about the axis point, space axes",
+    ),
+];
+
 const POTENTIAL_COLUMNS: [Column; 2] = [
     col(
         "potential",
@@ -264,13 +286,14 @@ impl ColumnSet {
 
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
-        let groups: [(bool, &[Column]); 6] = [
+        let groups: [(bool, &[Column]); 7] = [
             (self.theta, &[THETA_COLUMN]),
             (self.force, &FORCE_COLUMNS),
             (self.h_s_integrated, &H_INT_COLUMNS),
             (self.support, &SUPPORT_COLUMNS),
             (self.bearings, &BEARING_COLUMNS),
             (self.potential, &POTENTIAL_COLUMNS),
+            (self.support, &SUPPORT_MOMENT_COLUMNS),
         ];
         let mut cols = BASE_COLUMNS.to_vec();
         for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
@@ -322,6 +345,9 @@ impl ColumnSet {
             let v = s.potential.unwrap_or(f64::NAN);
             out.push(v);
             out.push(s.energy + v);
+        }
+        if self.support {
+            out.extend(s.support.map_or(nan3, |l| l.m_sup_s).iter());
         }
     }
     /// The values of one row, in column order, refusing a non-finite one (the CSV writer and the Python module

@@ -323,6 +323,7 @@ impl FixedAxis {
             theta_dot: angle.theta_dot,
             theta_ddot: angle.theta_ddot,
             f_sup_s,
+            m_sup_s,
             m_drive: m_sup_s.dot(&u_s),
             bearings: self.bearings.map(|bearings| {
                 let (r_a_s, r_b_s) = bearings.split(&f_sup_s, &m_sup_s, &u_s);

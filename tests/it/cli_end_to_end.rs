@@ -40,7 +40,8 @@ const CONTRACT_COLUMNS: [&str; 25] = [
 
 /// The tilted disk (prescribed motion, C on the axis) adds these after the contract's columns.
 /// The prescribed motion's columns, then the support's (the contract's "Rotation about an invariant axis").
-const DISK_EXTRA_COLUMNS: [&str; 10] = [
+/// `M_sup_s_*` (third round) are appended after all of them.
+const DISK_EXTRA_COLUMNS: [&str; 13] = [
     "theta",
     "H_s_int_x",
     "H_s_int_y",
@@ -51,6 +52,9 @@ const DISK_EXTRA_COLUMNS: [&str; 10] = [
     "F_sup_s_y",
     "F_sup_s_z",
     "M_drive",
+    "M_sup_s_x",
+    "M_sup_s_y",
+    "M_sup_s_z",
 ];
 
 fn tilted_disk() -> String {

@@ -75,6 +75,13 @@ fn assert_equilibrium(
             couple - m_perp
         );
         close(support.m_drive, m_sup.dot(u_s), 1e-14, "M_drive = M_sup·u");
+        // The M_sup_s columns (CONTRACT, third round): the support's moment itself, M_sup = dH/dt − Σ M_effects.
+        assert!(
+            (support.m_sup_s - m_sup).norm() <= 1e-14 * scale,
+            "t = {}: M_sup_s − (M − M_eff) = {}",
+            s.t,
+            support.m_sup_s - m_sup
+        );
     }
 }
 
