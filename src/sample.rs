@@ -31,6 +31,21 @@ pub struct Sample {
     pub support: Option<SupportLoads>,
     /// With gravity: the potential energy V = −m g·r_C, r_C from the moment center in space axes (J).
     pub potential: Option<f64>,
+    /// With rotors: each wheel's relative spin, axial momentum and motor torque.
+    pub rotors: Option<RotorRows>,
+}
+
+/// The most rotors a body may carry (a reaction-wheel pyramid has four).
+pub const MAX_ROTORS: usize = 4;
+
+/// The rotors' values in one row, the first `n` entries used: relative spin Ω_k (rad/s), the wheel's axial moment
+/// of momentum J_k(a_k·ω + Ω_k) (N·m·s) and the motor torque τ_k on the wheel (N·m).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RotorRows {
+    pub n: usize,
+    pub spin: [f64; MAX_ROTORS],
+    pub h: [f64; MAX_ROTORS],
+    pub torque: [f64; MAX_ROTORS],
 }
 
 /// What the support of a body turning about a fixed axis supplies: the force F_sup = m a_C − Σ F_effects, the
@@ -78,6 +93,8 @@ pub struct ColumnSet {
     pub bearings: bool,
     /// `potential,energy_total`.
     pub potential: bool,
+    /// `<name>_spin,<name>_h,<name>_torque` per rotor, after all others ([`rotor_columns`]).
+    pub rotors: &'static [Column],
 }
 
 /// A column's name, unit and meaning.
@@ -282,6 +299,7 @@ impl ColumnSet {
         support: true,
         bearings: true,
         potential: true,
+        rotors: &[],
     };
 
     /// All columns of a run, in order.
@@ -299,6 +317,7 @@ impl ColumnSet {
         for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
             cols.extend_from_slice(group);
         }
+        cols.extend_from_slice(self.rotors);
         cols
     }
 
@@ -349,6 +368,11 @@ impl ColumnSet {
         if self.support {
             out.extend(s.support.map_or(nan3, |l| l.m_sup_s).iter());
         }
+        let rotors = s.rotors.unwrap_or_default();
+        for k in 0..self.rotors.len() / 3 {
+            let value = |v: &[f64; MAX_ROTORS]| if k < rotors.n { v[k] } else { f64::NAN };
+            out.extend([value(&rotors.spin), value(&rotors.h), value(&rotors.torque)]);
+        }
     }
     /// The values of one row, in column order, refusing a non-finite one (the CSV writer and the Python module
     /// write only finite rows: the simulation must stop before it produces another).
@@ -375,4 +399,39 @@ pub struct NonFinite {
     pub value: f64,
     /// The row's time (s).
     pub t: f64,
+}
+
+/// The columns of rotors named `names`, in order: `<name>_spin` (rad/s), `<name>_h` (N·m·s), `<name>_torque`
+/// (N·m). Column names are `'static`: each distinct list of names is made once per process and kept.
+pub fn rotor_columns(names: &[String]) -> &'static [Column] {
+    use std::collections::HashMap;
+    use std::sync::{Mutex, OnceLock};
+    static MADE: OnceLock<Mutex<HashMap<Vec<String>, &'static [Column]>>> = OnceLock::new();
+    let mut made = MADE
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner());
+    made.entry(names.to_vec()).or_insert_with(|| {
+        let named = |name: &str, suffix: &str| -> &'static str {
+            Box::leak(format!("{name}_{suffix}").into_boxed_str())
+        };
+        let columns: Vec<Column> = (names.iter())
+            .flat_map(|name| {
+                [
+                    col(
+                        named(name, "spin"),
+                        "rad/s",
+                        "rotor spin relative to the body",
+                    ),
+                    col(
+                        named(name, "h"),
+                        "N*m*s",
+                        "rotor's axial moment of momentum J (a.omega + spin)",
+                    ),
+                    col(named(name, "torque"), "N*m", "motor torque on the rotor"),
+                ]
+            })
+            .collect();
+        Box::leak(columns.into_boxed_slice())
+    })
 }

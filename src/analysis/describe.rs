@@ -229,6 +229,7 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
         Motion::Free {
             omega0_b,
             body: free,
+            ..
         } => free_motion_lines(w, scene, omega0_b, free),
         Motion::FixedAxis(motion) => fixed_axis_lines(w, scene, motion),
         Motion::Hinge(hinge) => hinge_lines(w, hinge),

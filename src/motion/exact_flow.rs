@@ -104,6 +104,7 @@ impl ExactFlow {
             h_s_integrated: None,
             support: None,
             potential: None,
+            rotors: None,
         }
     }
 

@@ -301,6 +301,7 @@ impl FixedAxis {
             h_s_integrated: None,
             support: Some(self.support(&angle, &q, &m_s, m_eff_s)),
             potential: None,
+            rotors: None,
         }
     }
 }

@@ -342,6 +342,7 @@ pub fn free_sample(
         h_s_integrated: None,
         support: None,
         potential: None,
+        rotors: None,
     }
 }
 

@@ -81,7 +81,12 @@ pub fn unit_slips(spec: &SceneSpec) -> Vec<String> {
 /// §37: the polhodes through the intermediate axis). `None` for prescribed motion, a body at rest, or one with two
 /// equal principal moments (to 1e-9).
 pub fn separatrix_distance(scene: &Scene) -> Option<f64> {
-    let Motion::Free { omega0_b, body } = &scene.motion else {
+    let Motion::Free {
+        omega0_b,
+        body,
+        gyrostat: None,
+    } = &scene.motion
+    else {
         return None;
     };
     let omega_p = body.principal_axes_b().transpose() * omega0_b;

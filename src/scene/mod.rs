@@ -16,7 +16,8 @@ pub use model::{Motion, Scene, SceneSource, SolverConfig};
 pub use spec::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CompareSpec, Distribution, EffectSpec,
     FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec,
-    PointMassSpec, ProfileSpec, RateSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
+    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec,
+    TorqueSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -12,7 +12,8 @@ use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 
 use super::spec::{MotionKind, SceneSpec};
-use crate::sample::ColumnSet;
+use crate::motion::gyrostat::Gyrostat;
+use crate::sample::{ColumnSet, rotor_columns};
 
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,6 +36,8 @@ pub enum Motion {
     Free {
         omega0_b: Vector3<f64>,
         body: FreeBody,
+        /// The body with its rotors (`[[body.rotor]]`), when it has any.
+        gyrostat: Option<Box<Gyrostat>>,
     },
     /// Prescribed rotation about a fixed axis.
     FixedAxis(FixedAxis),
@@ -56,7 +59,17 @@ impl Motion {
     /// force only when C is off the axis, the loads only with bearings), H_s integrated for a prescribed motion.
     pub fn columns(&self) -> ColumnSet {
         let Some(axis) = self.axis() else {
-            return ColumnSet::default();
+            let Motion::Free {
+                gyrostat: Some(g), ..
+            } = self
+            else {
+                return ColumnSet::default();
+            };
+            let names: Vec<String> = g.rotors().iter().map(|r| r.name.clone()).collect();
+            return ColumnSet {
+                rotors: rotor_columns(&names),
+                ..ColumnSet::default()
+            };
         };
         ColumnSet {
             theta: true,

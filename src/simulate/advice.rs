@@ -76,9 +76,15 @@ pub struct EnergyWatch {
 }
 
 impl EnergyWatch {
-    /// The watch of `scene`; `None` when the scene does not conserve its energy (torques, damping, a driven axis).
+    /// The watch of `scene`; `None` when the scene does not conserve its energy (torques, damping, a driven axis,
+    /// a rotor's motor).
     pub fn of(scene: &Scene) -> Option<Self> {
-        let free = matches!(scene.motion, Motion::Free { .. });
+        let free = match &scene.motion {
+            Motion::Free { gyrostat, .. } => {
+                gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely())
+            }
+            _ => false,
+        };
         let conservative = scene
             .effects
             .iter()

@@ -141,7 +141,12 @@ const HINT_EXACT: &str = "the closed form should not do this: please report the 
 impl DivergenceGuard {
     /// The guard of a scene's run; `None` for a prescribed motion.
     pub fn new(scene: &Scene) -> Option<Self> {
-        let Motion::Free { omega0_b, body } = &scene.motion else {
+        let Motion::Free {
+            omega0_b,
+            body,
+            gyrostat: None,
+        } = &scene.motion
+        else {
             return None;
         };
         let (h0_b, e0) = body.momentum_and_energy(omega0_b);

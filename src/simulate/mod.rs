@@ -17,6 +17,7 @@ use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
+use crate::motion::gyrostat::{Gyrostat, GyrostatForm};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::{ColumnSet, Sample};
@@ -203,7 +204,15 @@ pub fn run<E: std::error::Error + 'static>(
     let stats = match &scene.motion {
         Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),
         Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver),
-        Motion::Free { omega0_b, body } => {
+        Motion::Free {
+            omega0_b,
+            gyrostat: Some(gyrostat),
+            ..
+        } => {
+            let moments = EffectMoments::new(&scene.effects, scene.body.mass());
+            run_gyrostat(scene, gyrostat, omega0_b, moments, deliver)
+        }
+        Motion::Free { omega0_b, body, .. } => {
             if scene.effects.is_empty() {
                 run_free(scene, body, omega0_b, TorqueFree, deliver)
             } else {
@@ -290,6 +299,35 @@ fn run_free<M: KickMoment + Clone, E>(
             integrate::integrate(&mut system, y0, &scene.schedule, &settings, on_row)
         }
     }
+}
+
+/// A body with rotors, by the scene's Runge–Kutta method (validation refuses the others), in the form the
+/// scene's frame selects.
+fn run_gyrostat<E>(
+    scene: &Scene,
+    gyrostat: &Gyrostat,
+    omega0_b: &Vector3<f64>,
+    moment: EffectMoments,
+    mut sink: impl FnMut(&Sample) -> Result<(), E>,
+) -> Result<Stats, IntegrateError<E>> {
+    let Runner::RungeKutta(settings) = runner(scene) else {
+        return Err(IntegrateError::InvalidSettings {
+            reason: format!(
+                "method \"{}\" cannot take rotors",
+                scene.solver.method.name()
+            ),
+        });
+    };
+    let form = scene.solver.form;
+    let y0 = gyrostat.initial_state(form, omega0_b, &scene.attitude0);
+    let mut system = GyrostatForm {
+        gyrostat,
+        moment: moment.clone(),
+        form,
+    };
+    integrate::integrate(&mut system, y0, &scene.schedule, &settings, |t, y| {
+        sink(&gyrostat.sample(&moment, form, t, y))
+    })
 }
 
 /// Euler's equation in space axes for a prescribed motion, Ḣ_s = M_s(t) (eq. 8.9), with M_s from the form the

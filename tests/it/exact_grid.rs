@@ -309,7 +309,7 @@ fn a_full_inertia_tensor_gets_the_rows_of_the_direct_evaluation() {
             ..Overrides::default()
         };
         let scene = scene_from(text, &overrides);
-        let eulerdyn::scene::Motion::Free { omega0_b, body } = &scene.motion else {
+        let eulerdyn::scene::Motion::Free { omega0_b, body, .. } = &scene.motion else {
             panic!("a free body");
         };
         let flow = ExactFlow::new(body, omega0_b, &scene.attitude0).unwrap();

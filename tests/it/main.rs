@@ -21,6 +21,7 @@ mod output_safety;
 mod plot;
 mod properties;
 mod readme;
+mod rotors;
 mod scene_errors;
 mod scene_fuzz;
 mod sidecar;

@@ -215,6 +215,9 @@ pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>
     Some(match scene.motion {
         MotionKind::FixedAxis if scene.accelerated => vec![],
         MotionKind::FixedAxis => vec!["H_norm", "energy"],
+        // A rotor's motor may do work: |H| alone is kept (the energy only with free wheels, not told here).
+        _ if scene.rotors && scene.effects.is_empty() => vec!["H_norm"],
+        _ if scene.rotors => vec![],
         _ if scene.effects.is_empty() => vec!["H_norm", "energy"],
         MotionKind::Free if only_gravity && scene.vertical_gravity => {
             vec!["energy_total", "H_s_z"]
@@ -312,6 +315,7 @@ mod tests {
             effects: effects.iter().map(|e| e.to_string()).collect(),
             accelerated,
             vertical_gravity: true,
+            rotors: false,
         }
     }
 

@@ -46,6 +46,8 @@ pub(super) struct SceneFacts {
     pub(super) accelerated: bool,
     /// Every gravity effect's `g` is along space z (so that, about a fixed pivot, H_s,z is an invariant).
     pub(super) vertical_gravity: bool,
+    /// The body has rotors (`[[body.rotor]]`), whose motors may do work.
+    pub(super) rotors: bool,
 }
 
 /// The curves read from a run's CSV, ready to draw.
@@ -372,5 +374,6 @@ fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
         effects: sidecar.scene.effects,
         accelerated: accel != 0.0,
         vertical_gravity,
+        rotors: !spec.body.rotor.is_empty(),
     })
 }

@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::ProfileSpec;
+
 /// `body.shape`: a homogeneous shape, `type` and its dimensions (the vocabulary type [`crate::body::Shape`]).
 pub type ShapeSpec = crate::body::Shape;
 
@@ -14,6 +16,39 @@ pub struct BodySpec {
     pub distribution: Distribution,
     /// `[[body.point_mass]]`: point masses rigidly attached.
     pub point_mass: Vec<PointMassSpec>,
+    /// `[[body.rotor]]`: wheels spinning inside the body about axes fixed in it. `mass` and the inertia are the
+    /// whole body with its wheels locked; a rotor adds only its spin relative to the body.
+    pub rotor: Vec<RotorSpec>,
+}
+
+/// One `[[body.rotor]]`: a wheel of moment of inertia J about its axis a (fixed in the body), spinning at Ω
+/// relative to the body; its momentum adds J Ω a to H (H = I ω + Σ J_k Ω_k a_k).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RotorSpec {
+    /// `name`: the prefix of its columns (absent: `rotor0`, `rotor1`, … in order).
+    pub name: Option<String>,
+    /// `axis`: spin axis, body axes (normalised by validation).
+    pub axis: [f64; 3],
+    /// `inertia`: J, kg·m², > 0.
+    pub inertia: f64,
+    /// `spin`: Ω at t = 0 relative to the body (rad/s; absent: 0).
+    pub spin: f64,
+    /// What drives it.
+    pub drive: RotorDrive,
+    /// `at`: the wheel's centre from the reference origin, body axes (m; absent: the origin).
+    pub at: [f64; 3],
+}
+
+/// What drives a rotor's relative spin.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RotorDrive {
+    /// Neither `spin_accel` nor `torque`: the relative spin stays constant (the motor supplies what that takes).
+    ConstantSpin,
+    /// `spin_accel`: Ω(t) = spin + spin_accel·t (rad/s²); the motor torque is an output.
+    SpinAccel(f64),
+    /// `torque` (N·m) with a torque effect's `profile`: the motor torque on the wheel about its axis; the body
+    /// feels its opposite.
+    Torque { value: f64, profile: ProfileSpec },
 }
 
 /// How the body's mass is distributed: `shape` or `inertia` (exactly one of them).
@@ -62,6 +97,7 @@ impl BodySpec {
             mass,
             distribution: Distribution::Shape(shape),
             point_mass: Vec::new(),
+            rotor: Vec::new(),
         }
     }
 
@@ -77,6 +113,7 @@ impl BodySpec {
             mass,
             distribution: Distribution::Inertia(InertiaSpec::Principal(moments)),
             point_mass: Vec::new(),
+            rotor: Vec::new(),
         }
     }
 
@@ -93,6 +130,7 @@ impl BodySpec {
             mass,
             distribution: Distribution::Inertia(InertiaSpec::Full(inertia_c_b)),
             point_mass: Vec::new(),
+            rotor: Vec::new(),
         }
     }
 
@@ -108,11 +146,56 @@ impl BodySpec {
         self
     }
 
+    /// With a rotor (`[[body.rotor]]`).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, RotorSpec};
+    /// let body = BodySpec::principal(10.0, [1.0, 1.0, 2.0]).with_rotor(RotorSpec::new([0.0, 0.0, 1.0], 0.01, 100.0));
+    /// assert_eq!(body.rotor[0].spin, 100.0);
+    /// ```
+    pub fn with_rotor(mut self, rotor: RotorSpec) -> Self {
+        self.rotor.push(rotor);
+        self
+    }
+
     /// The shape, when the body is given by one.
     pub fn shape_spec(&self) -> Option<&ShapeSpec> {
         match &self.distribution {
             Distribution::Shape(shape) => Some(shape),
             Distribution::Inertia(_) => None,
         }
+    }
+}
+
+impl RotorSpec {
+    /// A wheel of moment of inertia `inertia` (kg·m²) about `axis_b` (body axes) at the reference origin, spinning
+    /// at `spin` (rad/s) relative to the body, kept constant.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{RotorDrive, RotorSpec};
+    /// let wheel = RotorSpec::new([1.0, 0.0, 0.0], 0.01, 0.0).with_drive(RotorDrive::SpinAccel(2.0));
+    /// assert_eq!(wheel.drive, RotorDrive::SpinAccel(2.0));
+    /// ```
+    pub fn new(axis_b: [f64; 3], inertia: f64, spin: f64) -> Self {
+        Self {
+            name: None,
+            axis: axis_b,
+            inertia,
+            spin,
+            drive: RotorDrive::ConstantSpin,
+            at: [0.0; 3],
+        }
+    }
+
+    /// With `drive`.
+    pub fn with_drive(mut self, drive: RotorDrive) -> Self {
+        self.drive = drive;
+        self
+    }
+
+    /// With `name`.
+    pub fn with_name(mut self, name: &str) -> Self {
+        self.name = Some(name.to_string());
+        self
     }
 }

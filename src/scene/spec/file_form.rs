@@ -54,6 +54,61 @@ pub(super) struct BodyFile {
     /// `[[body.point_mass]]`: point masses rigidly attached.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub(super) point_mass: Vec<PointMassFile>,
+    /// `[[body.rotor]]`: wheels spinning inside the body.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub(super) rotor: Vec<RotorFile>,
+}
+
+/// One `[[body.rotor]]`.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RotorFile {
+    /// Column prefix.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) name: Option<String>,
+    /// Spin axis, body axes.
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub(super) axis: Option<[f64; 3]>,
+    /// kg·m² about the spin axis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) inertia: Option<f64>,
+    /// rad/s relative to the body at t = 0.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) spin: Option<f64>,
+    /// rad/s², prescribed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) spin_accel: Option<f64>,
+    /// N·m, the motor torque on the wheel.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) torque: Option<f64>,
+    /// The motor torque's profile and its keys, as a torque effect's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) profile: Option<ProfileKind>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) freq_hz: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) phase_deg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) t_on: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) t_off: Option<f64>,
+    /// Wheel centre from the reference origin (m).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub(super) at: Option<[f64; 3]>,
+    /// g·mm.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) imbalance_static_gmm: Option<f64>,
+    /// g·mm².
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) imbalance_dynamic_gmm2: Option<f64>,
 }
 
 /// One `[[body.point_mass]]`.

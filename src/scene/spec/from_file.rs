@@ -5,12 +5,12 @@
 
 use super::file_form::{
     BodyFile, EffectFile, EffectKind, InitialFile, MotionFile, PointMassFile, ProfileKind,
-    SceneFile, ShapeFile, ShapeKind,
+    RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, Distribution, EffectSpec, FixedAxisSpec,
     HingeSpec, InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec,
-    SceneSpec, ShapeSpec, TorqueSpec,
+    RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -63,10 +63,77 @@ fn body(doc: BodyFile) -> Checked<BodySpec> {
             })
         })
         .collect::<Checked<_>>()?;
+    let rotor = (doc.rotor.iter().enumerate())
+        .map(|(index, r)| rotor(index, r))
+        .collect::<Checked<_>>()?;
     Ok(BodySpec {
         mass: doc.mass,
         distribution,
         point_mass,
+        rotor,
+    })
+}
+
+/// One `[[body.rotor]]`: its required keys, at most one drive, and the motor's profile keys only with `torque`.
+fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
+    let table = KeyPath::root().key("body").key("rotor").index(index);
+    let key = |name: &str| table.clone().key(name);
+    let kind = "a rotor";
+    for (name, value) in [
+        ("imbalance_static_gmm", doc.imbalance_static_gmm),
+        ("imbalance_dynamic_gmm2", doc.imbalance_dynamic_gmm2),
+    ] {
+        if value.is_some_and(|v| v != 0.0) {
+            return invalid(
+                key(name),
+                "a rotor's imbalance is not simulated yet (only 0 is accepted): the wheel's angle, which the \
+                 turning force needs, is not integrated",
+            );
+        }
+    }
+    let keys = ProfileKeys {
+        profile: doc.profile,
+        freq_hz: doc.freq_hz,
+        phase_deg: doc.phase_deg,
+        t_on: doc.t_on,
+        t_off: doc.t_off,
+    };
+    let drive = match (doc.spin_accel, doc.torque) {
+        (Some(_), Some(_)) => {
+            return invalid(
+                key("torque"),
+                "give either `spin_accel` (a prescribed spin) or `torque` (a motor torque), not both",
+            );
+        }
+        (Some(accel), None) => RotorDrive::SpinAccel(accel),
+        (None, Some(value)) => RotorDrive::Torque {
+            value,
+            profile: profile(&table, &keys)?,
+        },
+        (None, None) => RotorDrive::ConstantSpin,
+    };
+    if !matches!(drive, RotorDrive::Torque { .. }) {
+        let given = [
+            ("profile", keys.profile.is_some()),
+            ("freq_hz", keys.freq_hz.is_some()),
+            ("phase_deg", keys.phase_deg.is_some()),
+            ("t_on", keys.t_on.is_some()),
+            ("t_off", keys.t_off.is_some()),
+        ];
+        if let Some((name, _)) = given.iter().find(|(_, present)| *present) {
+            return invalid(
+                key(name),
+                format!("`{name}` is the motor torque's profile: it applies with `torque` only"),
+            );
+        }
+    }
+    Ok(RotorSpec {
+        name: doc.name.clone(),
+        axis: required(key("axis"), doc.axis, kind)?,
+        inertia: required(key("inertia"), doc.inertia, kind)?,
+        spin: doc.spin.unwrap_or(0.0),
+        drive,
+        at: doc.at.unwrap_or([0.0; 3]),
     })
 }
 
@@ -267,7 +334,16 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
         EffectKind::Torque => EffectSpec::Torque(TorqueSpec {
             frame: doc.frame.unwrap_or(Axes::Body),
             value: required(key("value"), doc.value, &kind_text)?,
-            profile: profile(&table, doc)?,
+            profile: profile(
+                &table,
+                &ProfileKeys {
+                    profile: doc.profile,
+                    freq_hz: doc.freq_hz,
+                    phase_deg: doc.phase_deg,
+                    t_on: doc.t_on,
+                    t_off: doc.t_off,
+                },
+            )?,
         }),
         EffectKind::Gravity => EffectSpec::Gravity {
             g: doc.g.unwrap_or(DEFAULT_GRAVITY),
@@ -279,8 +355,17 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
     })
 }
 
+/// The keys of a torque's time profile, as an effect and a rotor's motor write them.
+struct ProfileKeys {
+    profile: Option<ProfileKind>,
+    freq_hz: Option<f64>,
+    phase_deg: Option<f64>,
+    t_on: Option<f64>,
+    t_off: Option<f64>,
+}
+
 /// A torque's `profile` and the keys that profile takes.
-fn profile(table: &KeyPath, doc: &EffectFile) -> Checked<ProfileSpec> {
+fn profile(table: &KeyPath, doc: &ProfileKeys) -> Checked<ProfileSpec> {
     let key = |name: &str| table.clone().key(name);
     let misplaced = |name: &str, present: bool, kind: &str| -> Checked<()> {
         if present {
@@ -372,6 +457,59 @@ fn body_file(body: &BodySpec) -> BodyFile {
                 at: Some(p.at),
             })
             .collect(),
+        rotor: body.rotor.iter().map(rotor_file).collect(),
+    }
+}
+
+fn rotor_file(rotor: &RotorSpec) -> RotorFile {
+    let mut file = RotorFile {
+        name: rotor.name.clone(),
+        axis: Some(rotor.axis),
+        inertia: Some(rotor.inertia),
+        spin: Some(rotor.spin),
+        at: Some(rotor.at),
+        ..RotorFile::default()
+    };
+    match rotor.drive {
+        RotorDrive::ConstantSpin => {}
+        RotorDrive::SpinAccel(accel) => file.spin_accel = Some(accel),
+        RotorDrive::Torque { value, profile } => {
+            file.torque = Some(value);
+            let (kind, freq_hz, phase_deg, t_on, t_off) = profile_keys(&profile);
+            (file.profile, file.freq_hz, file.phase_deg) = (Some(kind), freq_hz, phase_deg);
+            (file.t_on, file.t_off) = (t_on, t_off);
+        }
+    }
+    file
+}
+
+/// A profile's `profile`, `freq_hz`, `phase_deg`, `t_on` and `t_off` keys (an absent `t_off`, +∞, left out).
+#[allow(clippy::type_complexity)]
+fn profile_keys(
+    profile: &ProfileSpec,
+) -> (
+    ProfileKind,
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
+) {
+    match *profile {
+        ProfileSpec::Constant => (ProfileKind::Constant, None, None, None, None),
+        ProfileSpec::Sine { freq_hz, phase_deg } => (
+            ProfileKind::Sine,
+            Some(freq_hz),
+            Some(phase_deg),
+            None,
+            None,
+        ),
+        ProfileSpec::Step { t_on, t_off } => (
+            ProfileKind::Step,
+            None,
+            None,
+            Some(t_on),
+            Some(t_off).filter(|t| *t != f64::INFINITY),
+        ),
     }
 }
 
@@ -451,25 +589,18 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
 fn effect_file(effect: &EffectSpec) -> EffectFile {
     match *effect {
         EffectSpec::Torque(torque) => {
-            let mut file = EffectFile {
+            let (profile, freq_hz, phase_deg, t_on, t_off) = profile_keys(&torque.profile);
+            EffectFile {
                 kind: Some(EffectKind::Torque),
                 frame: Some(torque.frame),
                 value: Some(torque.value),
+                profile: Some(profile),
+                freq_hz,
+                phase_deg,
+                t_on,
+                t_off,
                 ..EffectFile::default()
-            };
-            file.profile = Some(match torque.profile {
-                ProfileSpec::Constant => ProfileKind::Constant,
-                ProfileSpec::Sine { freq_hz, phase_deg } => {
-                    (file.freq_hz, file.phase_deg) = (Some(freq_hz), Some(phase_deg));
-                    ProfileKind::Sine
-                }
-                ProfileSpec::Step { t_on, t_off } => {
-                    file.t_on = Some(t_on);
-                    file.t_off = Some(t_off).filter(|t| *t != f64::INFINITY);
-                    ProfileKind::Step
-                }
-            });
-            file
+            }
         }
         EffectSpec::Gravity { g, pivot } => EffectFile {
             kind: Some(EffectKind::Gravity),

@@ -17,7 +17,9 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use crate::frames::Form;
 use crate::method::{Backend, Method};
 
-pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
+pub use body::{
+    BodySpec, Distribution, InertiaSpec, PointMassSpec, RotorDrive, RotorSpec, ShapeSpec,
+};
 pub use effect::{EffectSpec, ProfileSpec, TorqueSpec};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{

@@ -128,7 +128,18 @@ fn validate_effect(
 /// A torque: its axes, value and time profile.
 fn validate_torque(table: &KeyPath, doc: &TorqueSpec) -> Checked<Effect> {
     let key = |name: &str| table.clone().key(name);
-    let profile = match doc.profile {
+    let profile = validate_profile(table, &doc.profile)?;
+    Ok(Effect::Torque {
+        frame: doc.frame,
+        value: vector(key("value"), doc.value, "N*m")?,
+        profile,
+    })
+}
+
+/// A torque's time profile (an effect's, or a rotor motor's), its keys under `table`.
+pub(super) fn validate_profile(table: &KeyPath, profile: &ProfileSpec) -> Checked<TorqueProfile> {
+    let key = |name: &str| table.clone().key(name);
+    Ok(match *profile {
         ProfileSpec::Constant => TorqueProfile::Constant,
         ProfileSpec::Sine { freq_hz, phase_deg } => {
             let f = finite(key("freq_hz"), freq_hz, "Hz")?;
@@ -150,10 +161,5 @@ fn validate_torque(table: &KeyPath, doc: &TorqueSpec) -> Checked<Effect> {
             }
             TorqueProfile::Step { t_on, t_off }
         }
-    };
-    Ok(Effect::Torque {
-        frame: doc.frame,
-        value: vector(key("value"), doc.value, "N*m")?,
-        profile,
     })
 }

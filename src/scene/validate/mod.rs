@@ -6,6 +6,7 @@ mod body;
 mod effect;
 mod motion;
 mod resolved;
+mod rotor;
 mod solver;
 
 use nalgebra::{Quaternion, UnitQuaternion};

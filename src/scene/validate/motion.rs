@@ -26,6 +26,13 @@ pub(super) fn validate_motion(
         Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
         Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
+    if !doc.body.rotor.is_empty() {
+        return invalid(
+            KeyPath::root().key("body").key("rotor"),
+            "rotors are simulated in a freely turning body (free motion, or about a gravity pivot); a fixed-axis \
+             or hinge motion with rotors is not supported",
+        );
+    }
     if initial_omega.is_some() {
         return invalid(
             KeyPath::root().key("initial").key("omega"),
@@ -78,9 +85,11 @@ fn free_motion(
             ),
         );
     }
+    let gyrostat = super::rotor::validate_rotors(&doc.body, &free_body)?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
+        gyrostat,
     })
 }
 

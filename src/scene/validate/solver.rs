@@ -70,6 +70,24 @@ pub(super) fn validate_method(
     o: &Overrides,
 ) -> Checked<()> {
     let method = solver.method;
+    let has_rotors = matches!(
+        motion,
+        Motion::Free {
+            gyrostat: Some(_),
+            ..
+        }
+    );
+    if has_rotors && !method.is_runge_kutta() {
+        return invalid(
+            key_of("solver", "method", o.method.is_some()),
+            format!(
+                "method \"{}\" cannot take rotors: split2/split4 split the rigid body's rotation into planar \
+                 rotations and exact is the rigid body's closed form, neither has the wheels' momentum; use rk4, \
+                 dopri5 or dop853",
+                method.name()
+            ),
+        );
+    }
     if matches!(motion, Motion::Hinge(_)) && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "method", o.method.is_some()),
@@ -109,7 +127,7 @@ pub(super) fn validate_method(
             ),
         );
     }
-    if let Motion::Free { omega0_b, body } = motion {
+    if let Motion::Free { omega0_b, body, .. } = motion {
         ExactFlow::new(body, omega0_b, attitude0).map_err(|e| Invalid {
             key: method_key,
             problem: format!("method \"exact\" cannot solve this body in closed form: {e}"),

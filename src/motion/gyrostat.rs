@@ -1,0 +1,264 @@
+//! A gyrostat: a body with rotors — wheels spinning inside it about axes a_k fixed in the body — turning freely
+//! about its moment center (C, or a gravity pivot). The body's inertia I is the whole body with its wheels locked;
+//! each wheel adds only its spin Ω_k relative to the body (Hughes, *Spacecraft Attitude Dynamics*, §3.5;
+//! Wittenburg, *Dynamics of Multibody Systems*, §6.3):
+//!
+//! ```text
+//!   H = I ω + Σ J_k Ω_k a_k                         (the wheel's J_k (a_k·ω) is already in I ω)
+//!   I ω̇ + Σ J_k Ω̇_k a_k = M − ω × H                (body axes; in space axes Ḣ_s = M_s)
+//!   J_k (a_k·ω̇ + Ω̇_k) = τ_k                         (each wheel about its axis; the body feels −τ_k)
+//! ```
+//!
+//! A wheel's spin is prescribed (Ω̇_k = α_k, 0 for a constant spin; τ_k is then an output) or driven by its motor
+//! torque τ_k(t). Eliminating the driven wheels' Ω̇_k gives ω̇ = I_D⁻¹ (M − ω × H − Σ_P J_k α_k a_k − Σ_D τ_k a_k),
+//! I_D = I − Σ_D J_k a_k a_kᵀ. State: (ω_b or H_s, q, Ω_1 … Ω_4), unused spins zero. Kinetic energy
+//! T = ½ ωᵀ I ω + Σ (J_k Ω_k (a_k·ω) + ½ J_k Ω_k²).
+
+use nalgebra::{Matrix3, Quaternion, SVector, SymmetricEigen, Unit, UnitQuaternion, Vector3};
+
+use super::free::FreeBody;
+use crate::effects::{AppliedMoment, TorqueSum};
+use crate::frames::{Form, StateRotation};
+use crate::integrate::OdeSystem;
+use crate::sample::{MAX_ROTORS, RotorRows, Sample};
+
+/// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4).
+pub type State = SVector<f64, 11>;
+
+/// What drives a rotor, validated.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Drive {
+    /// Ω̇ = α (rad/s²), prescribed (0: a constant relative spin).
+    Accel(f64),
+    /// The motor torque τ(t) on the wheel (N·m): the `x` component of the sum.
+    Torque(TorqueSum),
+}
+
+/// One rotor, validated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rotor {
+    /// Its columns' prefix.
+    pub name: String,
+    /// Spin axis a, body axes.
+    pub axis_b: Unit<Vector3<f64>>,
+    /// J about the spin axis (kg·m²).
+    pub inertia: f64,
+    /// Ω at t = 0, relative to the body (rad/s).
+    pub spin0: f64,
+    pub drive: Drive,
+}
+
+/// The rotors cannot be inside this body: with the driven wheels free, I_D = I − Σ_D J_k a_k a_kᵀ must stay
+/// positive definite (it is when `[body]` includes the wheels, whose own inertia about a_k is at least J_k).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error(
+    "the body's inertia about the moment center without the wheels' axial inertia, I − Σ J_k a_k a_kᵀ, has the \
+     principal moment {smallest:e} kg*m^2 <= 0: [body] is the whole body with its wheels locked, so its inertia \
+     about each wheel axis must exceed the wheels' J"
+)]
+pub struct WheelsOutsideBody {
+    pub smallest: f64,
+}
+
+/// A free body with its rotors.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Gyrostat {
+    body: FreeBody,
+    rotors: Vec<Rotor>,
+    /// I_D⁻¹, body axes.
+    inertia_driven_inv_b: Matrix3<f64>,
+}
+
+impl Gyrostat {
+    /// The body with `rotors` (at most [`MAX_ROTORS`]); refuses a body whose inertia cannot hold its wheels.
+    pub fn new(body: FreeBody, rotors: Vec<Rotor>) -> Result<Self, WheelsOutsideBody> {
+        assert!(rotors.len() <= MAX_ROTORS, "validation bounds the rotors");
+        let wheels = |driven_only: bool| {
+            (rotors.iter())
+                .filter(|r| !driven_only || matches!(r.drive, Drive::Torque(_)))
+                .fold(*body.inertia_b(), |i, r| {
+                    i - r.axis_b.into_inner() * r.axis_b.transpose() * r.inertia
+                })
+        };
+        let smallest = SymmetricEigen::new(wheels(false)).eigenvalues.min();
+        let largest = body.principal_moments().max();
+        if smallest <= 1e-12 * largest {
+            return Err(WheelsOutsideBody { smallest });
+        }
+        let inertia_driven_inv_b = wheels(true)
+            .try_inverse()
+            .ok_or(WheelsOutsideBody { smallest })?;
+        Ok(Self {
+            body,
+            rotors,
+            inertia_driven_inv_b,
+        })
+    }
+
+    /// The body about its moment center.
+    pub fn body(&self) -> &FreeBody {
+        &self.body
+    }
+
+    /// The rotors.
+    pub fn rotors(&self) -> &[Rotor] {
+        &self.rotors
+    }
+
+    /// Whether no motor does work: every wheel is driven by a zero torque (spinning freely). Only then is the
+    /// kinetic energy conserved where no effect acts; a prescribed or constant relative spin takes motor work.
+    pub fn wheels_spin_freely(&self) -> bool {
+        (self.rotors.iter()).all(|r| matches!(&r.drive, Drive::Torque(tau) if tau.is_zero()))
+    }
+
+    /// Σ J_k Ω_k a_k, body axes.
+    fn rotor_momentum_b(&self, spins: &[f64]) -> Vector3<f64> {
+        (self.rotors.iter().zip(spins)).fold(Vector3::zeros(), |h, (r, &spin)| {
+            h + r.axis_b.into_inner() * (r.inertia * spin)
+        })
+    }
+
+    /// ω̇_b and each Ω̇_k at ω_b, H_b, the external moment M_b and the spins, time t (module doc).
+    fn rates(
+        &self,
+        t: f64,
+        omega_b: &Vector3<f64>,
+        h_b: &Vector3<f64>,
+        m_b: &Vector3<f64>,
+    ) -> (Vector3<f64>, [f64; MAX_ROTORS]) {
+        let mut rhs = m_b - omega_b.cross(h_b);
+        for r in &self.rotors {
+            rhs -= r.axis_b.into_inner()
+                * match &r.drive {
+                    Drive::Accel(alpha) => r.inertia * alpha,
+                    Drive::Torque(tau) => tau.at(t).x,
+                };
+        }
+        let omega_dot_b = self.inertia_driven_inv_b * rhs;
+        let mut spin_dot = [0.0; MAX_ROTORS];
+        for (dot, r) in spin_dot.iter_mut().zip(&self.rotors) {
+            *dot = match &r.drive {
+                Drive::Accel(alpha) => *alpha,
+                Drive::Torque(tau) => tau.at(t).x / r.inertia - r.axis_b.dot(&omega_dot_b),
+            };
+        }
+        (omega_dot_b, spin_dot)
+    }
+
+    /// The initial state of the form `form` from ω_b(0), q(0) and the rotors' initial spins.
+    pub fn initial_state(
+        &self,
+        form: Form,
+        omega0_b: &Vector3<f64>,
+        q0: &UnitQuaternion<f64>,
+    ) -> State {
+        let spins: Vec<f64> = self.rotors.iter().map(|r| r.spin0).collect();
+        let first = match form {
+            Form::Body => *omega0_b,
+            Form::Space => q0 * (self.body.inertia_b() * omega0_b + self.rotor_momentum_b(&spins)),
+        };
+        let mut y = State::zeros();
+        y.fixed_rows_mut::<3>(0).copy_from(&first);
+        y.fixed_rows_mut::<4>(3)
+            .copy_from(&nalgebra::Vector4::new(q0.w, q0.i, q0.j, q0.k));
+        for (k, spin) in spins.iter().enumerate() {
+            y[7 + k] = *spin;
+        }
+        y
+    }
+
+    /// ω_b and H_b held in a state of the form `form`, with `to_body` turning a space vector into body axes.
+    fn omega_and_momentum(
+        &self,
+        form: Form,
+        y: &State,
+        to_body: impl Fn(&Vector3<f64>) -> Vector3<f64>,
+    ) -> (Vector3<f64>, Vector3<f64>) {
+        let first = Vector3::new(y[0], y[1], y[2]);
+        let h_rotors_b = self.rotor_momentum_b(&y.as_slice()[7..]);
+        match form {
+            Form::Body => (first, self.body.inertia_b() * first + h_rotors_b),
+            Form::Space => {
+                let h_b = to_body(&first);
+                (self.body.omega_b_of(&(h_b - h_rotors_b)), h_b)
+            }
+        }
+    }
+
+    /// The row of a state of the form `form` at time t under the external moment `moment`.
+    pub fn sample<M: AppliedMoment>(&self, moment: &M, form: Form, t: f64, y: &State) -> Sample {
+        let q = UnitQuaternion::new_normalize(Quaternion::new(y[3], y[4], y[5], y[6]));
+        let (omega_b, h_b) = self.omega_and_momentum(form, y, |v| q.inverse_transform_vector(v));
+        let m_b = moment.moment_b(t, &q, &omega_b);
+        let (omega_dot_b, _) = self.rates(t, &omega_b, &h_b, &m_b);
+        let mut rows = RotorRows {
+            n: self.rotors.len(),
+            ..RotorRows::default()
+        };
+        let mut energy = 0.5 * omega_b.dot(&(self.body.inertia_b() * omega_b));
+        for (k, r) in self.rotors.iter().enumerate() {
+            let (spin, a_omega) = (y[7 + k], r.axis_b.dot(&omega_b));
+            energy += r.inertia * spin * (a_omega + 0.5 * spin);
+            rows.spin[k] = spin;
+            rows.h[k] = r.inertia * (a_omega + spin);
+            rows.torque[k] = match &r.drive {
+                Drive::Accel(alpha) => r.inertia * (r.axis_b.dot(&omega_dot_b) + alpha),
+                Drive::Torque(tau) => tau.at(t).x,
+            };
+        }
+        let mut sample = super::free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
+        sample.energy = energy;
+        sample.rotors = Some(rows);
+        sample
+    }
+}
+
+/// The state's rates: (ω̇_b or Ḣ_s, q̇, Ω̇_k).
+#[inline(always)]
+fn state_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>, spin_dot: &[f64]) -> State {
+    let dq = super::free::quaternion_rate(&[y[3], y[4], y[5], y[6]], omega_b);
+    let mut dy = State::zeros();
+    dy.fixed_rows_mut::<3>(0).copy_from(&first);
+    dy.fixed_rows_mut::<4>(3)
+        .copy_from(&nalgebra::Vector4::from(dq));
+    dy.as_mut_slice()[7..7 + spin_dot.len()].copy_from_slice(spin_dot);
+    dy
+}
+
+/// Renormalises the quaternion part of a state.
+fn normalise_quaternion(y: &mut State) {
+    let n = (y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6]).sqrt();
+    for k in 3..7 {
+        y[k] /= n;
+    }
+}
+
+/// Euler's equation of the gyrostat in the form `form` (module doc) under the external moment `moment`.
+#[derive(Debug, Clone)]
+pub struct GyrostatForm<'a, M: AppliedMoment> {
+    pub gyrostat: &'a Gyrostat,
+    pub moment: M,
+    pub form: Form,
+}
+
+impl<M: AppliedMoment> OdeSystem<11> for GyrostatForm<'_, M> {
+    fn rhs(&mut self, t: f64, y: &State) -> State {
+        let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
+        let rotation = StateRotation::of(&q_state);
+        let g = self.gyrostat;
+        let (omega_b, h_b) = g.omega_and_momentum(self.form, y, |v| rotation.to_body(v));
+        let m_b = self
+            .moment
+            .moment_b_at_state(t, &q_state, || rotation, &omega_b);
+        let (omega_dot_b, spin_dot) = g.rates(t, &omega_b, &h_b, &m_b);
+        let first = match self.form {
+            Form::Body => omega_dot_b,
+            Form::Space => rotation.to_space(&m_b),
+        };
+        state_rate(first, y, &omega_b, &spin_dot[..g.rotors.len()])
+    }
+
+    fn project(&self, y: &mut State) {
+        normalise_quaternion(y);
+    }
+}
