@@ -2,7 +2,7 @@
 //! where a tiny change of ω₀ or of the inertia decides the motion. `check`, `run`, `sweep` (for its base scene)
 //! and Python print them, and a run's sidecar lists them; nothing is refused.
 
-use crate::scene::{AxisDirection, Motion, MotionSpec, Scene, SceneSpec, ShapeSpec};
+use crate::scene::{AxisDirection, MotionSpec, Scene, SceneSpec, ShapeSpec};
 
 /// A body dimension above this looks like millimetres written as metres (m).
 pub const LARGEST_PLAUSIBLE_SIZE: f64 = 100.0;
@@ -81,14 +81,7 @@ pub fn unit_slips(spec: &SceneSpec) -> Vec<String> {
 /// §37: the polhodes through the intermediate axis). `None` for prescribed motion, a body at rest, or one with two
 /// equal principal moments (to 1e-9).
 pub fn separatrix_distance(scene: &Scene) -> Option<f64> {
-    let Motion::Free {
-        omega0_b,
-        body,
-        gyrostat: None,
-    } = &scene.motion
-    else {
-        return None;
-    };
+    let (omega0_b, body) = scene.motion.rigid_free()?;
     let omega_p = body.principal_axes_b().transpose() * omega0_b;
     let mut pairs: Vec<(f64, f64)> = (0..3)
         .map(|k| (body.principal_moments()[k], omega_p[k]))

@@ -102,6 +102,18 @@ impl Motion {
         }
     }
 
+    /// A free rigid body without rotors: its ω₀ (body axes) and the body about its moment center.
+    pub fn rigid_free(&self) -> Option<(&Vector3<f64>, &FreeBody)> {
+        match self {
+            Motion::Free {
+                omega0_b,
+                body,
+                gyrostat: None,
+            } => Some((omega0_b, body)),
+            _ => None,
+        }
+    }
+
     /// The fixed axis of a fixed-axis or hinge motion (its direction, point, bearings); `None` for free motion.
     pub fn axis(&self) -> Option<&FixedAxis> {
         match self {

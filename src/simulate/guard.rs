@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use crate::effects::EffectMoments;
 use crate::method::Method;
 use crate::sample::Sample;
-use crate::scene::{Motion, Scene};
+use crate::scene::Scene;
 
 /// The quantity a [`DivergenceGuard`] found out of bounds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -139,16 +139,10 @@ const HINT_ADAPTIVE: &str = "use a tighter rtol/atol, or split2/split4, whose |H
 const HINT_EXACT: &str = "the closed form should not do this: please report the scene";
 
 impl DivergenceGuard {
-    /// The guard of a scene's run; `None` for a prescribed motion.
+    /// The guard of a scene's run; `None` for a prescribed motion, or a body with rotors (whose motors may add any
+    /// energy).
     pub fn new(scene: &Scene) -> Option<Self> {
-        let Motion::Free {
-            omega0_b,
-            body,
-            gyrostat: None,
-        } = &scene.motion
-        else {
-            return None;
-        };
+        let (omega0_b, body) = scene.motion.rigid_free()?;
         let (h0_b, e0) = body.momentum_and_energy(omega0_b);
         let h0_s = scene.attitude0 * h0_b;
         let moments = EffectMoments::new(&scene.effects, body.mass());

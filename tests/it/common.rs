@@ -195,3 +195,30 @@ pub fn device_node(dir: &Path, name: &str, minor: &str) -> Option<PathBuf> {
         .is_ok_and(|o| o.status.success());
     made.then_some(path)
 }
+
+/// Runs each case's scene text with `run -o` in a fresh directory and asserts exit 2, a message naming the file
+/// (`scene.toml`) and the key, and nothing written beside the scene. A case is (name, scene text, key).
+pub fn assert_refused_writing_nothing(cases: &[(&str, String, &str)]) {
+    for (name, text, key) in cases {
+        let dir = tempfile::tempdir().unwrap();
+        let scene = write_file(dir.path(), "scene.toml", text);
+        let out_csv = dir.path().join("out.csv");
+        let out = eulerdyn([
+            "run",
+            scene.to_str().unwrap(),
+            "-o",
+            out_csv.to_str().unwrap(),
+        ]);
+        assert_eq!(out.code, Some(2), "{name}: {}", out.stderr);
+        assert!(
+            out.stderr.contains("scene.toml") && out.stderr.contains(key),
+            "{name}: the message names the file and `{key}`: {}",
+            out.stderr
+        );
+        assert_eq!(
+            dir_entries(dir.path()),
+            ["scene.toml"],
+            "{name}: nothing written"
+        );
+    }
+}

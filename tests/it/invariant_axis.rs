@@ -12,7 +12,7 @@
 //!   problem 1, T = 4 √(l/g) K(sin(θ₀/2)) for the simple pendulum, with the compound pendulum's equivalent length
 //!   l = I_A/(m d); and its support force m(a_C − g) at every row (eq. 8.7).
 
-use crate::common::{dir_entries, eulerdyn, write_file};
+use crate::common::{assert_refused_writing_nothing, dir_entries, eulerdyn, write_file};
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::{
     BodySpec, EffectSpec, FixedAxisSpec, HingeSpec, MotionSpec, SceneSpec, ShapeSpec, TorqueSpec,
@@ -463,28 +463,7 @@ fn bad_invariant_axis_input_is_refused_with_the_file_and_key_and_writes_nothing(
             "body.point_mass[0].at",
         ),
     ];
-    for (name, text, key) in cases {
-        let dir = tempfile::tempdir().unwrap();
-        let scene = write_file(dir.path(), "scene.toml", &text);
-        let out_csv = dir.path().join("out.csv");
-        let out = eulerdyn([
-            "run",
-            scene.to_str().unwrap(),
-            "-o",
-            out_csv.to_str().unwrap(),
-        ]);
-        assert_eq!(out.code, Some(2), "{name}: {}", out.stderr);
-        assert!(
-            out.stderr.contains("scene.toml") && out.stderr.contains(key),
-            "{name}: the message names the file and `{key}`: {}",
-            out.stderr
-        );
-        assert_eq!(
-            dir_entries(dir.path()),
-            ["scene.toml"],
-            "{name}: nothing written"
-        );
-    }
+    assert_refused_writing_nothing(&cases);
 }
 
 #[test]

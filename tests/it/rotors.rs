@@ -4,7 +4,7 @@
 //! these in a line, written beside it. Tolerances: dop853 at rtol 1e-12 reaches 1e-11 relative on these smooth,
 //! slow motions; the criterion 1e-9 is asserted.
 
-use crate::common::{dir_entries, eulerdyn, write_file};
+use crate::common::{assert_refused_writing_nothing, eulerdyn, write_file};
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::{BodySpec, EffectSpec, ProfileSpec, RotorDrive, RotorSpec, SceneSpec};
 use eulerdyn::{Form, Method, simulate};
@@ -337,28 +337,7 @@ fn bad_rotors_are_refused_with_the_file_and_key_and_nothing_is_written() {
             "body.rotor",
         ),
     ];
-    for (name, text, key) in cases {
-        let dir = tempfile::tempdir().unwrap();
-        let scene = write_file(dir.path(), "scene.toml", &text);
-        let out_csv = dir.path().join("out.csv");
-        let out = eulerdyn([
-            "run",
-            scene.to_str().unwrap(),
-            "-o",
-            out_csv.to_str().unwrap(),
-        ]);
-        assert_eq!(out.code, Some(2), "{name}: {}", out.stderr);
-        assert!(
-            out.stderr.contains("scene.toml") && out.stderr.contains(key),
-            "{name}: the message names the file and `{key}`: {}",
-            out.stderr
-        );
-        assert_eq!(
-            dir_entries(dir.path()),
-            ["scene.toml"],
-            "{name}: nothing written"
-        );
-    }
+    assert_refused_writing_nothing(&cases);
 }
 
 #[test]
