@@ -30,6 +30,13 @@ pub trait AppliedMoment {
     ) -> Vector3<f64> {
         self.moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
     }
+
+    /// The first time later than `t` at which the moment has a corner (a tabulated moment's row time), where an
+    /// adaptive method ends a step; `None`: no corner ahead.
+    #[inline(always)]
+    fn corner_after(&self, _t: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// No effects: M = 0.
@@ -96,6 +103,14 @@ impl EffectMoments {
                     rho_c_b: -pivot_b,
                 }),
                 Effect::Damping { c } => damping_c += c,
+                Effect::TorqueTable {
+                    frame: Axes::Body,
+                    table,
+                } => torques_b.add_table(table),
+                Effect::TorqueTable {
+                    frame: Axes::Space,
+                    table,
+                } => torques_s.add_table(table),
             }
         }
         Self {
@@ -215,5 +230,17 @@ impl AppliedMoment for EffectMoments {
     ) -> Vector3<f64> {
         let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, rotation));
         self.with_damping(rest_b, omega_b)
+    }
+
+    /// The tables' next row time after `t`, in either axes.
+    #[inline]
+    fn corner_after(&self, t: f64) -> Option<f64> {
+        match (
+            self.torques_b.corner_after(t),
+            self.torques_s.corner_after(t),
+        ) {
+            (Some(b), Some(s)) => Some(b.min(s)),
+            (b, s) => b.or(s),
+        }
     }
 }

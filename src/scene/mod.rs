@@ -17,6 +17,7 @@ pub use spec::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CompareSpec, Distribution, EffectSpec,
     FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec,
     PointMassSpec, ProfileSpec, RateSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
+    TorqueTableSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};
