@@ -226,6 +226,11 @@ fn effect_text(e: &Effect) -> String {
                 frame.name()
             )
         }
+        Effect::User(user) => format!(
+            "user's moment law \"{}\" (a Rust or Python function of t, q, omega) in {} axes",
+            user.name,
+            user.frame.name()
+        ),
     }
 }
 

@@ -4,7 +4,7 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
-use super::{Effect, TorqueSum};
+use super::{Effect, TorqueSum, UserMoment};
 use crate::frames::{Axes, StateRotation};
 
 /// The external moment acting on the body, about the moment center.
@@ -61,6 +61,9 @@ impl AppliedMoment for TorqueFree {
 ///
 /// The effects are compiled once: the body-axis torques into one [`TorqueSum`], the space-axis torques into another
 /// (rotated into the body once per evaluation), so that only space torques and gravity need the attitude.
+///
+/// The user's laws ([`UserMoment`]) are added to M_b after the rest; they may depend on ω, so they are not part of
+/// `rest_moment_b` and a splitting method cannot apply them (a scene with one refuses split2/split4).
 #[derive(Debug, Clone, PartialEq)]
 pub struct EffectMoments {
     effects: Vec<Effect>,
@@ -70,6 +73,7 @@ pub struct EffectMoments {
     gravity: Vec<GravityMoment>,
     pub(crate) needs_attitude: bool,
     damping_c: f64,
+    laws: Vec<UserMoment>,
 }
 
 /// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
@@ -86,6 +90,7 @@ impl EffectMoments {
         let mut torques_s = TorqueSum::default();
         let mut gravity = Vec::new();
         let mut damping_c = 0.0;
+        let mut laws = Vec::new();
         for effect in effects {
             match effect {
                 Effect::Torque {
@@ -111,6 +116,7 @@ impl EffectMoments {
                     frame: Axes::Space,
                     table,
                 } => torques_s.add_table(table),
+                Effect::User(user) => laws.push(user.clone()),
             }
         }
         Self {
@@ -121,6 +127,7 @@ impl EffectMoments {
             torques_s,
             gravity,
             damping_c,
+            laws,
         }
     }
 
@@ -186,6 +193,24 @@ impl EffectMoments {
         self.attitude_moment_b(t, |v_s| rotation.to_body(v_s))
     }
 
+    /// The user's laws' moments summed, body axes. Out of line, as [`Self::attitude_moment_at_state_b`].
+    #[inline(never)]
+    fn laws_moment_b(
+        &self,
+        t: f64,
+        q: &UnitQuaternion<f64>,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        (self.laws.iter()).fold(Vector3::zeros(), |m_b, user| {
+            m_b + user.moment_b(t, q, omega_b)
+        })
+    }
+
+    /// Whether a user's law is among the effects.
+    pub fn has_laws(&self) -> bool {
+        !self.laws.is_empty()
+    }
+
     /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
     #[inline(always)]
     fn with_damping(&self, rest_b: Vector3<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
@@ -212,24 +237,34 @@ impl EffectMoments {
 }
 
 impl AppliedMoment for EffectMoments {
-    /// M_b = M_rest_b(t, q) − c ω_b.
+    /// M_b = M_rest_b(t, q) − c ω_b + Σ the user's laws.
     #[inline]
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
-        self.with_damping(self.rest_moment_b(t, q), omega_b)
+        let m_b = self.with_damping(self.rest_moment_b(t, q), omega_b);
+        if self.laws.is_empty() {
+            m_b
+        } else {
+            m_b + self.laws_moment_b(t, q, omega_b)
+        }
     }
 
-    /// M_b = M_rest_b(t, q) − c ω_b, rotating by q = q_state / |q_state| ([`StateRotation`]) only for space
-    /// torques and gravity.
+    /// M_b = M_rest_b(t, q) − c ω_b + Σ the user's laws, rotating by q = q_state / |q_state| ([`StateRotation`])
+    /// only for space torques and gravity (the laws are given q itself).
     #[inline(always)]
     fn moment_b_at_state(
         &self,
         t: f64,
-        _q_state: &Quaternion<f64>,
+        q_state: &Quaternion<f64>,
         rotation: impl FnOnce() -> StateRotation,
         omega_b: &Vector3<f64>,
     ) -> Vector3<f64> {
         let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, rotation));
-        self.with_damping(rest_b, omega_b)
+        let m_b = self.with_damping(rest_b, omega_b);
+        if self.laws.is_empty() {
+            m_b
+        } else {
+            m_b + self.laws_moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
+        }
     }
 
     /// The tables' next row time after `t`, in either axes.

@@ -6,9 +6,11 @@ use nalgebra::Vector3;
 
 mod compiled;
 mod table;
+mod user;
 
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
 pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
+pub use user::{MomentLaw, UserMoment};
 
 use crate::frames::Axes;
 use crate::trig;
@@ -49,6 +51,9 @@ pub enum Effect {
         frame: Axes,
         table: Arc<TorqueTable>,
     },
+    /// The user's own law ([`MomentLaw`]), named; added to a built scene by
+    /// [`Scene::with_moment`](crate::scene::Scene::with_moment).
+    User(UserMoment),
 }
 
 impl Effect {
@@ -59,18 +64,30 @@ impl Effect {
             Effect::Gravity { .. } => "gravity",
             Effect::Damping { .. } => "damping",
             Effect::TorqueTable { .. } => "torque_table",
+            Effect::User(_) => "user",
+        }
+    }
+
+    /// What `check` and the run's sidecar call the effect: its [`kind`](Self::kind), and for the user's law
+    /// `user:NAME`.
+    pub fn label(&self) -> String {
+        match self {
+            Effect::User(user) => format!("user:{}", user.name),
+            other => other.kind().to_string(),
         }
     }
 
     /// An upper bound of the moment's magnitude over all times and attitudes, on a body of mass `mass` (kg), N·m:
     /// |value| for a torque (every profile factor is at most 1 in magnitude), m |g| |pivot| for gravity (|ρ_C| =
-    /// |pivot|), [`TorqueTable::largest_moment`] for a table; `None` for damping, whose moment −c ω depends on ω and whose power −c|ω|² is never positive.
+    /// |pivot|), [`TorqueTable::largest_moment`] for a table; `None` for damping, whose moment −c ω depends on ω and
+    /// whose power −c|ω|² is never positive, and for the user's law, which has no known bound.
     pub fn largest_moment(&self, mass: f64) -> Option<f64> {
         match self {
             Effect::Torque { value, .. } => Some(value.norm()),
             Effect::Gravity { g_s, pivot_b } => Some(mass * g_s.norm() * pivot_b.norm()),
             Effect::Damping { .. } => None,
             Effect::TorqueTable { table, .. } => Some(table.largest_moment()),
+            Effect::User(_) => None,
         }
     }
 }

@@ -521,6 +521,7 @@ mod tests {
                     Axes::Body => table.at(t),
                     Axes::Space => q.inverse_transform_vector(&table.at(t)),
                 },
+                Effect::User(ref user) => user.moment_b(t, q, omega_b),
             };
         }
         m_b

@@ -8,6 +8,7 @@ mod model;
 pub mod source_map;
 mod spec;
 mod template;
+mod user_moment;
 mod validate;
 
 pub(crate) use file::parse_toml;
