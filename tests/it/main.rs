@@ -26,4 +26,5 @@ mod scene_fuzz;
 mod sidecar;
 mod study;
 mod sweep;
+mod user_moments;
 mod view;
