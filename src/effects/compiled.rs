@@ -73,7 +73,7 @@ pub struct EffectMoments {
     gravity: Vec<GravityMoment>,
     pub(crate) needs_attitude: bool,
     damping_c: f64,
-    laws: Vec<UserMoment>,
+    laws: Box<[UserMoment]>,
 }
 
 /// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
@@ -127,7 +127,7 @@ impl EffectMoments {
             torques_s,
             gravity,
             damping_c,
-            laws,
+            laws: laws.into_boxed_slice(),
         }
     }
 

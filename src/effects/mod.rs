@@ -101,7 +101,8 @@ pub struct TorqueSum {
     constant: Vector3<f64>,
     sines: Vec<SineTorque>,
     steps: Vec<StepTorque>,
-    tables: Vec<Arc<TorqueTable>>,
+    /// A boxed slice, two words: the scene's `Motion` holds a hinge's compiled effects and stays small.
+    tables: Box<[Arc<TorqueTable>]>,
 }
 
 /// value · sin(ω t + φ).
@@ -140,7 +141,9 @@ impl TorqueSum {
 
     /// Adds the tabulated torque `table`.
     pub fn add_table(&mut self, table: &Arc<TorqueTable>) {
-        self.tables.push(Arc::clone(table));
+        let mut tables = std::mem::take(&mut self.tables).into_vec();
+        tables.push(Arc::clone(table));
+        self.tables = tables.into_boxed_slice();
     }
 
     /// Whether the sum is zero at every time: no torque added, or only constant torques summing to zero.
