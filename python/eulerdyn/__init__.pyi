@@ -1,7 +1,7 @@
 """eulerdyn: Euler's equation of rigid-body rotation, M = d/dt(I·ω), for notebooks (see ``__init__.py``)."""
 
 import os
-from typing import Any, Dict, Mapping, Optional, Tuple, Union
+from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Tuple, Union
 
 import pandas as pd
 
@@ -26,6 +26,8 @@ def run(
     dt: Optional[float] = None,
     t_end: Optional[float] = None,
     every: Optional[float] = None,
+    moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
 ) -> pd.DataFrame:
     """Simulate a scene; its rows as a DataFrame with the CSV's columns, bit for bit (``eulerdyn run``)."""
 

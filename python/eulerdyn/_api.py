@@ -15,7 +15,7 @@ import csv
 import io
 import math
 import os
-from typing import Any, Dict, Mapping, Optional, Tuple, Union
+from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import pandas as pd
@@ -55,6 +55,8 @@ def run(
     dt: Optional[float] = None,
     t_end: Optional[float] = None,
     every: Optional[float] = None,
+    moment: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
 ) -> pd.DataFrame:
     """Simulate a scene; its rows as a DataFrame, as ``eulerdyn run SCENE`` writes them as CSV.
 
@@ -72,6 +74,11 @@ def run(
         dt: step of fixed-step methods, s (``--dt``).
         t_end: end time, s (``--t-end``).
         every: time between rows, s (``--every``).
+        moment: your own moment law, acting besides the scene's effects: ``moment(t, q, omega_b)`` with ``q`` the
+            attitude ``(w, x, y, z)`` (body → space) and ``omega_b`` the angular velocity in body axes (tuples of
+            floats) returns 3 numbers, the moment in N·m. Called at every right-hand-side evaluation (a free body,
+            rk4/dopri5/dop853 only); ``check`` and the sidecar name it by its ``__name__``.
+        moment_frame: the axes of ``moment``'s result, ``body`` (default) or ``space``.
 
     Returns:
         The rows, one per output time. ``df.attrs["report"]`` holds what the run did: ``rows``, ``steps``,
@@ -80,7 +87,8 @@ def run(
     Raises:
         SceneError: the scene or an override is not valid (the message names the key, and the keyword argument
             that set it, e.g. ``solver.dt (from dt=)``).
-        RunError: the run failed (diverged, the step size collapsed); ``.t`` is the time it stopped at.
+        RunError: the run failed (diverged, the step size collapsed; ``moment`` raised, or did not return 3 finite
+            numbers: its exception is the ``__cause__``); ``.t`` is the time it stopped at.
         KeyboardInterrupt: Ctrl-C during the run.
     """
     names, data, report = _eulerdyn.run(
@@ -93,6 +101,8 @@ def run(
         dt=dt,
         t_end=t_end,
         every=every,
+        moment=moment,
+        moment_frame=moment_frame,
     )
     values = np.frombuffer(data, dtype=np.float64).reshape(-1, len(names)).copy()
     df = pd.DataFrame(values, columns=list(names))

@@ -1,7 +1,7 @@
 """The extension module (Rust, python/src/): plain Python data; ``eulerdyn`` wraps it in pandas."""
 
 import os
-from typing import Any, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 _Scene = Union[str, "os.PathLike[str]", Dict[str, Any]]
 
@@ -34,6 +34,8 @@ def run(
     dt: Optional[float] = None,
     t_end: Optional[float] = None,
     every: Optional[float] = None,
+    moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
 ) -> Tuple[List[str], bytes, Dict[str, Any]]:
     """Column names, the rows as native float64 bytes (row-major), and the run's report."""
 

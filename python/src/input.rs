@@ -54,6 +54,17 @@ impl SceneInput {
         scene_error(py, e, self.from_dict)
     }
 
+    /// A built scene's refusal (e.g. of a user's moment) as `SceneError` naming this scene and the key.
+    pub fn invalid(&self, py: Python<'_>, inv: scene::InvalidScene) -> PyErr {
+        let e = scene::SceneError {
+            file: self.path.clone(),
+            key: Some(inv.key.to_string()),
+            location: None,
+            problem: inv.problem,
+        };
+        self.error(py, e)
+    }
+
     /// The validated scene with `overrides` (as the command line's flags).
     pub fn scene(&self, py: Python<'_>, overrides: &Overrides) -> PyResult<Scene> {
         scene::parse(&self.path, &self.text, overrides).map_err(|e| self.error(py, e))

@@ -12,6 +12,7 @@ mod commands;
 mod convert;
 mod errors;
 mod input;
+mod moment;
 mod run;
 mod sweep;
 

@@ -6,15 +6,18 @@ use std::fmt;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
+use eulerdyn::frames::Axes;
+use eulerdyn::named::Named;
 use eulerdyn::sample::NonFinite;
 use eulerdyn::scene::Flags;
 use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
-use pyo3::exceptions::PyUserWarning;
+use pyo3::exceptions::{PyTypeError, PyUserWarning, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict};
 
 use crate::errors::{no_panic, run_error};
 use crate::input::SceneInput;
+use crate::moment::{LawFailure, PyLaw, SharedLaw};
 
 /// How often a run looks for Ctrl-C (reacquiring the GIL to run Python's signal handlers).
 const SIGNAL_INTERVAL: Duration = Duration::from_millis(50);
@@ -101,11 +104,13 @@ fn report_dict<'py>(py: Python<'py>, report: &RunReport) -> PyResult<Bound<'py, 
     Ok(d)
 }
 
-/// Simulates a scene (a path or a dict) with the command line's `run` flags. Returns the CSV's column names, the
+/// Simulates a scene (a path or a dict) with the command line's `run` flags, and `moment` (a callable
+/// f(t, q, omega_b) → 3 numbers, N·m in `moment_frame` axes) acting too. Returns the CSV's column names, the
 /// rows as native-endian float64 bytes (row-major), and the run's report (rows, steps, rejected, evals,
-/// wall_seconds). Raises SceneError for bad input, RunError for a failed run, KeyboardInterrupt on Ctrl-C.
+/// wall_seconds). Raises SceneError for bad input, RunError for a failed run (and for an exception in `moment`,
+/// which is its cause), KeyboardInterrupt on Ctrl-C.
 #[pyfunction]
-#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None))]
+#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None, moment=None, moment_frame=None))]
 #[allow(clippy::too_many_arguments)]
 #[allow(clippy::type_complexity)]
 pub fn run<'py>(
@@ -119,6 +124,8 @@ pub fn run<'py>(
     dt: Option<f64>,
     t_end: Option<f64>,
     every: Option<f64>,
+    moment: Option<Bound<'py, PyAny>>,
+    moment_frame: Option<String>,
 ) -> PyResult<(Vec<&'static str>, Bound<'py, PyBytes>, Bound<'py, PyDict>)> {
     let flags = Flags {
         method: method.as_deref(),
@@ -136,6 +143,17 @@ pub fn run<'py>(
             .overrides(&input.path)
             .map_err(|e| input.error(py, e))?;
         let scene_model = input.scene(py, &overrides)?;
+        let (scene_model, law) = match moment {
+            None => (scene_model, None),
+            Some(f) => {
+                let law = PyLaw::new(f.clone().unbind());
+                let name = law_name(&f)?;
+                let axes = moment_axes(moment_frame.as_deref())?;
+                let scene_model = (scene_model.with_moment(&name, axes, SharedLaw(law.clone())))
+                    .map_err(|inv| input.invalid(py, inv))?;
+                (scene_model, Some((law, name)))
+            }
+        };
         for warning in simulate::warnings_before_run(&scene_model) {
             warn(py, format!("{}: {warning}", input.path.display()))?;
         }
@@ -160,6 +178,11 @@ pub fn run<'py>(
             });
             (result, bytes)
         });
+        if let Some((law, name)) = &law {
+            if let Some(failure) = law.failure() {
+                return Err(law_error(py, &input, name, failure));
+            }
+        }
         let report = match result {
             Ok(report) => report,
             Err(RunError::Sink(Stop::Python(e))) => return Err(e),
@@ -178,6 +201,44 @@ pub fn run<'py>(
         }
         Ok((names, PyBytes::new(py, &bytes), report_dict(py, &report)?))
     })
+}
+
+/// What `check` and the sidecar call the callable: its `__name__` (`python` without one).
+fn law_name(f: &Bound<'_, PyAny>) -> PyResult<String> {
+    if !f.is_callable() {
+        return Err(PyTypeError::new_err(format!(
+            "moment: expected a callable f(t, q, omega_b) -> 3 numbers, got {}",
+            f.get_type().name()?
+        )));
+    }
+    Ok(f.getattr("__name__")
+        .and_then(|n| n.extract::<String>())
+        .unwrap_or_else(|_| "python".to_string()))
+}
+
+/// The axes of the callable's moment: `moment_frame`, `body` (default) or `space`.
+fn moment_axes(frame: Option<&str>) -> PyResult<Axes> {
+    Axes::parse(frame.unwrap_or("body"))
+        .map_err(|e| PyValueError::new_err(format!("moment_frame: {e}")))
+}
+
+/// The error of a run stopped by its moment function: Ctrl-C's KeyboardInterrupt as it is; anything else as
+/// `RunError` naming the function, with its exception as the cause.
+fn law_error(py: Python<'_>, input: &SceneInput, name: &str, failure: LawFailure) -> PyErr {
+    if PyLaw::is_interrupt(py, &failure) {
+        return failure.error;
+    }
+    let failed = RunFailed {
+        scene: input.path.clone(),
+        t: Some(failure.t),
+        reason: format!(
+            "the moment function {name}() at t = {}: {}",
+            failure.t, failure.error
+        ),
+    };
+    let err = run_error(py, &failed);
+    err.set_cause(py, Some(failure.error));
+    err
 }
 
 /// Issues a Python `UserWarning` (the command line prints the same text on stderr as `warning: …`).

@@ -214,6 +214,23 @@ fn effect_text(e: &Effect) -> String {
             vec3(pivot_b)
         ),
         Effect::Damping { c } => format!("viscous damping M = -{} N*m*s * omega", plain(*c)),
+        Effect::TorqueTable { frame, table } => {
+            let (t0, t1) = table.time_range();
+            format!(
+                "torque table {} ({} rows, {} <= t <= {} s, {} interpolation, zero outside) in {} axes",
+                table.path().display(),
+                table.rows(),
+                plain(t0),
+                plain(t1),
+                table.interpolation().name(),
+                frame.name()
+            )
+        }
+        Effect::User(user) => format!(
+            "user's moment law \"{}\" (a Rust or Python function of t, q, omega) in {} axes",
+            user.name,
+            user.frame.name()
+        ),
     }
 }
 

@@ -4,7 +4,7 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
-use super::{Effect, TorqueSum};
+use super::{Effect, TorqueSum, UserMoment};
 use crate::frames::{Axes, StateRotation};
 
 /// The external moment acting on the body, about the moment center.
@@ -30,6 +30,13 @@ pub trait AppliedMoment {
     ) -> Vector3<f64> {
         self.moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
     }
+
+    /// The first time later than `t` at which the moment has a corner (a tabulated moment's row time), where an
+    /// adaptive method ends a step; `None`: no corner ahead.
+    #[inline(always)]
+    fn corner_after(&self, _t: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// No effects: M = 0.
@@ -54,6 +61,9 @@ impl AppliedMoment for TorqueFree {
 ///
 /// The effects are compiled once: the body-axis torques into one [`TorqueSum`], the space-axis torques into another
 /// (rotated into the body once per evaluation), so that only space torques and gravity need the attitude.
+///
+/// The user's laws ([`UserMoment`]) are added to M_b after the rest; they may depend on ω, so they are not part of
+/// `rest_moment_b` and a splitting method cannot apply them (a scene with one refuses split2/split4).
 #[derive(Debug, Clone, PartialEq)]
 pub struct EffectMoments {
     effects: Vec<Effect>,
@@ -63,6 +73,7 @@ pub struct EffectMoments {
     gravity: Vec<GravityMoment>,
     pub(crate) needs_attitude: bool,
     damping_c: f64,
+    laws: Box<[UserMoment]>,
 }
 
 /// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
@@ -79,6 +90,7 @@ impl EffectMoments {
         let mut torques_s = TorqueSum::default();
         let mut gravity = Vec::new();
         let mut damping_c = 0.0;
+        let mut laws = Vec::new();
         for effect in effects {
             match effect {
                 Effect::Torque {
@@ -96,6 +108,15 @@ impl EffectMoments {
                     rho_c_b: -pivot_b,
                 }),
                 Effect::Damping { c } => damping_c += c,
+                Effect::TorqueTable {
+                    frame: Axes::Body,
+                    table,
+                } => torques_b.add_table(table),
+                Effect::TorqueTable {
+                    frame: Axes::Space,
+                    table,
+                } => torques_s.add_table(table),
+                Effect::User(user) => laws.push(user.clone()),
             }
         }
         Self {
@@ -106,6 +127,7 @@ impl EffectMoments {
             torques_s,
             gravity,
             damping_c,
+            laws: laws.into_boxed_slice(),
         }
     }
 
@@ -171,6 +193,24 @@ impl EffectMoments {
         self.attitude_moment_b(t, |v_s| rotation.to_body(v_s))
     }
 
+    /// The user's laws' moments summed, body axes. Out of line, as [`Self::attitude_moment_at_state_b`].
+    #[inline(never)]
+    fn laws_moment_b(
+        &self,
+        t: f64,
+        q: &UnitQuaternion<f64>,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        (self.laws.iter()).fold(Vector3::zeros(), |m_b, user| {
+            m_b + user.moment_b(t, q, omega_b)
+        })
+    }
+
+    /// Whether a user's law is among the effects.
+    pub fn has_laws(&self) -> bool {
+        !self.laws.is_empty()
+    }
+
     /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
     #[inline(always)]
     fn with_damping(&self, rest_b: Vector3<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
@@ -197,23 +237,45 @@ impl EffectMoments {
 }
 
 impl AppliedMoment for EffectMoments {
-    /// M_b = M_rest_b(t, q) − c ω_b.
+    /// M_b = M_rest_b(t, q) − c ω_b + Σ the user's laws.
     #[inline]
     fn moment_b(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
-        self.with_damping(self.rest_moment_b(t, q), omega_b)
+        let m_b = self.with_damping(self.rest_moment_b(t, q), omega_b);
+        if self.laws.is_empty() {
+            m_b
+        } else {
+            m_b + self.laws_moment_b(t, q, omega_b)
+        }
     }
 
-    /// M_b = M_rest_b(t, q) − c ω_b, rotating by q = q_state / |q_state| ([`StateRotation`]) only for space
-    /// torques and gravity.
+    /// M_b = M_rest_b(t, q) − c ω_b + Σ the user's laws, rotating by q = q_state / |q_state| ([`StateRotation`])
+    /// only for space torques and gravity (the laws are given q itself).
     #[inline(always)]
     fn moment_b_at_state(
         &self,
         t: f64,
-        _q_state: &Quaternion<f64>,
+        q_state: &Quaternion<f64>,
         rotation: impl FnOnce() -> StateRotation,
         omega_b: &Vector3<f64>,
     ) -> Vector3<f64> {
         let rest_b = self.rest_moment_b_with(t, || self.attitude_moment_at_state_b(t, rotation));
-        self.with_damping(rest_b, omega_b)
+        let m_b = self.with_damping(rest_b, omega_b);
+        if self.laws.is_empty() {
+            m_b
+        } else {
+            m_b + self.laws_moment_b(t, &UnitQuaternion::new_normalize(*q_state), omega_b)
+        }
+    }
+
+    /// The tables' next row time after `t`, in either axes.
+    #[inline]
+    fn corner_after(&self, t: f64) -> Option<f64> {
+        match (
+            self.torques_b.corner_after(t),
+            self.torques_s.corner_after(t),
+        ) {
+            (Some(b), Some(s)) => Some(b.min(s)),
+            (b, s) => b.or(s),
+        }
     }
 }

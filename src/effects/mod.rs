@@ -1,10 +1,16 @@
 //! The effects a scene may call for. Only the effects a scene lists are simulated; none means torque-free.
 
+use std::sync::Arc;
+
 use nalgebra::Vector3;
 
 mod compiled;
+mod table;
+mod user;
 
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
+pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
+pub use user::{MomentLaw, UserMoment};
 
 use crate::frames::Axes;
 use crate::trig;
@@ -24,7 +30,7 @@ pub enum TorqueProfile {
 }
 
 /// One effect of the scene's `[[effect]]` list, validated.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Effect {
     /// An applied torque (N·m), given in body or space axes, with a time profile.
     Torque {
@@ -40,6 +46,14 @@ pub enum Effect {
     },
     /// Viscous damping M = −c ω (N·m·s).
     Damping { c: f64 },
+    /// A tabulated moment (N·m) in body or space axes, read from its file when the scene was validated.
+    TorqueTable {
+        frame: Axes,
+        table: Arc<TorqueTable>,
+    },
+    /// The user's own law ([`MomentLaw`]), named; added to a built scene by
+    /// [`Scene::with_moment`](crate::scene::Scene::with_moment).
+    User(UserMoment),
 }
 
 impl Effect {
@@ -49,17 +63,31 @@ impl Effect {
             Effect::Torque { .. } => "torque",
             Effect::Gravity { .. } => "gravity",
             Effect::Damping { .. } => "damping",
+            Effect::TorqueTable { .. } => "torque_table",
+            Effect::User(_) => "user",
+        }
+    }
+
+    /// What `check` and the run's sidecar call the effect: its [`kind`](Self::kind), and for the user's law
+    /// `user:NAME`.
+    pub fn label(&self) -> String {
+        match self {
+            Effect::User(user) => format!("user:{}", user.name),
+            other => other.kind().to_string(),
         }
     }
 
     /// An upper bound of the moment's magnitude over all times and attitudes, on a body of mass `mass` (kg), N·m:
     /// |value| for a torque (every profile factor is at most 1 in magnitude), m |g| |pivot| for gravity (|ρ_C| =
-    /// |pivot|); `None` for damping, whose moment −c ω depends on ω and whose power −c|ω|² is never positive.
+    /// |pivot|), [`TorqueTable::largest_moment`] for a table; `None` for damping, whose moment −c ω depends on ω and
+    /// whose power −c|ω|² is never positive, and for the user's law, which has no known bound.
     pub fn largest_moment(&self, mass: f64) -> Option<f64> {
         match self {
             Effect::Torque { value, .. } => Some(value.norm()),
             Effect::Gravity { g_s, pivot_b } => Some(mass * g_s.norm() * pivot_b.norm()),
             Effect::Damping { .. } => None,
+            Effect::TorqueTable { table, .. } => Some(table.largest_moment()),
+            Effect::User(_) => None,
         }
     }
 }
@@ -67,12 +95,14 @@ impl Effect {
 /// The torques of one frame summed, compiled once so that every evaluation does only the time-dependent
 /// arithmetic: M(t) = Σ value_k · f_k(t) with the profiles of [`TorqueProfile`]. The constant torques are summed
 /// into one vector, each sine keeps its angular frequency ω = 2π f (computed once, rounded as 2π·f·t would round
-/// it), each step keeps its interval.
+/// it), each step keeps its interval, each table is interpolated ([`TorqueTable::at`]).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct TorqueSum {
     constant: Vector3<f64>,
     sines: Vec<SineTorque>,
     steps: Vec<StepTorque>,
+    /// A boxed slice, two words: the scene's `Motion` holds a hinge's compiled effects and stays small.
+    tables: Box<[Arc<TorqueTable>]>,
 }
 
 /// value · sin(ω t + φ).
@@ -109,9 +139,26 @@ impl TorqueSum {
         }
     }
 
+    /// Adds the tabulated torque `table`.
+    pub fn add_table(&mut self, table: &Arc<TorqueTable>) {
+        let mut tables = std::mem::take(&mut self.tables).into_vec();
+        tables.push(Arc::clone(table));
+        self.tables = tables.into_boxed_slice();
+    }
+
     /// Whether the sum is zero at every time: no torque added, or only constant torques summing to zero.
     pub fn is_zero(&self) -> bool {
-        self.constant == Vector3::zeros() && self.sines.is_empty() && self.steps.is_empty()
+        self.constant == Vector3::zeros()
+            && self.sines.is_empty()
+            && self.steps.is_empty()
+            && self.tables.is_empty()
+    }
+
+    /// The first corner of a table's moment later than `t` (s), where an adaptive method should end a step.
+    pub fn corner_after(&self, t: f64) -> Option<f64> {
+        (self.tables.iter())
+            .filter_map(|table| table.corner_after(t))
+            .min_by(f64::total_cmp)
     }
 
     /// M(t) = Σ value_k · f_k(t). Always inlined: a call at every Runge–Kutta stage would spill the state.
@@ -125,6 +172,9 @@ impl TorqueSum {
             if step.t_on <= t && t < step.t_off {
                 m += step.value;
             }
+        }
+        for table in &self.tables {
+            m += table.at(t);
         }
         m
     }

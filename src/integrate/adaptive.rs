@@ -240,7 +240,8 @@ fn too_small(h: f64, t: f64) -> bool {
 /// Adaptive driver for the pair `P`.
 ///
 /// Per step: if 1.01·h_prop ≥ (next row − t) the step is cut (or stretched by ≤ 1%, as in
-/// Hairer's codes) to land exactly on the row; the trial is accepted iff err ≤ 1 and the
+/// Hairer's codes) to land exactly on the row (likewise on a breakpoint of f before the row,
+/// [`OdeSystem::next_breakpoint`]); the trial is accepted iff err ≤ 1 and the
 /// projected state and its derivative are finite; otherwise h shrinks (a rejection). The FSAL
 /// derivative is reused unless `project` changed the state. Errors: `TooManySteps` when
 /// accepted + rejected reaches `max_steps`, `StepSizeTooSmall` when h_prop ≤ 16·ε·|t|,
@@ -286,9 +287,14 @@ where
             if too_small(h_prop, t) {
                 return Err(IntegrateError::StepSizeTooSmall { t, h: h_prop });
             }
-            let remaining = t_row - t;
+            // A step ends on the row, or on an earlier breakpoint of f (not reported).
+            let t_stop = match sys.next_breakpoint(t) {
+                Some(b) if b < t_row => b,
+                _ => t_row,
+            };
+            let remaining = t_stop - t;
             let (h, t_new) = if 1.01 * h_prop >= remaining {
-                (remaining, t_row)
+                (remaining, t_stop)
             } else {
                 (h_prop, t + h_prop)
             };

@@ -90,6 +90,12 @@ pub trait OdeSystem<const N: usize> {
     /// derivative is re-evaluated at the projected state, costing one extra evaluation.)
     /// With the ode_solvers backend it runs once per row interval.
     fn project(&self, _y: &mut SVector<f64, N>) {}
+
+    /// The first time later than `t` at which f is not smooth in t (a corner of a tabulated input): the adaptive
+    /// drivers of the own backend end a step there, as on a row, so that no step straddles it. Default: none.
+    fn next_breakpoint(&self, _t: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// Integrator settings.

@@ -242,6 +242,10 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
     fn project(&self, y: &mut State) {
         normalise_quaternion(y);
     }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        self.moment.corner_after(t)
+    }
 }
 
 /// Space form, state (H_s, q): Ḣ_s = M_s (eq. 8.9 in axes fixed in space), with
@@ -275,6 +279,10 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
 
     fn project(&self, y: &mut State) {
         normalise_quaternion(y);
+    }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        self.moment.corner_after(t)
     }
 }
 
@@ -510,6 +518,11 @@ mod tests {
                     (-pivot_b).cross(&(q.inverse_transform_vector(&g_s) * mass))
                 }
                 Effect::Damping { c } => -omega_b * c,
+                Effect::TorqueTable { frame, ref table } => match frame {
+                    Axes::Body => table.at(t),
+                    Axes::Space => q.inverse_transform_vector(&table.at(t)),
+                },
+                Effect::User(ref user) => user.moment_b(t, q, omega_b),
             };
         }
         m_b

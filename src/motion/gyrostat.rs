@@ -261,4 +261,8 @@ impl<M: AppliedMoment> OdeSystem<11> for GyrostatForm<'_, M> {
     fn project(&self, y: &mut State) {
         normalise_quaternion(y);
     }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        self.moment.corner_after(t)
+    }
 }

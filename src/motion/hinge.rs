@@ -117,6 +117,10 @@ impl OdeSystem<2> for HingeBodyForm<'_> {
         let m_eff_b = hinge.effect_moment_b(t, &q, y[1]);
         HingeState::new(y[1], hinge.axis.axis_b().dot(&m_eff_b) / hinge.i_uu)
     }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        self.0.moments.corner_after(t)
+    }
 }
 
 /// The hinge's equation in space axes: L' = u_s·M_eff,s(t, θ, θ̇), θ' = L / I_uu.
@@ -129,5 +133,9 @@ impl OdeSystem<2> for HingeSpaceForm<'_> {
         let q = hinge.axis.attitude(y[0]);
         let m_eff_s = q * hinge.effect_moment_b(t, &q, theta_dot);
         HingeState::new(theta_dot, hinge.axis.axis_s().dot(&m_eff_s))
+    }
+
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        self.0.moments.corner_after(t)
     }
 }

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
+use crate::effects::Effect;
 use crate::sample::Column;
 use crate::scene::{MotionKind, Scene, SceneSpec};
 use crate::simulate::{self, RunReport};
@@ -42,7 +43,7 @@ pub struct SidecarScene {
     pub description: String,
     /// `free`, `fixed_axis` or `hinge`.
     pub motion: MotionKind,
-    /// The effects' types, in order.
+    /// The effects' types, in order (a user's law as `user:NAME`, [`Effect::label`]).
     pub effects: Vec<String>,
     /// The scene file's text as written (absent for a scene built in code).
     pub text: Option<String>,
@@ -99,7 +100,7 @@ impl Sidecar {
                 name: scene.name.clone(),
                 description: scene.description.clone(),
                 motion: scene.motion.kind(),
-                effects: scene.effects.iter().map(|e| e.kind().to_string()).collect(),
+                effects: scene.effects.iter().map(Effect::label).collect(),
                 text: source.map(|s| s.text.clone()),
                 spec: scene.spec.clone(),
             },

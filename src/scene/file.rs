@@ -99,7 +99,8 @@ pub fn parse(path: &Path, text: &str, overrides: &Overrides) -> Result<Scene, Sc
     Ok(scene)
 }
 
-/// Parses scene text into its typed value; errors name the key, line and column.
+/// Parses scene text into its typed value; errors name the key, line and column. A torque table's relative `file`
+/// becomes relative to the scene file's directory.
 pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
     if text.trim().is_empty() {
         return Err(SceneError {
@@ -112,7 +113,9 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
         });
     }
     let file: SceneFile = parse_toml(path, text)?;
-    file.into_spec().map_err(|inv| located(path, text, inv))
+    let spec = file.into_spec().map_err(|inv| located(path, text, inv))?;
+    // A table's file is relative to the scene file.
+    Ok(spec.with_files_in(path.parent().unwrap_or(Path::new(""))))
 }
 
 /// A scene that is not valid as an error of the file `path` with text `text`: its key's line and column.

@@ -8,6 +8,7 @@ mod model;
 pub mod source_map;
 mod spec;
 mod template;
+mod user_moment;
 mod validate;
 
 pub(crate) use file::parse_toml;
@@ -17,7 +18,7 @@ pub use spec::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CompareSpec, Distribution, EffectSpec,
     FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec,
     PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec,
-    TorqueSpec,
+    TorqueSpec, TorqueTableSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -5,7 +5,7 @@ use std::fmt;
 
 use nalgebra::Vector3;
 
-use crate::effects::EffectMoments;
+use crate::effects::{Effect, EffectMoments};
 use crate::method::Method;
 use crate::sample::Sample;
 use crate::scene::Scene;
@@ -139,10 +139,13 @@ const HINT_ADAPTIVE: &str = "use a tighter rtol/atol, or split2/split4, whose |H
 const HINT_EXACT: &str = "the closed form should not do this: please report the scene";
 
 impl DivergenceGuard {
-    /// The guard of a scene's run; `None` for a prescribed motion, or a body with rotors (whose motors may add any
-    /// energy).
+    /// The guard of a scene's run; `None` for a prescribed motion, a body with rotors (whose motors may add any
+    /// energy), and a run with a user's moment law, whose work has no known bound.
     pub fn new(scene: &Scene) -> Option<Self> {
         let (omega0_b, body) = scene.motion.rigid_free()?;
+        if scene.effects.iter().any(|e| matches!(e, Effect::User(_))) {
+            return None;
+        }
         let (h0_b, e0) = body.momentum_and_energy(omega0_b);
         let h0_s = scene.attitude0 * h0_b;
         let moments = EffectMoments::new(&scene.effects, body.mass());

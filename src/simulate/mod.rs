@@ -217,6 +217,15 @@ pub fn run<E: std::error::Error + 'static>(
                 run_free(scene, body, omega0_b, TorqueFree, deliver)
             } else {
                 let moments = EffectMoments::new(&scene.effects, scene.body.mass());
+                if moments.has_laws() && !scene.solver.method.is_runge_kutta() {
+                    // `Scene::with_moment` refuses this; a scene changed by hand afterwards still gets a clear error.
+                    return Err(RunError::Integrate(IntegrateError::InvalidSettings {
+                        reason: format!(
+                            "method \"{}\" cannot apply a user's moment law: use rk4, dopri5 or dop853",
+                            scene.solver.method.name()
+                        ),
+                    }));
+                }
                 run_free(scene, body, omega0_b, moments, deliver)
             }
         }

@@ -27,4 +27,5 @@ mod scene_fuzz;
 mod sidecar;
 mod study;
 mod sweep;
+mod user_moments;
 mod view;

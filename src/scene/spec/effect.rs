@@ -1,10 +1,12 @@
-//! `[[effect]]`: an applied torque with its time profile, uniform gravity, viscous damping.
+//! `[[effect]]`: an applied torque with its time profile, uniform gravity, viscous damping, a tabulated torque.
 
-use crate::effects::DEFAULT_GRAVITY;
+use std::path::{Path, PathBuf};
+
+use crate::effects::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
 
 /// One `[[effect]]`, by its `type`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum EffectSpec {
     /// `type = "torque"`.
     Torque(TorqueSpec),
@@ -21,6 +23,57 @@ pub enum EffectSpec {
         /// `c`: N·m·s, ≥ 0.
         c: f64,
     },
+    /// `type = "torque_table"`: a moment tabulated in a CSV file.
+    TorqueTable(TorqueTableSpec),
+}
+
+/// `type = "torque_table"`: the rows (t, M_x, M_y, M_z) of `file`, interpolated, zero outside the table's range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TorqueTableSpec {
+    /// `file`: the CSV (header `t,M_x,M_y,M_z`). A scene file's reader joins a relative path to the scene file's
+    /// directory; a scene built in code reads it relative to the current directory.
+    pub file: PathBuf,
+    /// `frame`: the axes of the moment (absent: body).
+    pub frame: Axes,
+    /// `interpolation` (absent: linear).
+    pub interpolation: Interpolation,
+}
+
+impl TorqueTableSpec {
+    /// The table `file`, body axes, interpolated linearly.
+    ///
+    /// ```
+    /// use eulerdyn::effects::Interpolation;
+    /// use eulerdyn::frames::Axes;
+    /// use eulerdyn::scene::TorqueTableSpec;
+    /// let table = TorqueTableSpec::new("thruster.csv").in_axes(Axes::Space).cubic();
+    /// assert_eq!((table.frame, table.interpolation), (Axes::Space, Interpolation::Cubic));
+    /// ```
+    pub fn new(file: impl AsRef<Path>) -> Self {
+        Self {
+            file: file.as_ref().to_path_buf(),
+            frame: Axes::Body,
+            interpolation: Interpolation::Linear,
+        }
+    }
+
+    /// This table's moment given in `axes`.
+    pub fn in_axes(mut self, axes: Axes) -> Self {
+        self.frame = axes;
+        self
+    }
+
+    /// This table interpolated by the natural cubic spline.
+    pub fn cubic(mut self) -> Self {
+        self.interpolation = Interpolation::Cubic;
+        self
+    }
+}
+
+impl From<TorqueTableSpec> for EffectSpec {
+    fn from(table: TorqueTableSpec) -> Self {
+        EffectSpec::TorqueTable(table)
+    }
 }
 
 /// `type = "torque"`: `value` in `frame` axes times its time profile.
@@ -106,12 +159,13 @@ impl EffectSpec {
         EffectSpec::Damping { c }
     }
 
-    /// The effect's `type` in a scene file: `torque`, `gravity` or `damping`.
+    /// The effect's `type` in a scene file: `torque`, `gravity`, `damping` or `torque_table`.
     pub fn kind(&self) -> &'static str {
         match self {
             EffectSpec::Torque(_) => "torque",
             EffectSpec::Gravity { .. } => "gravity",
             EffectSpec::Damping { .. } => "damping",
+            EffectSpec::TorqueTable(_) => "torque_table",
         }
     }
 }

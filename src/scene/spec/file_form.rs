@@ -7,6 +7,7 @@ use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize};
 
 use super::{CompareSpec, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
+use crate::effects::Interpolation;
 use crate::frames::Axes;
 
 /// A whole scene, as a scene file writes it.
@@ -254,6 +255,7 @@ pub(super) enum EffectKind {
     Torque,
     Gravity,
     Damping,
+    TorqueTable,
 }
 
 /// The `profile` of a torque.
@@ -266,7 +268,7 @@ pub(super) enum ProfileKind {
 }
 
 /// One `[[effect]]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct EffectFile {
     /// `type`.
@@ -314,6 +316,12 @@ pub(super) struct EffectFile {
     /// N·m·s (damping).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) c: Option<f64>,
+    /// The CSV file of a torque table, relative to the scene file.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) file: Option<std::path::PathBuf>,
+    /// A torque table's interpolation (default linear).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) interpolation: Option<Interpolation>,
 }
 
 /// An array of exactly `N` numbers. (serde's `[f64; N]` ignores extra elements when TOML drives it, so

@@ -10,7 +10,7 @@ use super::file_form::{
 use super::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, Distribution, EffectSpec, FixedAxisSpec,
     HingeSpec, InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec,
-    RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
+    RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -297,7 +297,7 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
     let Some(kind) = doc.kind else {
         return invalid(
             key("type"),
-            "missing: an effect needs `type` = \"torque\", \"gravity\" or \"damping\"",
+            "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\"",
         );
     };
     let (name, takes): (&str, &[&str]) = match kind {
@@ -315,6 +315,7 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
         ),
         EffectKind::Gravity => ("gravity", &["g", "pivot"]),
         EffectKind::Damping => ("damping", &["c"]),
+        EffectKind::TorqueTable => ("torque_table", &["file", "frame", "interpolation"]),
     };
     let kind_text = format!("effect type = \"{name}\"");
     let given = [
@@ -328,6 +329,8 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
         ("g", doc.g.is_some()),
         ("pivot", doc.pivot.is_some()),
         ("c", doc.c.is_some()),
+        ("file", doc.file.is_some()),
+        ("interpolation", doc.interpolation.is_some()),
     ];
     only_keys(&table, &kind_text, takes, &given)?;
     Ok(match kind {
@@ -352,6 +355,11 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
         EffectKind::Damping => EffectSpec::Damping {
             c: required(key("c"), doc.c, &kind_text)?,
         },
+        EffectKind::TorqueTable => EffectSpec::TorqueTable(TorqueTableSpec {
+            file: required(key("file"), doc.file.clone(), &kind_text)?,
+            frame: doc.frame.unwrap_or(Axes::Body),
+            interpolation: doc.interpolation.unwrap_or_default(),
+        }),
     })
 }
 
@@ -587,7 +595,7 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
 }
 
 fn effect_file(effect: &EffectSpec) -> EffectFile {
-    match *effect {
+    match effect {
         EffectSpec::Torque(torque) => {
             let (profile, freq_hz, phase_deg, t_on, t_off) = profile_keys(&torque.profile);
             EffectFile {
@@ -604,13 +612,20 @@ fn effect_file(effect: &EffectSpec) -> EffectFile {
         }
         EffectSpec::Gravity { g, pivot } => EffectFile {
             kind: Some(EffectKind::Gravity),
-            g: Some(g),
-            pivot,
+            g: Some(*g),
+            pivot: *pivot,
             ..EffectFile::default()
         },
         EffectSpec::Damping { c } => EffectFile {
             kind: Some(EffectKind::Damping),
-            c: Some(c),
+            c: Some(*c),
+            ..EffectFile::default()
+        },
+        EffectSpec::TorqueTable(table) => EffectFile {
+            kind: Some(EffectKind::TorqueTable),
+            file: Some(table.file.clone()),
+            frame: Some(table.frame),
+            interpolation: Some(table.interpolation),
             ..EffectFile::default()
         },
     }
@@ -649,12 +664,16 @@ mod tests {
         let effects: Vec<EffectSpec> = (torques.into_iter().map(EffectSpec::from))
             .chain([EffectSpec::gravity([0.0, 0.0, -9.81], [0.0, 0.0, -0.1])])
             .chain([EffectSpec::standard_weight(), EffectSpec::damping(0.1)])
+            .chain([TorqueTableSpec::new("t.csv")
+                .in_axes(Axes::Space)
+                .cubic()
+                .into()])
             .collect();
         for (i, shape) in shapes.into_iter().enumerate() {
             let body = BodySpec::shape(1.0, shape).with_point_mass(0.1, [0.1, 0.0, 0.0]);
             let mut spec = SceneSpec::new(body, 1.0, 0.1)
-                .with_effect(effects[i % effects.len()])
-                .with_effect(effects[(i + 3) % effects.len()]);
+                .with_effect(effects[i % effects.len()].clone())
+                .with_effect(effects[(i + 3) % effects.len()].clone());
             spec.motion = Some(motions[i % motions.len()]);
             spec.initial = Some(InitialSpec {
                 omega: Some([0.1, 0.2, 0.3]),

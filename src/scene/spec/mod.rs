@@ -20,7 +20,7 @@ use crate::method::{Backend, Method};
 pub use body::{
     BodySpec, Distribution, InertiaSpec, PointMassSpec, RotorDrive, RotorSpec, ShapeSpec,
 };
-pub use effect::{EffectSpec, ProfileSpec, TorqueSpec};
+pub use effect::{EffectSpec, ProfileSpec, TorqueSpec, TorqueTableSpec};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
     AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionKind, MotionSpec, RateSpec,
@@ -179,7 +179,7 @@ impl SceneSpec {
         self
     }
 
-    /// With one more `[[effect]]`: a [`TorqueSpec`] or an [`EffectSpec`].
+    /// With one more `[[effect]]`: a [`TorqueSpec`], a [`TorqueTableSpec`] or an [`EffectSpec`].
     pub fn with_effect(mut self, effect: impl Into<EffectSpec>) -> Self {
         self.effect.push(effect.into());
         self
@@ -207,6 +207,16 @@ impl SceneSpec {
     /// With `solver.dt` (s).
     pub fn with_dt(mut self, dt: f64) -> Self {
         self.solver.dt = Some(dt);
+        self
+    }
+
+    /// The scene with each torque table's relative `file` taken relative to `dir` (a scene file's directory).
+    pub(in crate::scene) fn with_files_in(mut self, dir: &std::path::Path) -> Self {
+        for effect in &mut self.effect {
+            if let EffectSpec::TorqueTable(table) = effect {
+                table.file = dir.join(&table.file);
+            }
+        }
         self
     }
 }

@@ -1,9 +1,11 @@
-//! `[[effect]]`: torques (with their time profiles), gravity about a pivot, viscous damping.
+//! `[[effect]]`: torques (with their time profiles), gravity about a pivot, viscous damping, tabulated torques.
+
+use std::sync::Arc;
 
 use super::super::spec::{EffectSpec, MotionSpec, ProfileSpec, SceneSpec, TorqueSpec};
 use super::{Checked, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
-use crate::effects::{Effect, TorqueProfile};
+use crate::effects::{Effect, TorqueProfile, TorqueTable};
 use nalgebra::Vector3;
 
 /// Every `[[effect]]`, in order; a fixed-axis motion takes gravity only, and at most one gravity (its pivot is the
@@ -60,6 +62,7 @@ fn effect_moments_in_range(effects: &[Effect], mass: f64) -> Checked<()> {
         };
         let name = match effect {
             Effect::Gravity { .. } => "g",
+            Effect::TorqueTable { .. } => "file",
             _ => "value",
         };
         sum += largest;
@@ -93,6 +96,14 @@ fn validate_effect(
     let key = |name: &str| table.clone().key(name);
     Ok(match *doc {
         EffectSpec::Torque(torque) => validate_torque(&table, &torque)?,
+        // The table is read here, once: its errors name the file and the row.
+        EffectSpec::TorqueTable(ref spec) => Effect::TorqueTable {
+            frame: spec.frame,
+            table: Arc::new(
+                TorqueTable::read(&spec.file, spec.interpolation)
+                    .or_else(|problem| invalid(key("file"), problem))?,
+            ),
+        },
         EffectSpec::Gravity { g, pivot } => Effect::Gravity {
             g_s: vector(key("g"), g, "m/s^2")?,
             pivot_b: match (axis_point, pivot) {
