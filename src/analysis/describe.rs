@@ -14,6 +14,7 @@ use crate::frames::Form;
 use crate::method::Method;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
+use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::motion::hinge::Hinge;
 use crate::sample::{BASE_COLUMNS, Sample};
 use crate::scene::{Motion, Scene};
@@ -86,6 +87,38 @@ impl Description {
 /// Appends `text` under `label` (a blank label continues the previous item).
 fn line(out: &mut Description, label: &str, text: &str) {
     out.lines.push((label.to_string(), text.to_string()));
+}
+
+/// The rotors: each wheel's axis, J, initial relative spin and drive; the body's inertia is with them locked.
+fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
+    line(
+        w,
+        "rotors",
+        &format!(
+            "{} wheel(s) inside the body; the inertia above is the body with them locked, H = I omega + sum J Omega a",
+            gyrostat.rotors().len()
+        ),
+    );
+    for r in gyrostat.rotors() {
+        let drive = match &r.drive {
+            Drive::Accel(alpha) if *alpha == 0.0 => "constant relative spin".to_string(),
+            Drive::Accel(alpha) => format!("spin prescribed, d(Omega)/dt = {alpha} rad/s^2"),
+            Drive::Torque(_) => {
+                "driven by its motor torque (the body feels the opposite)".to_string()
+            }
+        };
+        line(
+            w,
+            "",
+            &format!(
+                "{}: axis {} (body axes), J = {} kg*m^2, Omega(0) = {} rad/s relative, {drive}",
+                r.name,
+                vec3(&r.axis_b.into_inner()),
+                r.inertia,
+                r.spin0
+            ),
+        );
+    }
 }
 
 /// The angle (degrees) between `axis` and the nearest principal direction of `principal`, and the number (1-based)
@@ -246,8 +279,8 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
         Motion::Free {
             omega0_b,
             body: free,
-            ..
-        } => free_motion_lines(w, scene, omega0_b, free),
+            gyrostat,
+        } => free_motion_lines(w, scene, omega0_b, free, gyrostat.as_deref()),
         Motion::FixedAxis(motion) => fixed_axis_lines(w, scene, motion),
         Motion::Hinge(hinge) => hinge_lines(w, hinge),
     }
@@ -289,7 +322,13 @@ fn body_lines(w: &mut Description, scene: &Scene) {
 }
 
 /// Free motion: its moment center (C, or the pivot of a gravity effect) and the state at t = 0.
-fn free_motion_lines(w: &mut Description, scene: &Scene, omega0_b: &Vector3<f64>, free: &FreeBody) {
+fn free_motion_lines(
+    w: &mut Description,
+    scene: &Scene,
+    omega0_b: &Vector3<f64>,
+    free: &FreeBody,
+    gyrostat: Option<&Gyrostat>,
+) {
     let pivot = scene.effects.iter().find_map(|e| match e {
         Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
         _ => None,
@@ -325,7 +364,11 @@ fn free_motion_lines(w: &mut Description, scene: &Scene, omega0_b: &Vector3<f64>
             "C, the mass center: H and M are about it",
         ),
     }
-    let h_b = free.inertia_b() * omega0_b;
+    if let Some(g) = gyrostat {
+        rotor_lines(w, g);
+    }
+    let h_rotors_b = gyrostat.map_or(Vector3::zeros(), |g| g.initial_rotor_momentum_b());
+    let h_b = free.inertia_b() * omega0_b + h_rotors_b;
     let h_s = scene.attitude0 * h_b;
     line(
         w,
@@ -345,7 +388,13 @@ fn free_motion_lines(w: &mut Description, scene: &Scene, omega0_b: &Vector3<f64>
     line(
         w,
         "",
-        &format!("kinetic energy {:.6e} J", 0.5 * omega0_b.dot(&h_b)),
+        &format!(
+            "kinetic energy {:.6e} J",
+            gyrostat.map_or(0.5 * omega0_b.dot(&h_b), |g| {
+                let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
+                g.kinetic_energy(omega0_b, &spins)
+            })
+        ),
     );
 }
 

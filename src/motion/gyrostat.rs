@@ -111,6 +111,21 @@ impl Gyrostat {
         (self.rotors.iter()).all(|r| matches!(&r.drive, Drive::Torque(tau) if tau.is_zero()))
     }
 
+    /// Σ J_k Ω_k(0) a_k, body axes: the rotors' share of H at t = 0.
+    pub fn initial_rotor_momentum_b(&self) -> Vector3<f64> {
+        let spins: Vec<f64> = self.rotors.iter().map(|r| r.spin0).collect();
+        self.rotor_momentum_b(&spins)
+    }
+
+    /// The kinetic energy at ω_b with the wheels' relative spins `spins`: T = ½ ωᵀ I ω + Σ (J_k Ω_k (a_k·ω) +
+    /// ½ J_k Ω_k²).
+    pub fn kinetic_energy(&self, omega_b: &Vector3<f64>, spins: &[f64]) -> f64 {
+        (self.rotors.iter().zip(spins)).fold(
+            0.5 * omega_b.dot(&(self.body.inertia_b() * omega_b)),
+            |t, (r, &spin)| t + r.inertia * spin * (r.axis_b.dot(omega_b) + 0.5 * spin),
+        )
+    }
+
     /// Σ J_k Ω_k a_k, body axes.
     fn rotor_momentum_b(&self, spins: &[f64]) -> Vector3<f64> {
         (self.rotors.iter().zip(spins)).fold(Vector3::zeros(), |h, (r, &spin)| {
@@ -152,17 +167,18 @@ impl Gyrostat {
         omega0_b: &Vector3<f64>,
         q0: &UnitQuaternion<f64>,
     ) -> State {
-        let spins: Vec<f64> = self.rotors.iter().map(|r| r.spin0).collect();
         let first = match form {
             Form::Body => *omega0_b,
-            Form::Space => q0 * (self.body.inertia_b() * omega0_b + self.rotor_momentum_b(&spins)),
+            Form::Space => {
+                q0 * (self.body.inertia_b() * omega0_b + self.initial_rotor_momentum_b())
+            }
         };
         let mut y = State::zeros();
         y.fixed_rows_mut::<3>(0).copy_from(&first);
         y.fixed_rows_mut::<4>(3)
             .copy_from(&nalgebra::Vector4::new(q0.w, q0.i, q0.j, q0.k));
-        for (k, spin) in spins.iter().enumerate() {
-            y[7 + k] = *spin;
+        for (k, r) in self.rotors.iter().enumerate() {
+            y[7 + k] = r.spin0;
         }
         y
     }
@@ -190,24 +206,22 @@ impl Gyrostat {
         let q = UnitQuaternion::new_normalize(Quaternion::new(y[3], y[4], y[5], y[6]));
         let (omega_b, h_b) = self.omega_and_momentum(form, y, |v| q.inverse_transform_vector(v));
         let m_b = moment.moment_b(t, &q, &omega_b);
-        let (omega_dot_b, _) = self.rates(t, &omega_b, &h_b, &m_b);
+        let (omega_b_dot, _) = self.rates(t, &omega_b, &h_b, &m_b);
         let mut rows = RotorRows {
             n: self.rotors.len(),
             ..RotorRows::default()
         };
-        let mut energy = 0.5 * omega_b.dot(&(self.body.inertia_b() * omega_b));
         for (k, r) in self.rotors.iter().enumerate() {
-            let (spin, a_omega) = (y[7 + k], r.axis_b.dot(&omega_b));
-            energy += r.inertia * spin * (a_omega + 0.5 * spin);
+            let spin = y[7 + k];
             rows.spin[k] = spin;
-            rows.h[k] = r.inertia * (a_omega + spin);
+            rows.h[k] = r.inertia * (r.axis_b.dot(&omega_b) + spin);
             rows.torque[k] = match &r.drive {
-                Drive::Accel(alpha) => r.inertia * (r.axis_b.dot(&omega_dot_b) + alpha),
+                Drive::Accel(alpha) => r.inertia * (r.axis_b.dot(&omega_b_dot) + alpha),
                 Drive::Torque(tau) => tau.at(t).x,
             };
         }
         let mut sample = super::free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
-        sample.energy = energy;
+        sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..]);
         sample.rotors = Some(rows);
         sample
     }
