@@ -96,11 +96,7 @@ impl RunFailed {
 
 /// The optional columns a scene's run writes.
 pub fn columns(scene: &Scene) -> ColumnSet {
-    let potential = scene.gravity_potential(&scene.attitude0).is_some();
-    ColumnSet {
-        potential,
-        ..scene.motion.columns()
-    }
+    Scene::run_columns(&scene.motion, &scene.effects)
 }
 
 /// How a scene's method runs: a splitting scheme or the closed form (the project's own methods, stepped here), or

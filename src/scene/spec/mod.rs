@@ -8,6 +8,7 @@
 
 mod body;
 mod effect;
+mod event;
 mod file_form;
 mod from_file;
 mod motion;
@@ -19,6 +20,7 @@ use crate::method::{Backend, Method};
 
 pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
 pub use effect::{EffectSpec, ProfileSpec, TorqueSpec};
+pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
     AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionKind, MotionSpec, RateSpec,
@@ -39,6 +41,8 @@ pub struct SceneSpec {
     pub initial: Option<InitialSpec>,
     /// `[[effect]]`, in order; none: torque-free.
     pub effect: Vec<EffectSpec>,
+    /// `[[event]]`, in order; none: no events are located.
+    pub event: Vec<EventSpec>,
     /// `[solver]`.
     pub solver: SolverSpec,
     /// `[output]`.
@@ -142,6 +146,7 @@ impl SceneSpec {
             motion: None,
             initial: None,
             effect: Vec::new(),
+            event: Vec::new(),
             solver: SolverSpec {
                 t_end,
                 ..SolverSpec::default()
@@ -180,6 +185,12 @@ impl SceneSpec {
     /// With one more `[[effect]]`: a [`TorqueSpec`] or an [`EffectSpec`].
     pub fn with_effect(mut self, effect: impl Into<EffectSpec>) -> Self {
         self.effect.push(effect.into());
+        self
+    }
+
+    /// With one more `[[event]]`.
+    pub fn with_event(mut self, event: EventSpec) -> Self {
+        self.event.push(event);
         self
     }
 
