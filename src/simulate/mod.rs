@@ -11,6 +11,7 @@ use std::time::Instant;
 use nalgebra::{SVector, Vector3};
 
 use crate::effects::{EffectMoments, TorqueFree};
+use crate::events::{Locator, Occurrence};
 use crate::frames::Form;
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::{Backend, Method};
@@ -23,6 +24,7 @@ use crate::sample::{ColumnSet, Sample};
 use crate::scene::{Motion, Scene};
 
 mod advice;
+mod events;
 mod guard;
 
 pub use advice::{
@@ -136,10 +138,11 @@ fn max_steps() -> u64 {
     integrate::Settings::default().max_steps
 }
 
-/// Why the row callback stopped a run: the guard, or the sink.
+/// Why the row callback stopped a run: the guard, the sink, or an event with `stop` (a run that ends well).
 enum Stop<E> {
     Diverged(Divergence),
     Sink(E),
+    Finished,
 }
 
 /// Runs the scene and keeps its rows: the samples in time order and what the run did.
@@ -168,8 +171,17 @@ pub fn samples(scene: &Scene) -> Result<(Vec<Sample>, RunReport), RunError<Infal
 /// [`DivergenceGuard`] first.
 pub fn run<E: std::error::Error + 'static>(
     scene: &Scene,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
+    sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<RunReport, RunError<E>> {
+    run_with_events(scene, sink).map(|(report, _)| report)
+}
+
+/// [`run`], locating the scene's `[[event]]`s on the run's continuous solution ([`crate::events`]): the
+/// occurrences in time order. An event with `stop` ends the run at its first occurrence, with a last row there.
+pub fn run_with_events<E: std::error::Error + 'static>(
+    scene: &Scene,
+    mut sink: impl FnMut(&Sample) -> Result<(), E>,
+) -> Result<(RunReport, Vec<Occurrence>), RunError<E>> {
     let start = Instant::now();
     let guard = DivergenceGuard::new(scene);
     let mut rows = 0u64;
@@ -196,25 +208,29 @@ pub fn run<E: std::error::Error + 'static>(
         }
         sink(s).map_err(Stop::Sink)
     };
+    let mut locator =
+        (!scene.events.is_empty()).then(|| Locator::new(&scene.events, columns(scene)));
+    let events = locator.as_mut();
     let stats = match &scene.motion {
-        Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),
-        Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver),
+        Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver, events),
+        Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver, events),
         Motion::Free { omega0_b, body } => {
             if scene.effects.is_empty() {
-                run_free(scene, body, omega0_b, TorqueFree, deliver)
+                run_free(scene, (body, omega0_b), TorqueFree, deliver, events)
             } else {
                 let moments = EffectMoments::new(&scene.effects, scene.body.mass());
-                run_free(scene, body, omega0_b, moments, deliver)
+                run_free(scene, (body, omega0_b), moments, deliver, events)
             }
         }
     }
     .map_err(split_error)?;
-    Ok(RunReport {
+    let report = RunReport {
         stats,
         rows,
         wall_seconds: start.elapsed().as_secs_f64(),
         energy_drift: watch.map(|w| w.drift()),
-    })
+    };
+    Ok((report, locator.map(Locator::finish).unwrap_or_default()))
 }
 
 /// Separates the guard's and the sink's errors (carried out of the integrator as `Stopped`) from integration
@@ -224,17 +240,22 @@ fn split_error<E: std::error::Error + 'static>(e: IntegrateError<Stop<E>>) -> Ru
         Ok(failure) => RunError::Integrate(failure),
         Err((_, Stop::Diverged(d))) => RunError::Diverged(d),
         Err((_, Stop::Sink(e))) => RunError::Sink(e),
+        // A stop event ends a closed-form run through its sink; events::closed_form turns it into Ok first.
+        Err((t, Stop::Finished)) => RunError::Integrate(IntegrateError::Backend {
+            t,
+            message: "an event's stop was not taken as the end of the run".into(),
+        }),
     }
 }
 
 /// Free rotation with the scene's method, in the form the scene's frame selects, streaming each row.
 fn run_free<M: KickMoment + Clone, E>(
     scene: &Scene,
-    body: &FreeBody,
-    omega0_b: &Vector3<f64>,
+    (body, omega0_b): (&FreeBody, &Vector3<f64>),
     moment: M,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let frame = scene.solver.form;
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
@@ -264,26 +285,40 @@ fn run_free<M: KickMoment + Clone, E>(
                     reason: format!("method \"exact\": {e}"),
                 }
             })?;
-            return flow.run(&scene.schedule, frame, sink);
+            return match locator {
+                None => flow.run(&scene.schedule, frame, sink),
+                Some(locator) => {
+                    let closed = |t: f64| events::with_potential(scene, flow.sample(t, frame));
+                    events::closed_form(locator, closed, sink, |sink| {
+                        flow.run(&scene.schedule, frame, sink)
+                    })
+                }
+            };
         }
         Runner::RungeKutta(settings) => settings,
     };
     let y0 = free::initial_state(body, frame, omega0_b, &scene.attitude0);
-    let on_row = |t: f64, y: &free::State| sink(&free::sample(body, &moment, frame, t, y));
+    let row = |t: f64, y: &free::State| free::sample(body, &moment, frame, t, y);
+    let on_row = |t: f64, y: &free::State| sink(&row(t, y));
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
     match frame {
         Form::Body => {
             let mut system = BodyForm {
                 body: *body,
                 moment: moment.clone(),
             };
-            integrate::integrate(&mut system, y0, &scene.schedule, &settings, on_row)
+            run.integrate(&mut system, y0, on_row, row)
         }
         Form::Space => {
             let mut system = SpaceForm {
                 body: *body,
                 moment: moment.clone(),
             };
-            integrate::integrate(&mut system, y0, &scene.schedule, &settings, on_row)
+            run.integrate(&mut system, y0, on_row, row)
         }
     }
 }
@@ -319,16 +354,17 @@ impl OdeSystem<3> for RequiredMomentRate<'_> {
 fn run_fixed_axis<E>(
     scene: &Scene,
     motion: &FixedAxis,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let frame = scene.solver.form;
     let h_s0: Vector3<f64> = motion.sample(0.0, frame).h_s;
     let mut system = RequiredMomentRate { motion, frame };
-    let mut on_row = |t: f64, h_s_int: &Vector3<f64>| {
-        let mut sample = motion.sample(t, frame);
-        sample.h_s_integrated = Some(*h_s_int);
-        sink(&sample)
+    let row = |t: f64, h_s_int: &Vector3<f64>| Sample {
+        h_s_integrated: Some(*h_s_int),
+        ..motion.sample(t, frame)
     };
+    let on_row = |t: f64, h_s_int: &Vector3<f64>| sink(&row(t, h_s_int));
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
             let mut quadrature = KickQuadrature::new(scheme, |t| system.moment_s(t));
@@ -342,20 +378,35 @@ fn run_fixed_axis<E>(
             );
         }
         Runner::Exact => {
-            let mut stats = Stats::default();
-            for t in scene.schedule.iter() {
-                let h_s = motion.sample(t, frame).h_s;
-                stats.evals += 1;
-                if t > 0.0 {
-                    stats.steps += 1;
+            // The exact integral of Ḣ_s = M_s is H_s itself.
+            let exact_row = |t: f64| row(t, &motion.sample(t, frame).h_s);
+            let rows = |sink: &mut dyn FnMut(&Sample) -> Result<(), Stop<E>>| {
+                let mut stats = Stats::default();
+                for t in scene.schedule.iter() {
+                    stats.evals += 1;
+                    if t > 0.0 {
+                        stats.steps += 1;
+                    }
+                    sink(&exact_row(t)).map_err(|cause| IntegrateError::Stopped { t, cause })?;
                 }
-                on_row(t, &h_s).map_err(|cause| IntegrateError::Stopped { t, cause })?;
-            }
-            return Ok(stats);
+                Ok(stats)
+            };
+            return match locator {
+                None => rows(&mut sink),
+                Some(locator) => {
+                    let closed = |t: f64| events::with_potential(scene, exact_row(t));
+                    events::closed_form(locator, closed, sink, |mut sink| rows(&mut sink))
+                }
+            };
         }
         Runner::RungeKutta(settings) => settings,
     };
-    integrate::integrate(&mut system, h_s0, &scene.schedule, &settings, on_row)
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
+    run.integrate(&mut system, h_s0, on_row, row)
 }
 
 /// A hinge: θ integrated from the effects' moment about the axis by the scene's Runge–Kutta method, in the form
@@ -364,8 +415,9 @@ fn run_fixed_axis<E>(
 fn run_hinge<E>(
     scene: &Scene,
     hinge: &Hinge,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let form = scene.solver.form;
     let Runner::RungeKutta(settings) = runner(scene) else {
         return Err(IntegrateError::InvalidSettings {
@@ -376,21 +428,15 @@ fn run_hinge<E>(
         });
     };
     let y0 = hinge.initial_state(form);
-    let on_row = |t: f64, y: &SVector<f64, 2>| sink(&hinge.sample(t, y, form));
+    let row = |t: f64, y: &SVector<f64, 2>| hinge.sample(t, y, form);
+    let on_row = |t: f64, y: &SVector<f64, 2>| sink(&row(t, y));
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
     match form {
-        Form::Body => integrate::integrate(
-            &mut HingeBodyForm(hinge),
-            y0,
-            &scene.schedule,
-            &settings,
-            on_row,
-        ),
-        Form::Space => integrate::integrate(
-            &mut HingeSpaceForm(hinge),
-            y0,
-            &scene.schedule,
-            &settings,
-            on_row,
-        ),
+        Form::Body => run.integrate(&mut HingeBodyForm(hinge), y0, on_row, row),
+        Form::Space => run.integrate(&mut HingeSpaceForm(hinge), y0, on_row, row),
     }
 }
