@@ -297,6 +297,10 @@ impl<'e> Locator<'e> {
             Condition::Extremum(_) => return,
         };
         let t = brent(|t| self.g(e, at, t, delta).0, a, b, T_TOL);
+        if t <= 0.0 {
+            // The run's start is no moment between rows (a quantity at rest at t = 0 is not an extremum there).
+            return;
+        }
         let value = self.quantity(e, at, t);
         self.found.push(Occurrence {
             event: e,
