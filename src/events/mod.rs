@@ -251,8 +251,8 @@ impl<'e> Locator<'e> {
             .collect();
         let first_new = self.found.len();
         for e in 0..self.events.len() {
-            for i in 0..=PROBES {
-                let g = probes[i][e];
+            for (i, probe) in probes.iter().enumerate() {
+                let g = probe[e];
                 let last = self.last_sign[e];
                 if g == 0.0 || (g > 0.0) == (last > 0.0) {
                     if g != 0.0 {
