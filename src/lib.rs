@@ -45,6 +45,7 @@
 pub mod analysis;
 pub mod body;
 pub mod effects;
+pub mod events;
 pub mod exact;
 pub mod frames;
 pub mod integrate;

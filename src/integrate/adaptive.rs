@@ -6,6 +6,7 @@
 
 use nalgebra::SVector;
 
+use super::dense::{Dense, StepEnds, StepWatch};
 use super::explicit_rk::{self, RkStep};
 use super::tableau::ButcherTableau;
 use super::{IntegrateError, OdeSystem, Schedule, Settings, Stats, all_finite, report, start};
@@ -101,29 +102,37 @@ pub(crate) trait EmbeddedPair<const S: usize>: ControllerParams {
 
     /// err², the square of the scaled error estimate of `step` from y with step size h, from the stages.
     fn error_sq<const N: usize>(step: &RkStep<N, S>, y: &SVector<f64, N>, h: f64, tol: Tol) -> f64;
+
+    /// The pair's own continuous extension over an accepted step ([`super::dense`]) and the evaluations of f it
+    /// took.
+    fn dense<const N: usize, Sys: OdeSystem<N>>(
+        sys: &mut Sys,
+        ends: &StepEnds<'_, N, S>,
+    ) -> (Dense<N>, u64);
 }
 
 /// Attempts one step of the pair `P` of size h from (t, y) with k1 = f(t, y): s − 1 evaluations, + 1 with FSAL.
+/// With `keep_stages` (a constant where the driver calls it) the stages come back too, for the dense output.
 // Always inlined into the driver (see explicit_rk::step).
 #[inline(always)]
 fn attempt<P, const S: usize, const N: usize, Sys>(
     sys: &mut Sys,
-    t: f64,
-    y: &SVector<f64, N>,
-    k1: &SVector<f64, N>,
+    (t, y, k1): (f64, &SVector<f64, N>, &SVector<f64, N>),
     h: f64,
     tol: Tol,
-) -> Trial<N>
+    keep_stages: bool,
+) -> (Trial<N>, Option<[SVector<f64, N>; S]>)
 where
     P: EmbeddedPair<S>,
     Sys: OdeSystem<N>,
 {
     let step = explicit_rk::step(sys, P::TABLEAU, t, t + h, y, k1, h);
-    Trial {
+    let trial = Trial {
         err_sq: P::error_sq(&step, y, h, tol),
         y_new: step.y_new,
         f_new: P::TABLEAU.fsal.then_some(step.k[S - 1]),
-    }
+    };
+    (trial, keep_stages.then_some(step.k))
 }
 
 /// Hairer's starting step size (HNW I §II.4, "Starting step size"; function HINIT of
@@ -246,17 +255,22 @@ fn too_small(h: f64, t: f64) -> bool {
 /// derivative is reused unless `project` changed the state. Errors: `TooManySteps` when
 /// accepted + rejected reaches `max_steps`, `StepSizeTooSmall` when h_prop ≤ 16·ε·|t|,
 /// `NonFinite { t: 0 }` if f(0, y0) is non-finite.
-pub(crate) fn run<P, const STAGES: usize, const N: usize, S, E, F>(
+///
+/// An active `watch` sees every accepted step's dense output ([`EmbeddedPair::dense`], its evaluations counted)
+/// before the row at its end; when it asks to stop at t_stop, the interpolant's state there is the last row.
+pub(crate) fn run<P, const STAGES: usize, const N: usize, S, E, F, W>(
     sys: &mut S,
     y0: SVector<f64, N>,
     schedule: &Schedule,
     settings: &Settings,
     on_row: &mut F,
+    watch: &mut W,
 ) -> Result<Stats, IntegrateError<E>>
 where
     P: EmbeddedPair<STAGES>,
     S: OdeSystem<N>,
     F: FnMut(f64, &SVector<f64, N>) -> Result<(), E>,
+    W: StepWatch<N>,
 {
     let tol = Tol {
         rtol: settings.rtol,
@@ -298,7 +312,7 @@ where
             } else {
                 (h_prop, t + h_prop)
             };
-            let trial = attempt::<P, STAGES, N, S>(sys, t, &y, &k1, h, tol);
+            let (trial, stages) = attempt::<P, STAGES, N, S>(sys, (t, &y, &k1), h, tol, W::ACTIVE);
             stats.evals += STAGES as u64 - 1;
 
             if trial.err_sq <= 1.0 && all_finite(&trial.y_new) {
@@ -312,6 +326,23 @@ where
                     }
                 };
                 if all_finite(&y_new) && all_finite(&k_new) {
+                    if let Some(k) = stages.filter(|_| W::ACTIVE) {
+                        let ends = StepEnds {
+                            t,
+                            h: t_new - t,
+                            y: &y,
+                            y_new: &y_new,
+                            k: &k,
+                            k_new: &k_new,
+                        };
+                        let (dense, evals) = P::dense(sys, &ends);
+                        stats.evals += evals;
+                        if let Some(t_stop) = watch.step(&dense) {
+                            stats.steps += 1;
+                            report(on_row, t_stop, &dense.at(t_stop))?;
+                            return Ok(stats);
+                        }
+                    }
                     h_prop = ctl.accept(trial.err_sq, h, h_prop, h_max);
                     t = t_new;
                     y = y_new;

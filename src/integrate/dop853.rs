@@ -8,7 +8,9 @@
 
 use nalgebra::SVector;
 
+use super::OdeSystem;
 use super::adaptive::{ControllerParams, EmbeddedPair, Tol, scaled_sum_sq};
+use super::dense::{self, Dense, StepEnds};
 use super::explicit_rk::{RkStep, combine_onto, weighted_sum};
 use super::tableau::{ButcherTableau, DOP853, DOP853_ERROR3, DOP853_ERROR5};
 
@@ -53,6 +55,13 @@ impl EmbeddedPair<12> for Dop853 {
         }
         // err² = h²·err5² / (N·deno).
         (h * err5) * (h * err5) / (N as f64 * deno)
+    }
+
+    fn dense<const N: usize, Sys: OdeSystem<N>>(
+        sys: &mut Sys,
+        ends: &StepEnds<'_, N, 12>,
+    ) -> (Dense<N>, u64) {
+        dense::dop853(sys, ends)
     }
 }
 

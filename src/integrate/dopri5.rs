@@ -6,7 +6,9 @@
 
 use nalgebra::SVector;
 
+use super::OdeSystem;
 use super::adaptive::{ControllerParams, EmbeddedPair, Tol, scaled_sum_sq};
+use super::dense::{self, Dense, StepEnds};
 use super::explicit_rk::{RkStep, weighted_sum};
 use super::tableau::{ButcherTableau, DOPRI5, DOPRI5_ERROR};
 
@@ -30,5 +32,12 @@ impl EmbeddedPair<7> for Dopri5 {
         let e = weighted_sum(&DOPRI5_ERROR, h, &step.k);
         let sk_inv = tol.inverse_scales(y, &step.y_new);
         scaled_sum_sq(&e, &sk_inv) * (1.0 / N as f64)
+    }
+
+    fn dense<const N: usize, Sys: OdeSystem<N>>(
+        _sys: &mut Sys,
+        ends: &StepEnds<'_, N, 7>,
+    ) -> (Dense<N>, u64) {
+        (dense::dopri5(ends), 0)
     }
 }

@@ -60,6 +60,7 @@ use nalgebra::SVector;
 use thiserror::Error;
 
 mod adaptive;
+mod dense;
 mod dop853;
 mod dopri5;
 mod explicit_rk;
@@ -68,7 +69,8 @@ pub mod ode_solvers_path;
 mod schedule;
 mod tableau;
 
-pub use fixed::{FixedStep, run_fixed_step};
+pub use dense::{Dense, NoWatch, StepWatch};
+pub use fixed::{FixedStep, FixedStepWatch, run_fixed_step, run_fixed_step_watched};
 pub use schedule::{Schedule, ScheduleError, ScheduleIter};
 
 use crate::method::defaults;
@@ -282,11 +284,31 @@ pub fn integrate<const N: usize, S, E, F>(
     y0: SVector<f64, N>,
     schedule: &Schedule,
     settings: &Settings,
-    mut on_row: F,
+    on_row: F,
 ) -> Result<Stats, IntegrateError<E>>
 where
     S: OdeSystem<N>,
     F: FnMut(f64, &SVector<f64, N>) -> Result<(), E>,
+{
+    integrate_watched(sys, y0, schedule, settings, on_row, &mut NoWatch)
+}
+
+/// [`integrate`] with a [`StepWatch`] that sees the continuous solution of every accepted step before the row at
+/// its end (DOPRI5's and DOP853's own dense output, RK4's cubic Hermite interpolant) and may end the run at a time
+/// inside a step, with a last row there. The ode_solvers backend offers no hook between its steps: an active watch
+/// is refused there ([`IntegrateError::InvalidSettings`]).
+pub fn integrate_watched<const N: usize, S, E, F, W>(
+    sys: &mut S,
+    y0: SVector<f64, N>,
+    schedule: &Schedule,
+    settings: &Settings,
+    mut on_row: F,
+    watch: &mut W,
+) -> Result<Stats, IntegrateError<E>>
+where
+    S: OdeSystem<N>,
+    F: FnMut(f64, &SVector<f64, N>) -> Result<(), E>,
+    W: StepWatch<N>,
 {
     settings
         .validate()
@@ -295,19 +317,33 @@ where
         (Backend::Own, Method::Rk4) => {
             let mut y0 = y0;
             sys.project(&mut y0);
-            let (dt, max_steps) = (settings.dt, settings.max_steps);
-            run_fixed_step(&mut fixed::Rk4 { sys }, y0, schedule, dt, max_steps, on_row)
+            let limits = (settings.dt, settings.max_steps);
+            let mut hermite = fixed::HermiteWatch { watch, f_end: None };
+            let rk4 = &mut fixed::Rk4 { sys };
+            run_fixed_step_watched(rk4, y0, schedule, limits, on_row, &mut hermite)
         }
-        (Backend::Own, Method::Dopri5) => {
-            adaptive::run::<dopri5::Dopri5, 7, N, S, E, F>(sys, y0, schedule, settings, &mut on_row)
-        }
-        (Backend::Own, Method::Dop853) => adaptive::run::<dop853::Dop853, 12, N, S, E, F>(
+        (Backend::Own, Method::Dopri5) => adaptive::run::<dopri5::Dopri5, 7, N, S, E, F, W>(
             sys,
             y0,
             schedule,
             settings,
             &mut on_row,
+            watch,
         ),
+        (Backend::Own, Method::Dop853) => adaptive::run::<dop853::Dop853, 12, N, S, E, F, W>(
+            sys,
+            y0,
+            schedule,
+            settings,
+            &mut on_row,
+            watch,
+        ),
+        (Backend::OdeSolvers, _) if W::ACTIVE => Err(IntegrateError::InvalidSettings {
+            reason:
+                "events are located on the own methods' steps; the ode_solvers backend has no hook \
+                     between its steps"
+                    .into(),
+        }),
         (Backend::OdeSolvers, _) => ode_solvers_path::run(sys, y0, schedule, settings, &mut on_row),
         (Backend::Own, other) => Err(IntegrateError::InvalidSettings {
             reason: not_runge_kutta(other),

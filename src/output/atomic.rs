@@ -196,22 +196,16 @@ impl AtomicFile {
         self.sync()?.rename()
     }
 
-    /// Commits two files: both flushed and synced — at the same time, so that the file system can write both in
-    /// one journal commit — and only then renamed, `first` before `second`. An error says which file (0 or 1).
-    pub fn commit_both(first: AtomicFile, second: AtomicFile) -> Result<(), (usize, io::Error)> {
-        let (first, second) = std::thread::scope(|scope| {
-            let second = scope.spawn(|| second.sync());
-            let first = first.sync();
-            (
-                first,
-                second
-                    .join()
-                    .unwrap_or_else(|_| Err(io::Error::other("sync failed"))),
-            )
-        });
-        let (first, second) = (first.map_err(|e| (0, e))?, second.map_err(|e| (1, e))?);
-        first.rename().map_err(|e| (0, e))?;
-        second.rename().map_err(|e| (1, e))
+    /// Commits several files: all synced (in order), and only then renamed, in order, so that no file is renamed
+    /// before all are on disk. An error says which file (its index).
+    pub fn commit_all(files: Vec<AtomicFile>) -> Result<(), (usize, io::Error)> {
+        let synced = (files.into_iter().enumerate())
+            .map(|(i, f)| f.sync().map_err(|e| (i, e)))
+            .collect::<Result<Vec<_>, _>>()?;
+        for (i, file) in synced.into_iter().enumerate() {
+            file.rename().map_err(|e| (i, e))?;
+        }
+        Ok(())
     }
 
     /// Flushes the buffer and, for a temporary file, syncs its data and metadata (`fsync`).

@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod atomic;
 pub mod csv_writer;
+pub mod events_file;
 pub mod pending;
 pub mod plot;
 pub mod run_csv;
@@ -15,5 +16,5 @@ pub mod work_precision;
 
 pub use atomic::{AtomicFile, same_file};
 pub use csv_writer::CsvWriter;
-pub use run_file::{WriteRunError, write_run, write_run_with};
+pub use run_file::{WriteRunError, write_run, write_run_with, write_run_with_events};
 pub use sidecar::{Sidecar, sidecar_path};

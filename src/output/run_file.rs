@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 
 use super::atomic::{AtomicFile, same_file};
 use super::csv_writer::CsvWriter;
+use super::events_file::{events_csv, events_path};
 use super::sidecar::{Sidecar, sidecar_path};
+use crate::events::Occurrence;
 use crate::scene::Scene;
 use crate::simulate::{self, RunError, RunReport};
 
@@ -46,8 +48,18 @@ pub fn write_run(scene: &Scene, path: &Path) -> Result<RunReport, WriteRunError>
 pub fn write_run_with(
     scene: &Scene,
     path: &Path,
-    mut progress: impl FnMut(f64),
+    progress: impl FnMut(f64),
 ) -> Result<RunReport, WriteRunError> {
+    write_run_with_events(scene, path, progress).map(|(report, _)| report)
+}
+
+/// [`write_run_with`], returning the located events too; a scene with `[[event]]`s also gets `path.events.csv`
+/// ([`events_csv`]), listed in the sidecar, all three files committed together (none beside a device or a FIFO).
+pub fn write_run_with_events(
+    scene: &Scene,
+    path: &Path,
+    mut progress: impl FnMut(f64),
+) -> Result<(RunReport, Vec<Occurrence>), WriteRunError> {
     if let Some(source) = &scene.source
         && same_file(&source.path, path)
     {
@@ -62,7 +74,7 @@ pub fn write_run_with(
         problem: format!("cannot create the output file: {e}"),
     })?;
     let mut writer = CsvWriter::new(csv_file.file(), columns).map_err(RunError::Sink)?;
-    let report = simulate::run(scene, |s| {
+    let (report, events) = simulate::run_with_events(scene, |s| {
         progress(s.t);
         writer.write(s)
     })?;
@@ -76,19 +88,24 @@ pub fn write_run_with(
         csv_file
             .commit()
             .map_err(|e| save(path, "cannot write", e))?;
-        return Ok(report);
+        return Ok((report, events));
     }
     let meta_path = sidecar_path(path);
-    let sidecar = Sidecar::of_run(scene, &report, &columns.columns());
-    let meta_file =
-        AtomicFile::create(&meta_path).map_err(|e| save(&meta_path, "cannot create", e))?;
-    // Both files on disk before either is renamed: the CSV first, then its sidecar.
-    let meta_file = meta_file
-        .write(sidecar.to_json().as_bytes())
-        .map_err(|e| save(&meta_path, "cannot write", e))?;
-    AtomicFile::commit_both(csv_file, meta_file).map_err(|(which, e)| {
-        let file = if which == 0 { path } else { &meta_path };
-        save(file, "cannot save", e)
-    })?;
-    Ok(report)
+    let events_file = (!scene.events.is_empty()).then(|| events_path(path));
+    let sidecar = Sidecar::of_run(scene, &report, &columns.columns())
+        .with_events(events_file.as_deref(), &events);
+    let mut files = vec![(path.to_path_buf(), csv_file)];
+    let mut extra = vec![(meta_path, sidecar.to_json())];
+    if let Some(events_file) = events_file {
+        extra.push((events_file, events_csv(&events)));
+    }
+    for (file, text) in extra {
+        let out = AtomicFile::create(&file).map_err(|e| save(&file, "cannot create", e))?;
+        let out = (out.write(text.as_bytes())).map_err(|e| save(&file, "cannot write", e))?;
+        files.push((file, out));
+    }
+    // Every file on disk before any is renamed: the CSV first, then its sidecar and events.
+    let (names, files): (Vec<PathBuf>, Vec<AtomicFile>) = files.into_iter().unzip();
+    AtomicFile::commit_all(files).map_err(|(which, e)| save(&names[which], "cannot save", e))?;
+    Ok((report, events))
 }

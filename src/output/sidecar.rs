@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use crate::effects::Effect;
+use crate::events::Occurrence;
 use crate::sample::Column;
 use crate::scene::{MotionKind, Scene, SceneSpec};
 use crate::simulate::{self, RunReport};
@@ -32,6 +33,28 @@ pub struct Sidecar {
     pub warnings: Vec<String>,
     /// Every CSV column, in order.
     pub columns: Vec<SidecarColumn>,
+    /// The located `[[event]]`s, where the scene has any.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub events: Option<SidecarEvents>,
+}
+
+/// `events`: the events file beside the CSV and its occurrences.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SidecarEvents {
+    /// The events file's name (`RUN.csv.events.csv`, in the CSV's directory).
+    pub file: String,
+    /// Every occurrence, in time order.
+    pub occurrences: Vec<SidecarEvent>,
+}
+
+/// One located event: the events file's row.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SidecarEvent {
+    pub event: String,
+    pub t: f64,
+    pub value: f64,
+    /// `up`, `down`, `max` or `min`.
+    pub direction: String,
 }
 
 /// `scene`: the scene as simulated, and the file it came from.
@@ -133,7 +156,24 @@ impl Sidecar {
                     meaning: c.meaning.into(),
                 })
                 .collect(),
+            events: None,
         }
+    }
+
+    /// The sidecar listing the events file `file` (absent: a scene without events) and its `occurrences`.
+    pub fn with_events(mut self, file: Option<&Path>, occurrences: &[Occurrence]) -> Self {
+        self.events = file.map(|file| SidecarEvents {
+            file: (file.file_name()).map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
+            occurrences: (occurrences.iter())
+                .map(|o| SidecarEvent {
+                    event: o.name.clone(),
+                    t: o.t,
+                    value: o.value,
+                    direction: o.kind.name().into(),
+                })
+                .collect(),
+        });
+        self
     }
 
     /// The document as pretty JSON with a final newline.

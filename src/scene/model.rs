@@ -4,6 +4,7 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::effects::Effect;
+use crate::events::Event;
 use crate::frames::Form;
 use crate::integrate::Schedule;
 use crate::method::{Backend, Method};
@@ -135,6 +136,15 @@ impl Motion {
 }
 
 impl Scene {
+    /// The optional columns a run of `motion` with `effects` writes: the motion's, and the potential energy's
+    /// with gravity.
+    pub fn run_columns(motion: &Motion, effects: &[Effect]) -> ColumnSet {
+        ColumnSet {
+            potential: effects.iter().any(|e| matches!(e, Effect::Gravity { .. })),
+            ..motion.columns()
+        }
+    }
+
     /// The potential energy of the scene's gravity at the attitude `q`: V = −m g·r_C, with r_C = q ρ_C the
     /// mass center from the moment center (the pivot or the axis point) in space axes; `None` without gravity.
     pub fn gravity_potential(&self, q: &UnitQuaternion<f64>) -> Option<f64> {
@@ -158,6 +168,8 @@ pub struct Scene {
     /// Attitude at t = 0 (body → space).
     pub attitude0: UnitQuaternion<f64>,
     pub effects: Vec<Effect>,
+    /// `[[event]]`s to locate between the rows.
+    pub events: Vec<Event>,
     pub solver: SolverConfig,
     /// Row times: k·every, then t_end.
     pub schedule: Schedule,

@@ -11,19 +11,21 @@ use std::time::Instant;
 use nalgebra::{SVector, Vector3};
 
 use crate::effects::{EffectMoments, TorqueFree};
+use crate::events::{Locator, Occurrence};
 use crate::frames::Form;
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::{Backend, Method};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
-use crate::motion::gyrostat::{Gyrostat, GyrostatForm};
+use crate::motion::gyrostat::{self, Gyrostat, GyrostatForm};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::{Motion, Scene};
 
 mod advice;
+mod events;
 mod guard;
 
 pub use advice::{
@@ -97,11 +99,7 @@ impl RunFailed {
 
 /// The optional columns a scene's run writes.
 pub fn columns(scene: &Scene) -> ColumnSet {
-    let potential = scene.gravity_potential(&scene.attitude0).is_some();
-    ColumnSet {
-        potential,
-        ..scene.motion.columns()
-    }
+    Scene::run_columns(&scene.motion, &scene.effects)
 }
 
 /// How a scene's method runs: a splitting scheme or the closed form (the project's own methods, stepped here), or
@@ -141,10 +139,11 @@ fn max_steps() -> u64 {
     integrate::Settings::default().max_steps
 }
 
-/// Why the row callback stopped a run: the guard, or the sink.
+/// Why the row callback stopped a run: the guard, the sink, or an event with `stop` (a run that ends well).
 enum Stop<E> {
     Diverged(Divergence),
     Sink(E),
+    Finished,
 }
 
 /// Runs the scene and keeps its rows: the samples in time order and what the run did.
@@ -173,8 +172,17 @@ pub fn samples(scene: &Scene) -> Result<(Vec<Sample>, RunReport), RunError<Infal
 /// [`DivergenceGuard`] first.
 pub fn run<E: std::error::Error + 'static>(
     scene: &Scene,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
+    sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<RunReport, RunError<E>> {
+    run_with_events(scene, sink).map(|(report, _)| report)
+}
+
+/// [`run`], locating the scene's `[[event]]`s on the run's continuous solution ([`crate::events`]): the
+/// occurrences in time order. An event with `stop` ends the run at its first occurrence, with a last row there.
+pub fn run_with_events<E: std::error::Error + 'static>(
+    scene: &Scene,
+    mut sink: impl FnMut(&Sample) -> Result<(), E>,
+) -> Result<(RunReport, Vec<Occurrence>), RunError<E>> {
     let start = Instant::now();
     let guard = DivergenceGuard::new(scene);
     let mut rows = 0u64;
@@ -201,20 +209,23 @@ pub fn run<E: std::error::Error + 'static>(
         }
         sink(s).map_err(Stop::Sink)
     };
+    let mut locator =
+        (!scene.events.is_empty()).then(|| Locator::new(&scene.events, columns(scene)));
+    let events = locator.as_mut();
     let stats = match &scene.motion {
-        Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver),
-        Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver),
+        Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver, events),
+        Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver, events),
         Motion::Free {
             omega0_b,
             gyrostat: Some(gyrostat),
             ..
         } => {
             let moments = EffectMoments::new(&scene.effects, scene.body.mass());
-            run_gyrostat(scene, gyrostat, omega0_b, moments, deliver)
+            run_gyrostat(scene, gyrostat, omega0_b, moments, deliver, events)
         }
         Motion::Free { omega0_b, body, .. } => {
             if scene.effects.is_empty() {
-                run_free(scene, body, omega0_b, TorqueFree, deliver)
+                run_free(scene, (body, omega0_b), TorqueFree, deliver, events)
             } else {
                 let moments = EffectMoments::new(&scene.effects, scene.body.mass());
                 if moments.has_laws() && !scene.solver.method.is_runge_kutta() {
@@ -226,17 +237,18 @@ pub fn run<E: std::error::Error + 'static>(
                         ),
                     }));
                 }
-                run_free(scene, body, omega0_b, moments, deliver)
+                run_free(scene, (body, omega0_b), moments, deliver, events)
             }
         }
     }
     .map_err(split_error)?;
-    Ok(RunReport {
+    let report = RunReport {
         stats,
         rows,
         wall_seconds: start.elapsed().as_secs_f64(),
         energy_drift: watch.map(|w| w.drift()),
-    })
+    };
+    Ok((report, locator.map(Locator::finish).unwrap_or_default()))
 }
 
 /// Separates the guard's and the sink's errors (carried out of the integrator as `Stopped`) from integration
@@ -246,17 +258,22 @@ fn split_error<E: std::error::Error + 'static>(e: IntegrateError<Stop<E>>) -> Ru
         Ok(failure) => RunError::Integrate(failure),
         Err((_, Stop::Diverged(d))) => RunError::Diverged(d),
         Err((_, Stop::Sink(e))) => RunError::Sink(e),
+        // A stop event ends a closed-form run through its sink; events::closed_form turns it into Ok first.
+        Err((t, Stop::Finished)) => RunError::Integrate(IntegrateError::Backend {
+            t,
+            message: "an event's stop was not taken as the end of the run".into(),
+        }),
     }
 }
 
 /// Free rotation with the scene's method, in the form the scene's frame selects, streaming each row.
 fn run_free<M: KickMoment + Clone, E>(
     scene: &Scene,
-    body: &FreeBody,
-    omega0_b: &Vector3<f64>,
+    (body, omega0_b): (&FreeBody, &Vector3<f64>),
     moment: M,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let frame = scene.solver.form;
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
@@ -286,26 +303,40 @@ fn run_free<M: KickMoment + Clone, E>(
                     reason: format!("method \"exact\": {e}"),
                 }
             })?;
-            return flow.run(&scene.schedule, frame, sink);
+            return match locator {
+                None => flow.run(&scene.schedule, frame, sink),
+                Some(locator) => {
+                    let closed = |t: f64| events::with_potential(scene, flow.sample(t, frame));
+                    events::closed_form(locator, closed, sink, |sink| {
+                        flow.run(&scene.schedule, frame, sink)
+                    })
+                }
+            };
         }
         Runner::RungeKutta(settings) => settings,
     };
     let y0 = free::initial_state(body, frame, omega0_b, &scene.attitude0);
-    let on_row = |t: f64, y: &free::State| sink(&free::sample(body, &moment, frame, t, y));
+    let row = |t: f64, y: &free::State| free::sample(body, &moment, frame, t, y);
+    let on_row = |t: f64, y: &free::State| sink(&row(t, y));
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
     match frame {
         Form::Body => {
             let mut system = BodyForm {
                 body: *body,
                 moment: moment.clone(),
             };
-            integrate::integrate(&mut system, y0, &scene.schedule, &settings, on_row)
+            run.integrate(&mut system, y0, on_row, row)
         }
         Form::Space => {
             let mut system = SpaceForm {
                 body: *body,
                 moment: moment.clone(),
             };
-            integrate::integrate(&mut system, y0, &scene.schedule, &settings, on_row)
+            run.integrate(&mut system, y0, on_row, row)
         }
     }
 }
@@ -317,8 +348,9 @@ fn run_gyrostat<E>(
     gyrostat: &Gyrostat,
     omega0_b: &Vector3<f64>,
     moment: EffectMoments,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let Runner::RungeKutta(settings) = runner(scene) else {
         return Err(IntegrateError::InvalidSettings {
             reason: format!(
@@ -329,14 +361,19 @@ fn run_gyrostat<E>(
     };
     let form = scene.solver.form;
     let y0 = gyrostat.initial_state(form, omega0_b, &scene.attitude0);
+    let row = |t: f64, y: &gyrostat::State| gyrostat.sample(&moment, form, t, y);
+    let on_row = |t: f64, y: &gyrostat::State| sink(&row(t, y));
     let mut system = GyrostatForm {
         gyrostat,
         moment: moment.clone(),
         form,
     };
-    integrate::integrate(&mut system, y0, &scene.schedule, &settings, |t, y| {
-        sink(&gyrostat.sample(&moment, form, t, y))
-    })
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
+    run.integrate(&mut system, y0, on_row, row)
 }
 
 /// Euler's equation in space axes for a prescribed motion, Ḣ_s = M_s(t) (eq. 8.9), with M_s from the form the
@@ -370,16 +407,17 @@ impl OdeSystem<3> for RequiredMomentRate<'_> {
 fn run_fixed_axis<E>(
     scene: &Scene,
     motion: &FixedAxis,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let frame = scene.solver.form;
     let h_s0: Vector3<f64> = motion.sample(0.0, frame).h_s;
     let mut system = RequiredMomentRate { motion, frame };
-    let mut on_row = |t: f64, h_s_int: &Vector3<f64>| {
-        let mut sample = motion.sample(t, frame);
-        sample.h_s_integrated = Some(*h_s_int);
-        sink(&sample)
+    let row = |t: f64, h_s_int: &Vector3<f64>| Sample {
+        h_s_integrated: Some(*h_s_int),
+        ..motion.sample(t, frame)
     };
+    let on_row = |t: f64, h_s_int: &Vector3<f64>| sink(&row(t, h_s_int));
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
             let mut quadrature = KickQuadrature::new(scheme, |t| system.moment_s(t));
@@ -393,20 +431,35 @@ fn run_fixed_axis<E>(
             );
         }
         Runner::Exact => {
-            let mut stats = Stats::default();
-            for t in scene.schedule.iter() {
-                let h_s = motion.sample(t, frame).h_s;
-                stats.evals += 1;
-                if t > 0.0 {
-                    stats.steps += 1;
+            // The exact integral of Ḣ_s = M_s is H_s itself.
+            let exact_row = |t: f64| row(t, &motion.sample(t, frame).h_s);
+            let rows = |sink: &mut dyn FnMut(&Sample) -> Result<(), Stop<E>>| {
+                let mut stats = Stats::default();
+                for t in scene.schedule.iter() {
+                    stats.evals += 1;
+                    if t > 0.0 {
+                        stats.steps += 1;
+                    }
+                    sink(&exact_row(t)).map_err(|cause| IntegrateError::Stopped { t, cause })?;
                 }
-                on_row(t, &h_s).map_err(|cause| IntegrateError::Stopped { t, cause })?;
-            }
-            return Ok(stats);
+                Ok(stats)
+            };
+            return match locator {
+                None => rows(&mut sink),
+                Some(locator) => {
+                    let closed = |t: f64| events::with_potential(scene, exact_row(t));
+                    events::closed_form(locator, closed, sink, |mut sink| rows(&mut sink))
+                }
+            };
         }
         Runner::RungeKutta(settings) => settings,
     };
-    integrate::integrate(&mut system, h_s0, &scene.schedule, &settings, on_row)
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
+    run.integrate(&mut system, h_s0, on_row, row)
 }
 
 /// A hinge: θ integrated from the effects' moment about the axis by the scene's Runge–Kutta method, in the form
@@ -415,8 +468,9 @@ fn run_fixed_axis<E>(
 fn run_hinge<E>(
     scene: &Scene,
     hinge: &Hinge,
-    mut sink: impl FnMut(&Sample) -> Result<(), E>,
-) -> Result<Stats, IntegrateError<E>> {
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
     let form = scene.solver.form;
     let Runner::RungeKutta(settings) = runner(scene) else {
         return Err(IntegrateError::InvalidSettings {
@@ -427,21 +481,15 @@ fn run_hinge<E>(
         });
     };
     let y0 = hinge.initial_state(form);
-    let on_row = |t: f64, y: &SVector<f64, 2>| sink(&hinge.sample(t, y, form));
+    let row = |t: f64, y: &SVector<f64, 2>| hinge.sample(t, y, form);
+    let on_row = |t: f64, y: &SVector<f64, 2>| sink(&row(t, y));
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
     match form {
-        Form::Body => integrate::integrate(
-            &mut HingeBodyForm(hinge),
-            y0,
-            &scene.schedule,
-            &settings,
-            on_row,
-        ),
-        Form::Space => integrate::integrate(
-            &mut HingeSpaceForm(hinge),
-            y0,
-            &scene.schedule,
-            &settings,
-            on_row,
-        ),
+        Form::Body => run.integrate(&mut HingeBodyForm(hinge), y0, on_row, row),
+        Form::Space => run.integrate(&mut HingeSpaceForm(hinge), y0, on_row, row),
     }
 }

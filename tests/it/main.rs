@@ -6,6 +6,7 @@ mod body;
 mod cli_end_to_end;
 mod cli_usability;
 mod common;
+mod events;
 mod exact_closed_forms;
 mod exact_grid;
 mod fixed_axis;

@@ -23,7 +23,7 @@ use rayon::prelude::*;
 
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::source_map::KeyPath;
-use crate::scene::{self, MotionSpec, Scene, SceneError, SceneSpec, SceneTemplate};
+use crate::scene::{self, ConditionSpec, MotionSpec, Scene, SceneError, SceneSpec, SceneTemplate};
 use crate::simulate;
 
 pub use axis::{Axis, run_rng};
@@ -223,7 +223,7 @@ impl Sweep {
         let columns = simulate::columns(&scene);
         let mut summarizer = Summarizer::new(columns, &self.layout.summary);
         let mut rows: Vec<Sample> = Vec::new();
-        let result = simulate::run(&scene, |s: &Sample| {
+        let result = simulate::run_with_events(&scene, |s: &Sample| {
             summarizer.add(s);
             if series.is_some() {
                 rows.push(*s);
@@ -231,7 +231,10 @@ impl Sweep {
             Ok::<(), std::convert::Infallible>(())
         });
         let report = match result {
-            Ok(report) => report,
+            Ok((report, events)) => {
+                summarizer.add_events(&scene.events, &events);
+                report
+            }
             Err(e) => return outcome(Status::Failed, e.to_string(), None, (0, 0)),
         };
         if let Some(write) = series
@@ -351,10 +354,17 @@ fn layout(
             names.join(", ")
         ));
     }
+    let events = (base.event.iter())
+        .map(|e| match e.condition {
+            ConditionSpec::Extremum(kind) => (e.name.clone(), Some(kind)),
+            ConditionSpec::Crosses { .. } => (e.name.clone(), None),
+        })
+        .collect();
     Ok(TableLayout {
         keys: varied.iter().map(|v| v.name.clone()).collect(),
         support,
         bearings,
         summary,
+        events,
     })
 }

@@ -1,6 +1,7 @@
 //! What one run of a sweep reports: its status and the summary of its rows, gathered row by row as the run
 //! streams them (nothing of the time series is kept).
 
+use crate::events::{Condition, Event, Extremum, Occurrence};
 use crate::sample::{ColumnSet, Sample};
 
 /// How a run ended.
@@ -61,6 +62,19 @@ pub struct RunSummary {
     pub final_omega_b: [f64; 3],
     /// For each `[summary]` column: min, max, final (`None` where the run has no such column).
     pub columns: Vec<Option<[f64; 3]>>,
+    /// For each `[[event]]`, in order: what was located.
+    pub events: Vec<EventSummary>,
+}
+
+/// One `[[event]]` of a run: `<name>_count`, `<name>_first_t` and, for extrema, `<name>_max` / `<name>_min`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct EventSummary {
+    /// Occurrences located.
+    pub count: u64,
+    /// The first one's time (s).
+    pub first_t: Option<f64>,
+    /// An extremum event's global extreme over the run: the largest located maximum, or the smallest minimum.
+    pub extreme: Option<f64>,
 }
 
 /// Gathers a [`RunSummary`] from the rows of a run.
@@ -105,6 +119,7 @@ impl Summarizer {
                 h_drift: None,
                 final_omega_b: [f64::NAN; 3],
                 columns: vec![None; summary_columns.len()],
+                events: Vec::new(),
             },
         }
     }
@@ -140,6 +155,25 @@ impl Summarizer {
                 }
             }
         }
+    }
+
+    /// Takes the run's located events ([`crate::simulate::run_with_events`]) of the scene's `events`.
+    pub fn add_events(&mut self, events: &[Event], occurrences: &[Occurrence]) {
+        self.summary.events = (events.iter().enumerate())
+            .map(|(i, event)| {
+                let mine = || occurrences.iter().filter(move |o| o.event == i);
+                let values = mine().map(|o| o.value);
+                EventSummary {
+                    count: mine().count() as u64,
+                    first_t: mine().next().map(|o| o.t),
+                    extreme: match event.condition {
+                        Condition::Extremum(Extremum::Max) => values.reduce(f64::max),
+                        Condition::Extremum(Extremum::Min) => values.reduce(f64::min),
+                        Condition::Crossing { .. } => None,
+                    },
+                }
+            })
+            .collect();
     }
 
     /// The summary of the rows taken.

@@ -5,6 +5,7 @@
 use std::io::{self, Write};
 
 use super::outcome::{RunOutcome, RunSummary};
+use crate::events::Extremum;
 
 /// Which optional summary columns a sweep's table has.
 #[derive(Debug, Clone, PartialEq)]
@@ -17,11 +18,14 @@ pub struct TableLayout {
     pub bearings: bool,
     /// The `[summary]` columns.
     pub summary: Vec<String>,
+    /// The base scene's `[[event]]`s: each name, and the kind of an extremum event.
+    pub events: Vec<(String, Option<Extremum>)>,
 }
 
 impl TableLayout {
     /// The header: `run`, the keys, `status, message`, the summary columns, `steps, evals, wall_s`, then
-    /// `min_X, max_X, final_X` for each `[summary]` column.
+    /// `min_X, max_X, final_X` for each `[summary]` column, then `<name>_count, <name>_first_t` (and
+    /// `<name>_max` or `<name>_min` for an extremum) for each `[[event]]`.
     pub fn header(&self) -> Vec<String> {
         let mut h = vec!["run".to_string()];
         h.extend(self.keys.iter().cloned());
@@ -47,6 +51,14 @@ impl TableLayout {
         );
         for name in &self.summary {
             h.extend(["min_", "max_", "final_"].map(|p| format!("{p}{name}")));
+        }
+        for (name, extremum) in &self.events {
+            h.extend(["count", "first_t"].map(|s| format!("{name}_{s}")));
+            match extremum {
+                Some(Extremum::Max) => h.push(format!("{name}_max")),
+                Some(Extremum::Min) => h.push(format!("{name}_min")),
+                None => {}
+            }
         }
         h
     }
@@ -82,6 +94,14 @@ impl TableLayout {
         for k in 0..self.summary.len() {
             let column = s.and_then(|s| s.columns.get(k).copied().flatten());
             r.extend((0..3).map(|j| cell(column.map(|c| c[j]))));
+        }
+        for (k, (_, extremum)) in self.events.iter().enumerate() {
+            let event = s.and_then(|s| s.events.get(k).copied());
+            r.push(event.map_or(String::new(), |e| e.count.to_string()));
+            r.push(cell(event.and_then(|e| e.first_t)));
+            if extremum.is_some() {
+                r.push(cell(event.and_then(|e| e.extreme)));
+            }
         }
         r
     }

@@ -12,9 +12,11 @@ use crate::progress::{self, Progress};
 use crate::sweep::{SweepArgs, SweepFailure, sweep_command};
 use crate::view::{ViewArgs, view_command};
 use eulerdyn::analysis::describe;
+use eulerdyn::events::Occurrence;
+use eulerdyn::output::events_file::{events_path, events_table};
 use eulerdyn::output::plot::{self, Panel, PlotError};
 use eulerdyn::output::view::ViewError;
-use eulerdyn::output::{CsvWriter, WriteRunError, same_file, write_run_with};
+use eulerdyn::output::{CsvWriter, WriteRunError, same_file, write_run_with_events};
 use eulerdyn::sample::ColumnSet;
 use eulerdyn::scene::Scene;
 use eulerdyn::scene::{self, Flags, Overrides, SceneError};
@@ -326,14 +328,21 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     );
     let output = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let Some(out_path) = output else {
-        return match write_csv(
+        let written = write_csv(
             &args.scene,
             &scene_model,
             columns,
             io::stdout().lock(),
             &mut progress,
-        ) {
-            Ok(_) => Ok(()),
+        );
+        progress.finish();
+        return match written {
+            Ok((_, _, events)) => {
+                if !scene_model.events.is_empty() {
+                    eprint!("{}", events_table(&events));
+                }
+                Ok(())
+            }
             Err(RunError::Sink(e)) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
             Err(e) => Err(run_failure(&args.scene, Path::new("stdout"), e)),
         };
@@ -350,8 +359,8 @@ fn run_to_file(
     mut progress: Progress,
     quiet: bool,
 ) -> Result<(), Failure> {
-    let report =
-        write_run_with(scene_model, out_path, |t| progress.set(t)).map_err(|e| match e {
+    let (report, events) = write_run_with_events(scene_model, out_path, |t| progress.set(t))
+        .map_err(|e| match e {
             WriteRunError::Output { .. } => Failure::Input(e.to_string()),
             WriteRunError::Run(e) => run_failure(&args.scene, out_path, e),
             WriteRunError::Save { .. } => Failure::Run(e.to_string()),
@@ -373,28 +382,36 @@ fn run_to_file(
         report.stats.evals,
         report.wall_seconds
     );
+    if !scene_model.events.is_empty() {
+        eprintln!(
+            "wrote {} events to {}",
+            events.len(),
+            events_path(out_path).display()
+        );
+    }
     Ok(())
 }
 
-/// Runs the scene, streaming its rows as CSV into `out` and its time into `progress`; returns the report and the
-/// flushed writer.
+/// Runs the scene, streaming its rows as CSV into `out` and its time into `progress`; returns the report, the
+/// flushed writer and the located events.
 fn write_csv<W: Write>(
     scene_path: &Path,
     scene: &Scene,
     columns: ColumnSet,
     out: W,
     progress: &mut Progress,
-) -> Result<(RunReport, W), RunError<io::Error>> {
+) -> Result<(RunReport, W, Vec<Occurrence>), RunError<io::Error>> {
     let mut writer = CsvWriter::new(out, columns).map_err(RunError::Sink)?;
-    let report = simulate::run(scene, |s| {
+    let (report, events) = simulate::run_with_events(scene, |s| {
         progress.set(s.t);
         writer.write(s)
     })?;
     let out = writer.finish().map_err(RunError::Sink)?;
+
     if let Some(drift) = simulate::drift_warning(report.energy_drift) {
         eprintln!("{}: warning: {drift}", scene_path.display());
     }
-    Ok((report, out))
+    Ok((report, out, events))
 }
 
 fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {

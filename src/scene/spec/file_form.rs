@@ -6,7 +6,7 @@
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize};
 
-use super::{CompareSpec, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
+use super::{CompareSpec, Direction, Extremum, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
 use crate::effects::Interpolation;
 use crate::frames::Axes;
 
@@ -31,6 +31,9 @@ pub(in crate::scene) struct SceneFile {
     /// `[[effect]]`, in order; none: torque-free.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub(super) effect: Vec<EffectFile>,
+    /// `[[event]]`, in order.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub(super) event: Vec<EventFile>,
     /// `[solver]`.
     pub(super) solver: SolverSpec,
     /// `[output]`.
@@ -322,6 +325,29 @@ pub(super) struct EffectFile {
     /// A torque table's interpolation (default linear).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) interpolation: Option<Interpolation>,
+}
+
+/// One `[[event]]`.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct EventFile {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) name: Option<String>,
+    /// A column, or `|X|`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) when: Option<String>,
+    /// The value crossed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) crosses: Option<f64>,
+    /// `up`, `down` or `both` (crossings; default both).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) direction: Option<Direction>,
+    /// `max` or `min`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) extremum: Option<Extremum>,
+    /// Default false.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) stop: Option<bool>,
 }
 
 /// An array of exactly `N` numbers. (serde's `[f64; N]` ignores extra elements when TOML drives it, so

@@ -4,13 +4,14 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, InitialFile, MotionFile, PointMassFile, ProfileKind,
-    RotorFile, SceneFile, ShapeFile, ShapeKind,
+    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
+    ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, Distribution, EffectSpec, FixedAxisSpec,
-    HingeSpec, InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec,
-    RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, ConditionSpec, Direction, Distribution,
+    EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec,
+    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
+    TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -28,6 +29,9 @@ impl SceneFile {
             initial: self.initial.map(initial).transpose()?,
             effect: (self.effect.iter().enumerate())
                 .map(|(i, e)| effect(i, e))
+                .collect::<Checked<_>>()?,
+            event: (self.event.iter().enumerate())
+                .map(|(i, e)| event(i, e))
                 .collect::<Checked<_>>()?,
             solver: self.solver,
             output: self.output,
@@ -422,6 +426,62 @@ fn profile(table: &KeyPath, doc: &ProfileKeys) -> Checked<ProfileSpec> {
     })
 }
 
+/// One `[[event]]`: `name` and `when`, and exactly one of `crosses` (with its optional `direction`) and
+/// `extremum`.
+fn event(index: usize, doc: &EventFile) -> Checked<EventSpec> {
+    let table = KeyPath::root().key("event").index(index);
+    let key = |name: &str| table.clone().key(name);
+    let kind = "an event";
+    let condition = match (doc.crosses, doc.extremum) {
+        (Some(_), Some(_)) => {
+            return invalid(
+                key("extremum"),
+                "give either `crosses` (a value) or `extremum` (\"max\" or \"min\"), not both",
+            );
+        }
+        (None, None) => {
+            return invalid(
+                table,
+                "an event needs `crosses = VALUE` (with `direction` = \"up\" | \"down\" | \"both\") or `extremum` = \"max\" | \"min\"",
+            );
+        }
+        (Some(value), None) => ConditionSpec::Crosses {
+            value,
+            direction: doc.direction.unwrap_or(Direction::Both),
+        },
+        (None, Some(extremum)) => {
+            if doc.direction.is_some() {
+                return invalid(
+                    key("direction"),
+                    "`direction` applies to `crosses` only; an extremum is \"max\" or \"min\"",
+                );
+            }
+            ConditionSpec::Extremum(extremum)
+        }
+    };
+    Ok(EventSpec {
+        name: required(key("name"), doc.name.clone(), kind)?,
+        when: required(key("when"), doc.when.clone(), kind)?,
+        condition,
+        stop: doc.stop.unwrap_or(false),
+    })
+}
+
+fn event_file(event: &EventSpec) -> EventFile {
+    let (crosses, direction, extremum) = match event.condition {
+        ConditionSpec::Crosses { value, direction } => (Some(value), Some(direction), None),
+        ConditionSpec::Extremum(e) => (None, None, Some(e)),
+    };
+    EventFile {
+        name: Some(event.name.clone()),
+        when: Some(event.when.clone()),
+        crosses,
+        direction,
+        extremum,
+        stop: Some(event.stop),
+    }
+}
+
 impl From<&SceneSpec> for SceneFile {
     /// The scene written key for key: every value the typed scene holds (defaults it filled in included); an
     /// absent `t_off` (+∞) and `None`s are left out.
@@ -443,6 +503,7 @@ impl From<&SceneSpec> for SceneFile {
                 },
             }),
             effect: spec.effect.iter().map(effect_file).collect(),
+            event: spec.event.iter().map(event_file).collect(),
             solver: spec.solver,
             output: spec.output,
             compare: spec.compare,

@@ -8,6 +8,7 @@
 
 mod body;
 mod effect;
+mod event;
 mod file_form;
 mod from_file;
 mod motion;
@@ -21,6 +22,7 @@ pub use body::{
     BodySpec, Distribution, InertiaSpec, PointMassSpec, RotorDrive, RotorSpec, ShapeSpec,
 };
 pub use effect::{EffectSpec, ProfileSpec, TorqueSpec, TorqueTableSpec};
+pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
     AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionKind, MotionSpec, RateSpec,
@@ -41,6 +43,8 @@ pub struct SceneSpec {
     pub initial: Option<InitialSpec>,
     /// `[[effect]]`, in order; none: torque-free.
     pub effect: Vec<EffectSpec>,
+    /// `[[event]]`, in order; none: no events are located.
+    pub event: Vec<EventSpec>,
     /// `[solver]`.
     pub solver: SolverSpec,
     /// `[output]`.
@@ -144,6 +148,7 @@ impl SceneSpec {
             motion: None,
             initial: None,
             effect: Vec::new(),
+            event: Vec::new(),
             solver: SolverSpec {
                 t_end,
                 ..SolverSpec::default()
@@ -182,6 +187,12 @@ impl SceneSpec {
     /// With one more `[[effect]]`: a [`TorqueSpec`], a [`TorqueTableSpec`] or an [`EffectSpec`].
     pub fn with_effect(mut self, effect: impl Into<EffectSpec>) -> Self {
         self.effect.push(effect.into());
+        self
+    }
+
+    /// With one more `[[event]]`.
+    pub fn with_event(mut self, event: EventSpec) -> Self {
+        self.event.push(event);
         self
     }
 

@@ -4,6 +4,7 @@
 
 mod body;
 mod effect;
+mod event;
 mod motion;
 mod resolved;
 mod rotor;
@@ -64,6 +65,8 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     let solver = solver::validate_solver(&doc.solver, overrides)?;
     solver::validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let schedule = solver::validate_schedule(doc, &solver, overrides)?;
+    let columns = Scene::run_columns(&motion, &effects);
+    let events = event::validate_events(doc, columns, &motion, &solver, overrides)?;
     let compare_tolerance = match &doc.compare {
         None => defaults::COMPARE_TOLERANCE,
         Some(c) => positive(
@@ -80,6 +83,7 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         motion,
         attitude0,
         effects,
+        events,
         solver,
         schedule,
         compare_tolerance,

@@ -1,0 +1,60 @@
+//! `[[event]]`: a moment between the rows to locate — a quantity crossing a value, or its local extrema
+//! ([`crate::events`] locates them).
+
+pub use crate::events::{Direction, Extremum};
+
+/// One `[[event]]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventSpec {
+    /// `name`: letters, digits and `_`, unique in the scene.
+    pub name: String,
+    /// `when`: a CSV column of the run, or `|X|` for the norm of X_s_x..z.
+    pub when: String,
+    /// `crosses` (with `direction`) or `extremum`.
+    pub condition: ConditionSpec,
+    /// `stop`: the run ends at the first occurrence (absent: false).
+    pub stop: bool,
+}
+
+/// What an `[[event]]` looks for: exactly one of `crosses` and `extremum`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ConditionSpec {
+    /// `crosses = value`, `direction` (absent: both).
+    Crosses { value: f64, direction: Direction },
+    /// `extremum = "max" | "min"`.
+    Extremum(Extremum),
+}
+
+impl EventSpec {
+    /// The event `name`: `when` crossing `value` in `direction`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{Direction, EventSpec};
+    /// let flip = EventSpec::crossing("flip", "omega_b_y", 0.0, Direction::Down);
+    /// assert!(!flip.stop);
+    /// ```
+    pub fn crossing(name: &str, when: &str, value: f64, direction: Direction) -> Self {
+        Self {
+            name: name.into(),
+            when: when.into(),
+            condition: ConditionSpec::Crosses { value, direction },
+            stop: false,
+        }
+    }
+
+    /// The event `name`: every local extremum of `when` of the kind `extremum`.
+    pub fn extremum(name: &str, when: &str, extremum: Extremum) -> Self {
+        Self {
+            name: name.into(),
+            when: when.into(),
+            condition: ConditionSpec::Extremum(extremum),
+            stop: false,
+        }
+    }
+
+    /// The same event, ending the run at its first occurrence.
+    pub fn stopping(mut self) -> Self {
+        self.stop = true;
+        self
+    }
+}

@@ -1,0 +1,332 @@
+//! `[[event]]`: moments located between the rows on the continuous solution, against closed forms.
+
+use std::f64::consts::PI;
+
+use eulerdyn::events::{Kind, Occurrence};
+use eulerdyn::exact::{JacobiElliptic, TorqueFreeBody};
+use eulerdyn::scene::Overrides;
+use eulerdyn::simulate;
+use nalgebra::{UnitQuaternion, Vector3};
+
+use crate::common::{eulerdyn, scene_from, write_file};
+
+/// A compound pendulum: a thin rod (1 kg, 1 m) hinged at one end, released from rest at `theta0_deg`, hanging along
+/// −y at θ = 0 (as scenarios/rod_pendulum.toml), with rows every 0.05 s and the events given.
+fn pendulum(theta0_deg: f64, method: &str, t_end: f64, events: &str) -> String {
+    format!(
+        r#"[body]
+mass = 1.0
+shape = {{ type = "thin_rod", length = 1.0 }}
+[motion]
+type = "hinge"
+axis = [0.0, 0.0, 1.0]
+point = [-0.5, 0.0, 0.0]
+angle_deg = {theta0_deg}
+[initial]
+attitude = [0.7071067811865476, 0.0, 0.0, -0.7071067811865476]
+[[effect]]
+type = "gravity"
+g = [0.0, -9.81, 0.0]
+{events}
+[solver]
+method = "{method}"
+t_end = {t_end}
+[output]
+every = 0.05
+"#
+    )
+}
+
+/// The compound pendulum's period T = 4 K(k) √(I_A/(m g d)), k = sin(θ₀/2) (Landau & Lifshitz, *Mechanics*, §11,
+/// problem 1 — the simple pendulum's period with l = I_A/(m d); Goldstein, *Classical Mechanics*, 3rd ed., §3.6
+/// ex.), for the rod: I_A = m l²/3, d = l/2.
+fn pendulum_period(theta0_deg: f64) -> f64 {
+    let k = (theta0_deg.to_radians() / 2.0).sin();
+    let quarter = JacobiElliptic::new(k * k).unwrap().quarter_period();
+    let (i_a, mgd): (f64, f64) = (1.0 / 3.0, 9.81 * 0.5);
+    4.0 * quarter * (i_a / mgd).sqrt()
+}
+
+fn occurrences(text: &str) -> (Vec<Occurrence>, simulate::RunReport, Vec<f64>) {
+    let scene = scene_from(text, &Overrides::default());
+    let mut times = Vec::new();
+    let (report, events) = simulate::run_with_events(&scene, |s| {
+        times.push(s.t);
+        Ok::<(), std::convert::Infallible>(())
+    })
+    .unwrap();
+    (events, report, times)
+}
+
+/// The largest |spacing − expected| of consecutive occurrences' times.
+fn spacing_error(events: &[Occurrence], expected: f64) -> f64 {
+    (events.windows(2))
+        .map(|w| (w[1].t - w[0].t - expected).abs())
+        .fold(0.0, f64::max)
+}
+
+const THETA_DOWN: &str = r#"[[event]]
+name = "down"
+when = "theta"
+crosses = 0.0
+direction = "down""#;
+
+#[test]
+fn pendulum_period_from_theta_crossings() {
+    // Rows every 0.05 s do not matter: the crossings are located on the steps' dense output.
+    let period = pendulum_period(30.0);
+    for (method, tol) in [("dop853", 1e-9), ("dopri5", 1e-9), ("rk4", 1e-7)] {
+        let (events, _, _) = occurrences(&pendulum(30.0, method, 10.0, THETA_DOWN));
+        assert!(events.len() >= 5, "{method}: {events:?}");
+        assert!(
+            events
+                .iter()
+                .all(|e| e.kind == Kind::Down && e.value.abs() < 1e-12)
+        );
+        let err = spacing_error(&events, period);
+        eprintln!("{method}: period error {err:e}");
+        assert!(err < tol, "{method}: period error {err:e}");
+        // The first crossing of θ = 0 is a quarter period after the release from rest.
+        assert!(
+            (events[0].t - period / 4.0).abs() < tol,
+            "{method}: {}",
+            events[0].t
+        );
+    }
+}
+
+#[test]
+fn terminal_event_ends_the_run_at_the_quarter_period() {
+    let stop = format!("{THETA_DOWN}\nstop = true");
+    let (events, report, times) = occurrences(&pendulum(30.0, "dop853", 10.0, &stop));
+    let quarter = pendulum_period(30.0) / 4.0;
+    assert_eq!(events.len(), 1);
+    assert!((events[0].t - quarter).abs() < 1e-9, "{}", events[0].t);
+    // The rows: every 0.05 s up to the event, then one at the event's time, and no more.
+    assert_eq!(*times.last().unwrap(), events[0].t);
+    assert_eq!(times.len(), (quarter / 0.05).floor() as usize + 2);
+    assert_eq!(report.rows as usize, times.len());
+}
+
+/// A tennis racket (the body of scenarios/tennis_racket.toml, spun further from the separatrix so that the flips are
+/// less sensitive to the integration error) with ω_y's sign changes as events, run with `method`.
+fn racket(method: &str) -> String {
+    format!(
+        r#"[body]
+mass = 1.0
+inertia = [1.0, 2.0, 3.0]
+[initial]
+omega = [0.2, 2.0, 0.2]
+[[event]]
+name = "flip"
+when = "omega_b_y"
+crosses = 0.0
+[solver]
+method = "{method}"
+rtol = 1e-12
+atol = 1e-14
+t_end = 60.0
+[output]
+every = 0.05
+"#
+    )
+}
+
+#[test]
+fn dzhanibekov_flips_are_2k_over_lambda_apart() {
+    // The intermediate component ∝ sn τ changes sign every 2K(k)/λ (Landau & Lifshitz, *Mechanics*, §37, eq.
+    // (37.10) and after: the period of sn is 4K); src/exact/torque_free.rs's flip_interval.
+    let exact = TorqueFreeBody::new(
+        Vector3::new(1.0, 2.0, 3.0),
+        Vector3::new(0.2, 2.0, 0.2),
+        UnitQuaternion::identity(),
+    )
+    .unwrap();
+    let interval = exact.flip_interval().unwrap();
+    let mut errors = Vec::new();
+    for method in ["dop853", "dopri5", "exact"] {
+        let (events, _, _) = occurrences(&racket(method));
+        assert!(events.len() >= 3, "{method}: {events:?}");
+        let kinds: Vec<Kind> = events.iter().map(|e| e.kind).collect();
+        assert!(
+            kinds.windows(2).all(|w| w[0] != w[1]),
+            "{method}: {kinds:?}"
+        );
+        let err = spacing_error(&events, interval);
+        eprintln!("{method}: flip spacing error {err:e} (2K/λ = {interval})");
+        errors.push((method, err));
+    }
+    for (method, err) in errors {
+        assert!(err < 1e-9, "{method}: {err:e}");
+    }
+}
+
+#[test]
+fn sine_driven_hinge_rate_extrema() {
+    // A disk on a hinge through C (I = m r²/2 = 0.5 kg·m²) from rest, driven by M sin(ω_f t) about the axis:
+    // θ̇ = M/(I ω_f)·(1 − cos ω_f t) (integrating θ̈ = M sin(ω_f t)/I), so the rate's maxima are at
+    // t = (2j+1)π/ω_f with the value 2M/(I ω_f), its minima (zero) at 2jπ/ω_f, j ≥ 1.
+    let (m, i, f) = (0.3, 0.5, 0.7);
+    let omega_f = 2.0 * PI * f;
+    for method in ["dop853", "dopri5"] {
+        let text = format!(
+            r#"[body]
+mass = 1.0
+shape = {{ type = "thin_disk", radius = 1.0 }}
+[motion]
+type = "hinge"
+axis = [0.0, 0.0, 1.0]
+[[effect]]
+type = "torque"
+value = [0.0, 0.0, {m}]
+profile = "sine"
+freq_hz = {f}
+[[event]]
+name = "fastest"
+when = "theta_dot"
+extremum = "max"
+[[event]]
+name = "slowest"
+when = "theta_dot"
+extremum = "min"
+[solver]
+method = "{method}"
+t_end = 6.0
+[output]
+every = 0.05
+"#
+        );
+        let (events, _, _) = occurrences(&text);
+        let maxima: Vec<&Occurrence> = events.iter().filter(|e| e.kind == Kind::Max).collect();
+        let minima: Vec<&Occurrence> = events.iter().filter(|e| e.kind == Kind::Min).collect();
+        assert_eq!(maxima.len(), 4, "{method}: {events:?}");
+        assert_eq!(minima.len(), 4, "{method}: {events:?}");
+        for (j, e) in maxima.iter().enumerate() {
+            let t = (2 * j + 1) as f64 * PI / omega_f;
+            eprintln!("{method}: max {j} at {} (error {:e})", e.t, e.t - t);
+            assert!(
+                (e.t - t).abs() < 1e-7,
+                "{method}: max {j} at {} vs {t}",
+                e.t
+            );
+            assert!((e.value - 2.0 * m / (i * omega_f)).abs() < 1e-9);
+        }
+        for (j, e) in minima.iter().enumerate() {
+            let t = (2 * j + 2) as f64 * PI / omega_f;
+            assert!(
+                (e.t - t).abs() < 1e-7,
+                "{method}: min {j} at {} vs {t}",
+                e.t
+            );
+            assert!(e.value.abs() < 1e-9);
+        }
+    }
+}
+
+#[test]
+fn run_writes_the_events_file_and_lists_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(
+        dir.path(),
+        "p.toml",
+        pendulum(30.0, "dop853", 3.0, THETA_DOWN),
+    );
+    let out = dir.path().join("p.csv");
+    eulerdyn([
+        "run".as_ref(),
+        scene.as_os_str(),
+        "-o".as_ref(),
+        out.as_os_str(),
+    ])
+    .expect_code(0);
+    let text = std::fs::read_to_string(dir.path().join("p.csv.events.csv")).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "event,t,value,direction");
+    assert_eq!(lines.len(), 1 + 2, "{text}");
+    assert!(lines[1].starts_with("down,") && lines[1].ends_with(",down"));
+    let meta = std::fs::read_to_string(dir.path().join("p.csv.meta.json")).unwrap();
+    assert!(meta.contains("\"file\": \"p.csv.events.csv\""), "{meta}");
+    // Without -o, the table goes to stderr and stdout stays the CSV.
+    let run = eulerdyn(["run".as_ref(), scene.as_os_str()]);
+    run.expect_code(0);
+    assert!(run.stdout.starts_with("t,"));
+    assert!(
+        run.stderr.contains("event") && run.stderr.contains("down"),
+        "{}",
+        run.stderr
+    );
+}
+
+#[test]
+fn bad_events_exit_2_naming_key_and_line() {
+    let cases = [
+        (
+            "when = \"omega_q\"\ncrosses = 0.0",
+            "event[0].when",
+            "not a column",
+        ),
+        (
+            "when = \"|R_A|\"\ncrosses = 1.0",
+            "event[0].when",
+            "R_A_s_x",
+        ),
+        (
+            "when = \"theta\"\ncrosses = 0.0\nextremum = \"max\"",
+            "event[0].extremum",
+            "not both",
+        ),
+        ("when = \"theta\"", "event[0]", "needs `crosses"),
+        (
+            "when = \"theta\"\ncrosses = 0.0\ndirection = \"sideways\"",
+            "sideways",
+            "up",
+        ),
+        (
+            "when = \"theta\"\nextremum = \"max\"\ndirection = \"up\"",
+            "event[0].direction",
+            "crosses",
+        ),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("bad.csv");
+    for (body, key, problem) in cases {
+        let event = format!("[[event]]\nname = \"e\"\n{body}");
+        let scene = write_file(
+            dir.path(),
+            "bad.toml",
+            pendulum(30.0, "dop853", 1.0, &event),
+        );
+        let run = eulerdyn([
+            "run".as_ref(),
+            scene.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ]);
+        run.expect_code(2);
+        assert!(
+            run.stderr.contains(key) && run.stderr.contains(problem),
+            "{body}: {}",
+            run.stderr
+        );
+        assert!(run.stderr.contains("bad.toml:"), "{}", run.stderr);
+        assert!(!out.exists() && !run.panicked());
+    }
+    let two = format!("{THETA_DOWN}\n{THETA_DOWN}");
+    let scene = write_file(dir.path(), "dup.toml", pendulum(30.0, "dop853", 1.0, &two));
+    let run = eulerdyn(["run".as_ref(), scene.as_os_str()]);
+    run.expect_code(2);
+    assert!(
+        run.stderr.contains("event[1].name") && run.stderr.contains("unique"),
+        "{}",
+        run.stderr
+    );
+    let bad_name = THETA_DOWN.replace("\"down\"\nwhen", "\"a-b\"\nwhen");
+    let scene = write_file(
+        dir.path(),
+        "name.toml",
+        pendulum(30.0, "dop853", 1.0, &bad_name),
+    );
+    let run = eulerdyn(["run".as_ref(), scene.as_os_str()]);
+    run.expect_code(2);
+    assert!(run.stderr.contains("event[0].name"), "{}", run.stderr);
+}
