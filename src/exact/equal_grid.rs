@@ -146,6 +146,9 @@ struct Walk<'a> {
     three_over_rho: f64,
     /// 1/(2K(m)), for the half-period count of a row.
     inv_two_k: f64,
+    /// The grid step (s), and λ.
+    every: f64,
+    lambda: f64,
     /// ω = omega_of · (cn τ, sn τ, dn τ): the output axes from the canonical frame, times diag(a, ε b, c).
     omega_of: Matrix3<f64>,
     /// The constant right factor of the attitude: canonical → output axes (P, then the axes' rotation).
@@ -183,6 +186,8 @@ impl<'a> Walk<'a> {
             rho,
             three_over_rho: 3.0 / rho,
             inv_two_k: 0.5 / e.jac.quarter_period(),
+            every,
+            lambda: e.lambda,
             omega_of: Matrix3::identity(),
             right: e.q_perm,
             s: 0.0,
@@ -204,25 +209,23 @@ impl<'a> Walk<'a> {
         self.right = e.q_perm * axes_q.inverse();
     }
 
-    /// Restart from the direct evaluation at t.
+    /// Restart from the direct evaluation at t ([`TorqueFreeBody::attitude`]'s: τ, its reduction and the precession
+    /// angle's secular part in double-double, φ reduced modulo 4π).
     fn anchor(&mut self, t: f64) {
         let e = self.e;
-        let red = e.jac.reduce(e.tau(t));
-        (self.s, self.c, self.d) = red.values();
-        // φ = (M/I₁) t + κ (g(τ) − g(τ₀)) (TorqueFreeBody::attitude), its two large terms partly cancelling: one
-        // rounding fewer by a fused multiply-add (a call without the FMA instruction, once per re-anchoring).
-        let phi = if e.n == 0.0 {
-            e.rate_lin * t
-        } else {
-            let g = e.g_integral(red.sn, red.cn, red.dn, red.j) - e.g0;
-            e.rate_lin.mul_add(t, e.kappa * g)
-        };
+        let (tau, (s, c, d, j)) = e.phase(t);
+        let sign = if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 };
+        (self.s, self.c, self.d) = (sign * s, sign * c, d);
+        let phi = e.phi(t, tau, s, c, d, j);
         (self.sin_half_phi, self.cos_half_phi) = (0.5 * phi).sin_cos();
         self.t = t;
     }
 
-    /// One row on, to t: DLMF 22.8.1–22.8.3, and φ by the increment of J (its addition theorem, module docs) and of
-    /// the time (the difference of two rows' times is exact, so the rounding of t_k = k·every is honoured), as a
+    /// One row on, to t: DLMF 22.8.1–22.8.3 by the step h = λ·every, then by the rest of the row's own step,
+    /// `δ = λ(t − t_prev) − h` (the rounding of t_k = k·every, a few ulp(t)·λ; the difference of two rows' times is
+    /// exact) to first order (DLMF 22.13.1–22.13.3: sn′ = cn dn, cn′ = −sn dn, dn′ = −m sn cn; the second order is
+    /// ~1e-27), so that the state is at τ(t_k) and not at λ·k·every + τ₀, which differ by up to λ·ulp(t). φ by the
+    /// increment of J (its addition theorem, module docs; plus J′(u)·δ, J′ = sn²/(1 + ν sn²)) and of the time, as a
     /// rotation of (cos φ/2, sin φ/2) by the increment's half-angle. (No `mul_add`: without the FMA instruction in
     /// the target it is a call.)
     fn advance(&mut self, t: f64) {
@@ -232,17 +235,27 @@ impl<'a> Walk<'a> {
         let s1 = (s * ch_dh + sh * c * d) * inv;
         let c1 = (c * ch - s * d * sh_dh) * inv;
         let d1 = (d * dh - m_sh_ch * s * c) * inv;
+        let dt = t - self.t;
+        let delta = self.lambda * (dt - self.every);
+        let (s1, c1, d1) = (
+            s1 + delta * c1 * d1,
+            c1 - delta * s1 * d1,
+            d1 - delta * self.m * s1 * c1,
+        );
         // Back onto the curve sn² + cn² = 1, dn² = m′ + m cn² (DLMF 22.6.1), one Newton step each: off the curve
         // the addition theorems are not a translation, and the deviation would grow from row to row.
         let scale = 0.5 * (3.0 - (s1 * s1 + c1 * c1));
         let (s1, c1) = (s1 * scale, c1 * scale);
         let d1 = 0.5 * (d1 + (self.mc + self.m * c1 * c1) / d1);
         let e = self.e;
-        let mut d_phi = e.rate_lin * (t - self.t);
+        let mut d_phi = e.phi_rate.hi * dt;
         if self.nu != 0.0 {
             let ss = s * sh;
-            let y = 1.0 + self.nu * (s1 * s1 - ss * c1 * d1);
-            d_phi += e.kappa * (self.g_step + self.three_over_rho * (self.rho * ss * s1).atan2(y));
+            let s1_2 = s1 * s1;
+            let y = 1.0 + self.nu * (s1_2 - ss * c1 * d1);
+            let j_rest = 3.0 * delta * s1_2 / (1.0 + self.nu * s1_2);
+            d_phi += e.kappa
+                * (self.g_step + j_rest + self.three_over_rho * (self.rho * ss * s1).atan2(y));
         }
         let (sin_d, cos_d) = small_sin_cos(0.5 * d_phi);
         let (cos_f, sin_f) = (self.cos_half_phi, self.sin_half_phi);
