@@ -32,7 +32,8 @@
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
-use super::torque_free::{Elliptic, Motion, TorqueFreeBody};
+use super::double_double::{Dd, FOUR_PI};
+use super::torque_free::{Elliptic, Motion, TorqueFreeBody, half_period_sign};
 use crate::trig::small_sin_cos;
 
 /// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
@@ -138,8 +139,12 @@ struct Walk<'a> {
     mc: f64,
     /// sn h, cn h, dn h, cn h dn h, sn h dn h, m sn h cn h, m sn²h.
     step: [f64; 7],
-    /// 3J(h) (the integral in the units of [`Elliptic::g_integral`]).
-    g_step: f64,
+    /// φ's increment per row for the exact step: `(M/I₁)·every + κ·3J(h)` (3J in the units of
+    /// [`Elliptic::g_integral`]), in double-double, reduced modulo 4π.
+    phi_step: Dd,
+    /// The part of h = λ·every (double-double, reduced by 2K) that sn h, cn h, dn h do not see: added to each
+    /// row's first-order correction.
+    h_rest: f64,
     /// ν = −n, ρ and 3/ρ (J's addition theorem); unused when n = 0.
     nu: f64,
     rho: f64,
@@ -164,24 +169,27 @@ struct Walk<'a> {
 }
 
 impl<'a> Walk<'a> {
+    /// The step's constants: h = λ·every in double-double reduced by 2K (so that a step of many half periods is as
+    /// exact as a short one), sn h, cn h, dn h at it, and φ's increment with its secular part
+    /// `(M/I₁)·every + j_h·2κR_J(0, m′, 1, 1−n)` in double-double (see [`TorqueFreeBody::attitude`]).
     fn new(e: &'a Elliptic, every: f64) -> Self {
-        let h = e.lambda * every;
-        let (sh, ch, dh) = e.jac.sn_cn_dn(h);
+        let ((s, c, d, j), h_rest) = e.reduce_tau(e.lambda_dd * every);
+        let sign = half_period_sign(j);
+        let (sh, ch, dh) = (sign * s, sign * c, d);
         let m = e.jac.m();
         let nu = -e.n;
         let rho = (nu * (m + nu) * (1.0 + nu)).sqrt();
-        let g_step = if e.n == 0.0 {
-            0.0
-        } else {
-            let (s, c, d, j) = e.reduced(h);
-            e.g_integral(s, c, d, j)
-        };
+        let mut phi_step = e.phi_rate * every;
+        if e.n != 0.0 {
+            phi_step = phi_step + e.phi_per_half_period * j + e.kappa * e.g_integral(s, c, d, 0.0);
+        }
         let mut walk = Self {
             e,
             m,
             mc: e.jac.mc(),
             step: [sh, ch, dh, ch * dh, sh * dh, m * sh * ch, m * sh * sh],
-            g_step,
+            phi_step: phi_step.reduce(FOUR_PI),
+            h_rest,
             nu,
             rho,
             three_over_rho: 3.0 / rho,
@@ -214,7 +222,7 @@ impl<'a> Walk<'a> {
     fn anchor(&mut self, t: f64) {
         let e = self.e;
         let (tau, (s, c, d, j)) = e.phase(t);
-        let sign = if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 };
+        let sign = half_period_sign(j);
         (self.s, self.c, self.d) = (sign * s, sign * c, d);
         let phi = e.phi(t, tau, s, c, d, j);
         (self.sin_half_phi, self.cos_half_phi) = (0.5 * phi).sin_cos();
@@ -224,10 +232,8 @@ impl<'a> Walk<'a> {
     /// One row on, to t: DLMF 22.8.1–22.8.3 by the step h = λ·every, then by the rest of the row's own step,
     /// `δ = λ(t − t_prev) − h` (the rounding of t_k = k·every, a few ulp(t)·λ; the difference of two rows' times is
     /// exact) to first order (DLMF 22.13.1–22.13.3: sn′ = cn dn, cn′ = −sn dn, dn′ = −m sn cn; the second order is
-    /// ~1e-27), so that the state is at τ(t_k) and not at λ·k·every + τ₀, which differ by up to λ·ulp(t). φ by the
-    /// increment of J (its addition theorem, module docs; plus J′(u)·δ, J′ = sn²/(1 + ν sn²)) and of the time, as a
-    /// rotation of (cos φ/2, sin φ/2) by the increment's half-angle. (No `mul_add`: without the FMA instruction in
-    /// the target it is a call.)
+    /// ~1e-27), so that the state is at τ(t_k) and not at λ·k·every + τ₀, which differ by up to λ·ulp(t). φ turns
+    /// by [`Self::phi_increment`]. (No `mul_add`: without the FMA instruction in the target it is a call.)
     fn advance(&mut self, t: f64) {
         let [sh, ch, dh, ch_dh, sh_dh, m_sh_ch, m_sh2] = self.step;
         let (s, c, d) = (self.s, self.c, self.d);
@@ -236,7 +242,8 @@ impl<'a> Walk<'a> {
         let c1 = (c * ch - s * d * sh_dh) * inv;
         let d1 = (d * dh - m_sh_ch * s * c) * inv;
         let dt = t - self.t;
-        let delta = self.lambda * (dt - self.every);
+        let delta = self.lambda * (dt - self.every) + self.h_rest;
+        let d_phi = self.phi_increment(s * sh, (s1, c1, d1), dt, delta);
         let (s1, c1, d1) = (
             s1 + delta * c1 * d1,
             c1 - delta * s1 * d1,
@@ -247,21 +254,27 @@ impl<'a> Walk<'a> {
         let scale = 0.5 * (3.0 - (s1 * s1 + c1 * c1));
         let (s1, c1) = (s1 * scale, c1 * scale);
         let d1 = 0.5 * (d1 + (self.mc + self.m * c1 * c1) / d1);
-        let e = self.e;
-        let mut d_phi = e.phi_rate.hi * dt;
-        if self.nu != 0.0 {
-            let ss = s * sh;
-            let s1_2 = s1 * s1;
-            let y = 1.0 + self.nu * (s1_2 - ss * c1 * d1);
-            let j_rest = 3.0 * delta * s1_2 / (1.0 + self.nu * s1_2);
-            d_phi += e.kappa
-                * (self.g_step + j_rest + self.three_over_rho * (self.rho * ss * s1).atan2(y));
-        }
         let (sin_d, cos_d) = small_sin_cos(0.5 * d_phi);
         let (cos_f, sin_f) = (self.cos_half_phi, self.sin_half_phi);
         self.cos_half_phi = cos_f * cos_d - sin_f * sin_d;
         self.sin_half_phi = sin_f * cos_d + cos_f * sin_d;
         (self.s, self.c, self.d, self.t) = (s1, c1, d1, t);
+    }
+
+    /// φ's increment over a row (modulo 4π): the constant [`Walk::phi_step`] for the step h (in double-double, its
+    /// low part added here), plus the rest of the time part `(M/I₁)(dt − every)`, plus κ times 3× the increment
+    /// of J beyond J(h) — the arctangent of J's addition theorem (module docs), from `ss = sn u sn h` and sn, cn, dn
+    /// of `u + h` — and `J′(u + h)·δ`, `J′ = sn²/(1 + ν sn²)`, for the rest δ of the row's τ-step.
+    fn phi_increment(&self, ss: f64, (s1, c1, d1): (f64, f64, f64), dt: f64, delta: f64) -> f64 {
+        let e = self.e;
+        let mut rest = self.phi_step.lo + e.phi_rate.hi * (dt - self.every);
+        if self.nu != 0.0 {
+            let s1_2 = s1 * s1;
+            let y = 1.0 + self.nu * (s1_2 - ss * c1 * d1);
+            let j_delta = 3.0 * delta * s1_2 / (1.0 + self.nu * s1_2);
+            rest += e.kappa * (j_delta + self.three_over_rho * (self.rho * ss * s1).atan2(y));
+        }
+        self.phi_step.hi + rest
     }
 
     /// ω in the output axes (L&L §37: ω₁ = a cn τ, ω₂ = ε b sn τ, ω₃ = c dn τ canonically).

@@ -168,7 +168,11 @@ impl TorqueFreeBody {
         } else {
             omega0_p / scale
         };
-        let omega0_norm = unit.iter().fold(Dd::ZERO, |sum, &x| sum + Dd::from(x) * x).sqrt() * scale;
+        let omega0_norm = unit
+            .iter()
+            .fold(Dd::ZERO, |sum, &x| sum + Dd::from(x) * x)
+            .sqrt()
+            * scale;
         let motion = if scale == 0.0 {
             Motion::Stationary
         } else {
@@ -304,13 +308,18 @@ impl TorqueFreeBody {
                     self.q0
                 } else {
                     // The angle |ω₀|·t in double-double, reduced modulo 4π (the quaternion's period).
-                    let angle = (self.omega0_norm * t).reduce_to_f64(FOUR_PI);
+                    let angle = (self.omega0_norm * t).reduce(FOUR_PI).hi;
                     self.q0 * axis_angle_quat(&(self.omega0_p / w), angle)
                 }
             }
             Motion::Elliptic(e) => e.q_fixed * e.q_h(t) * e.q_perm,
         }
     }
+}
+
+/// `(−1)^j`: sn and cn change sign with each half period 2K (DLMF §22.4(iii)).
+pub(super) fn half_period_sign(j: f64) -> f64 {
+    if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 }
 }
 
 /// The largest power of two ≤ x (x ≥ 0 finite; 0 for 0): dividing by it is exact.
@@ -554,23 +563,29 @@ impl Elliptic {
     /// ~j·ulp(2K) from the reduction). On the separatrix nothing is reduced (j = 0).
     pub(super) fn phase(&self, t: f64) -> (f64, (f64, f64, f64, f64)) {
         let tau = self.tau_dd(t);
+        (tau.hi, self.reduce_tau(tau).0)
+    }
+
+    /// sn, cn ≥ 0, dn of the reduced argument `r = τ − 2jK` of a double-double τ, with j; and the part of r below
+    /// binary64 (its rounding, which the functions do not see).
+    pub(super) fn reduce_tau(&self, tau: Dd) -> ((f64, f64, f64, f64), f64) {
         if self.separatrix {
-            return (tau.hi, self.reduced(tau.hi));
+            return (self.reduced(tau.hi), tau.lo);
         }
-        let quarter = self.jac.quarter_period();
-        let j = if tau.hi.abs() <= quarter {
+        let j = if tau.hi.abs() <= self.jac.quarter_period() {
             0.0
         } else {
             (tau.hi / self.two_k.hi).round()
         };
-        let red = self.jac.at_reduced(j, (tau - self.two_k * j).to_f64());
-        (tau.hi, (red.sn, red.cn, red.dn, red.j))
+        let r = tau - self.two_k * j;
+        let red = self.jac.at_reduced(j, r.hi);
+        ((red.sn, red.cn, red.dn, red.j), r.lo)
     }
 
     /// sn, cn, dn of τ(t) (unreduced) and the half-period count j.
     fn functions(&self, t: f64) -> (f64, f64, f64, f64) {
         let (_, (s, c, d, j)) = self.phase(t);
-        let sign = if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 };
+        let sign = half_period_sign(j);
         (sign * s, sign * c, d, j)
     }
 
@@ -602,7 +617,9 @@ impl Elliptic {
     /// `κ(g(τ) − g(τ₀))` which does not grow), or on the separatrix `sep_atan·(atan(√ν tanh τ) − g₀)`. So φ's error
     /// is a few ε·(4π + |κ| R_J), not ε·φ. `(s, c, d, j)` from [`Self::phase`].
     pub(super) fn phi(&self, t: f64, tau: f64, s: f64, c: f64, d: f64, j: f64) -> f64 {
-        let secular = (self.phi_rate * t + self.phi_per_half_period * j).reduce_to_f64(FOUR_PI);
+        let secular = (self.phi_rate * t + self.phi_per_half_period * j)
+            .reduce(FOUR_PI)
+            .hi;
         if self.separatrix {
             let at = (self.sqrt_nu * tau.tanh()).atan();
             secular + self.sep_atan * (at - self.g0)
