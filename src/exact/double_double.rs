@@ -9,7 +9,9 @@
 //! accurate to a few units of 2⁻¹⁰⁴ relative.
 //!
 //! K and Π come from the arithmetic-geometric mean (DLMF 19.8.5, 19.8.6–19.8.7), which needs only these operations
-//! and converges quadratically.
+//! and converges quadratically. (Carlson's duplication for R_F and R_J, DLMF §19.36(i) / Carlson 1995, would serve
+//! as well, but its R_J needs an R_C — an arctangent — at every step; `ellip` evaluates it so in binary64 for the
+//! incomplete integrals, whose values stay bounded.)
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 

@@ -29,6 +29,10 @@
 //! Round-off: the recurrences are neutrally stable, so their rounding errors accumulate (measured: see
 //! [`ANCHOR_ROWS`]); every [`ANCHOR_ROWS`] rows the walk restarts from a direct evaluation, which bounds the error
 //! independently of the number of rows. The separatrix and stationary motions are evaluated directly at every row.
+//! Nothing in a row's error grows with t: the direct evaluation carries `τ = λt + τ₀`, its reduction by 2K and the
+//! precession angle's secular part in double-double ([`TorqueFreeBody::attitude`]); the walk's step h = λ·every and
+//! φ's increment per row are formed the same way once, and each row follows the rounding of its own time
+//! t_k = k·every to first order (so its state is at τ(t_k), as the direct evaluation's is).
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
@@ -38,9 +42,9 @@ use crate::trig::small_sin_cos;
 
 /// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
 /// (test `roundoff_growth_without_reanchoring_sets_the_anchor_interval`, docs/performance.md): for the benchmark
-/// body, never re-anchored, the attitude's difference from the direct evaluation grows like r^1.3–1.5 with the
-/// number of rows r — at h = λ·every ≈ 0.004: 9.5e-15 rad after 256 rows, 3.0e-14 after 1000, 1.1e-13 after 10⁴,
-/// 1.5e-12 after 10⁵ (ω: 9.3e-16, 4.8e-15, 6.9e-15, 1.3e-14); at h ≈ 0.04: 5.7e-15, 2.4e-14, 6.8e-13, 1.4e-11.
+/// body, never re-anchored, the attitude's difference from the direct evaluation grows with the number of rows r —
+/// at h = λ·every ≈ 0.004: 9.9e-15 rad after 256 rows, 2.9e-14 after 1000 and after 10⁴, 5.7e-14 after 10⁵ (ω: 8.8e-16,
+/// 4.6e-15, 4.6e-15, 1.1e-14); at h ≈ 0.04, about in proportion to r: 2.5e-15, 4.9e-15, 5.0e-14, 6.3e-13.
 /// 256 rows keep the walk's own error ~10× below 1e-13; the direct evaluation (~0.4 µs) then costs ~1.5 ns a row.
 pub const ANCHOR_ROWS: u64 = 256;
 

@@ -298,8 +298,8 @@ impl TorqueFreeBody {
     /// count of τ), and a bounded periodic rest. The secular rates come from the exact inputs in double-double
     /// (K and Π by the AGM, DLMF 19.8.5–19.8.7; Dekker 1971), the secular angle is formed and reduced modulo 4π
     /// in double-double, and only then rounded; likewise `τ = λt + τ₀` and its reduction `τ − 2jK`. What is left
-    /// is bounded: a few ε times `4π + |κ| R_J`, independent of t up to `t ~ 1e15/|ω|` (the double-double product's
-    /// own `2⁻¹⁰⁶·φ`). Stationary rotations take the angle `|ω₀|·t` the same way.
+    /// is bounded: a few ε times `4π + |κ| R_J`, independent of t while the double-double's own `2⁻¹⁰⁶·φ` stays below
+    /// that (φ up to ~1e16 rad). Stationary rotations take the angle `|ω₀|·t` the same way.
     pub fn attitude(&self, t: f64) -> UnitQuaternion<f64> {
         match &self.motion {
             Motion::Stationary => {
