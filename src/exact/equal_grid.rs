@@ -29,17 +29,22 @@
 //! Round-off: the recurrences are neutrally stable, so their rounding errors accumulate (measured: see
 //! [`ANCHOR_ROWS`]); every [`ANCHOR_ROWS`] rows the walk restarts from a direct evaluation, which bounds the error
 //! independently of the number of rows. The separatrix and stationary motions are evaluated directly at every row.
+//! Nothing in a row's error grows with t: the direct evaluation carries `τ = λt + τ₀`, its reduction by 2K and the
+//! precession angle's secular part in double-double ([`TorqueFreeBody::attitude`]); the walk's step h = λ·every and
+//! φ's increment per row are formed the same way once, and each row follows the rounding of its own time
+//! t_k = k·every to first order (so its state is at τ(t_k), as the direct evaluation's is).
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
-use super::torque_free::{Elliptic, Motion, TorqueFreeBody};
+use super::double_double::{Dd, FOUR_PI};
+use super::torque_free::{Elliptic, Motion, TorqueFreeBody, half_period_sign};
 use crate::trig::small_sin_cos;
 
 /// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
 /// (test `roundoff_growth_without_reanchoring_sets_the_anchor_interval`, docs/performance.md): for the benchmark
-/// body, never re-anchored, the attitude's difference from the direct evaluation grows like r^1.3–1.5 with the
-/// number of rows r — at h = λ·every ≈ 0.004: 9.5e-15 rad after 256 rows, 3.0e-14 after 1000, 1.1e-13 after 10⁴,
-/// 1.5e-12 after 10⁵ (ω: 9.3e-16, 4.8e-15, 6.9e-15, 1.3e-14); at h ≈ 0.04: 5.7e-15, 2.4e-14, 6.8e-13, 1.4e-11.
+/// body, never re-anchored, the attitude's difference from the direct evaluation grows with the number of rows r —
+/// at h = λ·every ≈ 0.004: 9.9e-15 rad after 256 rows, 2.9e-14 after 1000 and after 10⁴, 5.7e-14 after 10⁵ (ω: 8.8e-16,
+/// 4.6e-15, 4.6e-15, 1.1e-14); at h ≈ 0.04, about in proportion to r: 2.5e-15, 4.9e-15, 5.0e-14, 6.3e-13.
 /// 256 rows keep the walk's own error ~10× below 1e-13; the direct evaluation (~0.4 µs) then costs ~1.5 ns a row.
 pub const ANCHOR_ROWS: u64 = 256;
 
@@ -138,14 +143,21 @@ struct Walk<'a> {
     mc: f64,
     /// sn h, cn h, dn h, cn h dn h, sn h dn h, m sn h cn h, m sn²h.
     step: [f64; 7],
-    /// 3J(h) (the integral in the units of [`Elliptic::g_integral`]).
-    g_step: f64,
+    /// φ's increment per row for the exact step: `(M/I₁)·every + κ·3J(h)` (3J in the units of
+    /// [`Elliptic::g_integral`]), in double-double, reduced modulo 4π.
+    phi_step: Dd,
+    /// The part of h = λ·every (double-double, reduced by 2K) that sn h, cn h, dn h do not see: added to each
+    /// row's first-order correction.
+    h_rest: f64,
     /// ν = −n, ρ and 3/ρ (J's addition theorem); unused when n = 0.
     nu: f64,
     rho: f64,
     three_over_rho: f64,
     /// 1/(2K(m)), for the half-period count of a row.
     inv_two_k: f64,
+    /// The grid step (s), and λ.
+    every: f64,
+    lambda: f64,
     /// ω = omega_of · (cn τ, sn τ, dn τ): the output axes from the canonical frame, times diag(a, ε b, c).
     omega_of: Matrix3<f64>,
     /// The constant right factor of the attitude: canonical → output axes (P, then the axes' rotation).
@@ -161,28 +173,33 @@ struct Walk<'a> {
 }
 
 impl<'a> Walk<'a> {
+    /// The step's constants: h = λ·every in double-double reduced by 2K (so that a step of many half periods is as
+    /// exact as a short one), sn h, cn h, dn h at it, and φ's increment with its secular part
+    /// `(M/I₁)·every + j_h·2κR_J(0, m′, 1, 1−n)` in double-double (see [`TorqueFreeBody::attitude`]).
     fn new(e: &'a Elliptic, every: f64) -> Self {
-        let h = e.lambda * every;
-        let (sh, ch, dh) = e.jac.sn_cn_dn(h);
+        let ((s, c, d, j), h_rest) = e.reduce_tau(e.lambda_dd * every);
+        let sign = half_period_sign(j);
+        let (sh, ch, dh) = (sign * s, sign * c, d);
         let m = e.jac.m();
         let nu = -e.n;
         let rho = (nu * (m + nu) * (1.0 + nu)).sqrt();
-        let g_step = if e.n == 0.0 {
-            0.0
-        } else {
-            let (s, c, d, j) = e.reduced(h);
-            e.g_integral(s, c, d, j)
-        };
+        let mut phi_step = e.phi_rate * every;
+        if e.n != 0.0 {
+            phi_step = phi_step + e.phi_per_half_period * j + e.kappa * e.g_integral(s, c, d, 0.0);
+        }
         let mut walk = Self {
             e,
             m,
             mc: e.jac.mc(),
             step: [sh, ch, dh, ch * dh, sh * dh, m * sh * ch, m * sh * sh],
-            g_step,
+            phi_step: phi_step.reduce(FOUR_PI),
+            h_rest,
             nu,
             rho,
             three_over_rho: 3.0 / rho,
             inv_two_k: 0.5 / e.jac.quarter_period(),
+            every,
+            lambda: e.lambda,
             omega_of: Matrix3::identity(),
             right: e.q_perm,
             s: 0.0,
@@ -204,27 +221,23 @@ impl<'a> Walk<'a> {
         self.right = e.q_perm * axes_q.inverse();
     }
 
-    /// Restart from the direct evaluation at t.
+    /// Restart from the direct evaluation at t ([`TorqueFreeBody::attitude`]'s: τ, its reduction and the precession
+    /// angle's secular part in double-double, φ reduced modulo 4π).
     fn anchor(&mut self, t: f64) {
         let e = self.e;
-        let red = e.jac.reduce(e.tau(t));
-        (self.s, self.c, self.d) = red.values();
-        // φ = (M/I₁) t + κ (g(τ) − g(τ₀)) (TorqueFreeBody::attitude), its two large terms partly cancelling: one
-        // rounding fewer by a fused multiply-add (a call without the FMA instruction, once per re-anchoring).
-        let phi = if e.n == 0.0 {
-            e.rate_lin * t
-        } else {
-            let g = e.g_integral(red.sn, red.cn, red.dn, red.j) - e.g0;
-            e.rate_lin.mul_add(t, e.kappa * g)
-        };
+        let (tau, (s, c, d, j)) = e.phase(t);
+        let sign = half_period_sign(j);
+        (self.s, self.c, self.d) = (sign * s, sign * c, d);
+        let phi = e.phi(t, tau, s, c, d, j);
         (self.sin_half_phi, self.cos_half_phi) = (0.5 * phi).sin_cos();
         self.t = t;
     }
 
-    /// One row on, to t: DLMF 22.8.1–22.8.3, and φ by the increment of J (its addition theorem, module docs) and of
-    /// the time (the difference of two rows' times is exact, so the rounding of t_k = k·every is honoured), as a
-    /// rotation of (cos φ/2, sin φ/2) by the increment's half-angle. (No `mul_add`: without the FMA instruction in
-    /// the target it is a call.)
+    /// One row on, to t: DLMF 22.8.1–22.8.3 by the step h = λ·every, then by the rest of the row's own step,
+    /// `δ = λ(t − t_prev) − h` (the rounding of t_k = k·every, a few ulp(t)·λ; the difference of two rows' times is
+    /// exact) to first order (DLMF 22.13.1–22.13.3: sn′ = cn dn, cn′ = −sn dn, dn′ = −m sn cn; the second order is
+    /// ~1e-27), so that the state is at τ(t_k) and not at λ·k·every + τ₀, which differ by up to λ·ulp(t). φ turns
+    /// by [`Self::phi_increment`]. (No `mul_add`: without the FMA instruction in the target it is a call.)
     fn advance(&mut self, t: f64) {
         let [sh, ch, dh, ch_dh, sh_dh, m_sh_ch, m_sh2] = self.step;
         let (s, c, d) = (self.s, self.c, self.d);
@@ -232,23 +245,40 @@ impl<'a> Walk<'a> {
         let s1 = (s * ch_dh + sh * c * d) * inv;
         let c1 = (c * ch - s * d * sh_dh) * inv;
         let d1 = (d * dh - m_sh_ch * s * c) * inv;
+        let dt = t - self.t;
+        let delta = self.lambda * (dt - self.every) + self.h_rest;
+        let d_phi = self.phi_increment(s * sh, (s1, c1, d1), dt, delta);
+        let (s1, c1, d1) = (
+            s1 + delta * c1 * d1,
+            c1 - delta * s1 * d1,
+            d1 - delta * self.m * s1 * c1,
+        );
         // Back onto the curve sn² + cn² = 1, dn² = m′ + m cn² (DLMF 22.6.1), one Newton step each: off the curve
         // the addition theorems are not a translation, and the deviation would grow from row to row.
         let scale = 0.5 * (3.0 - (s1 * s1 + c1 * c1));
         let (s1, c1) = (s1 * scale, c1 * scale);
         let d1 = 0.5 * (d1 + (self.mc + self.m * c1 * c1) / d1);
-        let e = self.e;
-        let mut d_phi = e.rate_lin * (t - self.t);
-        if self.nu != 0.0 {
-            let ss = s * sh;
-            let y = 1.0 + self.nu * (s1 * s1 - ss * c1 * d1);
-            d_phi += e.kappa * (self.g_step + self.three_over_rho * (self.rho * ss * s1).atan2(y));
-        }
         let (sin_d, cos_d) = small_sin_cos(0.5 * d_phi);
         let (cos_f, sin_f) = (self.cos_half_phi, self.sin_half_phi);
         self.cos_half_phi = cos_f * cos_d - sin_f * sin_d;
         self.sin_half_phi = sin_f * cos_d + cos_f * sin_d;
         (self.s, self.c, self.d, self.t) = (s1, c1, d1, t);
+    }
+
+    /// φ's increment over a row (modulo 4π): the constant [`Walk::phi_step`] for the step h (in double-double, its
+    /// low part added here), plus the rest of the time part `(M/I₁)(dt − every)`, plus κ times 3× the increment
+    /// of J beyond J(h) — the arctangent of J's addition theorem (module docs), from `ss = sn u sn h` and sn, cn, dn
+    /// of `u + h` — and `J′(u + h)·δ`, `J′ = sn²/(1 + ν sn²)`, for the rest δ of the row's τ-step.
+    fn phi_increment(&self, ss: f64, (s1, c1, d1): (f64, f64, f64), dt: f64, delta: f64) -> f64 {
+        let e = self.e;
+        let mut rest = self.phi_step.lo + e.phi_rate.hi * (dt - self.every);
+        if self.nu != 0.0 {
+            let s1_2 = s1 * s1;
+            let y = 1.0 + self.nu * (s1_2 - ss * c1 * d1);
+            let j_delta = 3.0 * delta * s1_2 / (1.0 + self.nu * s1_2);
+            rest += e.kappa * (j_delta + self.three_over_rho * (self.rho * ss * s1).atan2(y));
+        }
+        self.phi_step.hi + rest
     }
 
     /// ω in the output axes (L&L §37: ω₁ = a cn τ, ω₂ = ε b sn τ, ω₃ = c dn τ canonically).

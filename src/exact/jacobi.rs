@@ -244,14 +244,7 @@ impl JacobiElliptic {
             };
         }
         if self.mc == 0.0 {
-            // Hyperbolic limit (DLMF §22.5(iv)): sn = tanh, cn = dn = sech.
-            let sech = 1.0 / u.cosh();
-            return Reduced {
-                j: 0.0,
-                sn: u.tanh(),
-                cn: sech,
-                dn: sech,
-            };
+            return self.at_reduced(0.0, u);
         }
         let k = self.quarter_period;
         let two_k = 2.0 * k;
@@ -261,6 +254,35 @@ impl JacobiElliptic {
             (u / two_k).round()
         };
         let r = if j == 0.0 { u } else { (-j).mul_add(two_k, u) };
+        self.at_reduced(j, r)
+    }
+
+    /// sn, cn, dn at `r`, the reduced argument of `u = 2K·j + r` (`|r| ≤ K` up to rounding) that the caller formed,
+    /// e.g. in higher precision than binary64 so that `r` carries no error growing with `|u|`
+    /// ([`crate::exact::TorqueFreeBody`] reduces `τ = λt + τ₀` in double-double). `m = 1` (no reduction) takes
+    /// `j = 0`, `r = u`.
+    pub(crate) fn at_reduced(&self, j: f64, r: f64) -> Reduced {
+        if self.m == 0.0 {
+            // Circular limit: sin, cos of r (K = π/2).
+            let (sn, cn) = r.sin_cos();
+            return Reduced {
+                j,
+                sn,
+                cn: cn.max(0.0),
+                dn: 1.0,
+            };
+        }
+        if self.mc == 0.0 {
+            // Hyperbolic limit (DLMF §22.5(iv)): sn = tanh, cn = dn = sech.
+            let sech = 1.0 / r.cosh();
+            return Reduced {
+                j: 0.0,
+                sn: r.tanh(),
+                cn: sech,
+                dn: sech,
+            };
+        }
+        let k = self.quarter_period;
         let z = r.abs();
         let (s, c, d) = if z <= 0.5 * k {
             self.landen(z)

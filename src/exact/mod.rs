@@ -14,6 +14,7 @@
 //!   heavy symmetric top in steady precession (Goldstein, *Classical Mechanics*, §§5.6–5.7).
 
 pub mod damped_spin;
+mod double_double;
 pub mod equal_grid;
 pub mod jacobi;
 pub mod symmetric;

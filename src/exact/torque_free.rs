@@ -51,6 +51,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use ellip::elliprj;
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
+use super::double_double::{Dd, FOUR_PI, complete_k_pi};
 use super::jacobi::JacobiElliptic;
 use super::{ExactError, axis_angle_quat, check_moments};
 
@@ -82,6 +83,8 @@ pub struct TorqueFreeBody {
     q0: UnitQuaternion<f64>,
     h_s: Vector3<f64>,
     energy: f64,
+    /// |ω₀| in double-double (stationary motion: the angle |ω₀|·t of the rotation, reduced modulo 4π).
+    omega0_norm: Dd,
     pub(super) motion: Motion,
 }
 
@@ -104,22 +107,27 @@ pub(super) struct Elliptic {
     pub(super) c: f64,
     pub(super) eps: f64,
     pub(super) lambda: f64,
+    /// λ and the half period 2K(m) of sn, cn in double-double, for `τ = λt + τ₀` and its reduction `τ − 2jK`.
+    pub(super) lambda_dd: Dd,
+    pub(super) two_k: Dd,
     pub(super) tau0: f64,
     pub(super) separatrix: bool,
     pub(super) jac: JacobiElliptic,
     /// `n = −I₃(I₂−I₁)/(I₁(I₃−I₂)) ≤ 0`, the characteristic of Π (A&S 17.2.15 sign
     /// convention: `Π(φ, n|m) = ∫ dθ / ((1 − n sin²θ) √(1 − m sin²θ))`).
     pub(super) n: f64,
-    /// `M/I₁`: the mean-free part of dφ/dt.
-    pub(super) rate_lin: f64,
+    /// The secular part of φ in double-double, `phi_rate · t + phi_per_half_period · j` (j the half-period count of
+    /// τ): `M/I₁` and `2κ R_J(0, m′, 1, 1−n) = 2 M(I₃ − I₁)/(I₁I₃λ) · (Π(n|m) − K(m))` (elliptic); on the separatrix
+    /// `sep_lin` and 0. The rest of φ is bounded (see [`TorqueFreeBody::attitude`]).
+    pub(super) phi_rate: Dd,
+    pub(super) phi_per_half_period: Dd,
     /// Coefficient of `2j R_J(0, m′, 1, 1−n) + s³ R_J(c², d², 1, 1 − n s²)` in φ (elliptic).
     pub(super) kappa: f64,
     /// `R_J(0, m′, 1, 1 − n)` (elliptic case).
     pub(super) rj_complete: f64,
     /// The φ-integral's value at τ₀ (subtracted so that φ(0) = 0).
     pub(super) g0: f64,
-    /// Separatrix: `φ = sep_lin · t + sep_atan · (atan(√ν tanh τ) − atan(√ν tanh τ₀))`.
-    pub(super) sep_lin: f64,
+    /// Separatrix: `φ = sep_lin · t + sep_atan · (atan(√ν tanh τ) − atan(√ν tanh τ₀))`, `sep_lin` = `phi_rate`.
     pub(super) sep_atan: f64,
     pub(super) sqrt_nu: f64,
     /// `q0 ⊗ perm⁻¹ ⊗ q_H(0)⁻¹`: maps the "H frame" (space frame rotated so that H ∥ z) to
@@ -152,13 +160,22 @@ impl TorqueFreeBody {
         let h0_p = moments_p.component_mul(&omega0_p);
         let h_s = q0 * h0_p;
         let energy = 0.5 * omega0_p.dot(&h0_p);
-        // Work with ω scaled to max |ω_i| = 1 so that squares neither underflow nor
+        // Work with ω scaled by a power of two to 1 ≤ max |ω_i| < 2 (exactly) so that squares neither underflow nor
         // overflow; every rate scales linearly with |ω|.
-        let scale = omega0_p.amax();
+        let scale = pow2_floor(omega0_p.amax());
+        let unit = if scale == 0.0 {
+            Vector3::zeros()
+        } else {
+            omega0_p / scale
+        };
+        let omega0_norm = unit
+            .iter()
+            .fold(Dd::ZERO, |sum, &x| sum + Dd::from(x) * x)
+            .sqrt()
+            * scale;
         let motion = if scale == 0.0 {
             Motion::Stationary
         } else {
-            let unit = omega0_p / scale;
             match classify(&moments_p, &unit) {
                 None => Motion::Stationary,
                 Some((perm, axis3_user, separatrix)) => Motion::Elliptic(Box::new(Elliptic::new(
@@ -172,6 +189,7 @@ impl TorqueFreeBody {
             q0,
             h_s,
             energy,
+            omega0_norm,
             motion,
         })
     }
@@ -206,7 +224,7 @@ impl TorqueFreeBody {
         match &self.motion {
             Motion::Stationary => self.omega0_p,
             Motion::Elliptic(e) => {
-                let (s, c, d, _) = e.functions(e.tau(t));
+                let (s, c, d, _) = e.functions(t);
                 e.perm.transpose() * Vector3::new(e.a * c, e.eps * e.b * s, e.c * d)
             }
         }
@@ -275,20 +293,47 @@ impl TorqueFreeBody {
     /// of τ), so `q(t)` is continuous in `t` (no sign flips). On the separatrix the Π-integral is
     /// elementary: `∫₀^τ du/(1 + ν tanh²u) = (τ + √ν atan(√ν tanh τ))/(1 + ν)`, `ν = −n`.
     ///
-    /// Accuracy: φ is exact up to rounding of `λ t` and of the rates, i.e. a relative error of
-    /// a few ε in the accumulated angle (≈ 1e-10 rad after 1e6 rad of rotation).
+    /// Accuracy: φ grows without bound (≈ 600 rad after 100 s for the benchmark body), so in binary64 its rounding
+    /// alone would be ε·φ. It is split into a secular part, `(M/I₁)·t + 2j·κR_J(0, m′, 1, 1−n)` (j the half-period
+    /// count of τ), and a bounded periodic rest. The secular rates come from the exact inputs in double-double
+    /// (K and Π by the AGM, DLMF 19.8.5–19.8.7; Dekker 1971), the secular angle is formed and reduced modulo 4π
+    /// in double-double, and only then rounded; likewise `τ = λt + τ₀` and its reduction `τ − 2jK`. What is left
+    /// is bounded: a few ε times `4π + |κ| R_J`, independent of t while the double-double's own `2⁻¹⁰⁶·φ` stays below
+    /// that (φ up to ~1e16 rad). Stationary rotations take the angle `|ω₀|·t` the same way.
     pub fn attitude(&self, t: f64) -> UnitQuaternion<f64> {
         match &self.motion {
             Motion::Stationary => {
-                let w = self.omega0_p.norm();
+                let w = self.omega0_norm.hi;
                 if w == 0.0 {
                     self.q0
                 } else {
-                    self.q0 * axis_angle_quat(&(self.omega0_p / w), w * t)
+                    // The angle |ω₀|·t in double-double, reduced modulo 4π (the quaternion's period).
+                    let angle = (self.omega0_norm * t).reduce(FOUR_PI).hi;
+                    self.q0 * axis_angle_quat(&(self.omega0_p / w), angle)
                 }
             }
             Motion::Elliptic(e) => e.q_fixed * e.q_h(t) * e.q_perm,
         }
+    }
+}
+
+/// `(−1)^j`: sn and cn change sign with each half period 2K (DLMF §22.4(iii)).
+pub(super) fn half_period_sign(j: f64) -> f64 {
+    if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 }
+}
+
+/// The largest power of two ≤ x (x ≥ 0 finite; 0 for 0): dividing by it is exact.
+fn pow2_floor(x: f64) -> f64 {
+    let bits = x.to_bits();
+    if bits >> 52 == 0 {
+        // Zero or subnormal: keep the leading bit.
+        if bits == 0 {
+            0.0
+        } else {
+            f64::from_bits(1 << (63 - bits.leading_zeros()))
+        }
+    } else {
+        f64::from_bits(bits & (0x7ff << 52))
     }
 }
 
@@ -373,8 +418,62 @@ fn quat_x(angle: f64) -> Quaternion<f64> {
     Quaternion::new(c, s, 0.0, 0.0)
 }
 
+/// The constants of the motion in double-double (module docs; L&L §37), from the canonical moments and
+/// `w = ω₀/scale` — exact, `scale` being a power of two — so that the secular rates are good to ~1e-30 relative
+/// and `λt`, `j·2K` and the precession angle's secular part stay exact to ~1e-30·t: amplitudes, λ and |H| in
+/// physical units (they scale with |ω|; m, m′, n do not).
+struct Constants {
+    a: Dd,
+    b: Dd,
+    c: Dd,
+    lambda: Dd,
+    m: Dd,
+    mc: Dd,
+    n: Dd,
+    h_norm: Dd,
+    /// `M(I₃ − I₁)/(I₁I₃λ)`, the coefficient of `∫dτ/(1 − n sn²τ)` in φ.
+    coef_pi: Dd,
+}
+
+impl Constants {
+    fn new(i: [f64; 3], w: [f64; 3], scale: f64, separatrix: bool) -> Self {
+        let [i1, i2, i3] = i.map(Dd::from);
+        let [w1, w2, w3] = w.map(|x| Dd::from(x) * x);
+        let (d21, d31, d32) = (i2 - i1, i3 - i1, i3 - i2);
+        let a2 = w1 + i2 * d32 / (i1 * d31) * w2;
+        let b2 = i1 * d31 / (i2 * d32) * w1 + w2;
+        let c2 = i2 * d21 / (i3 * d31) * w2 + w3;
+        let denom = i3 * d32 * c2;
+        let (m, mc) = if separatrix {
+            (Dd::ONE, Dd::ZERO)
+        } else {
+            let m = i1 * d21 * a2 / denom;
+            let mc = (i3 * d32 * w3 - i1 * d21 * w1) / denom;
+            (m.clamp(0.0, 1.0), mc.clamp(0.0, 1.0))
+        };
+        let n = if d21.hi == 0.0 {
+            Dd::ZERO
+        } else {
+            -(i3 * d21 / (i1 * d32))
+        };
+        let lambda = (c2 * d31 * d32 / (i1 * i2)).sqrt() * scale;
+        let h_norm = (i1 * i1 * w1 + i2 * i2 * w2 + i3 * i3 * w3).sqrt() * scale;
+        Self {
+            a: a2.sqrt() * scale,
+            b: b2.sqrt() * scale,
+            c: c2.sqrt() * scale,
+            lambda,
+            m,
+            mc,
+            n,
+            h_norm,
+            coef_pi: h_norm * d31 / (i1 * i3 * lambda),
+        }
+    }
+}
+
 impl Elliptic {
-    /// `omega_unit` is the initial ω divided by `scale` (= max |ω_i|).
+    /// `omega_unit` is the initial ω divided by `scale` (a power of two, so the division is exact).
     fn new(
         moments: &Vector3<f64>,
         omega_unit: &Vector3<f64>,
@@ -387,58 +486,40 @@ impl Elliptic {
         let ic = perm.abs() * moments;
         let (i1, i2, i3) = (ic.x, ic.y, ic.z);
         let w = perm * omega_unit;
-        let (d21, d31, d32) = (i2 - i1, i3 - i1, i3 - i2);
-        let eps = d31.signum();
-        let a = (w.x * w.x + i2 * d32 / (i1 * d31) * w.y * w.y).sqrt();
-        let b = (i1 * d31 / (i2 * d32) * w.x * w.x + w.y * w.y).sqrt();
-        let c = (i2 * d21 / (i3 * d31) * w.y * w.y + w.z * w.z).sqrt();
-        let lambda = c * (d31 * d32 / (i1 * i2)).sqrt();
-        let denom = i3 * d32 * c * c;
-        let (m, mc) = if separatrix {
-            (1.0, 0.0)
-        } else {
-            let m = (i1 * d21 * a * a / denom).clamp(0.0, 1.0);
-            let mc = ((i3 * d32 * w.z * w.z - i1 * d21 * w.x * w.x) / denom).clamp(0.0, 1.0);
-            (m, mc)
-        };
+        let k = Constants::new([i1, i2, i3], [w.x, w.y, w.z], scale, separatrix);
+        let eps = (i3 - i1).signum();
+        let (m, mc) = (k.m.hi, k.mc.hi);
         let jac = JacobiElliptic::with_complement(m, mc)
             .or_else(|| JacobiElliptic::new(m))
             .ok_or(ExactError::Numerical("elliptic parameter out of [0, 1]"))?;
-        let tau0 = initial_phase(w.x / a, eps * w.y / b, mc, separatrix)?;
-        // Back to physical units: amplitudes, λ and |H| scale with |ω|; m, τ₀ do not.
-        let (a, b, c, lambda) = (a * scale, b * scale, c * scale, lambda * scale);
-        let h_norm = (ic.component_mul(&w)).norm() * scale;
-        let n = if d21 == 0.0 {
-            0.0
-        } else {
-            -i3 * d21 / (i1 * d32)
-        };
-        let rate_lin = h_norm / i1;
-        let coef_pi = h_norm * d31 / (i1 * i3 * lambda); // multiplies ∫dτ/(1 − n sn²)
+        let (a, b) = (k.a.hi, k.b.hi);
+        let tau0 = initial_phase(w.x * scale / a, eps * w.y * scale / b, mc, separatrix)?;
         let mut e = Self {
             perm,
             axis3_user,
             inertia: [i1, i2, i3],
             a,
             b,
-            c,
+            c: k.c.hi,
             eps,
-            lambda,
+            lambda: k.lambda.hi,
+            lambda_dd: k.lambda,
+            two_k: Dd::ZERO,
             tau0,
             separatrix,
             jac,
-            n,
-            rate_lin,
-            kappa: coef_pi * n / 3.0,
+            n: k.n.hi,
+            phi_rate: k.h_norm / Dd::from(i1),
+            phi_per_half_period: Dd::ZERO,
+            kappa: (k.coef_pi * k.n).hi / 3.0,
             rj_complete: 0.0,
             g0: 0.0,
-            sep_lin: 0.0,
             sep_atan: 0.0,
             sqrt_nu: 0.0,
             q_fixed: UnitQuaternion::identity(),
             q_perm: UnitQuaternion::identity(),
         };
-        e.init_precession(h_norm, coef_pi, mc)?;
+        e.init_precession(&k);
         let q_perm = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(perm));
         let q_h0 = e.q_h(0.0);
         e.q_fixed = q0 * q_perm.inverse() * q_h0.inverse();
@@ -447,40 +528,68 @@ impl Elliptic {
     }
 
     /// The constants of the precession angle's integral ∫dτ/(1 − n sn²): on the separatrix (sn = tanh, n = −ν)
-    /// its closed form in atan; elsewhere Π(n|m) − K and its value at τ₀.
-    fn init_precession(&mut self, h_norm: f64, coef_pi: f64, mc: f64) -> Result<(), ExactError> {
-        let (n, tau0) = (self.n, self.tau0);
+    /// its closed form in atan, `φ = sep_lin·t + sep_atan·(atan(√ν tanh τ) − g₀)` with
+    /// `sep_lin = M/I₃ + M(I₃ − I₁)/(I₁I₃(1 + ν))`; elsewhere the half period 2K, Π(n|m) − K = (n/3) R_J(0, m′, 1, 1 − n)
+    /// (DLMF §19.25(i)) and the integral's value at τ₀, with K and Π by the AGM in double-double.
+    fn init_precession(&mut self, k: &Constants) {
+        let tau0 = self.tau0;
+        let i3 = self.inertia[2];
         if self.separatrix {
-            let nu = -n;
+            let nu = -self.n;
             self.sqrt_nu = nu.sqrt();
-            self.sep_lin = h_norm / self.inertia[2] + coef_pi * self.lambda / (1.0 + nu);
-            self.sep_atan = coef_pi * self.sqrt_nu / (1.0 + nu);
+            self.phi_rate = k.h_norm / Dd::from(i3) + k.coef_pi * k.lambda / (Dd::ONE - k.n);
+            self.sep_atan = k.coef_pi.hi * self.sqrt_nu / (1.0 + nu);
             self.g0 = (self.sqrt_nu * tau0.tanh()).atan();
-        } else if n != 0.0 {
-            // Π(n|m) − K = (n/3) R_J(0, m′, 1, 1 − n)  (DLMF §19.25(i)).
-            self.rj_complete = elliprj(0.0, mc, 1.0, 1.0 - n).map_err(ExactError::Numerical)?;
-            let (s, c, d, j) = self.reduced(tau0);
-            self.g0 = self.g_integral(s, c, d, j);
+            return;
         }
-        Ok(())
+        let (quarter, pi_n) = complete_k_pi(k.mc, k.n);
+        self.two_k = quarter * 2.0;
+        if self.n != 0.0 {
+            let pi_minus_k = pi_n - quarter;
+            self.phi_per_half_period = k.coef_pi * pi_minus_k * 2.0;
+            self.rj_complete = (pi_minus_k * 3.0 / k.n).hi;
+            let (s, c, d, _) = self.reduced(tau0);
+            self.g0 = self.g_integral(s, c, d, 0.0);
+        }
     }
 
-    pub(super) fn tau(&self, t: f64) -> f64 {
-        self.lambda.mul_add(t, self.tau0)
+    /// τ(t) = λt + τ₀ in double-double (`t` exact).
+    fn tau_dd(&self, t: f64) -> Dd {
+        self.lambda_dd * t + self.tau0
     }
 
-    /// sn, cn, dn of τ (unreduced) and the half-period count j.
-    fn functions(&self, tau: f64) -> (f64, f64, f64, f64) {
+    /// τ(t) rounded, and sn, cn ≥ 0, dn of its reduced argument `r = τ − 2jK` with the half-period count j, τ and
+    /// `j·2K` in double-double: `r` carries no error growing with t (binary64 would add ~ε·τ from λt and
+    /// ~j·ulp(2K) from the reduction). On the separatrix nothing is reduced (j = 0).
+    pub(super) fn phase(&self, t: f64) -> (f64, (f64, f64, f64, f64)) {
+        let tau = self.tau_dd(t);
+        (tau.hi, self.reduce_tau(tau).0)
+    }
+
+    /// sn, cn ≥ 0, dn of the reduced argument `r = τ − 2jK` of a double-double τ, with j; and the part of r below
+    /// binary64 (its rounding, which the functions do not see).
+    pub(super) fn reduce_tau(&self, tau: Dd) -> ((f64, f64, f64, f64), f64) {
         if self.separatrix {
-            // Nothing is reduced (j = 0).
-            return self.reduced(tau);
+            return (self.reduced(tau.hi), tau.lo);
         }
-        let red = self.jac.reduce(tau);
-        let (s, c, d) = red.values();
-        (s, c, d, red.j)
+        let j = if tau.hi.abs() <= self.jac.quarter_period() {
+            0.0
+        } else {
+            (tau.hi / self.two_k.hi).round()
+        };
+        let r = tau - self.two_k * j;
+        let red = self.jac.at_reduced(j, r.hi);
+        ((red.sn, red.cn, red.dn, red.j), r.lo)
     }
 
-    /// sn, cn ≥ 0, dn of the reduced argument r (τ = 2jK + r) and j.
+    /// sn, cn, dn of τ(t) (unreduced) and the half-period count j.
+    fn functions(&self, t: f64) -> (f64, f64, f64, f64) {
+        let (_, (s, c, d, j)) = self.phase(t);
+        let sign = half_period_sign(j);
+        (sign * s, sign * c, d, j)
+    }
+
+    /// sn, cn ≥ 0, dn of the reduced argument r (τ = 2jK + r) and j, τ in binary64 (for |τ| ≲ K or the separatrix).
     pub(super) fn reduced(&self, tau: f64) -> (f64, f64, f64, f64) {
         if self.separatrix {
             let sech = 1.0 / tau.cosh();
@@ -502,22 +611,28 @@ impl Elliptic {
         2.0 * j * self.rj_complete + partial
     }
 
-    /// The precession angle φ(t) about H, with φ(0) = 0.
-    fn phi(&self, t: f64, tau: f64, s: f64, c: f64, d: f64, j: f64) -> f64 {
+    /// The precession angle φ(t) about H, with φ(0) = 0, reduced modulo 4π (the period of `R_z(φ)`'s quaternion):
+    /// the secular part `phi_rate·t + phi_per_half_period·j` (which grows with t) formed and reduced in
+    /// double-double, then the bounded rest in binary64 — `κ(s³R_J(c², d², 1, 1 − n s²) − g₀)` (that part of
+    /// `κ(g(τ) − g(τ₀))` which does not grow), or on the separatrix `sep_atan·(atan(√ν tanh τ) − g₀)`. So φ's error
+    /// is a few ε·(4π + |κ| R_J), not ε·φ. `(s, c, d, j)` from [`Self::phase`].
+    pub(super) fn phi(&self, t: f64, tau: f64, s: f64, c: f64, d: f64, j: f64) -> f64 {
+        let secular = (self.phi_rate * t + self.phi_per_half_period * j)
+            .reduce(FOUR_PI)
+            .hi;
         if self.separatrix {
             let at = (self.sqrt_nu * tau.tanh()).atan();
-            self.sep_lin * t + self.sep_atan * (at - self.g0)
+            secular + self.sep_atan * (at - self.g0)
         } else if self.n == 0.0 {
-            self.rate_lin * t
+            secular
         } else {
-            self.rate_lin * t + self.kappa * (self.g_integral(s, c, d, j) - self.g0)
+            secular + self.kappa * (self.g_integral(s, c, d, 0.0) - self.g0)
         }
     }
 
     /// `q_H(t) = R_z(φ) R_x(θ) R_z(ψ)`: canonical body → H frame.
     fn q_h(&self, t: f64) -> UnitQuaternion<f64> {
-        let tau = self.tau(t);
-        let (s, c, d, j) = self.reduced(tau);
+        let (tau, (s, c, d, j)) = self.phase(t);
         let [i1, i2, i3] = self.inertia;
         // Unsigned-by-(−1)^j components of H_p: (I₁ a cn r, I₂ b sn r, I₃ c dn r).
         let x = i1 * self.a * c;
