@@ -282,11 +282,7 @@ where
         return Ok(stats);
     }
     let mut t = 0.0;
-    let mut k1 = sys.rhs(t, &y);
-    stats.evals += 1;
-    if !all_finite(&k1) {
-        return Err(IntegrateError::NonFinite { t });
-    }
+    let mut k1 = first_rhs(sys, &y, &mut stats)?;
     let h_max = schedule.t_end();
     let mut h_prop = hinit(sys, t, &y, &k1, P::HINIT_ORDER, h_max, tol);
     stats.evals += 1;
@@ -301,17 +297,7 @@ where
             if too_small(h_prop, t) {
                 return Err(IntegrateError::StepSizeTooSmall { t, h: h_prop });
             }
-            // A step ends on the row, or on an earlier breakpoint of f (not reported).
-            let t_stop = match sys.next_breakpoint(t) {
-                Some(b) if b < t_row => b,
-                _ => t_row,
-            };
-            let remaining = t_stop - t;
-            let (h, t_new) = if 1.01 * h_prop >= remaining {
-                (remaining, t_stop)
-            } else {
-                (h_prop, t + h_prop)
-            };
+            let (h, t_new) = next_step(sys, t, t_row, h_prop);
             let (trial, stages) = attempt::<P, STAGES, N, S>(sys, (t, &y, &k1), h, tol, W::ACTIVE);
             stats.evals += STAGES as u64 - 1;
 
@@ -359,6 +345,41 @@ where
         report(on_row, t, &y)?;
     }
     Ok(stats)
+}
+
+/// The step (h, t + h) from t toward the row t_row with the proposed size `h_prop`: it ends on the row, or on an
+/// earlier breakpoint of f (not reported), when the rest is within 1 % of `h_prop`.
+fn next_step<const N: usize, S: OdeSystem<N>>(
+    sys: &S,
+    t: f64,
+    t_row: f64,
+    h_prop: f64,
+) -> (f64, f64) {
+    let t_stop = match sys.next_breakpoint(t) {
+        Some(b) if b < t_row => b,
+        _ => t_row,
+    };
+    let remaining = t_stop - t;
+    if 1.01 * h_prop >= remaining {
+        (remaining, t_stop)
+    } else {
+        (h_prop, t + h_prop)
+    }
+}
+
+/// f(0, y0), counted; `NonFinite { t: 0 }` when it is not finite.
+fn first_rhs<const N: usize, S: OdeSystem<N>, E>(
+    sys: &mut S,
+    y: &SVector<f64, N>,
+    stats: &mut Stats,
+) -> Result<SVector<f64, N>, IntegrateError<E>> {
+    let k1 = sys.rhs(0.0, y);
+    stats.evals += 1;
+    if all_finite(&k1) {
+        Ok(k1)
+    } else {
+        Err(IntegrateError::NonFinite { t: 0.0 })
+    }
 }
 
 #[cfg(test)]
