@@ -43,6 +43,12 @@ impl EventSpec {
     }
 
     /// The event `name`: every local extremum of `when` of the kind `extremum`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{ConditionSpec, EventSpec, Extremum};
+    /// let peak = EventSpec::extremum("peak_load", "|R_A|", Extremum::Max);
+    /// assert_eq!(peak.condition, ConditionSpec::Extremum(Extremum::Max));
+    /// ```
     pub fn extremum(name: &str, when: &str, extremum: Extremum) -> Self {
         Self {
             name: name.into(),

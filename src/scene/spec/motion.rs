@@ -163,6 +163,12 @@ macro_rules! axis_motion {
             }
 
             /// On `axis`, with the motion's own key at its default.
+            ///
+            /// ```
+            #[doc = concat!("use eulerdyn::scene::{AxisDirection, AxisSpec, ", stringify!($motion), "};")]
+            #[doc = concat!("let m = ", stringify!($motion), "::on(AxisSpec::new(AxisDirection::TiltDeg(30.0), 10.0));")]
+            #[doc = concat!("assert_eq!(m, ", stringify!($motion), "::tilted(30.0, 10.0));")]
+            /// ```
             pub fn on(axis: AxisSpec) -> Self {
                 Self { axis, $start: 0.0 }
             }
