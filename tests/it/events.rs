@@ -330,3 +330,112 @@ fn bad_events_exit_2_naming_key_and_line() {
     run.expect_code(2);
     assert!(run.stderr.contains("event[0].name"), "{}", run.stderr);
 }
+
+/// The sine-driven hinge of `sine_driven_hinge_rate_extrema` with rows every `every` s: M = `m` N·m about the axis
+/// of a disk with I = 0.5 kg·m², f = 0.7 Hz, and the event `fastest` on θ̇'s maxima.
+fn sine_hinge(m: f64, every: f64) -> String {
+    format!(
+        r#"[body]
+mass = 1.0
+shape = {{ type = "thin_disk", radius = 1.0 }}
+[motion]
+type = "hinge"
+axis = [0.0, 0.0, 1.0]
+[[effect]]
+type = "torque"
+value = [0.0, 0.0, {m}]
+profile = "sine"
+freq_hz = 0.7
+[[event]]
+name = "fastest"
+when = "theta_dot"
+extremum = "max"
+[solver]
+method = "dop853"
+t_end = 3.0
+[output]
+every = {every}
+"#
+    )
+}
+
+#[test]
+fn a_sweep_reports_the_located_maximum_where_its_rows_miss_the_peak() {
+    // θ̇ = M/(I ω_f)(1 − cos ω_f t) peaks at 2M/(I ω_f) at t = (2j+1)π/ω_f = 0.714 s, 2.143 s (see
+    // sine_driven_hinge_rate_extrema); rows every 0.5 s miss both: the largest row value is at t = 2.0 s,
+    // (1 − cos 2ω_f)/2 = 0.905 of the peak. The sweep's located `fastest_max` is the closed form's peak, its sampled
+    // `max_theta_dot` that row's value.
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "base.toml", sine_hinge(0.3, 0.5));
+    let sweep = write_file(
+        dir.path(),
+        "sweep.toml",
+        "scene = \"base.toml\"\n[[vary]]\nkey = \"effect.0.value.2\"\nvalues = [0.3, 0.6]\n[summary]\ncolumns = [\"theta_dot\"]\n",
+    );
+    let out = dir.path().join("results.csv");
+    eulerdyn([
+        "sweep",
+        sweep.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ])
+    .expect_code(0);
+    let (head, rows) = crate::common::read_csv(&std::fs::read_to_string(&out).unwrap());
+    let located = crate::common::column(&head, &rows, "fastest_max");
+    let sampled = crate::common::column(&head, &rows, "max_theta_dot");
+    let omega_f = 2.0 * PI * 0.7;
+    for (run, m) in [0.3, 0.6].into_iter().enumerate() {
+        let peak = 2.0 * m / (0.5 * omega_f);
+        assert!(
+            (located[run] - peak).abs() <= 1e-9 * peak,
+            "run {run}: located {} vs {peak}",
+            located[run]
+        );
+        let at_row = peak * (1.0 - (2.0 * omega_f).cos()) / 2.0;
+        assert!(
+            (sampled[run] - at_row).abs() <= 1e-9 * peak && sampled[run] < 0.95 * located[run],
+            "run {run}: the rows miss the peak: sampled {} (row at 2 s: {at_row}) vs located {}",
+            sampled[run],
+            located[run]
+        );
+    }
+}
+
+#[test]
+fn a_spin_up_loads_its_bearings_past_a_threshold_when_the_closed_form_says() {
+    // The notes' disk (m = 2 kg, R = 0.3 m) skewed θ = 30° on its shaft through C, spun up from rest at α: the
+    // moment across the axis is c·√(α² + ω⁴) with c = (I₃ − I₁) sin θ cos θ = ¼ m R² sin θ cos θ and ω = α t
+    // (M = I α u + ω u × I ω u, eqs. 8.9–8.10 of the notes: the two parts are perpendicular), carried by the
+    // bearings as a couple: |R_A| = c √(α² + α⁴ t⁴)/(b − a). It reaches R* at t* = ((R*(b − a)/c)² − α²)^¼ / α.
+    let (m, r, theta, alpha, (a, b), r_star) =
+        (2.0, 0.3, 30f64.to_radians(), 2.0, (-0.1, 0.15), 1.0);
+    let c = 0.25 * m * r * r * theta.sin() * theta.cos();
+    let t_star = ((r_star * (b - a) / c).powi(2) - alpha * alpha).powf(0.25) / alpha;
+    let text = format!(
+        r#"[body]
+mass = {m}
+shape = {{ type = "thin_disk", radius = {r} }}
+[motion]
+type = "fixed_axis"
+tilt_deg = 30.0
+accel = {alpha}
+bearings = [{a}, {b}]
+[[event]]
+name = "rated"
+when = "|R_A|"
+crosses = {r_star}
+direction = "up"
+[solver]
+t_end = 3.0
+[output]
+every = 0.5
+"#
+    );
+    let (events, _, _) = occurrences(&text);
+    assert_eq!(events.len(), 1, "{events:?}");
+    assert!(
+        (events[0].t - t_star).abs() <= 1e-9,
+        "|R_A| = {r_star} N at {} s, closed form {t_star} s",
+        events[0].t
+    );
+}
