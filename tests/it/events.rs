@@ -169,33 +169,7 @@ fn sine_driven_hinge_rate_extrema() {
     let (m, i, f) = (0.3, 0.5, 0.7);
     let omega_f = 2.0 * PI * f;
     for method in ["dop853", "dopri5"] {
-        let text = format!(
-            r#"[body]
-mass = 1.0
-shape = {{ type = "thin_disk", radius = 1.0 }}
-[motion]
-type = "hinge"
-axis = [0.0, 0.0, 1.0]
-[[effect]]
-type = "torque"
-value = [0.0, 0.0, {m}]
-profile = "sine"
-freq_hz = {f}
-[[event]]
-name = "fastest"
-when = "theta_dot"
-extremum = "max"
-[[event]]
-name = "slowest"
-when = "theta_dot"
-extremum = "min"
-[solver]
-method = "{method}"
-t_end = 6.0
-[output]
-every = 0.05
-"#
-        );
+        let text = sine_hinge(m, 0.05, method, 6.0, true);
         let (events, _, _) = occurrences(&text);
         let maxima: Vec<&Occurrence> = events.iter().filter(|e| e.kind == Kind::Max).collect();
         let minima: Vec<&Occurrence> = events.iter().filter(|e| e.kind == Kind::Min).collect();
@@ -331,9 +305,15 @@ fn bad_events_exit_2_naming_key_and_line() {
     assert!(run.stderr.contains("event[0].name"), "{}", run.stderr);
 }
 
-/// The sine-driven hinge of `sine_driven_hinge_rate_extrema` with rows every `every` s: M = `m` N·m about the axis
-/// of a disk with I = 0.5 kg·m², f = 0.7 Hz, and the event `fastest` on θ̇'s maxima.
-fn sine_hinge(m: f64, every: f64) -> String {
+/// A disk on a hinge through C (I = m r²/2 = 0.5 kg·m²) from rest, driven by `m` sin(2π·0.7 t) N·m about the axis
+/// with `method`, rows every `every` s to `t_end`, and the event `fastest` on θ̇'s maxima (and `slowest` on its
+/// minima when `minima`).
+fn sine_hinge(m: f64, every: f64, method: &str, t_end: f64, minima: bool) -> String {
+    let slowest = if minima {
+        "[[event]]\nname = \"slowest\"\nwhen = \"theta_dot\"\nextremum = \"min\"\n"
+    } else {
+        ""
+    };
     format!(
         r#"[body]
 mass = 1.0
@@ -350,9 +330,9 @@ freq_hz = 0.7
 name = "fastest"
 when = "theta_dot"
 extremum = "max"
-[solver]
-method = "dop853"
-t_end = 3.0
+{slowest}[solver]
+method = "{method}"
+t_end = {t_end}
 [output]
 every = {every}
 "#
@@ -366,7 +346,11 @@ fn a_sweep_reports_the_located_maximum_where_its_rows_miss_the_peak() {
     // (1 − cos 2ω_f)/2 = 0.905 of the peak. The sweep's located `fastest_max` is the closed form's peak, its sampled
     // `max_theta_dot` that row's value.
     let dir = tempfile::tempdir().unwrap();
-    write_file(dir.path(), "base.toml", sine_hinge(0.3, 0.5));
+    write_file(
+        dir.path(),
+        "base.toml",
+        sine_hinge(0.3, 0.5, "dop853", 3.0, false),
+    );
     let sweep = write_file(
         dir.path(),
         "sweep.toml",
