@@ -188,7 +188,13 @@ pub fn run_with_events<E: std::error::Error + 'static>(
     let mut rows = 0u64;
     let with_potential = scene.gravity_potential(&scene.attitude0).is_some();
     let mut watch = EnergyWatch::of(scene);
+    let mut last_t = f64::NEG_INFINITY;
     let deliver = |s: &Sample| -> Result<(), Stop<E>> {
+        // A stop event located exactly on a row already delivered ends the run there: no second row at its time.
+        if s.t == last_t {
+            return Ok(());
+        }
+        last_t = s.t;
         if let Some(guard) = &guard {
             guard.check(s).map_err(Stop::Diverged)?;
         }

@@ -423,3 +423,38 @@ every = 0.5
         events[0].t
     );
 }
+
+#[test]
+fn a_stop_exactly_on_a_row_ends_the_run_with_that_row_once() {
+    // A prescribed spin-up θ̇ = α t with α = 2 rad/s² crosses 3 rad/s at t = 1.5 s, exactly on a row (every 0.5 s).
+    for method in ["rk4", "dop853", "exact"] {
+        let text = format!(
+            r#"[body]
+mass = 2.0
+shape = {{ type = "thin_disk", radius = 0.3 }}
+[motion]
+type = "fixed_axis"
+tilt_deg = 30.0
+accel = 2.0
+[[event]]
+name = "fast"
+when = "theta_dot"
+crosses = 3.0
+stop = true
+[solver]
+method = "{method}"
+t_end = 3.0
+[output]
+every = 0.5
+"#
+        );
+        let (events, report, times) = occurrences(&text);
+        assert_eq!(times, [0.0, 0.5, 1.0, 1.5], "{method}: rows");
+        assert_eq!(report.rows, 4, "{method}");
+        assert_eq!(
+            (events.len(), events[0].t),
+            (1, 1.5),
+            "{method}: {events:?}"
+        );
+    }
+}
