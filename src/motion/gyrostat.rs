@@ -141,20 +141,22 @@ impl Gyrostat {
         h_b: &Vector3<f64>,
         m_b: &Vector3<f64>,
     ) -> (Vector3<f64>, [f64; MAX_ROTORS]) {
+        // Each wheel's push on the body: J α (prescribed) or its motor torque τ(t), evaluated once.
+        let mut push = [0.0; MAX_ROTORS];
         let mut rhs = m_b - omega_b.cross(h_b);
-        for r in &self.rotors {
-            rhs -= r.axis_b.into_inner()
-                * match &r.drive {
-                    Drive::Accel(alpha) => r.inertia * alpha,
-                    Drive::Torque(tau) => tau.at(t).x,
-                };
+        for (p, r) in push.iter_mut().zip(&self.rotors) {
+            *p = match &r.drive {
+                Drive::Accel(alpha) => r.inertia * alpha,
+                Drive::Torque(tau) => tau.at(t).x,
+            };
+            rhs -= r.axis_b.into_inner() * *p;
         }
         let omega_dot_b = self.inertia_driven_inv_b * rhs;
         let mut spin_dot = [0.0; MAX_ROTORS];
-        for (dot, r) in spin_dot.iter_mut().zip(&self.rotors) {
+        for ((dot, r), p) in spin_dot.iter_mut().zip(&self.rotors).zip(push) {
             *dot = match &r.drive {
                 Drive::Accel(alpha) => *alpha,
-                Drive::Torque(tau) => tau.at(t).x / r.inertia - r.axis_b.dot(&omega_dot_b),
+                Drive::Torque(_) => p / r.inertia - r.axis_b.dot(&omega_dot_b),
             };
         }
         (omega_dot_b, spin_dot)
