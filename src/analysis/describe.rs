@@ -12,6 +12,7 @@ use crate::body::Principal;
 use crate::effects::{Effect, TorqueProfile};
 use crate::frames::Form;
 use crate::method::Method;
+use crate::motion::carrier::CarrierProfile;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::gyrostat::{Drive, Gyrostat};
@@ -414,7 +415,7 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         &format!(
             "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
             vec3(&axis_b),
-            if tilt < 1e-6 && motion.point_b() == Vector3::zeros() {
+            if tilt < 1e-6 && motion.point_b() == Vector3::zeros() && motion.carrier().is_none() {
                 ": a principal axis, no moment is needed at a constant rate"
             } else {
                 ""
@@ -434,7 +435,31 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         ),
     );
     axis_point_lines(w, &motion.point_b());
+    carrier_lines(w, motion);
     fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
+}
+
+/// The carrier that holds the axis: its rate and profile.
+fn carrier_lines(w: &mut Description, axis: &FixedAxis) {
+    let Some(carrier) = axis.carrier() else {
+        return;
+    };
+    let profile = match carrier.profile() {
+        CarrierProfile::Constant => "constant".to_string(),
+        CarrierProfile::Sine { omega_f, phase } => format!(
+            "times sin(2 pi {} Hz t + {} deg)",
+            plain(omega_f / std::f64::consts::TAU),
+            plain(phase.to_degrees())
+        ),
+    };
+    line(
+        w,
+        "carrier",
+        &format!(
+            "the axis and its bearings turn with a carrier at {} rad/s (space axes), {profile}: omega = Omega_c + theta' u",
+            vec3(carrier.rate_s())
+        ),
+    );
 }
 
 /// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
@@ -537,6 +562,7 @@ fn hinge_lines(w: &mut Description, hinge: &Hinge) {
         ),
     );
     axis_point_lines(w, &axis.point_b());
+    carrier_lines(w, axis);
 }
 
 /// Where C is (with point masses), and for an axis motion its bearings and its imbalance: static m·e (e the

@@ -4,11 +4,11 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
+    BodyFile, CarrierFile, CarrierProfileKind, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
     ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, ConditionSpec, Direction, Distribution,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec, ConditionSpec, Direction, Distribution,
     EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec,
     PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
     TorqueTableSpec,
@@ -198,8 +198,9 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
         ("angle_deg", doc.angle_deg.is_some()),
         ("bearings", doc.bearings.is_some()),
         ("axis_in_space", doc.axis_in_space.is_some()),
+        ("carrier", doc.carrier.is_some()),
     ];
-    const AXIS_KEYS: [&str; 7] = [
+    const AXIS_KEYS: [&str; 8] = [
         "axis",
         "tilt_deg",
         "rate",
@@ -207,6 +208,7 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
         "point",
         "bearings",
         "axis_in_space",
+        "carrier",
     ];
     let takes = |extra: &'static str| [&AXIS_KEYS[..], &[extra]].concat();
     match doc.kind {
@@ -272,7 +274,53 @@ fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
         point: doc.point.unwrap_or([0.0; 3]),
         bearings: doc.bearings,
         axis_in_space: doc.axis_in_space,
+        carrier: doc.carrier.as_ref().map(carrier).transpose()?,
     })
+}
+
+/// `carrier = { rate, profile, freq_hz, phase_deg }`: `rate` required, `freq_hz` with a sine only.
+fn carrier(doc: &CarrierFile) -> Checked<CarrierSpec> {
+    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
+    let Some(rate) = doc.rate else {
+        return invalid(
+            key("rate"),
+            "a carrier needs `rate = [x, y, z]`: its angular velocity (rad/s, space axes)",
+        );
+    };
+    let profile = match doc.profile.unwrap_or(CarrierProfileKind::Constant) {
+        CarrierProfileKind::Constant => {
+            if let Some(name) = [("freq_hz", doc.freq_hz), ("phase_deg", doc.phase_deg)]
+                .iter()
+                .find_map(|(name, v)| v.map(|_| *name))
+            {
+                return invalid(
+                    key(name),
+                    format!("`{name}` applies to a carrier with profile = \"sine\" only"),
+                );
+            }
+            CarrierProfileSpec::Constant
+        }
+        CarrierProfileKind::Sine => CarrierProfileSpec::Sine {
+            freq_hz: required(key("freq_hz"), doc.freq_hz, "a sine carrier")?,
+            phase_deg: doc.phase_deg.unwrap_or(0.0),
+        },
+    };
+    Ok(CarrierSpec { rate, profile })
+}
+
+fn carrier_file(carrier: &CarrierSpec) -> CarrierFile {
+    let (profile, freq_hz, phase_deg) = match carrier.profile {
+        CarrierProfileSpec::Constant => (CarrierProfileKind::Constant, None, None),
+        CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
+            (CarrierProfileKind::Sine, Some(freq_hz), Some(phase_deg))
+        }
+    };
+    CarrierFile {
+        rate: Some(carrier.rate),
+        profile: Some(profile),
+        freq_hz,
+        phase_deg,
+    }
 }
 
 /// `[initial]`: `attitude` or `attitude_euler_deg`.
@@ -636,6 +684,7 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
             point: Some(axis.point),
             bearings: axis.bearings,
             axis_in_space: axis.axis_in_space,
+            carrier: axis.carrier.as_ref().map(carrier_file),
             ..MotionFile::default()
         }
     };
@@ -715,7 +764,15 @@ mod tests {
         let mut rpm = HingeSpec::new([1.0, 0.0, 0.0], 0.0).with_bearings(-0.1, 0.2);
         rpm.axis.rate = RateSpec::Rpm(3000.0);
         rpm.axis.axis_in_space = Some([0.0, 1.0, 0.0]);
-        let motions = [MotionSpec::Free, fixed.into(), rpm.into()];
+        let yawing = fixed.with_carrier(CarrierSpec::constant([0.0, 0.0, 0.5]));
+        let rolling = rpm.with_carrier(CarrierSpec::sine([0.2, 0.0, 0.0], 0.1, 30.0));
+        let motions = [
+            MotionSpec::Free,
+            fixed.into(),
+            rpm.into(),
+            yawing.into(),
+            rolling.into(),
+        ];
         let torques = [
             TorqueSpec::new(Axes::Space, [1.0, 2.0, 3.0]),
             TorqueSpec::new(Axes::Body, [0.0, 0.0, 1.0]).sine(2.0, 45.0),
