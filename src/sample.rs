@@ -286,9 +286,21 @@ const SUPPORT_MOMENT_COLUMNS: [Column; 3] = [
 ];
 
 const CARRIER_COLUMNS: [Column; 3] = [
-    col("Omega_c_s_x", "rad/s", "the carrier's angular velocity, space axes"),
-    col("Omega_c_s_y", "rad/s", "the carrier's angular velocity, space axes"),
-    col("Omega_c_s_z", "rad/s", "the carrier's angular velocity, space axes"),
+    col(
+        "Omega_c_s_x",
+        "rad/s",
+        "the carrier's angular velocity, space axes",
+    ),
+    col(
+        "Omega_c_s_y",
+        "rad/s",
+        "the carrier's angular velocity, space axes",
+    ),
+    col(
+        "Omega_c_s_z",
+        "rad/s",
+        "the carrier's angular velocity, space axes",
+    ),
 ];
 
 const POTENTIAL_COLUMNS: [Column; 2] = [

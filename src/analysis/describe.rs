@@ -119,6 +119,20 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 r.spin0
             ),
         );
+        if let Some(u) = &r.imbalance {
+            line(
+                w,
+                "",
+                &format!(
+                    "  imbalance: static {} kg*m (a force U_s Omega^2), dynamic {} kg*m^2 (a couple U_d Omega^2), \
+                     turning with the wheel from body direction {} at t = 0; wheel centre {} m from the moment center",
+                    u.static_kgm,
+                    u.dynamic_kgm2,
+                    vec3(&u.w2_b),
+                    vec3(&u.r_b)
+                ),
+            );
+        }
     }
 }
 

@@ -258,7 +258,8 @@ impl FixedAxis {
 
     /// Acceleration of C: a_C = α × ρ + ω × (ω × ρ), space axes (tangential and centripetal parts; A is fixed).
     pub fn accel_c_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        let rotation = (self.relative(angle.theta)).turning(&self.axis_b.into_inner(), angle.theta_dot);
+        let rotation =
+            (self.relative(angle.theta)).turning(&self.axis_b.into_inner(), angle.theta_dot);
         self.accel_c_at(&rotation, angle.theta_ddot)
     }
 
@@ -366,8 +367,7 @@ impl FixedAxis {
         match frame {
             Form::Body => {
                 let (omega_b, alpha_b) = (rotation.omega_b, q.inverse_transform_vector(&alpha_s));
-                let m_b = self.inertia_a_b * alpha_b
-                    + omega_b.cross(&(self.inertia_a_b * omega_b));
+                let m_b = self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b));
                 (m_b, q * m_b)
             }
             Form::Space => {
@@ -445,7 +445,8 @@ impl FixedAxis {
             m_s,
             energy: kinetic_energy(&omega_b, &h_b),
             theta: Some(angle.theta),
-            f_s: (self.center_off_axis()).then(|| self.accel_c_at(rotation, angle.theta_ddot) * self.mass),
+            f_s: (self.center_off_axis())
+                .then(|| self.accel_c_at(rotation, angle.theta_ddot) * self.mass),
             h_s_integrated: None,
             support: Some(self.support(&angle, rotation, &m_s, m_eff_s)),
             potential: None,
@@ -466,7 +467,8 @@ impl FixedAxis {
         m_eff_s: &Vector3<f64>,
     ) -> SupportLoads {
         let q = rotation.q;
-        let f_sup_s = self.accel_c_at(rotation, angle.theta_ddot) * self.mass - self.g_s * self.mass;
+        let f_sup_s =
+            self.accel_c_at(rotation, angle.theta_ddot) * self.mass - self.g_s * self.mass;
         let m_sup_s = m_s - m_eff_s;
         let u_s = rotation.u_s;
         SupportLoads {

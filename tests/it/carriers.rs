@@ -97,9 +97,27 @@ fn a_disk_in_a_yawing_carrier_carries_the_gyroscopic_couple() {
         for s in &rows {
             let u = Vector3::new((yaw * s.t).cos(), (yaw * s.t).sin(), 0.0);
             let support = s.support.unwrap();
-            close(&support.omega_c_s.unwrap(), &Vector3::new(0.0, 0.0, yaw), 0.0, "Ω_c", s.t);
-            close(&s.omega_s, &(Vector3::z() * yaw + u * SPIN), 0.0, "ω_s", s.t);
-            close(&s.h_s, &(u * (c * SPIN) + Vector3::z() * (a * yaw)), 0.0, "H_s", s.t);
+            close(
+                &support.omega_c_s.unwrap(),
+                &Vector3::new(0.0, 0.0, yaw),
+                0.0,
+                "Ω_c",
+                s.t,
+            );
+            close(
+                &s.omega_s,
+                &(Vector3::z() * yaw + u * SPIN),
+                0.0,
+                "ω_s",
+                s.t,
+            );
+            close(
+                &s.h_s,
+                &(u * (c * SPIN) + Vector3::z() * (a * yaw)),
+                0.0,
+                "H_s",
+                s.t,
+            );
             close(&s.m_s, &(Vector3::z().cross(&u) * couple), 0.0, "M_s", s.t);
             let bearings = support.bearings.unwrap();
             let expected = couple / (BEARINGS.1 - BEARINGS.0);
@@ -108,7 +126,10 @@ fn a_disk_in_a_yawing_carrier_carries_the_gyroscopic_couple() {
             assert!((bearings.r_a_s + bearings.r_b_s).norm() <= 1e-12 * expected);
             // H_s integrated from dH_s/dt = M_s by dop853 reproduces the closed form's H_s.
             close(&s.h_s_integrated.unwrap(), &s.h_s, 0.0, "H_s_int", s.t);
-            assert!(support.m_drive.abs() <= 1e-12 * couple, "no drive at constant spin");
+            assert!(
+                support.m_drive.abs() <= 1e-12 * couple,
+                "no drive at constant spin"
+            );
         }
         assert_equilibrium(&rows, BEARINGS, disk_axis_s, |_| Vector3::zeros());
     }
@@ -119,7 +140,8 @@ fn a_disk_in_a_rolling_carrier_carries_the_spin_and_the_roll_acceleration() {
     let (roll, freq_hz) = (0.3, 0.25);
     let omega_f = std::f64::consts::TAU * freq_hz;
     let (c, a) = (0.5 * M * R * R, 0.25 * M * R * R);
-    let carrier = format!(r#"{{ rate = [0.0, {roll}, 0.0], profile = "sine", freq_hz = {freq_hz} }}"#);
+    let carrier =
+        format!(r#"{{ rate = [0.0, {roll}, 0.0], profile = "sine", freq_hz = {freq_hz} }}"#);
     let mut by_form = Vec::new();
     for form in Form::ALL {
         let rows = rows(&disk_in_carrier(&carrier, form));
@@ -129,7 +151,13 @@ fn a_disk_in_a_rolling_carrier_carries_the_spin_and_the_roll_acceleration() {
             let u = disk_axis_s(s);
             assert!(u.y.abs() <= 1e-12, "u stays normal to the roll axis");
             let scale = c * SPIN * roll;
-            close(&s.support.unwrap().omega_c_s.unwrap(), &omega_c, roll, "Ω_c", s.t);
+            close(
+                &s.support.unwrap().omega_c_s.unwrap(),
+                &omega_c,
+                roll,
+                "Ω_c",
+                s.t,
+            );
             let expected = omega_c.cross(&u) * (c * SPIN) + omega_c_dot * a;
             close(&s.m_s, &expected, scale, "M_s", s.t);
             close(&s.h_s_integrated.unwrap(), &s.h_s, c * SPIN, "H_s_int", s.t);
@@ -205,12 +233,22 @@ fn a_hinge_in_a_turning_carrier_swings_at_the_closed_form_period() {
         let worst = (events.windows(2))
             .map(|w: &[Occurrence]| (w[1].t - w[0].t - period).abs())
             .fold(0.0, f64::max);
-        eprintln!("{form:?}: {} crossings, period {period} s, worst spacing error {worst:e} s", events.len());
-        assert!(worst <= 1e-9 * period, "{form:?}: period off by {worst:e} s of {period} s");
+        eprintln!(
+            "{form:?}: {} crossings, period {period} s, worst spacing error {worst:e} s",
+            events.len()
+        );
+        assert!(
+            worst <= 1e-9 * period,
+            "{form:?}: period off by {worst:e} s of {period} s"
+        );
         for s in &rows {
             let support = s.support.unwrap();
             let j = jacobi(s.theta.unwrap(), support.theta_dot);
-            assert!((j - j0).abs() <= 1e-10 * j0.abs(), "t = {}: J {j} vs {j0}", s.t);
+            assert!(
+                (j - j0).abs() <= 1e-10 * j0.abs(),
+                "t = {}: J {j} vs {j0}",
+                s.t
+            );
             // The drive supplies nothing about the axis: u·(dH/dt − M_eff) = 0.
             assert!(support.m_drive.abs() <= 1e-12 * (s.m_s.norm() + a * yaw * yaw));
         }
@@ -263,7 +301,11 @@ every = 0.1
             "freq_hz",
         ),
         ("two components", disk(r#"{ rate = [0.0, 1.0] }"#), "rate"),
-        ("unknown key", disk(r#"{ rate = [0.0, 0.0, 1.0], spin = 2.0 }"#), "spin"),
+        (
+            "unknown key",
+            disk(r#"{ rate = [0.0, 0.0, 1.0], spin = 2.0 }"#),
+            "spin",
+        ),
         ("a carrier on free motion", free.to_string(), "carrier"),
     ];
     assert_refused_writing_nothing(&cases);

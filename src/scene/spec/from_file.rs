@@ -4,14 +4,14 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, CarrierFile, CarrierProfileKind, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
-    ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
+    BodyFile, CarrierFile, CarrierProfileKind, EffectFile, EffectKind, EventFile, InitialFile,
+    MotionFile, PointMassFile, ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec, ConditionSpec, Direction, Distribution,
-    EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec,
-    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
-    TorqueTableSpec,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec,
+    ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec,
+    InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive,
+    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -83,18 +83,6 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
     let table = KeyPath::root().key("body").key("rotor").index(index);
     let key = |name: &str| table.clone().key(name);
     let kind = "a rotor";
-    for (name, value) in [
-        ("imbalance_static_gmm", doc.imbalance_static_gmm),
-        ("imbalance_dynamic_gmm2", doc.imbalance_dynamic_gmm2),
-    ] {
-        if value.is_some_and(|v| v != 0.0) {
-            return invalid(
-                key(name),
-                "a rotor's imbalance is not simulated yet (only 0 is accepted): the wheel's angle, which the \
-                 turning force needs, is not integrated",
-            );
-        }
-    }
     let keys = ProfileKeys {
         profile: doc.profile,
         freq_hz: doc.freq_hz,
@@ -138,6 +126,8 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
         spin: doc.spin.unwrap_or(0.0),
         drive,
         at: doc.at.unwrap_or([0.0; 3]),
+        imbalance_static_gmm: doc.imbalance_static_gmm.unwrap_or(0.0),
+        imbalance_dynamic_gmm2: doc.imbalance_dynamic_gmm2.unwrap_or(0.0),
     })
 }
 
@@ -585,6 +575,8 @@ fn rotor_file(rotor: &RotorSpec) -> RotorFile {
         inertia: Some(rotor.inertia),
         spin: Some(rotor.spin),
         at: Some(rotor.at),
+        imbalance_static_gmm: Some(rotor.imbalance_static_gmm),
+        imbalance_dynamic_gmm2: Some(rotor.imbalance_dynamic_gmm2),
         ..RotorFile::default()
     };
     match rotor.drive {
@@ -787,8 +779,25 @@ mod tests {
                 .cubic()
                 .into()])
             .collect();
+        let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 100.0);
+        let rotors = [
+            wheel.clone().with_imbalance([0.1, 0.0, 0.0], 2.0, 50.0),
+            wheel
+                .clone()
+                .with_name("w")
+                .with_drive(RotorDrive::SpinAccel(2.0)),
+            wheel.with_drive(RotorDrive::Torque {
+                value: 0.1,
+                profile: ProfileSpec::Sine {
+                    freq_hz: 1.0,
+                    phase_deg: 10.0,
+                },
+            }),
+        ];
         for (i, shape) in shapes.into_iter().enumerate() {
-            let body = BodySpec::shape(1.0, shape).with_point_mass(0.1, [0.1, 0.0, 0.0]);
+            let body = BodySpec::shape(1.0, shape)
+                .with_point_mass(0.1, [0.1, 0.0, 0.0])
+                .with_rotor(rotors[i % rotors.len()].clone());
             let mut spec = SceneSpec::new(body, 1.0, 0.1)
                 .with_effect(effects[i % effects.len()].clone())
                 .with_effect(effects[(i + 3) % effects.len()].clone());

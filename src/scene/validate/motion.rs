@@ -26,7 +26,9 @@ pub(super) fn validate_motion(
 ) -> Checked<Motion> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
     let (axis_spec, accel, angle_deg) = match &doc.motion {
-        None | Some(MotionSpec::Free) => return free_motion(doc, body, initial_omega, effects),
+        None | Some(MotionSpec::Free) => {
+            return free_motion(doc, body, initial_omega, effects, center_b);
+        }
         Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
         Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
@@ -50,12 +52,14 @@ pub(super) fn validate_motion(
     }
 }
 
-/// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect.
+/// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect; `c_b` is C from the
+/// reference origin.
 fn free_motion(
     doc: &SceneSpec,
     body: &RigidBody,
     initial_omega: Option<[f64; 3]>,
     effects: &[Effect],
+    c_b: &Vector3<f64>,
 ) -> Checked<Motion> {
     let omega0_b = match initial_omega {
         None => Vector3::zeros(),
@@ -89,7 +93,7 @@ fn free_motion(
             ),
         );
     }
-    let gyrostat = super::rotor::validate_rotors(&doc.body, &free_body)?;
+    let gyrostat = super::rotor::validate_rotors(&doc.body, &free_body, &(c_b + center_b))?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
@@ -158,10 +162,7 @@ fn validate_carrier(carrier: &CarrierSpec) -> Checked<Carrier> {
         CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
             let freq_hz = finite(key("freq_hz"), freq_hz, "Hz")?;
             if freq_hz < 0.0 {
-                return invalid(
-                    key("freq_hz"),
-                    format!("must be >= 0 (Hz), got {freq_hz}"),
-                );
+                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {freq_hz}"));
             }
             CarrierProfile::Sine {
                 omega_f: std::f64::consts::TAU * freq_hz,
