@@ -27,6 +27,11 @@ $eulerdyn plot "$work/heavy_top.csv" -o "$out/heavy_top.svg" --panels h_space,en
 $eulerdyn run scenarios/motor_runup.toml -o "$work/motor_runup.csv"
 $eulerdyn plot "$work/motor_runup.csv" -o "$out/motor_runup_bearings.svg" --panels omega,theta,moment,bearings
 
+# A turbine rotor at 10 000 rpm in a yawing aircraft: the gyroscopic couple, carried by the bearings as vertical
+# forces that reverse with the yaw (space axes: in body axes they turn with the rotor).
+$eulerdyn run scenarios/turbine_yawing_aircraft.toml -o "$work/turbine.csv"
+$eulerdyn plot "$work/turbine.csv" -o "$out/turbine_bearings.svg" --panels omega,bearings_space
+
 # What accuracy costs: the work-precision study of the benchmark body (about 10 s; its times differ run to run).
 [ -n "${GALLERY_FIGURES_ONLY:-}" ] && exit 0
 $eulerdyn accuracy scenarios/asymmetric_free.toml -o docs/work_precision.csv --plot docs/work_precision.svg

@@ -9,10 +9,11 @@ use std::thread;
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
 use crate::effects::{Effect, TorqueProfile};
-use crate::exact::{AxialTorqueSymmetric, DampedSpin, TorqueFreeBody};
+use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
 use crate::method::Method;
+use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
@@ -31,6 +32,13 @@ pub enum Oracle {
     DampedSpin(DampedSpin),
     /// Prescribed fixed-axis motion: the closed-form H_s = I_s(θ)·ω_s against Ḣ_s = M_s integrated.
     FixedAxis,
+    /// Torque-free symmetric gyrostat (I₁ = I₂, body axes principal, balanced wheels on the symmetry axis at a
+    /// constant relative spin): ω, attitude and H_s (Hughes §3.5; [`SymmetricTorqueFree::gyrostat`]).
+    SymmetricGyrostat {
+        exact: Box<SymmetricTorqueFree>,
+        /// T = ½ ωᵀIω + Σ (J_k Ω_k (a_k·ω) + ½ J_k Ω_k²), constant.
+        energy: f64,
+    },
 }
 
 impl Oracle {
@@ -39,6 +47,9 @@ impl Oracle {
         let omega0_b = match &scene.motion {
             Motion::FixedAxis(_) => return Some(Oracle::FixedAxis),
             Motion::Hinge(_) => return None,
+            Motion::Free {
+                gyrostat: Some(g), ..
+            } => return symmetric_gyrostat(scene, g),
             Motion::Free { omega0_b, .. } => *omega0_b,
         };
         let principal = scene.body.principal();
@@ -91,6 +102,9 @@ impl Oracle {
             Oracle::AxialTorque(_) => "symmetric body under a constant axial torque (ω only)",
             Oracle::DampedSpin { .. } => "damped principal-axis spin, ω(0)·exp(−c t / I)",
             Oracle::FixedAxis => "prescribed fixed-axis motion, H_s = I_s(θ)·ω_s",
+            Oracle::SymmetricGyrostat { .. } => {
+                "torque-free symmetric gyrostat, transverse ω turning at ((C − A)ω₃ + h)/A (Hughes §3.5)"
+            }
         }
     }
 
@@ -122,8 +136,57 @@ impl Oracle {
                 }
             }
             Oracle::FixedAxis => Exact::default(),
+            Oracle::SymmetricGyrostat { exact, energy } => Exact {
+                omega_b: Some(exact.omega_p(t)),
+                q: Some(exact.attitude(t)),
+                h_s: Some(exact.h_s()),
+                energy: Some(*energy),
+            },
         }
     }
+}
+
+/// The symmetric gyrostat's closed form, where it applies: no effects, body axes principal with I₁ = I₂, and
+/// every wheel balanced, on body ±z, at a constant relative spin (prescribed, or free: with ω₃ constant a free
+/// wheel keeps its spin too).
+fn symmetric_gyrostat(scene: &Scene, g: &Gyrostat) -> Option<Oracle> {
+    let Motion::Free { omega0_b, .. } = &scene.motion else {
+        return None;
+    };
+    let inertia = g.body().inertia_b();
+    let diagonal = (0..3).all(|i| (0..3).all(|j| i == j || inertia[(i, j)] == 0.0));
+    let steady = |r: &crate::motion::gyrostat::Rotor| {
+        let on_z = r.axis_b.x == 0.0 && r.axis_b.y == 0.0;
+        let constant = match &r.drive {
+            Drive::Accel(alpha) => *alpha == 0.0,
+            Drive::Torque(tau) => tau.is_zero(),
+        };
+        on_z && constant && r.imbalance.is_none()
+    };
+    let applies = scene.effects.is_empty()
+        && diagonal
+        && inertia[(0, 0)] == inertia[(1, 1)]
+        && g.rotors().iter().all(steady);
+    if !applies {
+        return None;
+    }
+    let h_rotor = (g.rotors().iter())
+        .map(|r| r.inertia * r.spin0 * r.axis_b.z)
+        .sum();
+    let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
+    let energy = g.kinetic_energy(omega0_b, &spins);
+    SymmetricTorqueFree::gyrostat(
+        inertia[(0, 0)],
+        inertia[(2, 2)],
+        h_rotor,
+        *omega0_b,
+        scene.attitude0,
+    )
+    .ok()
+    .map(|exact| Oracle::SymmetricGyrostat {
+        exact: Box::new(exact),
+        energy,
+    })
 }
 
 /// The rotation principal → body (`v_b = r_bp * v_p`) whose matrix has the principal axes, in body axes, as its

@@ -41,10 +41,17 @@ fn rotate_z(v: &Vector3<f64>, angle: f64) -> Vector3<f64> {
 /// ```text
 ///   q(t) = Rot(Ĥ_s, |H| t / I₁) ⊗ q₀ ⊗ Rot(e₃, −Ω_b t).
 /// ```
+///
+/// With rotors on the symmetry axis holding a constant relative momentum h = Σ J_k Ω_k (a symmetric gyrostat,
+/// [`SymmetricTorqueFree::gyrostat`]), H_p = (I₁ω₁, I₁ω₂, I₃ω₃ + h): ω₃ stays constant and the transverse ω turns at
+/// λ = ((I₃ − I₁)ω₃ + h)/I₁ (Hughes, *Spacecraft Attitude Dynamics*, 1986, §3.5, the axisymmetric gyrostat), and
+/// `ω_p = H_p/I₁ − λ e₃` gives the attitude in the same form with λ for Ω_b.
 #[derive(Debug, Clone)]
 pub struct SymmetricTorqueFree {
     i_t: f64,
     i_a: f64,
+    /// h, the rotors' axial momentum relative to the body (0 for a rigid body).
+    h_rotor: f64,
     omega0_p: Vector3<f64>,
     q0: UnitQuaternion<f64>,
     h_s: Vector3<f64>,
@@ -68,9 +75,36 @@ impl SymmetricTorqueFree {
         Ok(Self {
             i_t,
             i_a,
+            h_rotor: 0.0,
             omega0_p,
             q0,
             h_s,
+        })
+    }
+
+    /// A symmetric gyrostat: the body as in [`Self::new`] (with its rotors locked) and rotors on the symmetry axis
+    /// whose relative momentum `h_rotor` = Σ J_k Ω_k (N·m·s) stays constant (see the type docs).
+    ///
+    /// ```
+    /// use eulerdyn::exact::SymmetricTorqueFree;
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let g = SymmetricTorqueFree::gyrostat(2.0, 3.0, 0.5, Vector3::new(0.1, 0.0, 1.0), UnitQuaternion::identity())
+    ///     .unwrap();
+    /// assert_eq!(g.body_precession_rate(), ((3.0 - 2.0) * 1.0 + 0.5) / 2.0);
+    /// ```
+    pub fn gyrostat(
+        i_t: f64,
+        i_a: f64,
+        h_rotor: f64,
+        omega0_p: Vector3<f64>,
+        q0: UnitQuaternion<f64>,
+    ) -> Result<Self, ExactError> {
+        check_finite(&[h_rotor], "rotor momentum h")?;
+        let body = Self::new(i_t, i_a, omega0_p, q0)?;
+        Ok(Self {
+            h_rotor,
+            h_s: body.h_s + q0 * Vector3::new(0.0, 0.0, h_rotor),
+            ..body
         })
     }
 
@@ -78,7 +112,11 @@ impl SymmetricTorqueFree {
     /// `Ω_b = (I₃ − I₁)/I₁ · ω₃` (Goldstein 3rd ed. §5.6, the Ω of the symmetric torque-free
     /// solution).
     pub fn body_precession_rate(&self) -> f64 {
-        (self.i_a - self.i_t) / self.i_t * self.omega0_p.z
+        if self.h_rotor == 0.0 {
+            (self.i_a - self.i_t) / self.i_t * self.omega0_p.z
+        } else {
+            ((self.i_a - self.i_t) * self.omega0_p.z + self.h_rotor) / self.i_t
+        }
     }
 
     /// Space-frame precession rate of ω and of the symmetry axis about `H_s`, `|H|/I₁`
@@ -93,17 +131,27 @@ impl SymmetricTorqueFree {
         self.omega0_p.xy().norm().atan2(self.omega0_p.z)
     }
 
+    /// `H_p` at t = 0: (I₁ω₁, I₁ω₂, I₃ω₃ + h).
+    fn h0_p(&self) -> Vector3<f64> {
+        let w = self.omega0_p;
+        Vector3::new(
+            self.i_t * w.x,
+            self.i_t * w.y,
+            self.i_a * w.z + self.h_rotor,
+        )
+    }
+
     /// Half-angle of the space cone: the angle between ω and `H_s`, i.e. between ω and `H_p`.
     pub fn space_cone_half_angle(&self) -> f64 {
-        let w = self.omega0_p;
-        let h = Vector3::new(self.i_t * w.x, self.i_t * w.y, self.i_a * w.z);
+        let (w, h) = (self.omega0_p, self.h0_p());
         w.cross(&h).norm().atan2(w.dot(&h))
     }
 
     /// Nutation angle: the constant angle between the symmetry axis and `H_s`,
-    /// `atan2(I₁|ω⊥|, I₃ω₃)`.
+    /// `atan2(I₁|ω⊥|, I₃ω₃ + h)`.
     pub fn nutation_angle(&self) -> f64 {
-        (self.i_t * self.omega0_p.xy().norm()).atan2(self.i_a * self.omega0_p.z)
+        let h = self.h0_p();
+        h.xy().norm().atan2(h.z)
     }
 
     /// `ω_p(t)`: `ω₃` constant, `(ω₁ + iω₂)(t) = (ω₁ + iω₂)(0) e^{iΩ_b t}` (Goldstein §5.6).
@@ -116,12 +164,12 @@ impl SymmetricTorqueFree {
         self.attitude(t) * self.omega_p(t)
     }
 
-    /// `H_s = q₀ * (I ω₀_p)` (constant).
+    /// `H_s = q₀ * (I ω₀_p + h e₃)` (constant).
     pub fn h_s(&self) -> Vector3<f64> {
         self.h_s
     }
 
-    /// Kinetic energy `½ ω·Iω` (constant).
+    /// Kinetic energy `½ ω·Iω` (constant), the rigid body's: a gyrostat's wheels add `h ω₃ + ½ Σ J_k Ω_k²`.
     pub fn energy(&self) -> f64 {
         let w = self.omega0_p;
         0.5 * (self.i_t * (w.x * w.x + w.y * w.y) + self.i_a * w.z * w.z)

@@ -20,7 +20,7 @@ use eulerdyn::scene::Overrides;
 use eulerdyn::simulate;
 use nalgebra::Vector3;
 
-use crate::common::{assert_refused_writing_nothing, scene_from};
+use crate::common::{assert_refused_writing_nothing, eulerdyn, scene_from};
 use crate::invariant_axis::assert_equilibrium;
 
 const M: f64 = 2.0;
@@ -309,4 +309,47 @@ every = 0.1
         ("a carrier on free motion", free.to_string(), "carrier"),
     ];
     assert_refused_writing_nothing(&cases);
+}
+
+#[test]
+fn the_turbine_scenario_plots_its_bearing_loads_in_space_axes() {
+    // scenarios/turbine_yawing_aircraft.toml: C = ½ m r² = 5.4 kg·m², 10 000 rpm, yaw 0.35 rad/s peak; the
+    // gyroscopic couple's peak C ω Ω (Meriam & Kraige art. 7/10) over the bearing span 0.9 m plus half the weight
+    // (588.6 N) bounds |R_A|.
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("turbine.csv");
+    let svg = dir.path().join("turbine.svg");
+    let run = eulerdyn([
+        "run",
+        "scenarios/turbine_yawing_aircraft.toml",
+        "-o",
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let out = eulerdyn([
+        "plot",
+        csv.to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+        "--panels",
+        "omega,bearings_space",
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let figure = std::fs::read_to_string(&svg).unwrap();
+    assert!(figure.contains("Bearing forces on the body, space axes"));
+    let path = std::path::Path::new("scenarios/turbine_yawing_aircraft.toml");
+    let scene =
+        eulerdyn::scene::load(path, &Overrides::default()).unwrap_or_else(|e| panic!("{e}"));
+    let rows = simulate::samples(&scene).unwrap().0;
+    let couple = 0.5 * 120.0 * 0.09 * (10_000.0 * std::f64::consts::TAU / 60.0) * 0.35;
+    let peak = (rows.iter())
+        .map(|s| s.support.unwrap().bearings.unwrap().r_a_s.z)
+        .fold(f64::MIN, f64::max);
+    // At the yaw's peak (t = 1 s, a row) Ω̇_c = 0 and M = C ω Ω (ẑ × u) ⊥ u, carried as vertical forces
+    // ±M/(b − a) whatever u's heading, on top of half the weight.
+    let bound = couple / 0.9 + 0.5 * 120.0 * 9.81;
+    assert!(
+        (peak - bound).abs() <= 1e-9 * bound,
+        "peak R_A,z {peak} N vs {bound} N"
+    );
 }

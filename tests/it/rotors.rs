@@ -264,6 +264,49 @@ every = 0.5
 "#;
 
 #[test]
+fn compare_knows_the_symmetric_gyrostat() {
+    // A = I₁ = I₂ = 2, C = 3, a wheel on z with h = J Ω = 2 N·m·s: the closed form (transverse ω turning at
+    // λ = ((C − A)ω₃ + h)/A, attitude Rot(Ĥ_s, |H| t/A) q₀ Rot(z, −λ t); Hughes §3.5) against both forms, in ω,
+    // the attitude, H_s and T, to the issue's 1e-9.
+    let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.05, 40.0);
+    let body = BodySpec::principal(10.0, [2.0, 2.0, 3.0]).with_rotor(wheel);
+    let spec = tight(SceneSpec::new(body, 20.0, 0.1), Form::Body).with_omega([0.3, -0.1, 1.0]);
+    let scene = spec.build().unwrap();
+    let comparison = eulerdyn::analysis::compare::compare(&scene).unwrap_or_else(|e| panic!("{e}"));
+    let (name, body_form, space_form) = comparison.exact.as_ref().expect("a closed form applies");
+    assert!(name.contains("symmetric gyrostat"), "{name}");
+    for row in comparison.table() {
+        for exact in [row.body_vs_exact, row.space_vs_exact]
+            .into_iter()
+            .flatten()
+        {
+            assert!(
+                exact <= 1e-9,
+                "{}: {exact:e} from the closed form",
+                row.quantity
+            );
+        }
+    }
+    assert!(body_form.worst() <= 1e-9 && space_form.worst() <= 1e-9);
+    let quantities: Vec<&str> = comparison.table().iter().map(|r| r.quantity).collect();
+    for wanted in ["omega", "H_s", "energy"] {
+        assert!(quantities.contains(&wanted), "{quantities:?}");
+    }
+    // An imbalanced or off-axis wheel has no such closed form: compare runs the forms against each other only.
+    let tilted = RotorSpec::new([0.0, 0.6, 0.8], 0.05, 40.0);
+    let body = BodySpec::principal(10.0, [2.0, 2.0, 3.0]).with_rotor(tilted);
+    let scene = (SceneSpec::new(body, 1.0, 0.1).with_omega([0.3, -0.1, 1.0]))
+        .build()
+        .unwrap();
+    assert!(
+        eulerdyn::analysis::compare::compare(&scene)
+            .unwrap()
+            .exact
+            .is_none()
+    );
+}
+
+#[test]
 fn an_imbalanced_wheel_turns_its_force_and_couple_with_it() {
     // A wheel on body z at r = (0.1, 0, 0) from C, static imbalance U_s = 2 g·mm, dynamic U_d = 50 g·mm², its
     // relative spin Ω(t) = Ω₀ + α t, so its angle is φ = Ω₀ t + ½ α t². The simple jitter model (Alcorn, Allard &

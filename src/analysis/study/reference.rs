@@ -146,6 +146,16 @@ fn oracle_rows(scene: &Scene, oracle: &Oracle) -> Vec<RefRow> {
                 }
             })
             .collect(),
+        Oracle::SymmetricGyrostat { exact, energy } => times
+            .map(|t| RefRow {
+                t,
+                omega_b: exact.omega_p(t),
+                q: Some(exact.attitude(t)),
+                energy: *energy,
+                h_norm: exact.h_s().norm(),
+                h_s: Some(exact.h_s()),
+            })
+            .collect(),
         Oracle::FixedAxis => Vec::new(),
     }
 }

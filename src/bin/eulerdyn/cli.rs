@@ -71,7 +71,7 @@ pub enum Command {
     /// One panel per quantity, in a grid: H in body and in space axes, the moment M, omega, the energy, and the
     /// drift of the scene's invariants on a log scale.
     #[command(
-        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (`all`: these six, which every run has); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings). Default: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
+        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (`all`: these six, which every run has); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings; bearings_space draws them in space axes). Default: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
     )]
     Plot(PlotArgs),
     /// Work-precision study: every applicable method over a sweep of tolerances or step sizes, its error against
@@ -126,7 +126,8 @@ pub struct PlotArgs {
     #[arg(short = 'o', long = "output", value_name = "FIG.svg")]
     pub output: Option<PathBuf>,
     /// Panels to draw, comma-separated, in the order given: h_body, h_space, moment, omega, energy, drift (`all`:
-    /// these six, which every run has); theta, support, bearings for fixed_axis and hinge runs.
+    /// these six, which every run has); theta, support, bearings (and bearings_space, the same in space axes) for
+    /// fixed_axis and hinge runs.
     ///
     /// Default: the panels the run has: the six, then theta and support for a fixed_axis or hinge run, and
     /// bearings when it has bearings.

@@ -65,6 +65,9 @@ pub enum Panel {
     /// The bearings' forces on the body: |R_A|, |R_B| and their components in body axes (A solid, B dashed).
     /// Only runs with bearings have its columns.
     Bearings,
+    /// The same in space axes (`bearings_space`): for a rotor spinning fast, or in a turning carrier, whose loads
+    /// are steadier in space than in the spinning body. Drawn only when asked for.
+    BearingsSpace,
     /// The force the support applies to the body, F_sup, in space axes, and |F_sup| (fixed_axis and hinge runs).
     Support,
     /// The angle θ turned about the fixed axis (fixed_axis and hinge runs).
@@ -105,6 +108,7 @@ impl Panel {
             Panel::Energy => "energy",
             Panel::Drift => "drift",
             Panel::Bearings => "bearings",
+            Panel::BearingsSpace => "bearings_space",
             Panel::Support => "support",
             Panel::Theta => "theta",
         }
@@ -129,6 +133,9 @@ impl Panel {
             Panel::Bearings => &[
                 "R_A_b_x", "R_A_b_y", "R_A_b_z", "R_B_b_x", "R_B_b_y", "R_B_b_z",
             ],
+            Panel::BearingsSpace => &[
+                "R_A_s_x", "R_A_s_y", "R_A_s_z", "R_B_s_x", "R_B_s_y", "R_B_s_z",
+            ],
             Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
             Panel::Theta => &["theta"],
         }
@@ -147,7 +154,9 @@ impl Panel {
     /// Which runs have the panel's columns, for panels that not every run can draw.
     pub fn which_runs(self) -> Option<&'static str> {
         match self {
-            Panel::Bearings => Some("only runs of scenes with `bearings` have the bearing forces"),
+            Panel::Bearings | Panel::BearingsSpace => {
+                Some("only runs of scenes with `bearings` have the bearing forces")
+            }
             Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
             _ => None,
         }
@@ -160,6 +169,10 @@ impl Panel {
             Panel::Bearings => Some(
                 "no bearings (only runs of scenes with `bearings` have the bearing forces, columns R_A_b_x … \
                  R_B_b_z, that the bearings panel draws)",
+            ),
+            Panel::BearingsSpace => Some(
+                "no bearings (only runs of scenes with `bearings` have the bearing forces, columns R_A_s_x … \
+                 R_B_s_z, that the bearings_space panel draws)",
             ),
             Panel::Theta => Some(
                 "no fixed axis, so no angle `theta` (needed by theta; only fixed_axis and hinge runs have them)",
@@ -199,7 +212,8 @@ impl Panel {
     /// Every panel name, comma-separated.
     pub fn names() -> String {
         Panel::ALL.map(Panel::name).join(", ")
-            + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only)"
+            + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
+               (the same in space axes, drawn only when asked for)"
     }
 }
 
@@ -216,6 +230,7 @@ impl FromStr for Panel {
         Panel::ALL
             .into_iter()
             .chain(Panel::AXIS_ONLY)
+            .chain([Panel::BearingsSpace])
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }

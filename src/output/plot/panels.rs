@@ -100,7 +100,8 @@ pub(super) fn panel_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
         Panel::Omega => body_and_space_panel(run, "Angular velocity ω", "ω", "omega"),
         Panel::Energy => energy_panel(run),
         Panel::Drift => drift_panel(run),
-        Panel::Bearings => bearings_panel(run),
+        Panel::Bearings => bearings_panel(run, "b", "body"),
+        Panel::BearingsSpace => bearings_panel(run, "s", "space"),
         Panel::Support => support_panel(run),
         Panel::Theta => PanelPlot::linear(
             "Angle θ turned about the fixed axis",
@@ -146,18 +147,20 @@ fn norm(run: &RunSeries, prefix: &str, label: &str, second: bool) -> Curve {
     }
 }
 
-/// The components of the bearings' forces on the body, body axes (A solid, B dashed with circles), and their
-/// magnitudes (grey; |R_B| dashed with squares).
-fn bearings_panel(run: &RunSeries) -> PanelPlot {
-    let curves = components(run, "R_A_b", "R_A", false)
+/// The components of the bearings' forces on the body in `axes` (columns `R_A_{suffix}_x` …; A solid, B dashed with
+/// circles), and their magnitudes (grey; |R_B| dashed with squares).
+fn bearings_panel(run: &RunSeries, suffix: &str, axes: &str) -> PanelPlot {
+    let (a, b) = (format!("R_A_{suffix}"), format!("R_B_{suffix}"));
+    let curves = components(run, &a, "R_A", false)
         .into_iter()
-        .chain(components(run, "R_B_b", "R_B", true))
-        .chain([
-            norm(run, "R_A_b", "|R_A|", false),
-            norm(run, "R_B_b", "|R_B|", true),
-        ])
+        .chain(components(run, &b, "R_B", true))
+        .chain([norm(run, &a, "|R_A|", false), norm(run, &b, "|R_B|", true)])
         .collect();
-    PanelPlot::linear("Bearing forces on the body, body axes", "R (N)", curves)
+    PanelPlot::linear(
+        &format!("Bearing forces on the body, {axes} axes"),
+        "R (N)",
+        curves,
+    )
 }
 
 /// The force the support applies to the body, F_sup = m a_C − Σ F_effects, in space axes, and its magnitude.

@@ -78,6 +78,7 @@ pub struct RunSeries {
 fn norm_prefixes(panel: Panel) -> &'static [&'static str] {
     match panel {
         Panel::Bearings => &["R_A_b", "R_B_b"],
+        Panel::BearingsSpace => &["R_A_s", "R_B_s"],
         Panel::Support => &["F_sup_s"],
         _ => &[],
     }
