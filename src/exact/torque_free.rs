@@ -644,6 +644,7 @@ impl Elliptic {
     /// α/2 (x ≤ 0 only where cn ≈ 0, and then |y| ≈ ρ, so √(2ρ(ρ + x)) > 0), then ψ/2 by the angle sum with
     /// π/4 − ε (j mod 4) π/2 (a multiple of π/2 plus π/4, whose cosine and sine are ±√½). x² + y² below 2⁻⁹⁶⁰ (ω
     /// within ~1e-144 of the axis it circulates around, relative) takes ρ by `hypot` and α/2 from (x, y)/ρ.
+    #[inline]
     pub(super) fn half_angles(&self, cn: f64, sn: f64, dn: f64, j: i64) -> [f64; 4] {
         let [hx, hy, hz] = self.h_amp;
         let (x, y, z) = (hx * cn, hy * sn, hz * dn);
@@ -658,21 +659,7 @@ impl Elliptic {
             let (inv_t, inv_a) = (inv * root_a, inv * root_t);
             (p_t * inv_t, rho * inv_t, p_a * inv_a, y * inv_a)
         } else {
-            let rho = x.hypot(y);
-            let m_tot = z.hypot(rho);
-            let root_t = (2.0 * m_tot * (m_tot + z)).sqrt();
-            let (xn, yn) = if rho > 0.0 {
-                (x / rho, y / rho)
-            } else {
-                (1.0, 0.0)
-            };
-            let root_a = (2.0 * (1.0 + xn).max(0.0)).sqrt();
-            (
-                (m_tot + z) / root_t,
-                rho / root_t,
-                (1.0 + xn).max(0.0) / root_a,
-                yn / root_a,
-            )
+            tiny_half_angles(x, y, z)
         };
         // π/4 + q·π/2 with q = −ε·j mod 4: (cos, sin) = √½ (±1, ±1).
         let eps = self.eps;
@@ -694,8 +681,31 @@ impl Elliptic {
 /// headroom above the subnormals).
 const TINY_SQUARE: f64 = 1.026_134_200_324_594_1e-289;
 
+/// [`Elliptic::half_angles`]'s `(cos θ/2, sin θ/2, cos α/2, sin α/2)` where `x² + y²` is below [`TINY_SQUARE`]:
+/// ρ = hypot(x, y) (no underflow) and α/2 from the unit vector (x, y)/ρ (α = 0 where ρ underflowed to 0).
+#[cold]
+fn tiny_half_angles(x: f64, y: f64, z: f64) -> (f64, f64, f64, f64) {
+    let rho = x.hypot(y);
+    let m_tot = z.hypot(rho);
+    let root_t = (2.0 * m_tot * (m_tot + z)).sqrt();
+    let (xn, yn) = if rho > 0.0 {
+        (x / rho, y / rho)
+    } else {
+        (1.0, 0.0)
+    };
+    let p_a = (1.0 + xn).max(0.0);
+    let root_a = (2.0 * p_a).sqrt();
+    (
+        (m_tot + z) / root_t,
+        rho / root_t,
+        p_a / root_a,
+        yn / root_a,
+    )
+}
+
 /// `R_z(φ) R_x(θ) R_z(ψ)` from the cosines and sines of φ/2 and of `[θ/2, ψ/2]` (as `[cos, sin, cos, sin]`):
 /// `R_x(θ) R_z(ψ) = (cθ cψ, sθ cψ, −sθ sψ, cθ sψ)`, then `R_z(φ)` on the left.
+#[inline]
 pub(super) fn precession_nutation_spin(cos_f: f64, sin_f: f64, half: [f64; 4]) -> Quaternion<f64> {
     let [cos_t, sin_t, cos_p, sin_p] = half;
     let (w, i, j, k) = (cos_t * cos_p, sin_t * cos_p, -sin_t * sin_p, cos_t * sin_p);
@@ -705,4 +715,33 @@ pub(super) fn precession_nutation_spin(cos_f: f64, sin_f: f64, half: [f64; 4]) -
         cos_f * j + sin_f * i,
         cos_f * k + sin_f * w,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn omega_a_hair_off_a_principal_axis_keeps_a_finite_attitude() {
+        // ω = (1e-160, 0, 1) rad/s about the largest axis: elliptic (circulating about axis 3), but H_p's transverse
+        // components square below 2⁻⁹⁶⁰, the half-angle formulas' scale-safe path. To far below 1e-15 the motion is
+        // the steady rotation about axis 3 (L&L §37 with a → 0): q(t) = q₀ ⊗ (cos(t/2), 0, 0, sin(t/2)).
+        let q0 = UnitQuaternion::from_euler_angles(0.3, -1.1, 2.4);
+        let body = TorqueFreeBody::new(
+            Vector3::new(1.0, 2.0, 3.0),
+            Vector3::new(1e-160, 0.0, 1.0),
+            q0,
+        )
+        .expect("valid body");
+        assert_eq!(body.case(), TorqueFreeCase::Circulating { axis: 2 });
+        for t in [0.0, 0.7, 3.1, 10.0, 100.0] {
+            let want = q0 * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), t);
+            let got = body.attitude(t);
+            assert!(
+                got.angle_to(&want) <= 1e-14,
+                "t = {t}: {got:?} against {want:?}"
+            );
+            assert!((got.norm() - 1.0).abs() <= 1e-15);
+        }
+    }
 }
