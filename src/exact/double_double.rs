@@ -95,8 +95,21 @@ impl Dd {
     /// `self − q·period` with `q` the integer nearest `self/period`: the value reduced to `[−period/2, period/2]`
     /// (up to rounding). The product `q·period` is exact up to `|q|·2⁻¹⁰⁶·period`.
     pub(super) fn reduce(self, period: Self) -> Self {
-        let q = (self.hi / period.hi).round();
+        let q = nearest_integer(self.hi / period.hi);
         self - period * q
+    }
+}
+
+/// 1.5·2⁵²: adding and subtracting it rounds |x| < 2⁵¹ to the nearest integer (ties to even).
+const TO_INT: f64 = 6_755_399_441_055_744.0;
+
+/// x rounded to the nearest integer (ties to even below 2⁵¹, away from zero above, where every binary64 is an
+/// integer or a half): without SSE4.1 in the target `f64::round` is a call into the C library, this two additions.
+pub(super) fn nearest_integer(x: f64) -> f64 {
+    if x.abs() < 2_251_799_813_685_248.0 {
+        (x + TO_INT) - TO_INT
+    } else {
+        x.round()
     }
 }
 
@@ -255,6 +268,24 @@ mod tests {
         assert_eq!((FOUR_PI + 1.0).reduce(FOUR_PI), Dd::ONE);
         let r = (FOUR_PI * 1000.0 + 0.25).reduce(FOUR_PI);
         assert!((r - Dd::from(0.25)).hi.abs() <= 1e-27);
+    }
+
+    #[test]
+    fn nearest_integer_rounds_to_the_nearest() {
+        // Ties go to even below 2⁵¹ (IEEE 754 roundTiesToEven of the sum with 1.5·2⁵²); either neighbour is a valid
+        // half-period count at a tie, so only the non-ties must agree with `f64::round`.
+        for (x, want) in [
+            (0.4, 0.0),
+            (-0.6, -1.0),
+            (2.5, 2.0),
+            (3.5, 4.0),
+            (-7.49, -7.0),
+            (1e15 + 0.75, 1e15 + 1.0),
+        ] {
+            assert_eq!(nearest_integer(x), want, "{x}");
+        }
+        assert_eq!(nearest_integer(3e15 + 0.5), 3e15 + 1.0);
+        assert_eq!(nearest_integer(-1e300), -1e300);
     }
 
     #[test]

@@ -34,10 +34,12 @@
 //! φ's increment per row are formed the same way once, and each row follows the rounding of its own time
 //! t_k = k·every to first order (so its state is at τ(t_k), as the direct evaluation's is).
 
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::double_double::{Dd, FOUR_PI};
-use super::torque_free::{Elliptic, Motion, TorqueFreeBody, half_period_sign};
+use super::torque_free::{
+    Elliptic, Motion, TorqueFreeBody, half_period_sign, precession_nutation_spin,
+};
 use crate::trig::small_sin_cos;
 
 /// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
@@ -45,7 +47,7 @@ use crate::trig::small_sin_cos;
 /// body, never re-anchored, the attitude's difference from the direct evaluation grows with the number of rows r —
 /// at h = λ·every ≈ 0.004: 9.9e-15 rad after 256 rows, 2.9e-14 after 1000 and after 10⁴, 5.7e-14 after 10⁵ (ω: 8.8e-16,
 /// 4.6e-15, 4.6e-15, 1.1e-14); at h ≈ 0.04, about in proportion to r: 2.5e-15, 4.9e-15, 5.0e-14, 6.3e-13.
-/// 256 rows keep the walk's own error ~10× below 1e-13; the direct evaluation (~0.4 µs) then costs ~1.5 ns a row.
+/// 256 rows keep the walk's own error ~10× below 1e-13; the direct evaluation (~0.23 µs) then costs ~1 ns a row.
 pub const ANCHOR_ROWS: u64 = 256;
 
 /// The rows `k = 0, 1, 2, …` of [`TorqueFreeBody::equal_grid`]: `(t_k, ω(t_k), q(t_k))`, `t_k = k·every` (the
@@ -295,51 +297,8 @@ impl<'a> Walk<'a> {
         // `round`, which is one without SSE4.1; which side a tie goes to does not matter: q is continuous there).
         let j = ((e.lambda * t + e.tau0) * self.inv_two_k + 1.5) as i64 - 1;
         let sign = if j & 1 == 1 { -1.0 } else { 1.0 };
-        let [i1, i2, i3] = e.inertia;
-        let x = i1 * e.a * sign * self.c;
-        let y = i2 * e.b * sign * self.s;
-        let z = i3 * e.c * self.d;
-        let [cos_t, sin_t, cos_p, sin_p] = half_angles(x, y, z, j & 3, e.eps);
-        let (cos_f, sin_f) = (self.cos_half_phi, self.sin_half_phi);
-        // R_x(θ) R_z(ψ) = (cθ cψ, sθ cψ, −sθ sψ, cθ sψ); then R_z(φ) on the left.
-        let (w, i, jj, k) = (cos_t * cos_p, sin_t * cos_p, -sin_t * sin_p, cos_t * sin_p);
-        let q_h = Quaternion::new(
-            cos_f * w - sin_f * k,
-            cos_f * i - sin_f * jj,
-            cos_f * jj + sin_f * i,
-            cos_f * k + sin_f * w,
-        );
+        let half = e.half_angles(sign * self.c, sign * self.s, self.d, j);
+        let q_h = precession_nutation_spin(self.cos_half_phi, self.sin_half_phi, half);
         e.q_fixed * UnitQuaternion::new_unchecked(q_h) * self.right
     }
-}
-
-/// cos, sin of θ/2 and of ψ/2 for the Euler angles of [`TorqueFreeBody::attitude`] from `H_p`'s components
-/// `(x, y, z) = (I₁ω₁, I₂ω₂, I₃ω₃)` of the reduced argument (x ≥ 0 up to rounding, z > 0), the half-period count
-/// `j4 = j mod 4` and ε: θ = atan2(√(x² + y²), z) ∈ [0, π/2), ψ = π/2 − ε(j4·π + α), α = atan2(y, x) ∈ [−π/2, π/2];
-/// cos(θ/2) = √((1 + cos θ)/2), sin(θ/2) = sin θ / (2 cos(θ/2)), and the same for α/2 (x ≤ 0 only where cn ≈ 0,
-/// and then |y| ≈ ρ, so √(2ρ(ρ + x)) > 0), then ψ/2 by the angle sum
-/// with π/4 − ε j4 π/2 (a multiple of π/2 plus π/4, whose cosine and sine are ±√½).
-fn half_angles(x: f64, y: f64, z: f64, j4: i64, eps: f64) -> [f64; 4] {
-    let r2 = x * x + y * y;
-    let rho = r2.sqrt();
-    let m_tot = (z * z + r2).sqrt();
-    // cos(θ/2) = (M + z)/√(2M(M + z)), sin(θ/2) = ρ/√(2M(M + z)); the same for α/2 with (ρ, x): one division.
-    let (p_t, p_a) = (m_tot + z, (rho + x).max(0.0));
-    let (root_t, root_a) = ((2.0 * m_tot * p_t).sqrt(), (2.0 * rho * p_a).sqrt());
-    let inv = 1.0 / (root_t * root_a);
-    let (inv_t, inv_a) = (inv * root_a, inv * root_t);
-    let (cos_t, sin_t) = (p_t * inv_t, rho * inv_t);
-    let (cos_a, sin_a) = (p_a * inv_a, y * inv_a);
-    // π/4 + q·π/2 with q = −ε·j4 mod 4: (cos, sin) = √½ (±1, ±1).
-    let q = if eps > 0.0 { (4 - j4) & 3 } else { j4 };
-    let r = std::f64::consts::FRAC_1_SQRT_2;
-    let (cos_g, sin_g) = match q {
-        0 => (r, r),
-        1 => (-r, r),
-        2 => (-r, -r),
-        _ => (r, -r),
-    };
-    let cos_p = cos_g * cos_a + eps * sin_g * sin_a;
-    let sin_p = sin_g * cos_a - eps * cos_g * sin_a;
-    [cos_t, sin_t, cos_p, sin_p]
 }

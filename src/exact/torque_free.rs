@@ -46,12 +46,10 @@
 //! Stationary rotations (ω = 0, ω along a principal axis or in a degenerate principal plane,
 //! a spherical body) have constant `ω_p` and `q(t) = q₀ ⊗ exp(½ ω_p t)`.
 
-use std::f64::consts::{FRAC_PI_2, PI};
-
 use ellip::elliprj;
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
-use super::double_double::{Dd, FOUR_PI, complete_k_pi};
+use super::double_double::{Dd, FOUR_PI, complete_k_pi, nearest_integer};
 use super::jacobi::JacobiElliptic;
 use super::{ExactError, axis_angle_quat, check_moments};
 
@@ -102,6 +100,9 @@ pub(super) struct Elliptic {
     /// Canonical user-axis index of canonical axis 3 (for [`TorqueFreeCase`]).
     pub(super) axis3_user: usize,
     pub(super) inertia: [f64; 3],
+    /// `(I₁a, I₂b, I₃c)`, the amplitudes of H_p's components, times a power of two that brings the largest into
+    /// [1, 2) (exact; the squares of [`Elliptic::half_angles`] neither overflow nor lose bits below `2⁻⁹⁶⁰`).
+    pub(super) h_amp: [f64; 3],
     pub(super) a: f64,
     pub(super) b: f64,
     pub(super) c: f64,
@@ -319,7 +320,7 @@ impl TorqueFreeBody {
 
 /// `(−1)^j`: sn and cn change sign with each half period 2K (DLMF §22.4(iii)).
 pub(super) fn half_period_sign(j: f64) -> f64 {
-    if j.rem_euclid(2.0) == 1.0 { -1.0 } else { 1.0 }
+    if (j as i64) & 1 == 1 { -1.0 } else { 1.0 }
 }
 
 /// The largest power of two ≤ x (x ≥ 0 finite; 0 for 0): dividing by it is exact.
@@ -408,16 +409,6 @@ fn initial_phase(x: f64, y: f64, mc: f64, separatrix: bool) -> Result<f64, Exact
     })
 }
 
-fn quat_z(angle: f64) -> Quaternion<f64> {
-    let (s, c) = (0.5 * angle).sin_cos();
-    Quaternion::new(c, 0.0, 0.0, s)
-}
-
-fn quat_x(angle: f64) -> Quaternion<f64> {
-    let (s, c) = (0.5 * angle).sin_cos();
-    Quaternion::new(c, s, 0.0, 0.0)
-}
-
 /// The constants of the motion in double-double (module docs; L&L §37), from the canonical moments and
 /// `w = ω₀/scale` — exact, `scale` being a power of two — so that the secular rates are good to ~1e-30 relative
 /// and `λt`, `j·2K` and the precession angle's secular part stay exact to ~1e-30·t: amplitudes, λ and |H| in
@@ -494,10 +485,14 @@ impl Elliptic {
             .ok_or(ExactError::Numerical("elliptic parameter out of [0, 1]"))?;
         let (a, b) = (k.a.hi, k.b.hi);
         let tau0 = initial_phase(w.x * scale / a, eps * w.y * scale / b, mc, separatrix)?;
+        let amp = [i1 * a, i2 * b, i3 * k.c.hi];
+        let unit = 1.0 / pow2_floor(amp[0].max(amp[1]).max(amp[2]));
+        let unit = if unit.is_finite() { unit } else { 1.0 };
         let mut e = Self {
             perm,
             axis3_user,
             inertia: [i1, i2, i3],
+            h_amp: amp.map(|v| v * unit),
             a,
             b,
             c: k.c.hi,
@@ -575,7 +570,7 @@ impl Elliptic {
         let j = if tau.hi.abs() <= self.jac.quarter_period() {
             0.0
         } else {
-            (tau.hi / self.two_k.hi).round()
+            nearest_integer(tau.hi / self.two_k.hi)
         };
         let r = tau - self.two_k * j;
         let red = self.jac.at_reduced(j, r.hi);
@@ -630,20 +625,123 @@ impl Elliptic {
         }
     }
 
-    /// `q_H(t) = R_z(φ) R_x(θ) R_z(ψ)`: canonical body → H frame.
+    /// `q_H(t) = R_z(φ) R_x(θ) R_z(ψ)`: canonical body → H frame, θ and ψ by [`Self::half_angles`] (no
+    /// arctangent, no sine), φ's half-angle by one sine–cosine pair; normalised (the half-angle formulas leave the
+    /// norm a few ε off 1, and the attitude's contract is a unit quaternion to 1e-15).
     fn q_h(&self, t: f64) -> UnitQuaternion<f64> {
         let (tau, (s, c, d, j)) = self.phase(t);
-        let [i1, i2, i3] = self.inertia;
-        // Unsigned-by-(−1)^j components of H_p: (I₁ a cn r, I₂ b sn r, I₃ c dn r).
-        let x = i1 * self.a * c;
-        let y = i2 * self.b * s;
-        let z = i3 * self.c * d;
-        let theta = x.hypot(y).atan2(z);
-        // ψ only matters modulo 4π (the quaternion of R_z(ψ) has period 4π): reduce the
-        // half-period count mod 4 so that ψ stays small and exact at large t.
-        let chi = j.rem_euclid(4.0) * PI + y.atan2(x);
-        let psi = FRAC_PI_2 - self.eps * chi;
         let phi = self.phi(t, tau, s, c, d, j);
-        UnitQuaternion::new_normalize(quat_z(phi) * quat_x(theta) * quat_z(psi))
+        let (sin_f, cos_f) = (0.5 * phi).sin_cos();
+        let half = self.half_angles(c, s, d, j as i64);
+        UnitQuaternion::new_normalize(precession_nutation_spin(cos_f, sin_f, half))
+    }
+
+    /// cos, sin of θ/2 and of ψ/2 for the Euler angles of [`TorqueFreeBody::attitude`] from `H_p`'s components
+    /// `(x, y, z) = (I₁ω₁, I₂ω₂, I₃ω₃)` of the reduced argument, `(cn r, sn r, dn r)` times [`Self::h_amp`]
+    /// (cn r ≥ 0 up to rounding), and the half-period count j (L&L §37: `M sinθ sinψ = I₁ω₁`,
+    /// `M sinθ cosψ = I₂ω₂`, `M cosθ = I₃ω₃`): θ = atan2(√(x² + y²), z) ∈ [0, π/2), ψ = π/2 − ε(j·π + α),
+    /// α = atan2(y, x) ∈ [−π/2, π/2]; cos(θ/2) = √((1 + cos θ)/2), sin(θ/2) = sin θ / (2 cos(θ/2)), and the same for
+    /// α/2 (x ≤ 0 only where cn ≈ 0, and then |y| ≈ ρ, so √(2ρ(ρ + x)) > 0), then ψ/2 by the angle sum with
+    /// π/4 − ε (j mod 4) π/2 (a multiple of π/2 plus π/4, whose cosine and sine are ±√½). x² + y² below 2⁻⁹⁶⁰ (ω
+    /// within ~1e-144 of the axis it circulates around, relative) takes ρ by `hypot` and α/2 from (x, y)/ρ.
+    #[inline]
+    pub(super) fn half_angles(&self, cn: f64, sn: f64, dn: f64, j: i64) -> [f64; 4] {
+        let [hx, hy, hz] = self.h_amp;
+        let (x, y, z) = (hx * cn, hy * sn, hz * dn);
+        let r2 = x * x + y * y;
+        let (cos_t, sin_t, cos_a, sin_a) = if r2 >= TINY_SQUARE {
+            let rho = r2.sqrt();
+            let m_tot = (z * z + r2).sqrt();
+            // cos(θ/2) = (M + z)/√(2M(M + z)), sin(θ/2) = ρ/√(2M(M + z)); the same for α/2 with (ρ, x): one division.
+            let (p_t, p_a) = (m_tot + z, (rho + x).max(0.0));
+            let (root_t, root_a) = ((2.0 * m_tot * p_t).sqrt(), (2.0 * rho * p_a).sqrt());
+            let inv = 1.0 / (root_t * root_a);
+            let (inv_t, inv_a) = (inv * root_a, inv * root_t);
+            (p_t * inv_t, rho * inv_t, p_a * inv_a, y * inv_a)
+        } else {
+            tiny_half_angles(x, y, z)
+        };
+        // π/4 + q·π/2 with q = −ε·j mod 4: (cos, sin) = √½ (±1, ±1).
+        let eps = self.eps;
+        let q = if eps > 0.0 { (4 - (j & 3)) & 3 } else { j & 3 };
+        let r = std::f64::consts::FRAC_1_SQRT_2;
+        let (cos_g, sin_g) = match q {
+            0 => (r, r),
+            1 => (-r, r),
+            2 => (-r, -r),
+            _ => (r, -r),
+        };
+        let cos_p = cos_g * cos_a + eps * sin_g * sin_a;
+        let sin_p = sin_g * cos_a - eps * cos_g * sin_a;
+        [cos_t, sin_t, cos_p, sin_p]
+    }
+}
+
+/// Below this `x² + y²` [`Elliptic::half_angles`] takes the scale-safe path (2⁻⁹⁶⁰: the squares keep ~60 bits of
+/// headroom above the subnormals).
+const TINY_SQUARE: f64 = 1.026_134_200_324_594_1e-289;
+
+/// [`Elliptic::half_angles`]'s `(cos θ/2, sin θ/2, cos α/2, sin α/2)` where `x² + y²` is below [`TINY_SQUARE`]:
+/// ρ = hypot(x, y) (no underflow) and α/2 from the unit vector (x, y)/ρ (α = 0 where ρ underflowed to 0).
+#[cold]
+fn tiny_half_angles(x: f64, y: f64, z: f64) -> (f64, f64, f64, f64) {
+    let rho = x.hypot(y);
+    let m_tot = z.hypot(rho);
+    let root_t = (2.0 * m_tot * (m_tot + z)).sqrt();
+    let (xn, yn) = if rho > 0.0 {
+        (x / rho, y / rho)
+    } else {
+        (1.0, 0.0)
+    };
+    let p_a = (1.0 + xn).max(0.0);
+    let root_a = (2.0 * p_a).sqrt();
+    (
+        (m_tot + z) / root_t,
+        rho / root_t,
+        p_a / root_a,
+        yn / root_a,
+    )
+}
+
+/// `R_z(φ) R_x(θ) R_z(ψ)` from the cosines and sines of φ/2 and of `[θ/2, ψ/2]` (as `[cos, sin, cos, sin]`):
+/// `R_x(θ) R_z(ψ) = (cθ cψ, sθ cψ, −sθ sψ, cθ sψ)`, then `R_z(φ)` on the left.
+#[inline]
+pub(super) fn precession_nutation_spin(cos_f: f64, sin_f: f64, half: [f64; 4]) -> Quaternion<f64> {
+    let [cos_t, sin_t, cos_p, sin_p] = half;
+    let (w, i, j, k) = (cos_t * cos_p, sin_t * cos_p, -sin_t * sin_p, cos_t * sin_p);
+    Quaternion::new(
+        cos_f * w - sin_f * k,
+        cos_f * i - sin_f * j,
+        cos_f * j + sin_f * i,
+        cos_f * k + sin_f * w,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn omega_a_hair_off_a_principal_axis_keeps_a_finite_attitude() {
+        // ω = (1e-160, 0, 1) rad/s about the largest axis: elliptic (circulating about axis 3), but H_p's transverse
+        // components square below 2⁻⁹⁶⁰, the half-angle formulas' scale-safe path. To far below 1e-15 the motion is
+        // the steady rotation about axis 3 (L&L §37 with a → 0): q(t) = q₀ ⊗ (cos(t/2), 0, 0, sin(t/2)).
+        let q0 = UnitQuaternion::from_euler_angles(0.3, -1.1, 2.4);
+        let body = TorqueFreeBody::new(
+            Vector3::new(1.0, 2.0, 3.0),
+            Vector3::new(1e-160, 0.0, 1.0),
+            q0,
+        )
+        .expect("valid body");
+        assert_eq!(body.case(), TorqueFreeCase::Circulating { axis: 2 });
+        for t in [0.0, 0.7, 3.1, 10.0, 100.0] {
+            let want = q0 * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), t);
+            let got = body.attitude(t);
+            assert!(
+                got.angle_to(&want) <= 1e-14,
+                "t = {t}: {got:?} against {want:?}"
+            );
+            assert!((got.norm() - 1.0).abs() <= 1e-15);
+        }
     }
 }
