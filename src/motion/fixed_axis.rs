@@ -37,8 +37,9 @@ pub struct FixedAxis {
     g_s: Vector3<f64>,
     /// The two bearings, where the scene places them.
     bearings: Option<Bearings>,
-    /// The carrier that holds the axis and turns in space; `None`: the axis is fixed in space.
-    carrier: Option<Carrier>,
+    /// The carrier that holds the axis and turns in space; `None`: the axis is fixed in space (boxed: a rare
+    /// option that should not grow every axis motion).
+    carrier: Option<Box<Carrier>>,
 }
 
 /// The angle turned about the axis and its derivatives at one time.
@@ -96,13 +97,13 @@ impl FixedAxis {
     /// With the axis, its point and its bearings fixed in a turning `carrier` (the motion's other methods then
     /// describe the rotation relative to the carrier; [`Self::sample`] the motion in space).
     pub fn with_carrier(mut self, carrier: Carrier) -> Self {
-        self.carrier = Some(carrier);
+        self.carrier = Some(Box::new(carrier));
         self
     }
 
     /// The carrier, if the axis is in one.
     pub fn carrier(&self) -> Option<&Carrier> {
-        self.carrier.as_ref()
+        self.carrier.as_deref()
     }
 
     /// With uniform gravity `g_s` (m/s², space axes) acting at C: the support then carries the weight.
@@ -323,7 +324,7 @@ impl FixedAxis {
 
     /// The body at angle θ and time t, not turning about the axis (θ̇ = 0): only the carrier's rate.
     pub fn placed(&self, t: f64, theta: f64) -> AxisRotation {
-        match self.carrier {
+        match self.carrier() {
             None => self.relative(theta),
             Some(carrier) => {
                 let c = carrier.at(t);
@@ -388,7 +389,7 @@ impl FixedAxis {
     /// ω = Ω_c + θ̇ u.
     pub fn required_moment_s(&self, t: f64, frame: Form) -> Vector3<f64> {
         let angle = self.angle(t);
-        match (self.carrier, frame) {
+        match (self.carrier(), frame) {
             (None, Form::Space) => self.moment_s(&angle),
             (None, Form::Body) => self.attitude(angle.theta) * self.moment_b(&angle),
             (Some(_), _) => {
