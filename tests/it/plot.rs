@@ -958,7 +958,7 @@ extremum = "min"
 name = "peak_t"
 when = "energy"
 extremum = "max""#;
-    let scene = write_file(dir, "pend.toml", &pendulum(30.0, "dop853", 3.0, events));
+    let scene = write_file(dir, "pend.toml", pendulum(30.0, "dop853", 3.0, events));
     let csv = dir.join("pend.csv");
     eulerdyn(["run", text(&scene), "-o", text(&csv), "-q"]).expect_code(0);
     csv
