@@ -46,6 +46,8 @@ window.eulerdynControls = function (api, data) {
   $('notes').innerHTML = notes.length ? `<h2>Notes</h2><ul>${notes.join('')}</ul>` : '';
   $('notes').hidden = notes.length === 0;
 
+  const listed = eventList($('events'), api.events || [], (t) => { api.setTime(t); keepFragment(); });
+
   const slider = $('time');
   const span = api.t_end - api.t_start;
   const toSlider = (t) => (span > 0 ? Math.round(((t - api.t_start) / span) * Number(slider.max)) : 0);
@@ -109,7 +111,26 @@ window.eulerdynControls = function (api, data) {
     }).join('');
   }
 
+  /** The located events as a table (a button with the name, t, the quantity and its value, the direction): a
+   * click jumps to the event's time. Returns a function that marks the rows at the time shown. */
+  function eventList(box, events, jump) {
+    box.hidden = events.length === 0;
+    if (!events.length) return () => {};
+    const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;');
+    const rows = events.map((e, k) => `<tr data-k="${k}"><td><button type="button" class="event" data-k="${k}"` +
+      ` title="show t = ${e.t}">${esc(e.event)}</button></td><td>t = ${fmt(e.t)} ${tUnit}</td>` +
+      `<td>${esc(e.when || 'value')} = ${fmt(e.value)}</td><td>${esc(e.direction)}</td></tr>`);
+    box.innerHTML = `<h2>Events (${events.length}): click to show</h2><table>${rows.join('')}</table>`;
+    box.addEventListener('click', (ev) => {
+      const button = ev.target.closest('button.event');
+      if (button) jump(events[Number(button.dataset.k)].t);
+    });
+    const trs = box.querySelectorAll('tr');
+    return (t) => trs.forEach((tr, k) => tr.classList.toggle('current', events[k].t === t));
+  }
+
   api.onTime((state, t) => {
+    listed(t);
     $('readout').innerHTML = readout(state);
     $('clock').textContent = `t = ${fmt(t)} ${tUnit} of ${fmt(api.t_end)}`;
     slider.value = String(toSlider(t));

@@ -137,6 +137,7 @@
     columns: columns,
     geometry: geometry,
     notes: data.notes,
+    events: data.events || [],
     vectors: vectorNames,
     drawn: false,
     setTime: setTime,

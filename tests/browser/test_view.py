@@ -474,3 +474,45 @@ every = 0.0002
     # The tilted disk at 10 rad/s: 2 pi / 10 = 0.628, nearest on the ladder 0.5.
     page = open_page(disk[1])
     assert page.js("() => window.eulerdyn.clock.speed") == 0.5
+
+
+#: A compound pendulum with theta's downward crossings of 0 and omega_b_z's minima as events (rows every 0.05 s).
+PENDULUM_WITH_EVENTS = ROOT / "tests" / "data" / "pendulum_events.toml"
+
+
+def read_events(csv_path):
+    """The run's events file: (event, t, value, direction) with t and value as floats."""
+    with open(f"{csv_path}.events.csv", newline="") as f:
+        return [(r["event"], float(r["t"]), float(r["value"]), r["direction"]) for r in csv.DictReader(f)]
+
+
+def test_the_events_are_listed_and_a_click_shows_each_ones_time(work, disk, open_page):
+    csv_path, html_path = work / "pendulum_events.csv", work / "pendulum_events.html"
+    assert eulerdyn("run", PENDULUM_WITH_EVENTS, "-o", csv_path).returncode == 0
+    assert eulerdyn("view", csv_path, "-o", html_path).returncode == 0
+    located = read_events(csv_path)
+    assert len(located) == 4 and {e[0] for e in located} == {"down", "fast"}, located
+    page = open_page(html_path)
+    assert page.js("() => !document.getElementById('events').hidden")
+    buttons = page.page.query_selector_all("#events button.event")
+    assert len(buttons) == len(located)
+    assert page.js("() => window.eulerdyn.events.length") == len(located)
+    listed = page.page.inner_text("#events")
+    assert f"Events ({len(located)})" in listed and "theta" in listed and "omega_b_z" in listed, listed
+    for k, (name, t, value, _) in enumerate(located):
+        assert buttons[k].inner_text() == name
+        buttons[k].click()
+        state = page.js("() => window.eulerdyn.state()")
+        # The time shown is the event's (between two rows: the state interpolated there), and the list marks it.
+        assert state["t"] == t, (name, state["t"], t)
+        assert abs(t / 0.05 - round(t / 0.05)) > 1e-6, "located between the rows"
+        assert page.js("(k) => document.querySelectorAll('#events tr')[k].classList.contains('current')", k)
+        assert f"t = {t:.4g}" in page.page.inner_text("#clock")
+        # The watched quantity at that time, to the interpolation between rows 0.05 s apart.
+        if name == "fast":
+            omega_b = state["omega_b"]
+            assert abs(omega_b[2] - value) < 1e-2 * abs(value), (omega_b, value)
+    # A run without events lists none.
+    page = open_page(disk[1])
+    assert page.js("() => document.getElementById('events').hidden")
+    assert page.js("() => window.eulerdyn.events.length") == 0
