@@ -29,12 +29,19 @@ window.eulerdynControls = function (api, data) {
     if (!v) continue;
     let longest = 0;
     for (const row of api.rows) longest = Math.max(longest, Math.hypot(...row[name]));
+    // H shares its scale with the wheels' momenta.
+    const withWheels = name === 'H_s' && api.rotor_names.length > 0;
+    if (withWheels) for (const row of api.rows) for (const h of row.rotor_h) longest = Math.max(longest, Math.abs(h));
     legend.push(`<li><span class="swatch" style="background:${v.color}"></span>${v.label}, ${unitOf(name)}` +
-      ` — arrow scaled so the longest (${fmt(longest)}) fits</li>`);
+      ` — arrow scaled so the longest${withWheels ? ' of H and the wheels\' h' : ''} (${fmt(longest)}) fits</li>`);
   }
   legend.push('<li><span class="swatch origin"></span>ω, H and M are drawn from the grey ball beside the body, not from' +
     ' O, so that they do not hide it (free vectors; M is the moment about O)</li>');
   if (api.vectors.includes('H_s')) legend.push('<li><span class="swatch trail"></span>trail of H\'s tip in space</li>');
+  if (api.rotor_names.length) {
+    legend.push(`<li><span class="swatch wheel"></span>wheels ${api.rotor_names.join(', ')}: each a disc on its spin` +
+      ' axis, fixed in the body, and an arrow of its axial momentum h = J(a·ω + Ω) along the axis, at H\'s scale</li>');
+  }
   if (api.geometry.body && api.geometry.body.drawn_thicker) {
     const said = api.geometry.body.drawn_thicker.replace(/&/g, '&amp;').replace(/</g, '&lt;');
     legend.push(`<li><span class="swatch body"></span>the body: ${said}</li>`);
