@@ -66,6 +66,8 @@ pub struct SupportLoads {
     pub m_drive: f64,
     /// The bearings' forces on the body, where the scene places two bearings.
     pub bearings: Option<BearingLoads>,
+    /// The carrier's rate Ω_c (rad/s, space axes), when the axis is in a turning carrier.
+    pub omega_c_s: Option<Vector3<f64>>,
 }
 
 /// The forces bearings A and B apply to the body (N): R_A + R_B = F_sup, r_A × R_A + r_B × R_B = M_sup⊥.
@@ -93,6 +95,8 @@ pub struct ColumnSet {
     pub bearings: bool,
     /// `potential,energy_total`.
     pub potential: bool,
+    /// `Omega_c_s_x,Omega_c_s_y,Omega_c_s_z`, after `M_sup_s_*` (a carrier's rate).
+    pub carrier: bool,
     /// `<name>_spin,<name>_h,<name>_torque` per rotor, after all others ([`rotor_columns`]).
     pub rotors: &'static [Column],
 }
@@ -281,6 +285,24 @@ const SUPPORT_MOMENT_COLUMNS: [Column; 3] = [
     ),
 ];
 
+const CARRIER_COLUMNS: [Column; 3] = [
+    col(
+        "Omega_c_s_x",
+        "rad/s",
+        "the carrier's angular velocity, space axes",
+    ),
+    col(
+        "Omega_c_s_y",
+        "rad/s",
+        "the carrier's angular velocity, space axes",
+    ),
+    col(
+        "Omega_c_s_z",
+        "rad/s",
+        "the carrier's angular velocity, space axes",
+    ),
+];
+
 const POTENTIAL_COLUMNS: [Column; 2] = [
     col(
         "potential",
@@ -299,12 +321,13 @@ impl ColumnSet {
         support: true,
         bearings: true,
         potential: true,
+        carrier: true,
         rotors: &[],
     };
 
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
-        let groups: [(bool, &[Column]); 7] = [
+        let groups: [(bool, &[Column]); 8] = [
             (self.theta, &[THETA_COLUMN]),
             (self.force, &FORCE_COLUMNS),
             (self.h_s_integrated, &H_INT_COLUMNS),
@@ -312,6 +335,7 @@ impl ColumnSet {
             (self.bearings, &BEARING_COLUMNS),
             (self.potential, &POTENTIAL_COLUMNS),
             (self.support, &SUPPORT_MOMENT_COLUMNS),
+            (self.carrier, &CARRIER_COLUMNS),
         ];
         let mut cols = BASE_COLUMNS.to_vec();
         for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
@@ -367,6 +391,10 @@ impl ColumnSet {
         }
         if self.support {
             out.extend(s.support.map_or(nan3, |l| l.m_sup_s).iter());
+        }
+        if self.carrier {
+            let omega_c_s = s.support.and_then(|l| l.omega_c_s);
+            out.extend(omega_c_s.unwrap_or(nan3).iter());
         }
         let rotors = s.rotors.unwrap_or_default();
         for k in 0..self.rotors.len() / 3 {

@@ -12,6 +12,7 @@ use crate::body::Principal;
 use crate::effects::{Effect, TorqueProfile};
 use crate::frames::Form;
 use crate::method::Method;
+use crate::motion::carrier::CarrierProfile;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::gyrostat::{Drive, Gyrostat};
@@ -118,6 +119,20 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 r.spin0
             ),
         );
+        if let Some(u) = &r.imbalance {
+            line(
+                w,
+                "",
+                &format!(
+                    "  imbalance: static {} kg*m (a force U_s Omega^2), dynamic {} kg*m^2 (a couple U_d Omega^2), \
+                     turning with the wheel from body direction {} at t = 0; wheel centre {} m from the moment center",
+                    u.static_kgm,
+                    u.dynamic_kgm2,
+                    vec3(&u.w2_b),
+                    vec3(&u.r_b)
+                ),
+            );
+        }
     }
 }
 
@@ -414,7 +429,7 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         &format!(
             "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
             vec3(&axis_b),
-            if tilt < 1e-6 && motion.point_b() == Vector3::zeros() {
+            if tilt < 1e-6 && motion.point_b() == Vector3::zeros() && motion.carrier().is_none() {
                 ": a principal axis, no moment is needed at a constant rate"
             } else {
                 ""
@@ -434,7 +449,31 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         ),
     );
     axis_point_lines(w, &motion.point_b());
+    carrier_lines(w, motion);
     fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
+}
+
+/// The carrier that holds the axis: its rate and profile.
+fn carrier_lines(w: &mut Description, axis: &FixedAxis) {
+    let Some(carrier) = axis.carrier() else {
+        return;
+    };
+    let profile = match carrier.profile() {
+        CarrierProfile::Constant => "constant".to_string(),
+        CarrierProfile::Sine { omega_f, phase } => format!(
+            "times sin(2 pi {} Hz t + {} deg)",
+            plain(omega_f / std::f64::consts::TAU),
+            plain(phase.to_degrees())
+        ),
+    };
+    line(
+        w,
+        "carrier",
+        &format!(
+            "the axis and its bearings turn with a carrier at {} rad/s (space axes), {profile}: omega = Omega_c + theta' u",
+            vec3(carrier.rate_s())
+        ),
+    );
 }
 
 /// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
@@ -537,6 +576,7 @@ fn hinge_lines(w: &mut Description, hinge: &Hinge) {
         ),
     );
     axis_point_lines(w, &axis.point_b());
+    carrier_lines(w, axis);
 }
 
 /// Where C is (with point masses), and for an axis motion its bearings and its imbalance: static m·e (e the

@@ -1,13 +1,16 @@
 //! Prescribed rotation about an axis fixed in the body and in space (the reference notes' tilted disk and thin
 //! rod): the angle θ(t) is known in closed form, and the moment the motion requires is inverse dynamics —
 //! computed in body axes (Euler's equation with constant I) and, independently, in space axes with the
-//! coordinate-dependent inertia I_s(θ) (eq. 8.10).
+//! coordinate-dependent inertia I_s(θ) (eq. 8.10). In a turning carrier ([`crate::motion::carrier`]) the axis is
+//! fixed in the carrier and the methods taking an [`AxisAngle`] alone describe the rotation relative to it;
+//! [`FixedAxis::rotation`] and [`FixedAxis::sample`] give the motion in space, ω = Ω_c + θ̇ u.
 
 use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::frames::Form;
 use crate::kinetics::kinetic_energy;
+use crate::motion::carrier::{Carrier, CarrierMotion};
 use crate::motion::support::Bearings;
 use crate::sample::{BearingLoads, Sample, SupportLoads};
 
@@ -34,6 +37,8 @@ pub struct FixedAxis {
     g_s: Vector3<f64>,
     /// The two bearings, where the scene places them.
     bearings: Option<Bearings>,
+    /// The carrier that holds the axis and turns in space; `None`: the axis is fixed in space.
+    carrier: Option<Carrier>,
 }
 
 /// The angle turned about the axis and its derivatives at one time.
@@ -71,19 +76,33 @@ impl FixedAxis {
             inertia_a_b: body.inertia_about(&rho_c_b),
             g_s: Vector3::zeros(),
             bearings: None,
+            carrier: None,
         }
     }
 
-    /// The same body, axis, point and initial attitude turning at the constant `rate` (rad/s), without gravity or
-    /// bearings.
+    /// The same body, axis, point and initial attitude turning at the constant `rate` (rad/s), without gravity,
+    /// bearings or carrier.
     pub fn new_like(other: &FixedAxis, rate: f64) -> Self {
         Self {
             rate,
             accel: 0.0,
             g_s: Vector3::zeros(),
             bearings: None,
+            carrier: None,
             ..other.clone()
         }
+    }
+
+    /// With the axis, its point and its bearings fixed in a turning `carrier` (the motion's other methods then
+    /// describe the rotation relative to the carrier; [`Self::sample`] the motion in space).
+    pub fn with_carrier(mut self, carrier: Carrier) -> Self {
+        self.carrier = Some(carrier);
+        self
+    }
+
+    /// The carrier, if the axis is in one.
+    pub fn carrier(&self) -> Option<&Carrier> {
+        self.carrier.as_ref()
     }
 
     /// With uniform gravity `g_s` (m/s², space axes) acting at C: the support then carries the weight.
@@ -181,7 +200,7 @@ impl FixedAxis {
         }
     }
 
-    /// Attitude R(θ) = Rot(a_s, θ)·R₀ (body → space).
+    /// Attitude R(θ) = Rot(a_s, θ)·R₀ (body → space; body → carrier in a carrier).
     pub fn attitude(&self, theta: f64) -> UnitQuaternion<f64> {
         UnitQuaternion::from_axis_angle(&self.axis_s, theta) * self.q0
     }
@@ -239,10 +258,9 @@ impl FixedAxis {
 
     /// Acceleration of C: a_C = α × ρ + ω × (ω × ρ), space axes (tangential and centripetal parts; A is fixed).
     pub fn accel_c_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        let rho_s = self.rho_c_s(angle);
-        let omega_s = self.omega_s(angle);
-        let alpha_s = self.axis_s.into_inner() * angle.theta_ddot;
-        alpha_s.cross(&rho_s) + omega_s.cross(&omega_s.cross(&rho_s))
+        let rotation =
+            (self.relative(angle.theta)).turning(&self.axis_b.into_inner(), angle.theta_dot);
+        self.accel_c_at(&rotation, angle.theta_ddot)
     }
 
     /// Required force on the body, F = m a_C (eq. 8.7), space axes.
@@ -251,37 +269,167 @@ impl FixedAxis {
     }
 }
 
+/// The body's rotation at one time, in space: its attitude, the axis in space, ω in both axes and the part of ω̇
+/// that does not come from θ̈. Without a carrier R = Rot(a_s, θ)·R₀, u = a_s, ω = θ̇ u and ω̇ = θ̈ u; in a carrier
+/// R = R_c·Rot(a_s, θ)·R₀, u = R_c a_s, ω_s = Ω_c + θ̇ u and ω̇_s = θ̈ u + Ω̇_c + θ̇ Ω_c × u (u turns with the
+/// carrier: u̇ = Ω_c × u).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisRotation {
+    /// Attitude, body → space.
+    pub q: UnitQuaternion<f64>,
+    /// The unit axis u in space axes.
+    pub u_s: Vector3<f64>,
+    pub omega_b: Vector3<f64>,
+    pub omega_s: Vector3<f64>,
+    /// ω̇_s − θ̈ u = Ω̇_c + θ̇ Ω_c × u (space axes; zero without a carrier).
+    pub bias_s: Vector3<f64>,
+    /// The carrier at this time, if there is one.
+    pub carrier: Option<CarrierMotion>,
+}
+
+impl AxisRotation {
+    /// ω̇_s = θ̈ u + (Ω̇_c + θ̇ Ω_c × u).
+    pub fn alpha_s(&self, theta_ddot: f64) -> Vector3<f64> {
+        match self.carrier {
+            None => self.u_s * theta_ddot,
+            Some(_) => self.bias_s + self.u_s * theta_ddot,
+        }
+    }
+
+    /// The same placement turning at θ̇ = `theta_dot` about `axis_b` more: ω += θ̇ u, and in a carrier ω̇ gains
+    /// θ̇ Ω_c × u.
+    fn turning(mut self, axis_b: &Vector3<f64>, theta_dot: f64) -> Self {
+        self.omega_b += axis_b * theta_dot;
+        self.omega_s += self.u_s * theta_dot;
+        if let Some(c) = self.carrier {
+            self.bias_s += c.omega_c_s.cross(&self.u_s) * theta_dot;
+        }
+        self
+    }
+}
+
 impl FixedAxis {
+    /// The body at angle θ relative to the carrier (in space without one), at rest.
+    fn relative(&self, theta: f64) -> AxisRotation {
+        AxisRotation {
+            q: self.attitude(theta),
+            u_s: self.axis_s.into_inner(),
+            omega_b: Vector3::zeros(),
+            omega_s: Vector3::zeros(),
+            bias_s: Vector3::zeros(),
+            carrier: None,
+        }
+    }
+
+    /// The body at angle θ and time t, not turning about the axis (θ̇ = 0): only the carrier's rate.
+    pub fn placed(&self, t: f64, theta: f64) -> AxisRotation {
+        match self.carrier {
+            None => self.relative(theta),
+            Some(carrier) => {
+                let c = carrier.at(t);
+                let q = c.q_c * self.attitude(theta);
+                AxisRotation {
+                    q,
+                    u_s: c.q_c * self.axis_s.into_inner(),
+                    omega_b: q.inverse_transform_vector(&c.omega_c_s),
+                    omega_s: c.omega_c_s,
+                    bias_s: c.omega_c_dot_s,
+                    carrier: Some(c),
+                }
+            }
+        }
+    }
+
+    /// The body at angle θ, rate θ̇ and time t ([`AxisRotation`]).
+    pub fn rotation(&self, t: f64, theta: f64, theta_dot: f64) -> AxisRotation {
+        self.placed(t, theta)
+            .turning(&self.axis_b.into_inner(), theta_dot)
+    }
+
+    /// a_C = ω̇ × ρ + ω × (ω × ρ), space axes, ρ = R ρ_C (A is fixed in space, carrier or not).
+    fn accel_c_at(&self, rotation: &AxisRotation, theta_ddot: f64) -> Vector3<f64> {
+        let rho_s = rotation.q * self.rho_c_b;
+        let omega_s = rotation.omega_s;
+        rotation.alpha_s(theta_ddot).cross(&rho_s) + omega_s.cross(&omega_s.cross(&rho_s))
+    }
+
+    /// M = dH_A/dt in a carrier, in the form `frame` selects, returned in (body, space) axes. Body form:
+    /// M_b = I_A ω̇_b + ω_b × I_A ω_b; space form, with I_s = R I_A Rᵀ, which now depends on θ and t:
+    /// M_s = İ_s ω_s + I_s ω̇_s with İ_s = ω̂_s I_s − I_s ω̂_s (Ṙ = ω̂_s R).
+    fn moment_in_carrier(
+        &self,
+        rotation: &AxisRotation,
+        theta_ddot: f64,
+        frame: Form,
+    ) -> (Vector3<f64>, Vector3<f64>) {
+        let q = rotation.q;
+        let alpha_s = rotation.alpha_s(theta_ddot);
+        match frame {
+            Form::Body => {
+                let (omega_b, alpha_b) = (rotation.omega_b, q.inverse_transform_vector(&alpha_s));
+                let m_b = self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b));
+                (m_b, q * m_b)
+            }
+            Form::Space => {
+                let r = q.to_rotation_matrix().into_inner();
+                let i_s = r * self.inertia_a_b * r.transpose();
+                let w_hat = rotation.omega_s.cross_matrix();
+                let i_s_dot = w_hat * i_s - i_s * w_hat;
+                let m_s = i_s_dot * rotation.omega_s + i_s * alpha_s;
+                (q.inverse_transform_vector(&m_s), m_s)
+            }
+        }
+    }
+}
+
+impl FixedAxis {
+    /// The moment about A the prescribed motion requires at time t, space axes, computed in the form `frame`
+    /// selects: R(θ)·(I_A α + ω × I_A ω) (body form) or d/dt[I_s ω_s] (space form, eq. 8.10), in a carrier with
+    /// ω = Ω_c + θ̇ u.
+    pub fn required_moment_s(&self, t: f64, frame: Form) -> Vector3<f64> {
+        let angle = self.angle(t);
+        match (self.carrier, frame) {
+            (None, Form::Space) => self.moment_s(&angle),
+            (None, Form::Body) => self.attitude(angle.theta) * self.moment_b(&angle),
+            (Some(_), _) => {
+                let rotation = self.rotation(t, angle.theta, angle.theta_dot);
+                self.moment_in_carrier(&rotation, angle.theta_ddot, frame).1
+            }
+        }
+    }
+
     /// The full kinetic state at time t, with the required moment computed in the form `frame` selects (the other
-    /// frame's components by rotation): body form [`FixedAxis::moment_b`], space form [`FixedAxis::moment_s`].
-    /// Energy is ½ ω·H_A, the body's whole kinetic energy since A is fixed.
+    /// frame's components by rotation): body form [`FixedAxis::moment_b`], space form [`FixedAxis::moment_s`] (in
+    /// a carrier, their generalisations with ω = Ω_c + θ̇ u). Energy is ½ ω·H_A, the body's whole kinetic energy
+    /// since A is fixed.
     pub fn sample(&self, t: f64, frame: Form) -> Sample {
         let angle = self.angle(t);
-        let q = self.attitude(angle.theta);
-        let weight_moment_s = (q * self.rho_c_b).cross(&(self.g_s * self.mass));
-        self.sample_at(t, &angle, &q, frame, &weight_moment_s)
+        let rotation = self.rotation(t, angle.theta, angle.theta_dot);
+        let weight_moment_s = (rotation.q * self.rho_c_b).cross(&(self.g_s * self.mass));
+        self.sample_at(t, &angle, &rotation, frame, &weight_moment_s)
     }
 
     /// The kinetic state and the support's loads at time t and the angle `angle` (see [`Self::sample`] and
     /// [`crate::motion::support`]), where the effects apply the moment `m_eff_s` about A (space axes) and
-    /// gravity its weight at C; `q` is [`Self::attitude`] at `angle.theta`, which the caller has computed.
+    /// gravity its weight at C; `rotation` is [`Self::rotation`] at t, θ and θ̇, which the caller has computed.
     pub fn sample_at(
         &self,
         t: f64,
         angle: &AxisAngle,
-        q: &UnitQuaternion<f64>,
+        rotation: &AxisRotation,
         frame: Form,
         m_eff_s: &Vector3<f64>,
     ) -> Sample {
-        let (angle, q) = (*angle, *q);
-        let omega_b = self.omega_b(&angle);
-        let h_b = self.h_b(&angle);
-        let (m_b, m_s) = match frame {
-            Form::Body => {
+        let (angle, q) = (*angle, rotation.q);
+        let omega_b = rotation.omega_b;
+        let h_b = self.inertia_a_b * omega_b;
+        let (m_b, m_s) = match (rotation.carrier, frame) {
+            (Some(_), _) => self.moment_in_carrier(rotation, angle.theta_ddot, frame),
+            (None, Form::Body) => {
                 let m_b = self.moment_b(&angle);
                 (m_b, q * m_b)
             }
-            Form::Space => {
+            (None, Form::Space) => {
                 let m_s = self.moment_s(&angle);
                 (q.inverse() * m_s, m_s)
             }
@@ -290,16 +438,17 @@ impl FixedAxis {
             t,
             q,
             omega_b,
-            omega_s: self.omega_s(&angle),
+            omega_s: rotation.omega_s,
             h_b,
             h_s: q * h_b,
             m_b,
             m_s,
             energy: kinetic_energy(&omega_b, &h_b),
             theta: Some(angle.theta),
-            f_s: self.center_off_axis().then(|| self.force_s(&angle)),
+            f_s: (self.center_off_axis())
+                .then(|| self.accel_c_at(rotation, angle.theta_ddot) * self.mass),
             h_s_integrated: None,
-            support: Some(self.support(&angle, &q, &m_s, m_eff_s)),
+            support: Some(self.support(&angle, rotation, &m_s, m_eff_s)),
             potential: None,
             rotors: None,
         }
@@ -309,17 +458,19 @@ impl FixedAxis {
 impl FixedAxis {
     /// What the support supplies when the resultant moment about A is `m_s` and the effects' is `m_eff_s` (space
     /// axes): F_sup = m a_C − m g, M_sup = m_s − m_eff_s, the drive's M_sup·u and, with bearings, their split (see
-    /// [`crate::motion::support`]).
+    /// [`crate::motion::support`]; u and the bearings turn with the carrier).
     fn support(
         &self,
         angle: &AxisAngle,
-        q: &UnitQuaternion<f64>,
+        rotation: &AxisRotation,
         m_s: &Vector3<f64>,
         m_eff_s: &Vector3<f64>,
     ) -> SupportLoads {
-        let f_sup_s = self.force_s(angle) - self.g_s * self.mass;
+        let q = rotation.q;
+        let f_sup_s =
+            self.accel_c_at(rotation, angle.theta_ddot) * self.mass - self.g_s * self.mass;
         let m_sup_s = m_s - m_eff_s;
-        let u_s = self.axis_s.into_inner();
+        let u_s = rotation.u_s;
         SupportLoads {
             theta_dot: angle.theta_dot,
             theta_ddot: angle.theta_ddot,
@@ -335,6 +486,7 @@ impl FixedAxis {
                     r_b_b: q.inverse_transform_vector(&r_b_s),
                 }
             }),
+            omega_c_s: rotation.carrier.map(|c| c.omega_c_s),
         }
     }
 }

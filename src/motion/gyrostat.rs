@@ -11,8 +11,19 @@
 //!
 //! A wheel's spin is prescribed (Ω̇_k = α_k, 0 for a constant spin; τ_k is then an output) or driven by its motor
 //! torque τ_k(t). Eliminating the driven wheels' Ω̇_k gives ω̇ = I_D⁻¹ (M − ω × H − Σ_P J_k α_k a_k − Σ_D τ_k a_k),
-//! I_D = I − Σ_D J_k a_k a_kᵀ. State: (ω_b or H_s, q, Ω_1 … Ω_4), unused spins zero. Kinetic energy
-//! T = ½ ωᵀ I ω + Σ (J_k Ω_k (a_k·ω) + ½ J_k Ω_k²).
+//! I_D = I − Σ_D J_k a_k a_kᵀ. State: (ω_b or H_s, q, Ω_1 … Ω_4, φ_1 … φ_4), unused entries zero, with φ_k the
+//! wheel's angle relative to the body (φ̇_k = Ω_k). Kinetic energy T = ½ ωᵀ I ω + Σ (J_k Ω_k (a_k·ω) + ½ J_k Ω_k²).
+//!
+//! A wheel's imbalance acts on the body as the moment of a force and a couple turning with the wheel (the "simple
+//! jitter" model of Alcorn, Allard & Schaub, *Fully coupled reaction wheel static and dynamic imbalance for
+//! spacecraft jitter modeling*, JGCD 41(6), 2018, and Basilisk's reaction-wheel effector):
+//!
+//! ```text
+//!   d_k = cos φ_k w2_k + sin φ_k w3_k,    M_k = r_k × (U_s Ω_k² d_k) + U_d Ω_k² d_k,
+//! ```
+//!
+//! U_s = m e the static and U_d the dynamic imbalance, r_k the wheel centre from the moment center; the force's
+//! effect on the motion of C is not simulated (rotation only).
 
 use nalgebra::{Matrix3, Quaternion, SVector, SymmetricEigen, Unit, UnitQuaternion, Vector3};
 
@@ -22,8 +33,11 @@ use crate::frames::{Form, StateRotation};
 use crate::integrate::OdeSystem;
 use crate::sample::{MAX_ROTORS, RotorRows, Sample};
 
-/// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4).
-pub type State = SVector<f64, 11>;
+/// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4, φ_1, …, φ_4).
+pub type State = SVector<f64, 15>;
+
+/// Where the wheel angles φ_k start in the state.
+const ANGLES: usize = 7 + MAX_ROTORS;
 
 /// What drives a rotor, validated.
 #[derive(Debug, Clone, PartialEq)]
@@ -46,6 +60,60 @@ pub struct Rotor {
     /// Ω at t = 0, relative to the body (rad/s).
     pub spin0: f64,
     pub drive: Drive,
+    /// Its imbalance, if any.
+    pub imbalance: Option<Imbalance>,
+}
+
+/// A wheel's imbalance (module doc): U_s (kg·m), U_d (kg·m²), the wheel centre r from the moment center and the
+/// directions w2 (where the imbalance points at φ = 0) and w3 = a × w2, body axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Imbalance {
+    pub static_kgm: f64,
+    pub dynamic_kgm2: f64,
+    pub r_b: Vector3<f64>,
+    pub w2_b: Vector3<f64>,
+    pub w3_b: Vector3<f64>,
+}
+
+impl Imbalance {
+    /// The imbalance `static_kgm` (kg·m) and `dynamic_kgm2` (kg·m²) of a wheel about `axis_b` centred at `r_b`
+    /// from the moment center; w2 is the body axis least aligned with the spin axis (x, then y, then z on ties),
+    /// made normal to it.
+    ///
+    /// ```
+    /// use eulerdyn::motion::gyrostat::Imbalance;
+    /// use nalgebra::{Unit, Vector3};
+    /// let wheel = Imbalance::new(1e-6, 0.0, Vector3::zeros(), &Unit::new_normalize(Vector3::z()));
+    /// assert_eq!((wheel.w2_b, wheel.w3_b), (Vector3::x(), Vector3::y()));
+    /// ```
+    pub fn new(
+        static_kgm: f64,
+        dynamic_kgm2: f64,
+        r_b: Vector3<f64>,
+        axis_b: &Unit<Vector3<f64>>,
+    ) -> Self {
+        let a = axis_b.into_inner();
+        let least = (0..3)
+            .min_by(|&i, &j| a[i].abs().total_cmp(&a[j].abs()))
+            .unwrap_or(0);
+        let e = Vector3::ith(least, 1.0);
+        let w2_b = (e - a * a.dot(&e)).normalize();
+        Self {
+            static_kgm,
+            dynamic_kgm2,
+            r_b,
+            w2_b,
+            w3_b: a.cross(&w2_b),
+        }
+    }
+
+    /// M = r × (U_s Ω² d) + U_d Ω² d, d = cos φ w2 + sin φ w3 (body axes) at the relative spin Ω and angle φ.
+    pub fn moment_b(&self, spin: f64, phi: f64) -> Vector3<f64> {
+        let (sin, cos) = phi.sin_cos();
+        let d = self.w2_b * cos + self.w3_b * sin;
+        let spin2 = spin * spin;
+        self.r_b.cross(&(d * (self.static_kgm * spin2))) + d * (self.dynamic_kgm2 * spin2)
+    }
 }
 
 /// The rotors cannot be inside this body: with the driven wheels free, I_D = I − Σ_D J_k a_k a_kᵀ must stay
@@ -65,6 +133,8 @@ pub struct WheelsOutsideBody {
 pub struct Gyrostat {
     body: FreeBody,
     rotors: Vec<Rotor>,
+    /// Whether some wheel has an imbalance (else its moment is not evaluated).
+    imbalanced: bool,
     /// I_D⁻¹, body axes.
     inertia_driven_inv_b: Matrix3<f64>,
 }
@@ -90,6 +160,7 @@ impl Gyrostat {
             .ok_or(WheelsOutsideBody { smallest })?;
         Ok(Self {
             body,
+            imbalanced: rotors.iter().any(|r| r.imbalance.is_some()),
             rotors,
             inertia_driven_inv_b,
         })
@@ -109,6 +180,22 @@ impl Gyrostat {
     /// kinetic energy conserved where no effect acts; a prescribed or constant relative spin takes motor work.
     pub fn wheels_spin_freely(&self) -> bool {
         (self.rotors.iter()).all(|r| matches!(&r.drive, Drive::Torque(tau) if tau.is_zero()))
+    }
+
+    /// Whether some wheel has an imbalance, whose moment changes H and T.
+    pub fn imbalanced(&self) -> bool {
+        self.imbalanced
+    }
+
+    /// The external moment `m_b` plus the wheels' imbalance moments at the state `y` (module doc).
+    fn with_imbalance(&self, m_b: Vector3<f64>, y: &State) -> Vector3<f64> {
+        if !self.imbalanced {
+            return m_b;
+        }
+        (self.rotors.iter().enumerate()).fold(m_b, |m, (k, r)| match &r.imbalance {
+            Some(imbalance) => m + imbalance.moment_b(y[7 + k], y[ANGLES + k]),
+            None => m,
+        })
     }
 
     /// Σ J_k Ω_k(0) a_k, body axes: the rotors' share of H at t = 0.
@@ -193,7 +280,7 @@ impl Gyrostat {
         to_body: impl Fn(&Vector3<f64>) -> Vector3<f64>,
     ) -> (Vector3<f64>, Vector3<f64>) {
         let first = Vector3::new(y[0], y[1], y[2]);
-        let h_rotors_b = self.rotor_momentum_b(&y.as_slice()[7..]);
+        let h_rotors_b = self.rotor_momentum_b(&y.as_slice()[7..ANGLES]);
         match form {
             Form::Body => (first, self.body.inertia_b() * first + h_rotors_b),
             Form::Space => {
@@ -207,7 +294,7 @@ impl Gyrostat {
     pub fn sample<M: AppliedMoment>(&self, moment: &M, form: Form, t: f64, y: &State) -> Sample {
         let q = UnitQuaternion::new_normalize(Quaternion::new(y[3], y[4], y[5], y[6]));
         let (omega_b, h_b) = self.omega_and_momentum(form, y, |v| q.inverse_transform_vector(v));
-        let m_b = moment.moment_b(t, &q, &omega_b);
+        let m_b = self.with_imbalance(moment.moment_b(t, &q, &omega_b), y);
         let (omega_b_dot, _) = self.rates(t, &omega_b, &h_b, &m_b);
         let mut rows = RotorRows {
             n: self.rotors.len(),
@@ -223,13 +310,13 @@ impl Gyrostat {
             };
         }
         let mut sample = super::free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
-        sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..]);
+        sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..ANGLES]);
         sample.rotors = Some(rows);
         sample
     }
 }
 
-/// The state's rates: (ω̇_b or Ḣ_s, q̇, Ω̇_k).
+/// The state's rates: (ω̇_b or Ḣ_s, q̇, Ω̇_k, φ̇_k = Ω_k).
 #[inline(always)]
 fn state_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>, spin_dot: &[f64]) -> State {
     let dq = super::free::quaternion_rate(&[y[3], y[4], y[5], y[6]], omega_b);
@@ -237,7 +324,9 @@ fn state_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>, spin_dot: 
     dy.fixed_rows_mut::<3>(0).copy_from(&first);
     dy.fixed_rows_mut::<4>(3)
         .copy_from(&nalgebra::Vector4::from(dq));
-    dy.as_mut_slice()[7..7 + spin_dot.len()].copy_from_slice(spin_dot);
+    let n = spin_dot.len();
+    dy.as_mut_slice()[7..7 + n].copy_from_slice(spin_dot);
+    dy.as_mut_slice()[ANGLES..ANGLES + n].copy_from_slice(&y.as_slice()[7..7 + n]);
     dy
 }
 
@@ -257,15 +346,16 @@ pub struct GyrostatForm<'a, M: AppliedMoment> {
     pub form: Form,
 }
 
-impl<M: AppliedMoment> OdeSystem<11> for GyrostatForm<'_, M> {
+impl<M: AppliedMoment> OdeSystem<15> for GyrostatForm<'_, M> {
     fn rhs(&mut self, t: f64, y: &State) -> State {
         let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
         let rotation = StateRotation::of(&q_state);
         let g = self.gyrostat;
         let (omega_b, h_b) = g.omega_and_momentum(self.form, y, |v| rotation.to_body(v));
-        let m_b = self
-            .moment
-            .moment_b_at_state(t, &q_state, || rotation, &omega_b);
+        let m_b = g.with_imbalance(
+            (self.moment).moment_b_at_state(t, &q_state, || rotation, &omega_b),
+            y,
+        );
         let (omega_dot_b, spin_dot) = g.rates(t, &omega_b, &h_b, &m_b);
         let first = match self.form {
             Form::Body => omega_dot_b,

@@ -8,16 +8,20 @@
 //! integrated in body axes as θ̈ = u_b·M_eff,b / I_uu (state θ, θ̇) and in space axes as the axial part of
 //! d/dt(I_s(θ) ω_s) = M_s, i.e. L̇ = u_s·M_eff,s with L = u_s·H_s = I_uu θ̇ (state θ, L). The bearings supply the
 //! part of dH/dt − M_eff across the axis, the drive nothing (see [`crate::motion::support`]).
+//!
+//! In a turning carrier (ω = Ω_c + θ̇ u, [`crate::motion::carrier`]) the drive still supplies nothing about u:
+//! u·(dH/dt − M_eff) = 0 gives θ̈ with the carrier's inertial terms, and in space axes L = u·H_s obeys
+//! L̇ = (Ω_c × u)·H_s + u·M_eff,s since u turns with the carrier.
 
-use nalgebra::{SVector, UnitQuaternion, Vector3};
+use nalgebra::{SVector, Vector3};
 
 use crate::effects::{AppliedMoment, EffectMoments};
 use crate::frames::Form;
 use crate::integrate::OdeSystem;
-use crate::motion::fixed_axis::{AxisAngle, FixedAxis};
+use crate::motion::fixed_axis::{AxisAngle, AxisRotation, FixedAxis};
 use crate::sample::Sample;
 
-/// State of a hinge: (θ, θ̇) in the body form, (θ, L = I_uu θ̇) in the space form.
+/// State of a hinge: (θ, θ̇) in the body form, (θ, L = u·H_s) in the space form (L = I_uu θ̇ without a carrier).
 pub type HingeState = SVector<f64, 2>;
 
 /// A body on a hinge: the axis geometry (with gravity and bearings), the moment of inertia about the axis and
@@ -70,52 +74,78 @@ impl Hinge {
         self.theta0
     }
 
-    /// The state at t = 0 in `form`.
+    /// The state at t = 0 in `form`: L = u·H_s = u_b·I_A ω_b (= I_uu θ̇ without a carrier).
     pub fn initial_state(&self, form: Form) -> HingeState {
-        match form {
-            Form::Body => HingeState::new(self.theta0, self.rate0),
-            Form::Space => HingeState::new(self.theta0, self.i_uu * self.rate0),
+        match (form, self.axis.carrier()) {
+            (Form::Body, _) => HingeState::new(self.theta0, self.rate0),
+            (Form::Space, None) => HingeState::new(self.theta0, self.i_uu * self.rate0),
+            (Form::Space, Some(_)) => {
+                let rotation = self.axis.rotation(0.0, self.theta0, self.rate0);
+                let u_b = self.axis.axis_b().into_inner();
+                let l = u_b.dot(&(self.axis.inertia_a_b() * rotation.omega_b));
+                HingeState::new(self.theta0, l)
+            }
         }
     }
 
-    /// θ̇ from the state of `form`.
-    fn theta_dot(&self, form: Form, y: &HingeState) -> f64 {
-        match form {
-            Form::Body => y[1],
-            Form::Space => y[1] / self.i_uu,
+    /// θ̇ and the rotation at t from the state of `form`; in the space form θ̇ = (L − u_b·I_A ω_c,b)/I_uu, with
+    /// ω_c,b the carrier's rate in body axes (zero without one).
+    fn rotation(&self, t: f64, form: Form, y: &HingeState) -> (f64, AxisRotation) {
+        let theta_dot = match (form, self.axis.carrier()) {
+            (Form::Body, _) => y[1],
+            (Form::Space, None) => y[1] / self.i_uu,
+            (Form::Space, Some(_)) => {
+                let placed = self.axis.placed(t, y[0]);
+                let u_b = self.axis.axis_b().into_inner();
+                let carried = u_b.dot(&(self.axis.inertia_a_b() * placed.omega_b));
+                (y[1] - carried) / self.i_uu
+            }
+        };
+        (theta_dot, self.axis.rotation(t, y[0], theta_dot))
+    }
+
+    /// θ̈ from u·(dH/dt − M_eff) = 0: θ̈ = u_b·(M_eff,b − I_A β_b − ω_b × I_A ω_b)/I_uu with β = ω̇ − θ̈ u the
+    /// carrier's part; without a carrier the last two terms vanish (β = 0, ω ∥ u) and θ̈ = u_b·M_eff,b/I_uu.
+    fn theta_ddot(&self, rotation: &AxisRotation, m_eff_b: &Vector3<f64>) -> f64 {
+        let u_b = self.axis.axis_b().into_inner();
+        match rotation.carrier {
+            None => u_b.dot(m_eff_b) / self.i_uu,
+            Some(_) => {
+                let i_a = self.axis.inertia_a_b();
+                let (omega_b, beta_b) = (
+                    rotation.omega_b,
+                    rotation.q.inverse_transform_vector(&rotation.bias_s),
+                );
+                let inertial = i_a * beta_b + omega_b.cross(&(i_a * omega_b));
+                u_b.dot(&(m_eff_b - inertial)) / self.i_uu
+            }
         }
     }
 
-    /// The effects' moment about the axis point, body axes, at t, θ and θ̇.
-    fn effect_moment_b(&self, t: f64, q: &UnitQuaternion<f64>, theta_dot: f64) -> Vector3<f64> {
-        let omega_b = self.axis.axis_b().into_inner() * theta_dot;
-        self.moments.moment_b(t, q, &omega_b)
-    }
-
-    /// The row at time t from the state of `form`: the kinematics at (θ, θ̇, θ̈ = u·M_eff/I_uu), M = dH/dt in the
-    /// form's own way, and the support's loads.
+    /// The row at time t from the state of `form`: the kinematics at (θ, θ̇, θ̈ from the hinge condition),
+    /// M = dH/dt in the form's own way, and the support's loads.
     pub fn sample(&self, t: f64, y: &HingeState, form: Form) -> Sample {
-        let theta_dot = self.theta_dot(form, y);
-        let q = self.axis.attitude(y[0]);
-        let m_eff_b = self.effect_moment_b(t, &q, theta_dot);
+        let (theta_dot, rotation) = self.rotation(t, form, y);
+        let m_eff_b = self.moments.moment_b(t, &rotation.q, &rotation.omega_b);
         let angle = AxisAngle {
             theta: y[0],
             theta_dot,
-            theta_ddot: self.axis.axis_b().dot(&m_eff_b) / self.i_uu,
+            theta_ddot: self.theta_ddot(&rotation, &m_eff_b),
         };
-        self.axis.sample_at(t, &angle, &q, form, &(q * m_eff_b))
+        self.axis
+            .sample_at(t, &angle, &rotation, form, &(rotation.q * m_eff_b))
     }
 }
 
-/// The hinge's equation in body axes: θ̇' = u_b·M_eff,b(t, θ, θ̇) / I_uu.
+/// The hinge's equation in body axes: θ̇' = θ̈ from the hinge condition ([`Hinge`]'s `theta_ddot`).
 pub struct HingeBodyForm<'a>(pub &'a Hinge);
 
 impl OdeSystem<2> for HingeBodyForm<'_> {
     fn rhs(&mut self, t: f64, y: &HingeState) -> HingeState {
         let hinge = self.0;
-        let q = hinge.axis.attitude(y[0]);
-        let m_eff_b = hinge.effect_moment_b(t, &q, y[1]);
-        HingeState::new(y[1], hinge.axis.axis_b().dot(&m_eff_b) / hinge.i_uu)
+        let rotation = hinge.axis.rotation(t, y[0], y[1]);
+        let m_eff_b = hinge.moments.moment_b(t, &rotation.q, &rotation.omega_b);
+        HingeState::new(y[1], hinge.theta_ddot(&rotation, &m_eff_b))
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
@@ -123,16 +153,24 @@ impl OdeSystem<2> for HingeBodyForm<'_> {
     }
 }
 
-/// The hinge's equation in space axes: L' = u_s·M_eff,s(t, θ, θ̇), θ' = L / I_uu.
+/// The hinge's equation in space axes: L = u·H_s, L' = u̇·H_s + u·Ḣ_s = (Ω_c × u)·H_s + u·M_eff,s (the first term
+/// only in a carrier), θ' = θ̇.
 pub struct HingeSpaceForm<'a>(pub &'a Hinge);
 
 impl OdeSystem<2> for HingeSpaceForm<'_> {
     fn rhs(&mut self, t: f64, y: &HingeState) -> HingeState {
         let hinge = self.0;
-        let theta_dot = y[1] / hinge.i_uu;
-        let q = hinge.axis.attitude(y[0]);
-        let m_eff_s = q * hinge.effect_moment_b(t, &q, theta_dot);
-        HingeState::new(theta_dot, hinge.axis.axis_s().dot(&m_eff_s))
+        let (theta_dot, rotation) = hinge.rotation(t, Form::Space, y);
+        let m_eff_s = rotation.q * hinge.moments.moment_b(t, &rotation.q, &rotation.omega_b);
+        let axial = rotation.u_s.dot(&m_eff_s);
+        let l_dot = match rotation.carrier {
+            None => axial,
+            Some(c) => {
+                let h_s = rotation.q * (hinge.axis.inertia_a_b() * rotation.omega_b);
+                c.omega_c_s.cross(&rotation.u_s).dot(&h_s) + axial
+            }
+        };
+        HingeState::new(theta_dot, l_dot)
     }
 
     fn next_breakpoint(&self, t: f64) -> Option<f64> {

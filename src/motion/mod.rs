@@ -2,6 +2,7 @@
 //! right-hand sides of both forms of Euler's equation ([`free`]), by Lie–Poisson splitting ([`lie_poisson`]), or in
 //! closed form ([`exact_flow`]); a body with rotors inside it ([`gyrostat`]).
 
+pub mod carrier;
 pub mod exact_flow;
 pub mod fixed_axis;
 pub mod free;

@@ -78,6 +78,7 @@ impl Motion {
             h_s_integrated: matches!(self, Motion::FixedAxis(_)),
             support: true,
             bearings: axis.bearings().is_some(),
+            carrier: axis.carrier().is_some(),
             ..ColumnSet::default()
         }
     }
@@ -92,15 +93,17 @@ impl Motion {
     }
 
     /// The largest rate (rad/s) the motion has at its start or, for a prescribed spin-up, its end `t_end`: |ω₀|
-    /// of a free body, the hinge's θ̇₀, max(|θ̇₀|, |θ̇₀ + α t_end|) of a fixed axis.
+    /// of a free body, the hinge's θ̇₀, max(|θ̇₀|, |θ̇₀ + α t_end|) of a fixed axis; plus a carrier's largest rate.
     pub fn largest_rate(&self, t_end: f64) -> f64 {
-        match self {
-            Motion::Free { omega0_b, .. } => omega0_b.norm(),
-            Motion::FixedAxis(axis) => {
-                (axis.rate().abs()).max((axis.rate() + axis.accel() * t_end).abs())
+        let carrier = (self.axis().and_then(FixedAxis::carrier)).map_or(0.0, |c| c.largest_rate());
+        carrier
+            + match self {
+                Motion::Free { omega0_b, .. } => omega0_b.norm(),
+                Motion::FixedAxis(axis) => {
+                    (axis.rate().abs()).max((axis.rate() + axis.accel() * t_end).abs())
+                }
+                Motion::Hinge(hinge) => hinge.rate0().abs(),
             }
-            Motion::Hinge(hinge) => hinge.rate0().abs(),
-        }
     }
 
     /// A free rigid body without rotors: its ω₀ (body axes) and the body about its moment center.

@@ -77,12 +77,12 @@ pub struct EnergyWatch {
 
 impl EnergyWatch {
     /// The watch of `scene`; `None` when the scene does not conserve its energy (torques, damping, a driven axis,
-    /// a rotor's motor).
+    /// a rotor's motor or imbalance).
     pub fn of(scene: &Scene) -> Option<Self> {
         let free = match &scene.motion {
-            Motion::Free { gyrostat, .. } => {
-                gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely())
-            }
+            Motion::Free { gyrostat, .. } => gyrostat
+                .as_ref()
+                .is_none_or(|g| g.wheels_spin_freely() && !g.imbalanced()),
             _ => false,
         };
         let conservative = scene

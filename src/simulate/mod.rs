@@ -392,11 +392,7 @@ struct RequiredMomentRate<'a> {
 impl RequiredMomentRate<'_> {
     /// M_s(t): (dI_s/dθ) θ̇ ω_s + I_s ω̇_s (space form, eq. 8.10) or R(θ)·(I α + ω × I ω) (body form).
     fn moment_s(&self, t: f64) -> Vector3<f64> {
-        let angle = self.motion.angle(t);
-        match self.frame {
-            Form::Space => self.motion.moment_s(&angle),
-            Form::Body => self.motion.attitude(angle.theta) * self.motion.moment_b(&angle),
-        }
+        self.motion.required_moment_s(t, self.frame)
     }
 }
 

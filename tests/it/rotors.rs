@@ -264,6 +264,49 @@ every = 0.5
 "#;
 
 #[test]
+fn an_imbalanced_wheel_turns_its_force_and_couple_with_it() {
+    // A wheel on body z at r = (0.1, 0, 0) from C, static imbalance U_s = 2 g·mm, dynamic U_d = 50 g·mm², its
+    // relative spin Ω(t) = Ω₀ + α t, so its angle is φ = Ω₀ t + ½ α t². The simple jitter model (Alcorn, Allard &
+    // Schaub, JGCD 41(6), 2018; Basilisk's reaction-wheel effector) puts the force F = U_s Ω² d and the couple
+    // L = U_d Ω² d on the body, d = cos φ x + sin φ y turning with the wheel (w2 = x, the body axis least aligned
+    // with z), so M_b = r × F + L: its in-plane part is U_d Ω² d, its z part 0.1 U_s Ω² sin φ — the force m e Ω².
+    let (u_s, u_d, r) = (2.0e-6, 50.0e-9, 0.1);
+    for (spin0, alpha) in [(600.0, 0.0), (300.0, 100.0)] {
+        let drive = RotorDrive::SpinAccel(alpha);
+        let wheel = (RotorSpec::new([0.0, 0.0, 1.0], 0.01, spin0).with_drive(drive))
+            .with_imbalance([r, 0.0, 0.0], 2.0, 50.0);
+        let mut by_form = Vec::new();
+        for form in Form::ALL {
+            let body = BodySpec::principal(50.0, [5.0, 6.0, 7.0]).with_rotor(wheel.clone());
+            let spec = tight(SceneSpec::new(body, 1.0, 0.01), form);
+            let rows = rows(&spec);
+            for s in &rows {
+                let (spin, phi) = (spin0 + alpha * s.t, spin0 * s.t + 0.5 * alpha * s.t * s.t);
+                let scale = u_s * spin * spin;
+                let d = nalgebra::Vector3::new(phi.cos(), phi.sin(), 0.0);
+                let expected =
+                    nalgebra::Vector3::z() * (r * scale * phi.sin()) + d * (u_d * spin * spin);
+                assert!(
+                    (s.m_b - expected).norm() <= 1e-9 * expected.norm().max(r * scale),
+                    "Ω₀ = {spin0}, α = {alpha}, t = {}: M_b = {} vs {expected}",
+                    s.t,
+                    s.m_b
+                );
+                close(s.rotors.unwrap().spin[0], spin, 1e-12, "Ω");
+            }
+            by_form.push(rows);
+        }
+        for (b, s) in by_form[0].iter().zip(&by_form[1]) {
+            assert!(
+                (b.omega_b - s.omega_b).norm() <= 1e-9 * b.omega_b.norm().max(1e-9),
+                "the forms agree at t = {}",
+                b.t
+            );
+        }
+    }
+}
+
+#[test]
 fn bad_rotors_are_refused_with_the_file_and_key_and_nothing_is_written() {
     let wheel = "[[body.rotor]]\naxis = [1.0, 0.0, 0.0]\ninertia = 0.05\n";
     let with = |extra: &str| ROTOR_SCENE.replace("[initial]", &format!("{extra}\n[initial]"));
@@ -309,9 +352,14 @@ fn bad_rotors_are_refused_with_the_file_and_key_and_nothing_is_written() {
             "body.rotor[4]",
         ),
         (
-            "an imbalance",
-            with(&format!("{wheel}imbalance_static_gmm = 3.0")),
+            "a negative static imbalance",
+            with(&format!("{wheel}imbalance_static_gmm = -3.0")),
             "body.rotor[2].imbalance_static_gmm",
+        ),
+        (
+            "a dynamic imbalance that is not a number",
+            with(&format!("{wheel}imbalance_dynamic_gmm2 = nan")),
+            "body.rotor[2].imbalance_dynamic_gmm2",
         ),
         (
             "a wheel bigger than the body",

@@ -278,11 +278,13 @@ fn body_and_space_panel(run: &RunSeries, title: &str, symbol: &str, quantity: &s
 /// The CSV columns of the scene's invariants (of |H|, T, T + V and H_s,z), or `None` when there is no sidecar to
 /// tell. Free motion and a hinge keep T and |H| with no effects, and T + V under gravity alone (free motion about
 /// a pivot also H_s,z, the component of H along vertical gravity, whose moment is horizontal); a prescribed
-/// fixed-axis motion keeps T and |H| unless it accelerates; torques and damping leave none.
+/// fixed-axis motion keeps T and |H| unless it accelerates; torques, damping, a turning carrier and a rotor's
+/// imbalance leave none.
 pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>> {
     let scene = scene?;
     let only_gravity = scene.effects.iter().all(|e| e == "gravity");
     Some(match scene.motion {
+        _ if scene.carried || scene.imbalanced => vec![],
         MotionKind::FixedAxis if scene.accelerated => vec![],
         MotionKind::FixedAxis => vec!["H_norm", "energy"],
         // A rotor's motor may do work: |H| alone is kept (the energy only with free wheels, not told here).
@@ -387,6 +389,8 @@ mod tests {
             accelerated,
             vertical_gravity: true,
             rotors: false,
+            imbalanced: false,
+            carried: false,
         }
     }
 

@@ -50,6 +50,10 @@ pub(super) struct SceneFacts {
     pub(super) vertical_gravity: bool,
     /// The body has rotors (`[[body.rotor]]`), whose motors may do work.
     pub(super) rotors: bool,
+    /// A rotor has an imbalance, whose turning moment changes |H| too.
+    pub(super) imbalanced: bool,
+    /// The axis is in a turning carrier (`motion.carrier`), which does work on the body.
+    pub(super) carried: bool,
 }
 
 /// The curves read from a run's CSV, ready to draw.
@@ -380,5 +384,9 @@ fn scene_facts(sidecar: &Sidecar) -> SceneFacts {
         accelerated: accel != 0.0,
         vertical_gravity,
         rotors: !spec.body.rotor.is_empty(),
+        imbalanced: (spec.body.rotor.iter())
+            .any(|r| r.imbalance_static_gmm != 0.0 || r.imbalance_dynamic_gmm2 != 0.0),
+        carried: (spec.motion.as_ref())
+            .is_some_and(|m| m.axis().is_some_and(|a| a.carrier.is_some())),
     }
 }

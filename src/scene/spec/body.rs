@@ -37,6 +37,10 @@ pub struct RotorSpec {
     pub drive: RotorDrive,
     /// `at`: the wheel's centre from the reference origin, body axes (m; absent: the origin).
     pub at: [f64; 3],
+    /// `imbalance_static_gmm`: the static imbalance m·e (g·mm, ≥ 0; absent: 0).
+    pub imbalance_static_gmm: f64,
+    /// `imbalance_dynamic_gmm2`: the dynamic imbalance (g·mm², ≥ 0; absent: 0).
+    pub imbalance_dynamic_gmm2: f64,
 }
 
 /// What drives a rotor's relative spin.
@@ -184,7 +188,24 @@ impl RotorSpec {
             spin,
             drive: RotorDrive::ConstantSpin,
             at: [0.0; 3],
+            imbalance_static_gmm: 0.0,
+            imbalance_dynamic_gmm2: 0.0,
         }
+    }
+
+    /// With the static imbalance `static_gmm` (g·mm) and the dynamic imbalance `dynamic_gmm2` (g·mm²) of a wheel
+    /// centred at `at` (m, body axes, from the reference origin).
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorSpec;
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 600.0).with_imbalance([0.1, 0.0, 0.0], 2.0, 50.0);
+    /// assert_eq!((wheel.imbalance_static_gmm, wheel.imbalance_dynamic_gmm2), (2.0, 50.0));
+    /// ```
+    pub fn with_imbalance(mut self, at: [f64; 3], static_gmm: f64, dynamic_gmm2: f64) -> Self {
+        self.at = at;
+        self.imbalance_static_gmm = static_gmm;
+        self.imbalance_dynamic_gmm2 = dynamic_gmm2;
+        self
     }
 
     /// With `drive`.

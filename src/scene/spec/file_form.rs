@@ -222,6 +222,39 @@ pub(super) struct MotionFile {
         skip_serializing_if = "Option::is_none"
     )]
     pub(super) axis_in_space: Option<[f64; 3]>,
+    /// The carrier that holds the axis: `{ rate, profile, freq_hz, phase_deg }`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) carrier: Option<CarrierFile>,
+}
+
+/// `carrier = { … }` in `[motion]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CarrierFile {
+    /// rad/s, space axes.
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub(super) rate: Option<[f64; 3]>,
+    /// Default constant.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) profile: Option<CarrierProfileKind>,
+    /// Hz (sine).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) freq_hz: Option<f64>,
+    /// Degrees (sine).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) phase_deg: Option<f64>,
+}
+
+/// A carrier's `profile`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub(super) enum CarrierProfileKind {
+    Constant,
+    Sine,
 }
 
 /// `[initial]`.

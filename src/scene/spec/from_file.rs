@@ -4,14 +4,14 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
-    ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
+    BodyFile, CarrierFile, CarrierProfileKind, EffectFile, EffectKind, EventFile, InitialFile,
+    MotionFile, PointMassFile, ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, ConditionSpec, Direction, Distribution,
-    EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec,
-    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
-    TorqueTableSpec,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec,
+    ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec,
+    InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive,
+    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -83,18 +83,6 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
     let table = KeyPath::root().key("body").key("rotor").index(index);
     let key = |name: &str| table.clone().key(name);
     let kind = "a rotor";
-    for (name, value) in [
-        ("imbalance_static_gmm", doc.imbalance_static_gmm),
-        ("imbalance_dynamic_gmm2", doc.imbalance_dynamic_gmm2),
-    ] {
-        if value.is_some_and(|v| v != 0.0) {
-            return invalid(
-                key(name),
-                "a rotor's imbalance is not simulated yet (only 0 is accepted): the wheel's angle, which the \
-                 turning force needs, is not integrated",
-            );
-        }
-    }
     let keys = ProfileKeys {
         profile: doc.profile,
         freq_hz: doc.freq_hz,
@@ -138,6 +126,8 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
         spin: doc.spin.unwrap_or(0.0),
         drive,
         at: doc.at.unwrap_or([0.0; 3]),
+        imbalance_static_gmm: doc.imbalance_static_gmm.unwrap_or(0.0),
+        imbalance_dynamic_gmm2: doc.imbalance_dynamic_gmm2.unwrap_or(0.0),
     })
 }
 
@@ -198,8 +188,9 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
         ("angle_deg", doc.angle_deg.is_some()),
         ("bearings", doc.bearings.is_some()),
         ("axis_in_space", doc.axis_in_space.is_some()),
+        ("carrier", doc.carrier.is_some()),
     ];
-    const AXIS_KEYS: [&str; 7] = [
+    const AXIS_KEYS: [&str; 8] = [
         "axis",
         "tilt_deg",
         "rate",
@@ -207,6 +198,7 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
         "point",
         "bearings",
         "axis_in_space",
+        "carrier",
     ];
     let takes = |extra: &'static str| [&AXIS_KEYS[..], &[extra]].concat();
     match doc.kind {
@@ -272,7 +264,53 @@ fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
         point: doc.point.unwrap_or([0.0; 3]),
         bearings: doc.bearings,
         axis_in_space: doc.axis_in_space,
+        carrier: doc.carrier.as_ref().map(carrier).transpose()?,
     })
+}
+
+/// `carrier = { rate, profile, freq_hz, phase_deg }`: `rate` required, `freq_hz` with a sine only.
+fn carrier(doc: &CarrierFile) -> Checked<CarrierSpec> {
+    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
+    let Some(rate) = doc.rate else {
+        return invalid(
+            key("rate"),
+            "a carrier needs `rate = [x, y, z]`: its angular velocity (rad/s, space axes)",
+        );
+    };
+    let profile = match doc.profile.unwrap_or(CarrierProfileKind::Constant) {
+        CarrierProfileKind::Constant => {
+            if let Some(name) = [("freq_hz", doc.freq_hz), ("phase_deg", doc.phase_deg)]
+                .iter()
+                .find_map(|(name, v)| v.map(|_| *name))
+            {
+                return invalid(
+                    key(name),
+                    format!("`{name}` applies to a carrier with profile = \"sine\" only"),
+                );
+            }
+            CarrierProfileSpec::Constant
+        }
+        CarrierProfileKind::Sine => CarrierProfileSpec::Sine {
+            freq_hz: required(key("freq_hz"), doc.freq_hz, "a sine carrier")?,
+            phase_deg: doc.phase_deg.unwrap_or(0.0),
+        },
+    };
+    Ok(CarrierSpec { rate, profile })
+}
+
+fn carrier_file(carrier: &CarrierSpec) -> CarrierFile {
+    let (profile, freq_hz, phase_deg) = match carrier.profile {
+        CarrierProfileSpec::Constant => (CarrierProfileKind::Constant, None, None),
+        CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
+            (CarrierProfileKind::Sine, Some(freq_hz), Some(phase_deg))
+        }
+    };
+    CarrierFile {
+        rate: Some(carrier.rate),
+        profile: Some(profile),
+        freq_hz,
+        phase_deg,
+    }
 }
 
 /// `[initial]`: `attitude` or `attitude_euler_deg`.
@@ -537,6 +575,8 @@ fn rotor_file(rotor: &RotorSpec) -> RotorFile {
         inertia: Some(rotor.inertia),
         spin: Some(rotor.spin),
         at: Some(rotor.at),
+        imbalance_static_gmm: Some(rotor.imbalance_static_gmm),
+        imbalance_dynamic_gmm2: Some(rotor.imbalance_dynamic_gmm2),
         ..RotorFile::default()
     };
     match rotor.drive {
@@ -636,6 +676,7 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
             point: Some(axis.point),
             bearings: axis.bearings,
             axis_in_space: axis.axis_in_space,
+            carrier: axis.carrier.as_ref().map(carrier_file),
             ..MotionFile::default()
         }
     };
@@ -715,7 +756,15 @@ mod tests {
         let mut rpm = HingeSpec::new([1.0, 0.0, 0.0], 0.0).with_bearings(-0.1, 0.2);
         rpm.axis.rate = RateSpec::Rpm(3000.0);
         rpm.axis.axis_in_space = Some([0.0, 1.0, 0.0]);
-        let motions = [MotionSpec::Free, fixed.into(), rpm.into()];
+        let yawing = fixed.with_carrier(CarrierSpec::constant([0.0, 0.0, 0.5]));
+        let rolling = rpm.with_carrier(CarrierSpec::sine([0.2, 0.0, 0.0], 0.1, 30.0));
+        let motions = [
+            MotionSpec::Free,
+            fixed.into(),
+            rpm.into(),
+            yawing.into(),
+            rolling.into(),
+        ];
         let torques = [
             TorqueSpec::new(Axes::Space, [1.0, 2.0, 3.0]),
             TorqueSpec::new(Axes::Body, [0.0, 0.0, 1.0]).sine(2.0, 45.0),
@@ -730,8 +779,25 @@ mod tests {
                 .cubic()
                 .into()])
             .collect();
+        let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 100.0);
+        let rotors = [
+            wheel.clone().with_imbalance([0.1, 0.0, 0.0], 2.0, 50.0),
+            wheel
+                .clone()
+                .with_name("w")
+                .with_drive(RotorDrive::SpinAccel(2.0)),
+            wheel.with_drive(RotorDrive::Torque {
+                value: 0.1,
+                profile: ProfileSpec::Sine {
+                    freq_hz: 1.0,
+                    phase_deg: 10.0,
+                },
+            }),
+        ];
         for (i, shape) in shapes.into_iter().enumerate() {
-            let body = BodySpec::shape(1.0, shape).with_point_mass(0.1, [0.1, 0.0, 0.0]);
+            let body = BodySpec::shape(1.0, shape)
+                .with_point_mass(0.1, [0.1, 0.0, 0.0])
+                .with_rotor(rotors[i % rotors.len()].clone());
             let mut spec = SceneSpec::new(body, 1.0, 0.1)
                 .with_effect(effects[i % effects.len()].clone())
                 .with_effect(effects[(i + 3) % effects.len()].clone());

@@ -25,7 +25,8 @@ pub use effect::{EffectSpec, ProfileSpec, TorqueSpec, TorqueTableSpec};
 pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
-    AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionKind, MotionSpec, RateSpec,
+    AxisDirection, AxisSpec, CarrierProfileSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
+    MotionSpec, RateSpec,
 };
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).

@@ -36,6 +36,63 @@ pub struct AxisSpec {
     /// `axis_in_space`: the axis's direction in space axes; the attitude at t = 0 is then the smallest rotation
     /// that puts the body axis on it (instead of `initial.attitude`).
     pub axis_in_space: Option<[f64; 3]>,
+    /// `carrier`: the axis, its point and its bearings are fixed in a carrier turning in space.
+    pub carrier: Option<CarrierSpec>,
+}
+
+/// `carrier = { rate = [x, y, z], profile = "constant" | "sine", freq_hz, phase_deg }`: a carrier turning about a
+/// space axis through the axis point at the angular velocity `rate`·p(t) (rad/s, space axes), aligned with space
+/// at t = 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CarrierSpec {
+    /// `rate`: r (rad/s, space axes).
+    pub rate: [f64; 3],
+    /// `profile` and its keys (absent: constant).
+    pub profile: CarrierProfileSpec,
+}
+
+/// A carrier's `profile`: p(t).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CarrierProfileSpec {
+    /// `profile = "constant"`: p = 1.
+    Constant,
+    /// `profile = "sine"`: p = sin(2π f t + φ) (a rolling ship).
+    Sine {
+        /// `freq_hz`: f, Hz, ≥ 0.
+        freq_hz: f64,
+        /// `phase_deg`: φ in degrees (absent: 0).
+        phase_deg: f64,
+    },
+}
+
+impl CarrierSpec {
+    /// A carrier turning at the constant `rate` (rad/s, space axes).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{CarrierProfileSpec, CarrierSpec};
+    /// let yaw = CarrierSpec::constant([0.0, 0.0, 0.5]);
+    /// assert_eq!(yaw.profile, CarrierProfileSpec::Constant);
+    /// ```
+    pub fn constant(rate: [f64; 3]) -> Self {
+        Self {
+            rate,
+            profile: CarrierProfileSpec::Constant,
+        }
+    }
+
+    /// A carrier rolling at `rate`·sin(2π `freq_hz` t + `phase_deg`).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{CarrierProfileSpec, CarrierSpec};
+    /// let roll = CarrierSpec::sine([0.2, 0.0, 0.0], 0.1, 0.0);
+    /// assert_eq!(roll.profile, CarrierProfileSpec::Sine { freq_hz: 0.1, phase_deg: 0.0 });
+    /// ```
+    pub fn sine(rate: [f64; 3], freq_hz: f64, phase_deg: f64) -> Self {
+        Self {
+            rate,
+            profile: CarrierProfileSpec::Sine { freq_hz, phase_deg },
+        }
+    }
 }
 
 /// The axis's direction in body axes.
@@ -99,6 +156,7 @@ impl AxisSpec {
             point: [0.0; 3],
             bearings: None,
             axis_in_space: None,
+            carrier: None,
         }
     }
 }
@@ -188,6 +246,18 @@ macro_rules! axis_motion {
             /// With the axis through `point_b` (body axes, from the reference origin, m), the moment center.
             pub fn with_point(mut self, point_b: [f64; 3]) -> Self {
                 self.axis.point = point_b;
+                self
+            }
+
+            /// With the axis, its point and its bearings fixed in a turning `carrier`.
+            ///
+            /// ```
+            #[doc = concat!("use eulerdyn::scene::{CarrierSpec, ", stringify!($motion), "};")]
+            #[doc = concat!("let m = ", stringify!($motion), "::new([1.0, 0.0, 0.0], 100.0).with_carrier(CarrierSpec::constant([0.0, 0.0, 0.5]));")]
+            /// assert_eq!(m.axis.carrier, Some(CarrierSpec::constant([0.0, 0.0, 0.5])));
+            /// ```
+            pub fn with_carrier(mut self, carrier: CarrierSpec) -> Self {
+                self.axis.carrier = Some(carrier);
                 self
             }
         }

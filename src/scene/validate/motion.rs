@@ -3,11 +3,15 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::super::model::Motion;
-use super::super::spec::{AxisDirection, AxisSpec, Distribution, MotionSpec, RateSpec, SceneSpec};
+use super::super::spec::{
+    AxisDirection, AxisSpec, CarrierProfileSpec, CarrierSpec, Distribution, MotionSpec, RateSpec,
+    SceneSpec,
+};
 use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
+use crate::motion::carrier::{Carrier, CarrierProfile};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
@@ -22,7 +26,9 @@ pub(super) fn validate_motion(
 ) -> Checked<Motion> {
     let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
     let (axis_spec, accel, angle_deg) = match &doc.motion {
-        None | Some(MotionSpec::Free) => return free_motion(doc, body, initial_omega, effects),
+        None | Some(MotionSpec::Free) => {
+            return free_motion(doc, body, initial_omega, effects, center_b);
+        }
         Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
         Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
@@ -46,12 +52,14 @@ pub(super) fn validate_motion(
     }
 }
 
-/// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect.
+/// Free rotation from `initial.omega` about C, or about the pivot of a gravity effect; `c_b` is C from the
+/// reference origin.
 fn free_motion(
     doc: &SceneSpec,
     body: &RigidBody,
     initial_omega: Option<[f64; 3]>,
     effects: &[Effect],
+    c_b: &Vector3<f64>,
 ) -> Checked<Motion> {
     let omega0_b = match initial_omega {
         None => Vector3::zeros(),
@@ -85,7 +93,7 @@ fn free_motion(
             ),
         );
     }
-    let gyrostat = super::rotor::validate_rotors(&doc.body, &free_body)?;
+    let gyrostat = super::rotor::validate_rotors(&doc.body, &free_body, &(c_b + center_b))?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
@@ -139,7 +147,30 @@ fn axis_geometry(
         }
         axis = axis.with_bearings(Bearings { a, b });
     }
+    if let Some(carrier) = &m.carrier {
+        axis = axis.with_carrier(validate_carrier(carrier)?);
+    }
     Ok(axis)
+}
+
+/// `carrier`: a finite rate (rad/s, space axes); a sine's frequency finite and ≥ 0, its phase finite.
+fn validate_carrier(carrier: &CarrierSpec) -> Checked<Carrier> {
+    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
+    let rate_s = vector(key("rate"), carrier.rate, "rad/s")?;
+    let profile = match carrier.profile {
+        CarrierProfileSpec::Constant => CarrierProfile::Constant,
+        CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
+            let freq_hz = finite(key("freq_hz"), freq_hz, "Hz")?;
+            if freq_hz < 0.0 {
+                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {freq_hz}"));
+            }
+            CarrierProfile::Sine {
+                omega_f: std::f64::consts::TAU * freq_hz,
+                phase: finite(key("phase_deg"), phase_deg, "degrees")?.to_radians(),
+            }
+        }
+    };
+    Ok(Carrier::new(rate_s, profile))
 }
 
 /// θ̇ at t = 0 (rad/s): `rate`, or `rate_rpm` · 2π/60 (revolutions per minute, as rotor engineers give it).

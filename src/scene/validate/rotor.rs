@@ -7,11 +7,16 @@ use super::effect::validate_profile;
 use super::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
 use crate::effects::TorqueSum;
 use crate::motion::free::FreeBody;
-use crate::motion::gyrostat::{Drive, Gyrostat, Rotor};
+use crate::motion::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use crate::sample::MAX_ROTORS;
 
-/// The gyrostat of a free `body` about its moment center with the scene's rotors; `None` without rotors.
-pub(super) fn validate_rotors(doc: &BodySpec, body: &FreeBody) -> Checked<Option<Box<Gyrostat>>> {
+/// The gyrostat of a free `body` about its moment center (at `center_b` from the reference origin, body axes)
+/// with the scene's rotors; `None` without rotors.
+pub(super) fn validate_rotors(
+    doc: &BodySpec,
+    body: &FreeBody,
+    center_b: &Vector3<f64>,
+) -> Checked<Option<Box<Gyrostat>>> {
     if doc.rotor.is_empty() {
         return Ok(None);
     }
@@ -24,7 +29,7 @@ pub(super) fn validate_rotors(doc: &BodySpec, body: &FreeBody) -> Checked<Option
     }
     let mut rotors: Vec<Rotor> = Vec::with_capacity(doc.rotor.len());
     for (index, spec) in doc.rotor.iter().enumerate() {
-        let rotor = validate_rotor(index, spec)?;
+        let rotor = validate_rotor(index, spec, center_b)?;
         if rotors.iter().any(|r| r.name == rotor.name) {
             return invalid(
                 table().index(index).key("name"),
@@ -44,7 +49,11 @@ pub(super) fn validate_rotors(doc: &BodySpec, body: &FreeBody) -> Checked<Option
         })
 }
 
-fn validate_rotor(index: usize, spec: &RotorSpec) -> Checked<Rotor> {
+/// One g·mm in kg·m, one g·mm² in kg·m².
+const GRAM_MM: f64 = 1e-6;
+const GRAM_MM2: f64 = 1e-9;
+
+fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Checked<Rotor> {
     let table = KeyPath::root().key("body").key("rotor").index(index);
     let key = |name: &str| table.clone().key(name);
     let name = spec.name.clone().unwrap_or_else(|| format!("rotor{index}"));
@@ -62,10 +71,33 @@ fn validate_rotor(index: usize, spec: &RotorSpec) -> Checked<Rotor> {
             "the axis is the zero vector; give the wheel's spin axis in body axes",
         );
     }
-    vector(key("at"), spec.at, "m")?;
+    let at_b = vector(key("at"), spec.at, "m")?;
+    let axis_b = Unit::new_unchecked(axis / norm);
+    let not_negative = |name: &str, v: f64, unit: &str| -> Checked<f64> {
+        let v = finite(key(name), v, unit)?;
+        if v < 0.0 {
+            return invalid(key(name), format!("must be >= 0 ({unit}), got {v}"));
+        }
+        Ok(v)
+    };
+    let static_gmm = not_negative("imbalance_static_gmm", spec.imbalance_static_gmm, "g*mm")?;
+    let dynamic_gmm2 = not_negative(
+        "imbalance_dynamic_gmm2",
+        spec.imbalance_dynamic_gmm2,
+        "g*mm^2",
+    )?;
+    let imbalance = (static_gmm > 0.0 || dynamic_gmm2 > 0.0).then(|| {
+        Imbalance::new(
+            static_gmm * GRAM_MM,
+            dynamic_gmm2 * GRAM_MM2,
+            at_b - center_b,
+            &axis_b,
+        )
+    });
     Ok(Rotor {
         name,
-        axis_b: Unit::new_unchecked(axis / norm),
+        axis_b,
+        imbalance,
         inertia: positive(key("inertia"), spec.inertia, "kg*m^2")?,
         spin0: finite(key("spin"), spec.spin, "rad/s")?,
         drive: match spec.drive {

@@ -1,0 +1,122 @@
+//! A carrier — a vehicle, ship or housing — that holds a fixed axis and its bearings and turns about a space
+//! axis through the axis point A, so that A stays fixed in space:
+//!
+//! ```text
+//!   Ω_c(t) = r p(t),   p = 1 (constant) or sin(ω_f t + φ) (sine),   R_c(t) = Rot(r̂, |r| ψ(t)),  ψ = ∫₀ᵗ p,
+//! ```
+//!
+//! with r the rate vector in space axes; the carrier starts aligned with space (R_c(0) = E). Because Ω_c keeps its
+//! direction, its attitude is one rotation about r̂ by |r|ψ(t), in closed form:
+//! ψ = t (constant) or ψ = (cos φ − cos(ω_f t + φ))/ω_f = 2 sin(ω_f t/2 + φ) sin(ω_f t/2)/ω_f (sine; the product
+//! form has no cancellation at small ω_f t).
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+/// How the carrier's rate varies in time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CarrierProfile {
+    /// p = 1.
+    Constant,
+    /// p = sin(ω_f t + φ).
+    Sine {
+        /// ω_f = 2π f (rad/s).
+        omega_f: f64,
+        /// φ (rad).
+        phase: f64,
+    },
+}
+
+/// A carrier turning about the space axis of `rate_s` at the rate `rate_s`·p(t).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Carrier {
+    rate_s: Vector3<f64>,
+    profile: CarrierProfile,
+}
+
+/// The carrier at one time: its attitude R_c (carrier → space), rate Ω_c and angular acceleration Ω̇_c (space
+/// axes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CarrierMotion {
+    pub q_c: UnitQuaternion<f64>,
+    pub omega_c_s: Vector3<f64>,
+    pub omega_c_dot_s: Vector3<f64>,
+}
+
+impl Carrier {
+    /// A carrier turning at `rate_s` (rad/s, space axes) times the `profile`.
+    ///
+    /// ```
+    /// use eulerdyn::motion::carrier::{Carrier, CarrierProfile};
+    /// use nalgebra::Vector3;
+    /// // A quarter turn about z in one second.
+    /// let yaw = Carrier::new(Vector3::new(0.0, 0.0, std::f64::consts::FRAC_PI_2), CarrierProfile::Constant);
+    /// let x_s = yaw.at(1.0).q_c * Vector3::x();
+    /// assert!((x_s - Vector3::y()).norm() < 1e-15);
+    /// ```
+    pub fn new(rate_s: Vector3<f64>, profile: CarrierProfile) -> Self {
+        Self { rate_s, profile }
+    }
+
+    /// The rate vector r (rad/s, space axes) the profile multiplies.
+    pub fn rate_s(&self) -> &Vector3<f64> {
+        &self.rate_s
+    }
+
+    /// The profile.
+    pub fn profile(&self) -> CarrierProfile {
+        self.profile
+    }
+
+    /// The largest rate |r| max|p| (rad/s).
+    pub fn largest_rate(&self) -> f64 {
+        self.rate_s.norm()
+    }
+
+    /// R_c(t), Ω_c(t) = r p(t) and Ω̇_c(t) = r p'(t).
+    pub fn at(&self, t: f64) -> CarrierMotion {
+        let (p, p_dot, psi) = match self.profile {
+            CarrierProfile::Constant => (1.0, 0.0, t),
+            CarrierProfile::Sine { omega_f, phase } => {
+                let (s, c) = (omega_f * t + phase).sin_cos();
+                let psi = if omega_f == 0.0 {
+                    t * phase.sin()
+                } else {
+                    let half = 0.5 * omega_f * t;
+                    2.0 * (half + phase).sin() * half.sin() / omega_f
+                };
+                (s, omega_f * c, psi)
+            }
+        };
+        CarrierMotion {
+            q_c: UnitQuaternion::from_scaled_axis(self.rate_s * psi),
+            omega_c_s: self.rate_s * p,
+            omega_c_dot_s: self.rate_s * p_dot,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// The attitude's derivative is Ω_c: (R_c(t + h) − R_c(t − h))/2h ≈ Ω̂_c R_c, and Ω̇_c is p' r (central
+    /// differences, error O(h²)).
+    #[test]
+    fn sine_carrier_attitude_and_rate_agree() {
+        let carrier = Carrier::new(
+            Vector3::new(0.1, -0.2, 0.3),
+            CarrierProfile::Sine {
+                omega_f: 1.7,
+                phase: 0.4,
+            },
+        );
+        let (t, h) = (2.3, 1e-5);
+        let r = |t: f64| carrier.at(t).q_c.to_rotation_matrix().into_inner();
+        let now = carrier.at(t);
+        let r_dot = (r(t + h) - r(t - h)) / (2.0 * h);
+        assert_relative_eq!(r_dot, now.omega_c_s.cross_matrix() * r(t), epsilon = 1e-9);
+        let rate_dot = (carrier.at(t + h).omega_c_s - carrier.at(t - h).omega_c_s) / (2.0 * h);
+        assert_relative_eq!(rate_dot, now.omega_c_dot_s, epsilon = 1e-9);
+    }
+}
