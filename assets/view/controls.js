@@ -29,12 +29,19 @@ window.eulerdynControls = function (api, data) {
     if (!v) continue;
     let longest = 0;
     for (const row of api.rows) longest = Math.max(longest, Math.hypot(...row[name]));
+    // H shares its scale with the wheels' momenta.
+    const withWheels = name === 'H_s' && api.rotor_names.length > 0;
+    if (withWheels) for (const row of api.rows) for (const h of row.rotor_h) longest = Math.max(longest, Math.abs(h));
     legend.push(`<li><span class="swatch" style="background:${v.color}"></span>${v.label}, ${unitOf(name)}` +
-      ` — arrow scaled so the longest (${fmt(longest)}) fits</li>`);
+      ` — arrow scaled so the longest${withWheels ? ' of H and the wheels\' h' : ''} (${fmt(longest)}) fits</li>`);
   }
   legend.push('<li><span class="swatch origin"></span>ω, H and M are drawn from the grey ball beside the body, not from' +
     ' O, so that they do not hide it (free vectors; M is the moment about O)</li>');
   if (api.vectors.includes('H_s')) legend.push('<li><span class="swatch trail"></span>trail of H\'s tip in space</li>');
+  if (api.rotor_names.length) {
+    legend.push(`<li><span class="swatch wheel"></span>wheels ${api.rotor_names.join(', ')}: each a disc on its spin` +
+      ' axis, fixed in the body, and an arrow of its axial momentum h = J(a·ω + Ω) along the axis, at H\'s scale</li>');
+  }
   if (api.geometry.body && api.geometry.body.drawn_thicker) {
     const said = api.geometry.body.drawn_thicker.replace(/&/g, '&amp;').replace(/</g, '&lt;');
     legend.push(`<li><span class="swatch body"></span>the body: ${said}</li>`);
@@ -45,6 +52,8 @@ window.eulerdynControls = function (api, data) {
   const notes = (data.notes || []).map((n) => `<li>${n.replace(/&/g, '&amp;').replace(/</g, '&lt;')}</li>`);
   $('notes').innerHTML = notes.length ? `<h2>Notes</h2><ul>${notes.join('')}</ul>` : '';
   $('notes').hidden = notes.length === 0;
+
+  const listed = eventList($('events'), api.events || [], (t) => { api.setTime(t); keepFragment(); });
 
   const slider = $('time');
   const span = api.t_end - api.t_start;
@@ -109,7 +118,26 @@ window.eulerdynControls = function (api, data) {
     }).join('');
   }
 
+  /** The located events as a table (a button with the name, t, the quantity and its value, the direction): a
+   * click jumps to the event's time. Returns a function that marks the rows at the time shown. */
+  function eventList(box, events, jump) {
+    box.hidden = events.length === 0;
+    if (!events.length) return () => {};
+    const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;');
+    const rows = events.map((e, k) => `<tr data-k="${k}"><td><button type="button" class="event" data-k="${k}"` +
+      ` title="show t = ${e.t}">${esc(e.event)}</button></td><td>t = ${fmt(e.t)} ${tUnit}</td>` +
+      `<td>${esc(e.when || 'value')} = ${fmt(e.value)}</td><td>${esc(e.direction)}</td></tr>`);
+    box.innerHTML = `<h2>Events (${events.length}): click to show</h2><table>${rows.join('')}</table>`;
+    box.addEventListener('click', (ev) => {
+      const button = ev.target.closest('button.event');
+      if (button) jump(events[Number(button.dataset.k)].t);
+    });
+    const trs = box.querySelectorAll('tr');
+    return (t) => trs.forEach((tr, k) => tr.classList.toggle('current', events[k].t === t));
+  }
+
   api.onTime((state, t) => {
+    listed(t);
     $('readout').innerHTML = readout(state);
     $('clock').textContent = `t = ${fmt(t)} ${tUnit} of ${fmt(api.t_end)}`;
     slider.value = String(toSlider(t));

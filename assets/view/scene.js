@@ -1,7 +1,8 @@
 // eulerdyn view: the 3D scene. Space axes are three.js world axes with z up; the moment center O is the origin.
 // The body group turns by the run's attitude q (body -> space) and holds the body's shape, point masses and body
 // axes, all placed in body axes from O. Vectors are drawn in space axes: ω, H and M from a point beside the body
-// (vectorAnchor), the bearing forces from the bearings.
+// (vectorAnchor), the bearing forces from the bearings. Wheels ([[body.rotor]]) turn with the body: a disc and its
+// spin axis, and an arrow of the wheel's axial momentum h along the axis at H's scale.
 'use strict';
 
 window.eulerdynScene = function (THREE, OrbitControls, api) {
@@ -59,6 +60,8 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     for (const row of api.rows) max = Math.max(max, Math.hypot(...row[name]));
     longest[look.kind] = Math.max(longest[look.kind] || 0, max);
   }
+  // The wheels' momenta share H's scale.
+  for (const row of api.rows) for (const h of row.rotor_h) longest.H = Math.max(longest.H || 0, Math.abs(h));
   const scaleOf = (name) => {
     const max = longest[window.eulerdynVectors[name].kind];
     return max > 0 ? (1.3 * size) / max : 0;
@@ -95,6 +98,14 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     parts.vectors.push(arrow);
   }
 
+  const wheels = makeWheels(THREE, geometry, api, size);
+  parts.rotors = [];
+  for (const w of wheels) {
+    body.add(w.wheel, w.arrow);
+    parts.rotors.push(w.wheel, w.arrow);
+  }
+  api.rotors = wheels;
+
   const trail = makeTrail(THREE, api, scaleOf, anchor);
   if (trail) scene.add(trail);
   const polhode = makePolhode(THREE, api, geometry);
@@ -120,6 +131,7 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     }
     body.quaternion.copy(quat(state.q));
     for (const name of Object.keys(arrows)) setArrow(arrows[name], v3(state[name]).multiplyScalar(scaleOf(name)), size);
+    wheels.forEach((w, k) => setArrow(w.arrow, v3(w.axis_b).multiplyScalar(state.rotor_h[k] * scaleOf('H_s')), size));
     if (trail) trail.geometry.setDrawRange(0, trailCount(api, state.t));
     renderer.setViewport(0, 0, width, height);
     renderer.setScissorTest(false);
@@ -129,8 +141,9 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     api.drawn = true;
   }
   api.onTime((s) => { state = s; draw(); });
-  /** Hides or shows a part of the drawing — 'body' (shape and point masses), 'axes' (space and body axes) or
-   * 'vectors' (the arrows and the point ω, H and M start from) — and redraws. */
+  /** Hides or shows a part of the drawing — 'body' (shape and point masses), 'axes' (space and body axes),
+   * 'vectors' (the arrows and the point ω, H and M start from) or 'rotors' (the wheels, their axes and momenta) — and
+   * redraws. */
   api.show = (part, visible) => {
     if (!parts[part]) throw new Error('eulerdyn view: no part ' + part + '; the parts are ' + Object.keys(parts).join(', '));
     for (const object of parts[part]) object.visible = Boolean(visible);
@@ -196,6 +209,36 @@ function makeShape(THREE, geometry) {
   }
   if (b.center) group.position.set(b.center[0], b.center[1], b.center[2]);
   return group;
+}
+
+/** The colour of the wheels, their axes and their momentum arrows. */
+const WHEEL_COLOR = 0x6a3d9a;
+
+/** The wheels of the body (the page's rotors, those with an `_h` column), in body axes from O: for each, `wheel` (a
+ * group: a disc of radius 0.14 body sizes across the spin axis at the wheel's centre, and the axis, a line 1.2 body
+ * sizes long through it) and `arrow` (from the centre; set to h along the axis when drawn), with its `name` and
+ * `axis_b`. */
+function makeWheels(THREE, geometry, api, size) {
+  const byName = Object.fromEntries((geometry.rotors || []).map((r) => [r.name, r]));
+  return api.rotor_names.map((name) => {
+    const r = byName[name];
+    const axis = new THREE.Vector3(...r.axis_b);
+    const at = new THREE.Vector3(...r.at);
+    const wheel = new THREE.Group();
+    const disc = new THREE.Mesh(new THREE.CylinderGeometry(0.14 * size, 0.14 * size, 0.04 * size, 40),
+      new THREE.MeshStandardMaterial({ color: WHEEL_COLOR, roughness: 0.45, metalness: 0.3, transparent: true,
+        opacity: 0.8 }));
+    disc.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis);
+    disc.position.copy(at);
+    const ends = [at.clone().addScaledVector(axis, -0.6 * size), at.clone().addScaledVector(axis, 0.6 * size)];
+    const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(ends),
+      new THREE.LineBasicMaterial({ color: WHEEL_COLOR }));
+    wheel.add(disc, line);
+    wheel.name = 'rotor ' + name;
+    const arrow = new THREE.ArrowHelper(axis.clone(), at.clone(), 1, WHEEL_COLOR);
+    arrow.name = 'rotor momentum ' + name;
+    return { name, axis_b: r.axis_b, at: r.at, wheel, arrow };
+  });
 }
 
 /** Three axis lines from `origin`, of `length`, coloured x red, y green, z blue (lighter by `strength` < 1), with

@@ -22,6 +22,9 @@
     R_B_s: xyz('R_B_s'),
   };
   const qIndex = indices(['q_w', 'q_x', 'q_y', 'q_z']);
+  // The wheels ([[body.rotor]] in the sidecar's scene) whose axial momentum `<name>_h` the CSV has.
+  const rotors = (geometry.rotors || []).map((r) => ({ ...r, index: columns.indexOf(r.name + '_h') }))
+    .filter((r) => r.index >= 0);
   const vectorNames = Object.keys(vectorIndex).filter((k) => vectorIndex[k] !== null);
 
   /** The state of kept row k: its values exactly as embedded. */
@@ -29,6 +32,7 @@
     const row = table[k];
     const s = { t: row[0], q: qIndex.map((i) => row[i]) };
     for (const name of vectorNames) s[name] = vectorIndex[name].map((i) => row[i]);
+    s.rotor_h = rotors.map((r) => row[r.index]);
     return s;
   }
 
@@ -79,6 +83,7 @@
     const s = (tc - a.t) / (b.t - a.t);
     const out = { t: tc, q: slerp(a.q, b.q, s) };
     for (const name of vectorNames) out[name] = lerp(a[name], b[name], s);
+    out.rotor_h = lerp(a.rotor_h, b.rotor_h, s);
     return out;
   }
 
@@ -137,7 +142,9 @@
     columns: columns,
     geometry: geometry,
     notes: data.notes,
+    events: data.events || [],
     vectors: vectorNames,
+    rotor_names: rotors.map((r) => r.name),
     drawn: false,
     setTime: setTime,
     state: () => current,

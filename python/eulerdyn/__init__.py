@@ -2,7 +2,9 @@
 
 Each function mirrors a command of the ``eulerdyn`` command line and calls the same Rust library:
 
-- :func:`run` — a scene's time series as a :class:`pandas.DataFrame` with the CSV's columns (bit for bit);
+- :func:`run` — a scene's time series as a :class:`pandas.DataFrame` with the CSV's columns (bit for bit), its
+  located ``[[event]]``s in ``df.attrs["events"]``;
+- :func:`events` — only the located events, as ``FILE.events.csv`` holds them;
 - :func:`check` — what a scene will simulate, as a dict;
 - :func:`compare` — both forms of Euler's equation against each other and the closed form;
 - :func:`accuracy` — the work-precision study, as a DataFrame;
@@ -18,7 +20,7 @@ stops them. A column has one dtype whatever its cells: see ``README.md`` (From P
 version of the eulerdyn crate the extension was built from.
 """
 
-from ._api import SceneLike, accuracy, balance, check, compare, run, sweep
+from ._api import SceneLike, accuracy, balance, check, compare, events, run, sweep
 from ._eulerdyn import RunError, SceneError, __version__
 
 __all__ = [
@@ -29,6 +31,7 @@ __all__ = [
     "balance",
     "check",
     "compare",
+    "events",
     "run",
     "sweep",
 ]

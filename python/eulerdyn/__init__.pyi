@@ -8,7 +8,7 @@ import pandas as pd
 from ._eulerdyn import RunError as RunError
 from ._eulerdyn import SceneError as SceneError
 
-__all__ = ["RunError", "SceneError", "SceneLike", "accuracy", "balance", "check", "compare", "run", "sweep"]
+__all__ = ["RunError", "SceneError", "SceneLike", "accuracy", "balance", "check", "compare", "events", "run", "sweep"]
 
 __version__: str
 """The version of the eulerdyn crate the extension was built from."""
@@ -29,7 +29,24 @@ def run(
     moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
     moment_frame: Optional[str] = None,
 ) -> pd.DataFrame:
-    """Simulate a scene; its rows as a DataFrame with the CSV's columns, bit for bit (``eulerdyn run``)."""
+    """Simulate a scene; its rows as a DataFrame with the CSV's columns, bit for bit (``eulerdyn run``); the located
+    events in ``df.attrs["events"]``."""
+
+def events(
+    scene: SceneLike,
+    *,
+    method: Optional[str] = None,
+    frame: Optional[str] = None,
+    backend: Optional[str] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    dt: Optional[float] = None,
+    t_end: Optional[float] = None,
+    every: Optional[float] = None,
+    moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+) -> pd.DataFrame:
+    """Only the located events of a run (``event``, ``t``, ``value``, ``direction``), as ``FILE.events.csv``."""
 
 def check(scene: SceneLike) -> Dict[str, Any]:
     """What a scene will simulate, as a dict (``eulerdyn check``)."""

@@ -82,7 +82,8 @@ def run(
 
     Returns:
         The rows, one per output time. ``df.attrs["report"]`` holds what the run did: ``rows``, ``steps``,
-        ``rejected``, ``evals``, ``wall_seconds``.
+        ``rejected``, ``evals``, ``wall_seconds``. ``df.attrs["events"]`` holds the scene's ``[[event]]``
+        occurrences located between the rows, as :func:`events` returns them (a DataFrame, empty without events).
 
     Raises:
         SceneError: the scene or an override is not valid (the message names the key, and the keyword argument
@@ -91,7 +92,7 @@ def run(
             numbers: its exception is the ``__cause__``); ``.t`` is the time it stopped at.
         KeyboardInterrupt: Ctrl-C during the run.
     """
-    names, data, report = _eulerdyn.run(
+    names, data, report, occurrences = _eulerdyn.run(
         _scene(scene),
         method=method,
         frame=frame,
@@ -107,7 +108,46 @@ def run(
     values = np.frombuffer(data, dtype=np.float64).reshape(-1, len(names)).copy()
     df = pd.DataFrame(values, columns=list(names))
     df.attrs["report"] = dict(report)
+    df.attrs["events"] = _events_table(occurrences)
     return df
+
+
+def events(scene: SceneLike, **options: Any) -> pd.DataFrame:
+    """Simulate a scene and return only its located events, as ``eulerdyn run SCENE -o FILE`` writes them to
+    ``FILE.events.csv``: the same run as :func:`run`, without keeping its rows.
+
+    Args:
+        scene: the path of a scene file, or a dict of its keys.
+        options: the keywords of :func:`run` (``method``, ``rtol``, ``t_end``, ``moment`` …).
+
+    Returns:
+        One row per occurrence in time order, the columns of ``FILE.events.csv``: ``event`` (the ``[[event]]``'s
+        name, str), ``t`` (s, float64), ``value`` (the quantity there, float64) and ``direction`` (``up`` or
+        ``down`` for a crossing, ``max`` or ``min`` for an extremum, str). No rows for a scene without
+        ``[[event]]`` or with none located. ``df.attrs["report"]`` holds what the run did, as for :func:`run`.
+
+    Raises:
+        SceneError, RunError, KeyboardInterrupt: as :func:`run` (a bad ``[[event]]`` key is a SceneError naming
+            it, e.g. ``event[0].when``).
+    """
+    _, _, report, occurrences = _eulerdyn.run(_scene(scene), rows=False, **options)
+    df = _events_table(occurrences)
+    df.attrs["report"] = dict(report)
+    return df
+
+
+def _events_table(occurrences: Sequence[Tuple[str, float, float, str]]) -> pd.DataFrame:
+    """The located events (``(event, t, value, direction)`` tuples) as a DataFrame with the columns of
+    ``FILE.events.csv``: ``event`` and ``direction`` str, ``t`` and ``value`` float64, whatever the rows."""
+    return pd.DataFrame(
+        {
+            "event": pd.Series([o[0] for o in occurrences], dtype=str),
+            "t": np.array([o[1] for o in occurrences], dtype=np.float64),
+            "value": np.array([o[2] for o in occurrences], dtype=np.float64),
+            "direction": pd.Series([o[3] for o in occurrences], dtype=str),
+        },
+        columns=["event", "t", "value", "direction"],
+    )
 
 
 def check(scene: SceneLike) -> Dict[str, Any]:

@@ -36,8 +36,10 @@ def run(
     every: Optional[float] = None,
     moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
     moment_frame: Optional[str] = None,
-) -> Tuple[List[str], bytes, Dict[str, Any]]:
-    """Column names, the rows as native float64 bytes (row-major), and the run's report."""
+    rows: bool = True,
+) -> Tuple[List[str], bytes, Dict[str, Any], List[Tuple[str, float, float, str]]]:
+    """Column names, the rows as native float64 bytes (row-major; empty with ``rows=False``), the run's report, and
+    the located events as (event, t, value, direction)."""
 
 def check(scene: _Scene) -> Dict[str, Any]:
     """What ``eulerdyn check`` prints, as a dict."""

@@ -6,10 +6,11 @@ use std::fmt;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
+use eulerdyn::events::Occurrence;
 use eulerdyn::frames::Axes;
 use eulerdyn::named::Named;
-use eulerdyn::sample::NonFinite;
-use eulerdyn::scene::Flags;
+use eulerdyn::sample::{ColumnSet, NonFinite};
+use eulerdyn::scene::{Flags, Scene};
 use eulerdyn::simulate::{self, RunError, RunFailed, RunReport};
 use pyo3::exceptions::{PyTypeError, PyUserWarning, PyValueError};
 use pyo3::prelude::*;
@@ -104,13 +105,24 @@ fn report_dict<'py>(py: Python<'py>, report: &RunReport) -> PyResult<Bound<'py, 
     Ok(d)
 }
 
+/// One located event as the events file's row: (event, t, value, direction).
+type EventRow = (String, f64, f64, &'static str);
+
+/// The located events as rows of `FILE.events.csv` (`event,t,value,direction`), in time order.
+fn event_rows(occurrences: &[Occurrence]) -> Vec<EventRow> {
+    (occurrences.iter())
+        .map(|o| (o.name.clone(), o.t, o.value, o.kind.name()))
+        .collect()
+}
+
 /// Simulates a scene (a path or a dict) with the command line's `run` flags, and `moment` (a callable
 /// f(t, q, omega_b) → 3 numbers, N·m in `moment_frame` axes) acting too. Returns the CSV's column names, the
-/// rows as native-endian float64 bytes (row-major), and the run's report (rows, steps, rejected, evals,
-/// wall_seconds). Raises SceneError for bad input, RunError for a failed run (and for an exception in `moment`,
-/// which is its cause), KeyboardInterrupt on Ctrl-C.
+/// rows as native-endian float64 bytes (row-major; empty with `rows=False`), the run's report (rows, steps,
+/// rejected, evals, wall_seconds) and its located `[[event]]`s as (event, t, value, direction) tuples, the rows
+/// of `FILE.events.csv`. Raises SceneError for bad input, RunError for a failed run (and for an exception in
+/// `moment`, which is its cause), KeyboardInterrupt on Ctrl-C.
 #[pyfunction]
-#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None, moment=None, moment_frame=None))]
+#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None, moment=None, moment_frame=None, rows=true))]
 #[allow(clippy::too_many_arguments)]
 #[allow(clippy::type_complexity)]
 pub fn run<'py>(
@@ -126,7 +138,13 @@ pub fn run<'py>(
     every: Option<f64>,
     moment: Option<Bound<'py, PyAny>>,
     moment_frame: Option<String>,
-) -> PyResult<(Vec<&'static str>, Bound<'py, PyBytes>, Bound<'py, PyDict>)> {
+    rows: bool,
+) -> PyResult<(
+    Vec<&'static str>,
+    Bound<'py, PyBytes>,
+    Bound<'py, PyDict>,
+    Vec<EventRow>,
+)> {
     let flags = Flags {
         method: method.as_deref(),
         frame: frame.as_deref(),
@@ -159,32 +177,14 @@ pub fn run<'py>(
         }
         let columns = simulate::columns(&scene_model);
         let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
-        let (result, bytes) = py.detach(|| {
-            let row_bytes = names.len() * size_of::<f64>();
-            let mut bytes: Vec<u8> = Vec::new();
-            // At most a million rows up front; more as they come, refused (not aborted) when memory runs out.
-            let _ = bytes.try_reserve(scene_model.schedule.len().min(1 << 20) * row_bytes);
-            let mut values = Vec::with_capacity(names.len());
-            let mut signals = SignalCheck::new();
-            let result = simulate::run(&scene_model, |s| {
-                columns
-                    .finite_values(s, &mut values)
-                    .map_err(Stop::NonFinite)?;
-                bytes
-                    .try_reserve(row_bytes)
-                    .map_err(|_| Stop::OutOfMemory { t: s.t })?;
-                bytes.extend(values.iter().flat_map(|v| v.to_ne_bytes()));
-                signals.poll().map_err(Stop::Python)
-            });
-            (result, bytes)
-        });
+        let (result, bytes) = py.detach(|| simulate_rows(&scene_model, &columns, rows));
         if let Some((law, name)) = &law {
             if let Some(failure) = law.failure() {
                 return Err(law_error(py, &input, name, failure));
             }
         }
-        let report = match result {
-            Ok(report) => report,
+        let (report, occurrences) = match result {
+            Ok(done) => done,
             Err(RunError::Sink(Stop::Python(e))) => return Err(e),
             Err(RunError::Sink(stop)) => {
                 let failed = RunFailed {
@@ -199,8 +199,42 @@ pub fn run<'py>(
         if let Some(drift) = simulate::drift_warning(report.energy_drift) {
             warn(py, format!("{}: {drift}", input.path.display()))?;
         }
-        Ok((names, PyBytes::new(py, &bytes), report_dict(py, &report)?))
+        Ok((
+            names,
+            PyBytes::new(py, &bytes),
+            report_dict(py, &report)?,
+            event_rows(&occurrences),
+        ))
     })
+}
+
+/// The run's outcome (report and located events, or why it stopped).
+type Outcome = Result<(RunReport, Vec<Occurrence>), RunError<Stop>>;
+
+/// Runs the scene through [`simulate::run_with_events`] (the command line's `run`), its rows as native-endian
+/// float64 bytes (row-major) when `rows`, only checked for finite values and Ctrl-C otherwise.
+fn simulate_rows(scene: &Scene, columns: &ColumnSet, rows: bool) -> (Outcome, Vec<u8>) {
+    let row_bytes = columns.columns().len() * size_of::<f64>();
+    let mut bytes: Vec<u8> = Vec::new();
+    // At most a million rows up front; more as they come, refused (not aborted) when memory runs out.
+    if rows {
+        let _ = bytes.try_reserve(scene.schedule.len().min(1 << 20) * row_bytes);
+    }
+    let mut values = Vec::new();
+    let mut signals = SignalCheck::new();
+    let result = simulate::run_with_events(scene, |s| {
+        columns
+            .finite_values(s, &mut values)
+            .map_err(Stop::NonFinite)?;
+        if rows {
+            bytes
+                .try_reserve(row_bytes)
+                .map_err(|_| Stop::OutOfMemory { t: s.t })?;
+            bytes.extend(values.iter().flat_map(|v| v.to_ne_bytes()));
+        }
+        signals.poll().map_err(Stop::Python)
+    });
+    (result, bytes)
 }
 
 /// What `check` and the sidecar call the callable: its `__name__` (`python` without one).

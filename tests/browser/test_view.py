@@ -474,3 +474,113 @@ every = 0.0002
     # The tilted disk at 10 rad/s: 2 pi / 10 = 0.628, nearest on the ladder 0.5.
     page = open_page(disk[1])
     assert page.js("() => window.eulerdyn.clock.speed") == 0.5
+
+
+#: A compound pendulum with theta's downward crossings of 0 and omega_b_z's minima as events (rows every 0.05 s).
+PENDULUM_WITH_EVENTS = ROOT / "tests" / "data" / "pendulum_events.toml"
+
+
+def read_events(csv_path):
+    """The run's events file: (event, t, value, direction) with t and value as floats."""
+    with open(f"{csv_path}.events.csv", newline="") as f:
+        return [(r["event"], float(r["t"]), float(r["value"]), r["direction"]) for r in csv.DictReader(f)]
+
+
+def test_the_events_are_listed_and_a_click_shows_each_ones_time(work, disk, open_page):
+    csv_path, html_path = work / "pendulum_events.csv", work / "pendulum_events.html"
+    assert eulerdyn("run", PENDULUM_WITH_EVENTS, "-o", csv_path).returncode == 0
+    assert eulerdyn("view", csv_path, "-o", html_path).returncode == 0
+    located = read_events(csv_path)
+    assert len(located) == 4 and {e[0] for e in located} == {"down", "fast"}, located
+    page = open_page(html_path)
+    assert page.js("() => !document.getElementById('events').hidden")
+    buttons = page.page.query_selector_all("#events button.event")
+    assert len(buttons) == len(located)
+    assert page.js("() => window.eulerdyn.events.length") == len(located)
+    listed = page.page.inner_text("#events")
+    assert f"Events ({len(located)})" in listed and "theta" in listed and "omega_b_z" in listed, listed
+    for k, (name, t, value, _) in enumerate(located):
+        assert buttons[k].inner_text() == name
+        buttons[k].click()
+        state = page.js("() => window.eulerdyn.state()")
+        # The time shown is the event's (between two rows: the state interpolated there), and the list marks it.
+        assert state["t"] == t, (name, state["t"], t)
+        assert abs(t / 0.05 - round(t / 0.05)) > 1e-6, "located between the rows"
+        assert page.js("(k) => document.querySelectorAll('#events tr')[k].classList.contains('current')", k)
+        assert f"t = {t:.4g}" in page.page.inner_text("#clock")
+        # The watched quantity at that time, to the interpolation between rows 0.05 s apart.
+        if name == "fast":
+            omega_b = state["omega_b"]
+            assert abs(omega_b[2] - value) < 1e-2 * abs(value), (omega_b, value)
+    # A run without events lists none.
+    page = open_page(disk[1])
+    assert page.js("() => document.getElementById('events').hidden")
+    assert page.js("() => window.eulerdyn.events.length") == 0
+
+
+def scene_objects(page, names):
+    """For each three.js object name, whether an object of that name is in the page's scene graph (its parents reach
+    a Scene) and visible."""
+    return page.js("""(names) => names.map((n) => {
+        const r = window.eulerdyn.rotors.find((w) => 'rotor ' + w.name === n || 'rotor momentum ' + w.name === n);
+        if (!r) return false;
+        let o = r.wheel.name === n ? r.wheel : r.arrow;
+        const visible = o.visible;
+        while (o.parent) o = o.parent;
+        return o.type === 'Scene' && visible;
+    })""", names)
+
+
+def test_the_wheels_are_drawn_with_their_axes_and_momenta(work, rod, open_page):
+    csv_path, html_path, _ = make_page(work, "satellite_wheels.toml", "wheels")
+    rows = read_csv(csv_path)
+    page = open_page(html_path)
+    names = ["wheel_x", "wheel_y", "wheel_z"]
+    assert page.js("() => window.eulerdyn.rotor_names") == names
+    # At t = 0 the wheels are at rest: their discs and axes are drawn, their momentum arrows (h = 0) hidden.
+    page.js("() => window.eulerdyn.setTime(0)")
+    assert scene_objects(page, [f"rotor {n}" for n in names] + [f"rotor momentum {n}" for n in names]) == [True] * 3 + [
+        False
+    ] * 3
+    assert "wheels wheel_x, wheel_y, wheel_z" in page.page.inner_text("#legend")
+    # At a row's time: each wheel's h is the CSV's, and its arrow points along R(q) a sign(h) in space, its length
+    # |h| at H's scale (the largest |h| over the run drawn as long as the largest |H| would be).
+    row = rows[len(rows) // 2]
+    page.js("(t) => window.eulerdyn.setTime(t)", row["t"])
+    assert all(scene_objects(page, [f"rotor momentum {n}" for n in names]))
+    drawn = page.js("""() => window.eulerdyn.rotors.map((w) => {
+        w.arrow.updateWorldMatrix(true, false);
+        const e = w.arrow.matrixWorld.elements;  // the arrow's local y is its direction
+        const n = Math.hypot(e[4], e[5], e[6]);
+        return { dir: [e[4] / n, e[5] / n, e[6] / n], length: w.arrow.line.scale.y + w.arrow.cone.scale.y };
+    })""")
+    state = page.js("() => window.eulerdyn.state()")
+    q = [row[f"q_{c}"] for c in "wxyz"]
+    for k, name in enumerate(names):
+        h = row[f"{name}_h"]
+        assert state["rotor_h"][k] == h
+        axis_b = [1.0 if i == k else 0.0 for i in range(3)]
+        want = [math.copysign(1.0, h) * c for c in rotate(q, axis_b)]
+        assert max(abs(a - b) for a, b in zip(drawn[k]["dir"], want)) < 1e-6, (name, drawn[k], want)
+    longest = max(abs(r[f"{n}_h"]) for r in rows for n in names)
+    lengths = [d["length"] for d in drawn]
+    for k, name in enumerate(names):
+        assert abs(lengths[k] / lengths[0] - abs(row[f"{name}_h"] / row["wheel_x_h"])) < 1e-6
+    assert longest > 0
+    # The wheels show: hiding them changes the drawing.
+    assert visible_pixels(page, "rotors") > 50
+    # A run without rotors has none.
+    page = open_page(rod[1])
+    assert page.js("() => window.eulerdyn.rotor_names") == []
+    assert page.js("() => window.eulerdyn.rotors.length") == 0
+    assert "wheels" not in page.page.inner_text("#legend")
+
+
+def rotate(q, v):
+    """v turned by the unit quaternion q = (w, x, y, z): q v q*, body to space."""
+    w, x, y, z = q
+    return [
+        (1 - 2 * (y * y + z * z)) * v[0] + 2 * (x * y - w * z) * v[1] + 2 * (x * z + w * y) * v[2],
+        2 * (x * y + w * z) * v[0] + (1 - 2 * (x * x + z * z)) * v[1] + 2 * (y * z - w * x) * v[2],
+        2 * (x * z - w * y) * v[0] + 2 * (y * z + w * x) * v[1] + (1 - 2 * (x * x + y * y)) * v[2],
+    ]

@@ -12,7 +12,7 @@ use crate::common::{eulerdyn, scene_from, write_file};
 
 /// A compound pendulum: a thin rod (1 kg, 1 m) hinged at one end, released from rest at `theta0_deg`, hanging along
 /// −y at θ = 0 (as scenarios/rod_pendulum.toml), with rows every 0.05 s and the events given.
-fn pendulum(theta0_deg: f64, method: &str, t_end: f64, events: &str) -> String {
+pub fn pendulum(theta0_deg: f64, method: &str, t_end: f64, events: &str) -> String {
     format!(
         r#"[body]
 mass = 1.0

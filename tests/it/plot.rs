@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::common::{dir_entries, eulerdyn, repo_path, write_file};
+use crate::events::pendulum;
 
 /// A path as command-line text (temporary paths are UTF-8).
 fn text(path: &Path) -> &str {
@@ -938,4 +939,173 @@ fn a_scene_file_is_named_as_such_with_the_commands_that_plot_its_run() {
     }
     assert!(!out.stderr.contains("no column"), "{}", out.stderr);
     assert!(!svg.exists());
+}
+
+/// The compound pendulum of tests/it/events.rs (a thin rod, 1 kg, 1 m, hinged at one end, released from rest at 30°)
+/// for 3 s with rows every 0.05 s, with θ's downward crossings of 0 (`down`), ω_b,z's minima
+/// (`fast`) and the maxima of the kinetic energy (`peak_t`) as events; run into `dir/pend.csv`.
+fn pendulum_with_events(dir: &Path) -> PathBuf {
+    let events = r#"[[event]]
+name = "down"
+when = "theta"
+crosses = 0.0
+direction = "down"
+[[event]]
+name = "fast"
+when = "omega_b_z"
+extremum = "min"
+[[event]]
+name = "peak_t"
+when = "energy"
+extremum = "max""#;
+    let scene = write_file(dir, "pend.toml", pendulum(30.0, "dop853", 3.0, events));
+    let csv = dir.join("pend.csv");
+    eulerdyn(["run", text(&scene), "-o", text(&csv), "-q"]).expect_code(0);
+    csv
+}
+
+/// The located events of the run whose CSV is `csv` (its events file): (event, t, value).
+fn located(csv: &Path) -> Vec<(String, f64, f64)> {
+    let events = std::fs::read_to_string(format!("{}.events.csv", csv.display())).unwrap();
+    (events.lines().skip(1))
+        .map(|l| {
+            let cells: Vec<&str> = l.split(',').collect();
+            (
+                cells[0].into(),
+                cells[1].parse().unwrap(),
+                cells[2].parse().unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// The centres of the event diamonds (`<polygon>`s of 4 corners, top first) filled with `color`, in drawing units.
+fn diamonds(svg: &str, color: &str) -> Vec<(f64, f64)> {
+    let key = format!("fill=\"{color}\" points=\"");
+    svg.match_indices(&key)
+        .map(|(i, _)| {
+            let rest = &svg[i + key.len()..];
+            let corners: Vec<(f64, f64)> = rest[..rest.find('"').unwrap()]
+                .split_whitespace()
+                .map(|p| {
+                    let (x, y) = p.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect();
+            assert_eq!(corners.len(), 4, "{corners:?}");
+            (corners[0].0, corners[1].1)
+        })
+        .collect()
+}
+
+/// The y of the polyline `curve` at x, linearly between its points.
+fn y_at(curve: &[(f64, f64)], x: f64) -> f64 {
+    let k = curve
+        .windows(2)
+        .position(|w| w[0].0 <= x && x <= w[1].0)
+        .unwrap();
+    let ((x0, y0), (x1, y1)) = (curve[k], curve[k + 1]);
+    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+}
+
+#[test]
+fn events_are_marked_at_their_located_time_on_the_panel_of_their_quantity() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = pendulum_with_events(dir.path());
+    let events = located(&csv);
+    let downs: Vec<f64> = (events.iter())
+        .filter(|e| e.0 == "down")
+        .map(|e| e.1)
+        .collect();
+    assert_eq!(downs.len(), 2, "{events:?}");
+    // The theta panel alone: the θ crossings marked, the others (ω, T) not drawn.
+    let svg = plot_svg(&csv, &dir.path().join("theta.svg"), &["--panels", "theta"]);
+    check_svg(&svg);
+    // A diamond at each occurrence, then one in the legend.
+    let marks = diamonds(&svg, "#8C564B");
+    assert_eq!(marks.len(), downs.len() + 1, "{marks:?}");
+    assert_eq!(svg.matches("<polygon").count(), downs.len() + 1);
+    let legend = texts(&svg);
+    assert!(legend.contains(&"down"), "{legend:?}");
+    assert!(
+        !legend.contains(&"fast") && !legend.contains(&"peak_t"),
+        "{legend:?}"
+    );
+    // θ's curve: rows from t = 0 to t = 3 s, so x is linear in t from its first point to its last.
+    let theta = &curves(&svg, "#1F77B4")[0];
+    let (x0, x1) = (theta[0].0, theta.last().unwrap().0);
+    for (&(x, y), t) in marks.iter().zip(&downs) {
+        // At the located time (to the drawing's unit, a quarter pixel), not at a row (every 0.05 s = 8 units).
+        let expected = x0 + (x1 - x0) * t / 3.0;
+        assert!(
+            (x - expected).abs() <= 1.0,
+            "x {x}, expected {expected} for t = {t}"
+        );
+        // On the curve, at θ = 0.
+        assert!((y - y_at(theta, x)).abs() <= 2.0, "y {y} off the curve");
+    }
+    // The omega panel marks ω_b,z's minima.
+    let svg = plot_svg(&csv, &dir.path().join("omega.svg"), &["--panels", "omega"]);
+    let fast = (events.iter()).filter(|e| e.0 == "fast").count();
+    assert_eq!(svg.matches("<polygon").count(), fast + 1);
+    assert!(texts(&svg).contains(&"fast"));
+    // The energy panel: T's maxima; h_body draws no quantity of an event.
+    let svg = plot_svg(
+        &csv,
+        &dir.path().join("t.svg"),
+        &["--panels", "energy,h_body"],
+    );
+    let peaks = (events.iter()).filter(|e| e.0 == "peak_t").count();
+    assert!(peaks >= 3, "{events:?}");
+    assert_eq!(svg.matches("<polygon").count(), peaks + 1);
+}
+
+#[test]
+fn a_run_without_events_has_no_event_marks() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run_scenario(dir.path(), "rod_pendulum", "rod", &[]);
+    let svg = plot_svg(
+        &csv,
+        &dir.path().join("rod.svg"),
+        &["--panels", "theta,omega"],
+    );
+    check_svg(&svg);
+    assert_eq!(svg.matches("<polygon").count(), 0);
+}
+
+#[test]
+fn a_corrupt_events_file_is_refused_naming_it_and_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = pendulum_with_events(dir.path());
+    let events = dir.path().join("pend.csv.events.csv");
+    let good = std::fs::read_to_string(&events).unwrap();
+    let second_row = good.lines().nth(2).unwrap().to_string();
+    for (bad, line, problem) in [
+        ("t,event\n".to_string(), 1, "header"),
+        (
+            good.replacen(&second_row, "down,soon,0,down", 1),
+            3,
+            "t \"soon\"",
+        ),
+        (
+            good.replacen(&second_row, "down,1.0,0,sideways", 1),
+            3,
+            "sideways",
+        ),
+        (good.replacen(&second_row, "down,1.0", 1), 3, "2 cells"),
+    ] {
+        std::fs::write(&events, bad).unwrap();
+        let svg = write_file(dir.path(), "fig.svg", "precious\n");
+        let out = eulerdyn(["plot", text(&csv), "-o", text(&svg)]);
+        out.expect_code(2);
+        assert!(!out.panicked(), "{}", out.stderr);
+        assert!(
+            out.stderr
+                .starts_with(&format!("error: {}: line {line}: ", text(&events))),
+            "{}",
+            out.stderr
+        );
+        assert!(out.stderr.contains(problem), "{}", out.stderr);
+        assert_eq!(std::fs::read(&svg).unwrap(), b"precious\n");
+    }
 }

@@ -352,3 +352,104 @@ fn a_thin_rod_is_drawn_thick_enough_to_show_and_gravity_sets_the_first_view_s_up
         serde_json::json!([0.0, -9.81, 0.0])
     );
 }
+
+#[test]
+fn the_page_embeds_every_located_event_and_a_corrupt_events_file_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let events =
+        "[[event]]\nname = \"down\"\nwhen = \"theta\"\ncrosses = 0.0\ndirection = \"down\"";
+    let scene = write_file(
+        dir.path(),
+        "pend.toml",
+        crate::events::pendulum(30.0, "dop853", 3.0, events),
+    );
+    let csv = dir.path().join("pend.csv");
+    eulerdyn([
+        "run".as_ref(),
+        scene.as_os_str(),
+        "-o".as_ref(),
+        csv.as_os_str(),
+    ])
+    .expect_code(0);
+    let out = dir.path().join("pend.html");
+    view_cmd(&csv, &out).expect_code(0);
+    let data = page_data(&std::fs::read_to_string(&out).unwrap());
+    // The events file's rows, the same numbers, with the quantity from the sidecar's scene.
+    let file = std::fs::read_to_string(dir.path().join("pend.csv.events.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = file
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let embedded = data["events"].as_array().unwrap();
+    assert_eq!(embedded.len(), rows.len());
+    assert_eq!(rows.len(), 2, "{file}");
+    for (e, row) in embedded.iter().zip(&rows) {
+        assert_eq!(e["event"], "down");
+        assert_eq!(e["when"], "theta");
+        assert_eq!(e["direction"], "down");
+        assert_eq!(e["t"].as_f64().unwrap(), row[1].parse::<f64>().unwrap());
+        assert_eq!(e["value"].as_f64().unwrap(), row[2].parse::<f64>().unwrap());
+    }
+    // A run without events embeds none.
+    let disk = run(dir.path(), "scenarios/tilted_disk.toml", "disk");
+    view_cmd(&disk, &dir.path().join("disk.html")).expect_code(0);
+    let disk_page = std::fs::read_to_string(dir.path().join("disk.html")).unwrap();
+    assert_eq!(page_data(&disk_page)["events"], serde_json::json!([]));
+    // A corrupt events file: bad input naming it and its line, the old page left alone.
+    let events_file = dir.path().join("pend.csv.events.csv");
+    std::fs::write(&events_file, file.replacen(",down\n", ",sideways\n", 1)).unwrap();
+    let before = std::fs::read(&out).unwrap();
+    let refused = view_cmd(&csv, &out);
+    refused.expect_code(2);
+    assert!(
+        refused.stderr.contains(&format!(
+            "{}: line 2: direction \"sideways\"",
+            events_file.display()
+        )),
+        "{}",
+        refused.stderr
+    );
+    assert_eq!(std::fs::read(&out).unwrap(), before);
+}
+
+#[test]
+fn a_run_with_rotors_carries_each_wheel_s_axis_and_momentum_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = run(dir.path(), "scenarios/satellite_wheels.toml", "wheels");
+    let out = dir.path().join("wheels.html");
+    view_cmd(&csv, &out).expect_code(0);
+    let data = page_data(&std::fs::read_to_string(&out).unwrap());
+    let names = ["wheel_x", "wheel_y", "wheel_z"];
+    let rotors = data["geometry"]["rotors"].as_array().unwrap();
+    for (k, (rotor, name)) in rotors.iter().zip(names).enumerate() {
+        assert_eq!(rotor["name"], name);
+        let mut axis = [0.0; 3];
+        axis[k] = 1.0;
+        assert_eq!(rotor["axis_b"], serde_json::json!(axis));
+    }
+    // The rows carry each wheel's h, the CSV's values.
+    let columns: Vec<&str> = (data["columns"].as_array().unwrap().iter())
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    // Row 100, t = 10 s: half the motors' sine period, the wheels at their fastest (all 201 rows are kept).
+    let middle: Vec<f64> = (text.lines().nth(101).unwrap().split(','))
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let page_middle = data["rows"][100].clone();
+    for name in names {
+        let h = format!("{name}_h");
+        let in_page = columns.iter().position(|c| *c == h).expect("the column");
+        let in_csv = header.iter().position(|c| *c == h).unwrap();
+        assert!(middle[in_csv].abs() > 1e-3, "{h} = {}", middle[in_csv]);
+        assert_eq!(page_middle[in_page].as_f64().unwrap(), middle[in_csv]);
+    }
+    // A run without rotors has neither.
+    let disk = run(dir.path(), "scenarios/tilted_disk.toml", "disk");
+    view_cmd(&disk, &dir.path().join("disk.html")).expect_code(0);
+    let disk_data = page_data(&std::fs::read_to_string(dir.path().join("disk.html")).unwrap());
+    assert_eq!(disk_data["geometry"]["rotors"], serde_json::json!([]));
+    assert!(!disk_data["columns"].to_string().contains("_h\""));
+}

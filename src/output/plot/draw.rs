@@ -11,7 +11,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::layout::{CAPTION_PX, FigureSize, Grid, PX_PER_CM, TEXT_PX, TITLE_CM, TITLE_PX};
-use super::panels::{Curve, DRIFT_FLOOR, Marker, PanelPlot, panel_plot};
+use super::panels::{Curve, DRIFT_FLOOR, EventMarks, Marker, PanelPlot, panel_plot};
 use super::series::RunSeries;
 use super::ticks::LinearTicks;
 use super::{FONT, Panel, PlotError};
@@ -133,10 +133,9 @@ pub(super) fn render_svg(
 
 /// Legend entries per line in a panel `width` px wide, and the width of each (px).
 fn legend_columns(plot: &PanelPlot, width: i32) -> (usize, i32) {
-    let longest = plot
-        .curves
-        .iter()
-        .map(|c| c.label.chars().count())
+    let longest = (plot.curves.iter().map(|c| &c.label))
+        .chain(plot.events.iter().map(|e| &e.name))
+        .map(|label| label.chars().count())
         .max()
         .unwrap_or(1) as f64;
     let entry = (longest * 0.6 * TEXT_PX) as i32 + 52;
@@ -146,7 +145,7 @@ fn legend_columns(plot: &PanelPlot, width: i32) -> (usize, i32) {
 /// The lines a panel's legend needs in a panel `width` px wide: its entries in columns, then its notes.
 fn legend_rows(plot: &PanelPlot, width: i32) -> usize {
     let (per_line, _) = legend_columns(plot, width);
-    plot.curves.len().div_ceil(per_line) + plot.notes.len()
+    (plot.curves.len() + plot.events.len()).div_ceil(per_line) + plot.notes.len()
 }
 
 /// The x (time) range of the charts: the run's, or a unit range around a single time.
@@ -193,10 +192,22 @@ fn draw_panel(
     let curves = drawn_curves(plot);
     let (lo, hi) = if plot.log {
         let floor = DRIFT_FLOOR.log10();
-        let (lo, hi) = y_extent(&curves).unwrap_or((floor, floor));
+        let (lo, hi) = extent(curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)))
+            .unwrap_or((floor, floor));
         decade_range(lo, hi)
     } else {
-        let (lo, hi) = y_extent(&curves).unwrap_or((-1.0, 1.0));
+        // The events' values too: an extremum located between the rows lies beyond the rows' values.
+        let located = plot
+            .events
+            .iter()
+            .flat_map(|e| e.points.iter().map(|p| p.1));
+        let (lo, hi) = extent(
+            curves
+                .iter()
+                .flat_map(|c| c.points.iter().map(|p| p.1))
+                .chain(located),
+        )
+        .unwrap_or((-1.0, 1.0));
         linear_range(lo, hi)
     };
     let x_ticks = LinearTicks::new(t0, t1);
@@ -250,6 +261,7 @@ fn draw_panel(
     }
     mesh.draw()?;
     draw_curves(&mut chart, &curves)?;
+    draw_events(&mut chart, &plot.events, (lo, hi))?;
     draw_legend(&legend_area, plot)
 }
 
@@ -362,6 +374,57 @@ fn square(x: i32, y: i32, a: i32) -> Vec<(i32, i32)> {
     ]
 }
 
+/// Half the diagonal of an event's diamond (px).
+const DIAMOND: i32 = 5;
+
+/// The corners of a diamond of half diagonal `a` centred at (`x`, `y`), top first.
+fn diamond(x: i32, y: i32, a: i32) -> Vec<(i32, i32)> {
+    vec![(x, y - a), (x + a, y), (x, y + a), (x - a, y)]
+}
+
+/// Draws each event's occurrences over the curves: a thin vertical line at t across the chart's y range
+/// `(lo, hi)`, and a filled diamond at (t, value).
+fn draw_events(
+    chart: &mut Chart<'_, '_>,
+    events: &[EventMarks],
+    (lo, hi): (f64, f64),
+) -> DrawResult {
+    for event in events {
+        let line = ShapeStyle::from(&event.color.mix(0.6)).stroke_width(DOT as u32);
+        for &(t, _) in &event.points {
+            chart.draw_series(LineSeries::new([(t, lo), (t, hi)], line))?;
+        }
+        let fill = ShapeStyle::from(&event.color).filled();
+        chart
+            .draw_series((event.points.iter()).map(|&p| {
+                EmptyElement::at(p) + Polygon::new(diamond(0, 0, DIAMOND * DOT), fill)
+            }))?;
+    }
+    Ok(())
+}
+
+/// An event's legend entry at (`x`, `y`): a short vertical line with its diamond, and the event's name.
+fn draw_event_legend_entry(
+    area: &Area<'_>,
+    event: &EventMarks,
+    (x, y): (i32, i32),
+    text: &TextStyle<'_>,
+) -> DrawResult {
+    let middle = x + 14 * DOT;
+    let line = ShapeStyle::from(&event.color.mix(0.6)).stroke_width(DOT as u32);
+    area.draw(&PathElement::new(
+        vec![(middle, y - 7 * DOT), (middle, y + 7 * DOT)],
+        line,
+    ))?;
+    let fill = ShapeStyle::from(&event.color).filled();
+    area.draw(&Polygon::new(diamond(middle, y, DIAMOND * DOT), fill))?;
+    area.draw(&Text::new(
+        event.name.clone(),
+        (x + 36 * DOT, y),
+        text.clone(),
+    ))
+}
+
 /// One legend entry at (`x`, `y`), in a drawing of `dot` units per pixel: a sample of the curve's line (three
 /// dashes when dashed, its marker in the middle) and its label.
 pub(crate) fn draw_legend_entry(
@@ -412,12 +475,17 @@ fn draw_legend(area: &Area<'_>, plot: &PanelPlot) -> DrawResult {
     let (per_line, entry) = legend_columns(plot, w as i32 / DOT);
     let left = 12;
     let mut y = LEGEND_LINE / 2;
-    for line in plot.curves.chunks(per_line) {
-        for (k, curve) in line.iter().enumerate() {
-            let at = (DOT * (left + k as i32 * entry), DOT * y);
-            draw_legend_entry(area, curve, at, &text, DOT)?;
+    let entries = plot.curves.len() + plot.events.len();
+    for k in 0..entries {
+        let column = (k % per_line) as i32;
+        let at = (DOT * (left + column * entry), DOT * y);
+        match plot.curves.get(k) {
+            Some(curve) => draw_legend_entry(area, curve, at, &text, DOT)?,
+            None => draw_event_legend_entry(area, &plot.events[k - plot.curves.len()], at, &text)?,
         }
-        y += LEGEND_LINE;
+        if column as usize + 1 == per_line || k + 1 == entries {
+            y += LEGEND_LINE;
+        }
     }
     for line in &plot.notes {
         area.draw(&Text::new(
@@ -430,15 +498,12 @@ fn draw_legend(area: &Area<'_>, plot: &PanelPlot) -> DrawResult {
     Ok(())
 }
 
-/// The smallest and largest y of the curves, or `None` when they have no points.
-fn y_extent(curves: &[Curve]) -> Option<(f64, f64)> {
-    curves
-        .iter()
-        .flat_map(|c| c.points.iter().map(|p| p.1))
-        .fold(None, |acc, y| match acc {
-            None => Some((y, y)),
-            Some((lo, hi)) => Some((lo.min(y), hi.max(y))),
-        })
+/// The smallest and largest of `values`, or `None` when there are none.
+fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values.fold(None, |acc, y| match acc {
+        None => Some((y, y)),
+        Some((lo, hi)) => Some((lo.min(y), hi.max(y))),
+    })
 }
 
 /// A linear axis range around [lo, hi]: 5 % margins; a constant (or constant to 1e-9 relative) gets ±5 % of its

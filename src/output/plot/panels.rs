@@ -41,6 +41,16 @@ pub(super) struct PanelPlot {
     pub(super) log: bool,
     /// Legend lines that are text only.
     pub(super) notes: Vec<String>,
+    /// The located events of the quantities the panel draws.
+    pub(super) events: Vec<EventMarks>,
+}
+
+/// The occurrences of one `[[event]]` on a panel that draws its quantity: a marker at each (t, value), with a
+/// vertical line at t, in the event's colour; the event's name in the legend.
+pub(super) struct EventMarks {
+    pub(super) name: String,
+    pub(super) color: RGBColor,
+    pub(super) points: Vec<(f64, f64)>,
 }
 
 impl PanelPlot {
@@ -51,6 +61,7 @@ impl PanelPlot {
             curves,
             log: false,
             notes: Vec::new(),
+            events: Vec::new(),
         }
     }
 }
@@ -91,8 +102,67 @@ fn single(run: &RunSeries, column: &str, label: &str, color: RGBColor) -> Curve 
     }
 }
 
-/// What `panel` shows of `run`.
+/// What `panel` shows of `run`, with the marks of the events whose quantity it draws.
 pub(super) fn panel_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
+    PanelPlot {
+        events: event_marks(run, panel),
+        ..curves_plot(run, panel)
+    }
+}
+
+/// The colours of the events, by the order of their first occurrence in the run (the same on every panel); not
+/// those of the curves.
+const EVENT_COLORS: [RGBColor; 4] = [
+    RGBColor(0x8c, 0x56, 0x4b),
+    RGBColor(0xe3, 0x77, 0xc2),
+    RGBColor(0x17, 0xbe, 0xcf),
+    RGBColor(0xbc, 0xbd, 0x22),
+];
+
+/// Whether `panel` draws the quantity `when` of an event (a CSV column, or `|X|`): one of its curves is that column
+/// or that norm. The drift panel draws changes, not the quantities, so it has no events.
+fn draws(run: &RunSeries, panel: Panel, when: &str) -> bool {
+    match (panel, when) {
+        (Panel::Drift, _) => false,
+        (Panel::HBody | Panel::HSpace, "|H|") => true,
+        (Panel::Bearings, "|R_A|" | "|R_B|") | (Panel::Support, "|F_sup|") => true,
+        (Panel::Energy, "potential" | "energy_total") => {
+            run.has("potential") && run.has("energy_total")
+        }
+        _ => panel.columns().contains(&when),
+    }
+}
+
+/// The events of `run` whose quantity `panel` draws, one [`EventMarks`] per event, in the order of the events'
+/// first occurrences.
+fn event_marks(run: &RunSeries, panel: Panel) -> Vec<EventMarks> {
+    let mut names: Vec<&str> = Vec::new();
+    let mut marks: Vec<EventMarks> = Vec::new();
+    for row in &run.events {
+        let k = match names.iter().position(|n| *n == row.event) {
+            Some(k) => k,
+            None => {
+                names.push(&row.event);
+                names.len() - 1
+            }
+        };
+        if !row.when.as_deref().is_some_and(|w| draws(run, panel, w)) {
+            continue;
+        }
+        match marks.iter_mut().find(|m| m.name == row.event) {
+            Some(m) => m.points.push((row.t, row.value)),
+            None => marks.push(EventMarks {
+                name: row.event.clone(),
+                color: EVENT_COLORS[k % EVENT_COLORS.len()],
+                points: vec![(row.t, row.value)],
+            }),
+        }
+    }
+    marks
+}
+
+/// The curves `panel` shows of `run`.
+fn curves_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
     match panel {
         Panel::HBody => h_panel(run, "H_b", "body"),
         Panel::HSpace => h_panel(run, "H_s", "space"),
@@ -304,6 +374,7 @@ fn drift_panel(run: &RunSeries) -> PanelPlot {
         curves,
         log: true,
         notes,
+        events: Vec::new(),
     }
 }
 

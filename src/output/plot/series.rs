@@ -2,13 +2,15 @@
 //! and extra columns are ignored), streaming (memory does not grow with the rows), each curve reduced by a
 //! [`Decimator`]. A panel's optional columns (`potential` and `energy_total` for the energy panel) are read when the
 //! file has them. What the run's sidecar says of the scene (name, method, motion, effects) is kept for the title
-//! and for the drift panel, which shows only the scene's invariants.
+//! and for the drift panel, which shows only the scene's invariants; the run's located events (its events file) for
+//! the markers of the panels that draw their quantities.
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use super::decimator::Decimator;
 use super::{Panel, PlotError};
+use crate::output::events_file::{EventRow, run_events};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
 use crate::scene::{EffectSpec, MotionKind, MotionSpec};
@@ -70,6 +72,8 @@ pub struct RunSeries {
     pub(super) norms: Vec<Norm>,
     /// The scene, from the run's sidecar, when there is one.
     pub(super) scene: Option<SceneFacts>,
+    /// The run's located events ([`run_events`]: its events file or sidecar), none for a CSV from stdin.
+    pub(super) events: Vec<EventRow>,
     /// The panels read for: those asked for or, when none were, the panels the run has ([`Panel::of_run`]).
     pub panels: Vec<Panel>,
 }
@@ -121,6 +125,7 @@ impl RunSeries {
             drifts,
             norms,
             scene: None,
+            events: Vec::new(),
             panels: panels.to_vec(),
         }
     }
@@ -172,7 +177,9 @@ pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
         return read_rows(reader, panels);
     }
     let mut series = read_rows(RunCsvReader::open(path)?, panels)?;
-    series.scene = sidecar_scene(path);
+    let sidecar = Sidecar::read(path).ok();
+    series.scene = sidecar.as_ref().map(scene_facts);
+    series.events = run_events(path, sidecar.as_ref())?;
     Ok(series)
 }
 
@@ -357,11 +364,9 @@ fn scene_file_advice(file: &Path) -> String {
     )
 }
 
-/// The scene's name, method, motion and effects from the run's sidecar ([`Sidecar`]), if it left one next to the
-/// CSV; the scene as simulated (defaults written in) says whether a prescribed motion accelerates and where
-/// gravity points.
-fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
-    let sidecar = Sidecar::read(csv).ok()?;
+/// The scene's name, method, motion and effects from the run's sidecar ([`Sidecar`]); the scene as simulated
+/// (defaults written in) says whether a prescribed motion accelerates and where gravity points.
+fn scene_facts(sidecar: &Sidecar) -> SceneFacts {
     let spec = &sidecar.scene.spec;
     let accel = match &spec.motion {
         Some(MotionSpec::FixedAxis(m)) => m.accel,
@@ -371,12 +376,12 @@ fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
         EffectSpec::Gravity { g, .. } => g[0] == 0.0 && g[1] == 0.0,
         _ => true,
     });
-    Some(SceneFacts {
-        name: sidecar.scene.name,
-        method: sidecar.solver.method,
-        frame: sidecar.solver.frame,
+    SceneFacts {
+        name: sidecar.scene.name.clone(),
+        method: sidecar.solver.method.clone(),
+        frame: sidecar.solver.frame.clone(),
         motion: sidecar.scene.motion,
-        effects: sidecar.scene.effects,
+        effects: sidecar.scene.effects.clone(),
         accelerated: accel != 0.0,
         vertical_gravity,
         rotors: !spec.body.rotor.is_empty(),
@@ -384,5 +389,5 @@ fn sidecar_scene(csv: &Path) -> Option<SceneFacts> {
             .any(|r| r.imbalance_static_gmm != 0.0 || r.imbalance_dynamic_gmm2 != 0.0),
         carried: (spec.motion.as_ref())
             .is_some_and(|m| m.axis().is_some_and(|a| a.carrier.is_some())),
-    })
+    }
 }

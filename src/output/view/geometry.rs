@@ -83,6 +83,7 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
         })
         .collect();
     let principal = Principal::of(&inertia_o_b);
+    let rotors = rotors_json(spec, &reference_o);
     let motion = &sidecar.scene.motion;
     let units: serde_json::Map<String, Value> = sidecar
         .columns
@@ -99,6 +100,7 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
             "gravity_s": gravity_s(&scene.effects).map(|g| vec3(&g)),
             "body": body,
             "point_masses": point_masses,
+            "rotors": rotors,
             "mass_center": vec3(&rho_c_b),
             "axis_b": axis.map(|a| vec3(a.axis_b())),
             "bearings": axis.and_then(|a| a.bearings()).map(|b| [b.a, b.b]),
@@ -108,6 +110,24 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
         }),
         notes,
     })
+}
+
+/// The wheels (`[[body.rotor]]`) as the page draws them: `name` (the prefix of its columns, `rotorK` when absent,
+/// as validation names it), `axis_b` (its unit spin axis, body axes), `at` (its centre in body axes from O) and
+/// `inertia` (J, kg·m²).
+fn rotors_json(spec: &SceneSpec, reference_o: &Vector3<f64>) -> Vec<Value> {
+    (spec.body.rotor.iter().enumerate())
+        .map(|(k, r)| {
+            let axis_b = Vector3::from(r.axis).normalize();
+            let at = Vector3::from(r.at) + reference_o;
+            json!({
+                "name": r.name.clone().unwrap_or_else(|| format!("rotor{k}")),
+                "axis_b": vec3(&axis_b),
+                "at": vec3(&at),
+                "inertia": r.inertia,
+            })
+        })
+        .collect()
 }
 
 /// Thin parts of a body are drawn at least this fraction of its longest dimension thick: a thin rod or a thin disk
@@ -295,6 +315,30 @@ mod tests {
             "{said}"
         );
         assert!(g.notes.is_empty(), "not a warning: {:?}", g.notes);
+    }
+
+    #[test]
+    fn wheels_are_named_by_their_columns_with_unit_axes_placed_from_the_moment_center() {
+        // A 1 kg sphere (C at its center, O = C for free motion) with an unnamed wheel on a tilted axis at x = 0.2 m,
+        // and a named one at the center.
+        let text = "[body]\nmass = 1.0\nshape = { type = \"sphere\", radius = 0.1 }\n\
+                    [[body.rotor]]\naxis = [3.0, 0.0, 4.0]\ninertia = 0.001\nspin = 10.0\nat = [0.2, 0.0, 0.0]\n\
+                    [[body.rotor]]\nname = \"w\"\naxis = [0.0, 2.0, 0.0]\ninertia = 0.002\n\
+                    [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(text)).expect("geometry");
+        let rotors = g.json["rotors"].as_array().expect("rotors");
+        assert_eq!(rotors.len(), 2);
+        assert_eq!(rotors[0]["name"], "rotor0");
+        assert_eq!(rotors[0]["axis_b"], json!([0.6, 0.0, 0.8]));
+        assert_eq!(rotors[0]["at"], json!([0.2, 0.0, 0.0]));
+        assert_eq!(rotors[1]["name"], "w");
+        assert_eq!(rotors[1]["axis_b"], json!([0.0, 1.0, 0.0]));
+        assert_eq!(rotors[1]["inertia"], 0.002);
+        // Without rotors, none.
+        let plain = "[body]\nmass = 1.0\nshape = { type = \"sphere\", radius = 0.1 }\n\
+                     [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let g = geometry_of_sidecar(&sidecar(plain)).expect("geometry");
+        assert_eq!(g.json["rotors"], json!([]));
     }
 
     #[test]

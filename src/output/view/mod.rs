@@ -4,8 +4,9 @@
 //! its own script and style (`assets/view/`), and the run's rows as JSON numbers that read back to the same f64 —
 //! and makes no network request (its Content-Security-Policy forbids any). It draws the body by its shape (from
 //! the run's sidecar), space and body axes, the fixed axis and the bearings, the vectors ω, H and M (and the
-//! bearings' forces), the trail of H's tip, and for free motion the polhode; and it exposes
-//! `window.eulerdyn = { rows, t_end, setTime(t), state() }` for tests and scripts.
+//! bearings' forces), the trail of H's tip, and for free motion the polhode; it lists the run's located events
+//! (its events file, [`run_events`]), each a button that jumps to its time; and it exposes
+//! `window.eulerdyn = { rows, events, t_end, setTime(t), state() }` for tests and scripts.
 //!
 //! Long runs are decimated by the rule in [`rows`]: at most [`MAX_DRAWN_ROWS`] rows, evenly in time, plus the last.
 
@@ -19,7 +20,9 @@ use std::path::{Path, PathBuf};
 pub use geometry::{Geometry, read_geometry};
 pub use rows::{MAX_DRAWN_ROWS, Rows, read_rows};
 
+use super::events_file::{EventRow, run_events};
 use super::run_csv::{CsvInputError, RunCsvReader};
+use super::sidecar::Sidecar;
 
 /// Why a page could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -48,6 +51,8 @@ pub struct ViewRun {
     pub file: PathBuf,
     pub rows: Rows,
     pub geometry: Geometry,
+    /// The run's located events, in time order (none for a CSV from stdin).
+    pub events: Vec<EventRow>,
 }
 
 impl ViewRun {
@@ -90,6 +95,7 @@ pub fn read_view_run(csv: &Path, max_rows: usize) -> Result<ViewRun, ViewError> 
         file: csv.to_path_buf(),
         rows,
         geometry: read_geometry(csv),
+        events: run_events(csv, Sidecar::read(csv).ok().as_ref())?,
     })
 }
 
@@ -105,6 +111,7 @@ pub fn read_from(
         file: file.to_path_buf(),
         rows,
         geometry,
+        events: Vec::new(),
     })
 }
 

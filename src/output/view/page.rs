@@ -72,7 +72,8 @@ pub fn render(run: &ViewRun) -> String {
 }
 
 /// The run as the page's JSON: the kept rows (numbers that read back to the same f64), the decimation, the
-/// geometry and the notes. `<` is written `\u003c`, so that no string can end the `<script>` element.
+/// geometry, the notes and the located events (`event`, `t`, `value`, `direction`, `when`: all of them, not
+/// decimated). `<` is written `\u003c`, so that no string can end the `<script>` element.
 pub fn data_json(run: &ViewRun) -> String {
     let rows = &run.rows;
     let table: Vec<&[f64]> = (0..rows.len()).map(|k| rows.row(k)).collect();
@@ -91,8 +92,24 @@ pub fn data_json(run: &ViewRun) -> String {
         "rows_note": run.rows_note(),
         "notes": notes,
         "geometry": run.geometry.json,
+        "events": events_json(run),
     });
     doc.to_string().replace('<', "\\u003c")
+}
+
+/// The located events as JSON objects, in time order.
+fn events_json(run: &ViewRun) -> Value {
+    (run.events.iter())
+        .map(|e| {
+            json!({
+                "event": e.event,
+                "t": e.t,
+                "value": e.value,
+                "direction": e.direction,
+                "when": e.when,
+            })
+        })
+        .collect()
 }
 
 /// `text` with `&`, `<`, `>` and `"` escaped for HTML.

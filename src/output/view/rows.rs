@@ -1,5 +1,5 @@
 //! The rows the page draws: the columns it needs, read from the run's CSV with the shared reader, and
-//! decimated for long runs.
+//! decimated for long runs; with rotors, each wheel's axial momentum `<name>_h`.
 //!
 //! **Decimation rule.** At most [`MAX_DRAWN_ROWS`] rows are kept: every s-th data row counting from the first
 //! (rows 0, s, 2s, …), s the smallest power of two that keeps at most [`MAX_DRAWN_ROWS`] of them, plus the last
@@ -10,6 +10,7 @@
 use std::io::Read;
 
 use crate::output::run_csv::{CsvInputError, RunCsvReader};
+use crate::sample::rotor_columns;
 
 /// The most rows a page carries (see the module documentation for which).
 pub const MAX_DRAWN_ROWS: usize = 10_000;
@@ -40,6 +41,24 @@ pub const OPTIONAL: [[&str; 3]; 2] = [
     ["R_A_s_x", "R_A_s_y", "R_A_s_z"],
     ["R_B_s_x", "R_B_s_y", "R_B_s_z"],
 ];
+
+/// The wheels' axial momentum columns `<name>_h`, in the header's order, of the rotors whose three columns
+/// (`<name>_spin`, `<name>_h`, `<name>_torque`, [`rotor_columns`]) the CSV has.
+fn rotor_momentum_columns(csv: &RunCsvReader<impl Read>) -> Vec<&'static str> {
+    let names: Vec<String> = (csv.header().iter())
+        .filter_map(|c| c.strip_suffix("_spin"))
+        .filter(|name| {
+            ["h", "torque"]
+                .iter()
+                .all(|s| csv.index_of(&format!("{name}_{s}")).is_some())
+        })
+        .map(String::from)
+        .collect();
+    (rotor_columns(&names).iter())
+        .filter(|c| c.name.ends_with("_h"))
+        .map(|c| c.name)
+        .collect()
+}
 
 /// The kept rows of a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -167,6 +186,7 @@ pub fn read_rows(mut csv: RunCsvReader<impl Read>, max: usize) -> Result<Rows, C
             columns.extend(group);
         }
     }
+    columns.extend(rotor_momentum_columns(&csv));
     let index: Vec<usize> = columns.iter().filter_map(|c| csv.index_of(c)).collect();
     let mut keeper = RowKeeper::new(columns.len(), max);
     let mut values = vec![0.0; columns.len()];
