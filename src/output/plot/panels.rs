@@ -227,7 +227,7 @@ fn bearings_panel(run: &RunSeries, suffix: &str, axes: &str) -> PanelPlot {
         .chain([norm(run, &a, "|R_A|", false), norm(run, &b, "|R_B|", true)])
         .collect();
     PanelPlot::linear(
-        &format!("Bearing forces on the body, {axes} axes"),
+        format!("Bearing forces on the body, {axes} axes"),
         "R (N)",
         curves,
     )
