@@ -49,7 +49,14 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
   scene.add(parts.axes[1]);
 
   const q0 = quat(api.rows[0].q);
-  const bearings = addAxisAndBearings(THREE, scene, geometry, q0, size);
+  // The fixed axis and its bearings, drawn where they are at t = 0; in a turning carrier (motion.carrier) the group
+  // turns each frame by the shortest rotation taking the axis at t = 0 to the axis now, R(q(t)) a_b.
+  const axisGroup = new THREE.Group();
+  scene.add(axisGroup);
+  const bearings = addAxisAndBearings(THREE, axisGroup, geometry, q0, size);
+  const axisB = geometry.axis_b ? v3(geometry.axis_b).normalize() : null;
+  const axis0 = axisB && axisB.clone().applyQuaternion(q0);
+  api.axis_group = axisGroup;
 
   // Each kind of vector scaled so that its longest value over the run is 1.3 body sizes long.
   const longest = {};
@@ -130,6 +137,11 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
       camera.updateProjectionMatrix();
     }
     body.quaternion.copy(quat(state.q));
+    if (axisB) axisGroup.quaternion.setFromUnitVectors(axis0, axisB.clone().applyQuaternion(body.quaternion));
+    if (bearings) {
+      if (arrows.R_A_s) arrows.R_A_s.position.copy(bearings[0]).applyQuaternion(axisGroup.quaternion);
+      if (arrows.R_B_s) arrows.R_B_s.position.copy(bearings[1]).applyQuaternion(axisGroup.quaternion);
+    }
     for (const name of Object.keys(arrows)) setArrow(arrows[name], v3(state[name]).multiplyScalar(scaleOf(name)), size);
     wheels.forEach((w, k) => setArrow(w.arrow, v3(w.axis_b).multiplyScalar(state.rotor_h[k] * scaleOf('H_s')), size));
     if (trail) trail.geometry.setDrawRange(0, trailCount(api, state.t));
@@ -276,8 +288,8 @@ function textSprite(THREE, text, color, height) {
   return sprite;
 }
 
-/** The fixed axis (a line through O, fixed in space) and the bearings (rings on it); returns the bearings'
- * positions in space, or null. */
+/** The fixed axis (a line through O) and the bearings (rings on it), added to `scene` (a group) where they are at
+ * t = 0; returns the bearings' positions then, or null. */
 function addAxisAndBearings(THREE, scene, geometry, q0, size) {
   if (!geometry.axis_b) return null;
   const u = new THREE.Vector3(...geometry.axis_b).applyQuaternion(q0).normalize();

@@ -584,3 +584,33 @@ def rotate(q, v):
         2 * (x * y + w * z) * v[0] + (1 - 2 * (x * x + z * z)) * v[1] + 2 * (y * z - w * x) * v[2],
         2 * (x * z - w * y) * v[0] + 2 * (y * z + w * x) * v[1] + (1 - 2 * (x * x + y * y)) * v[2],
     ]
+
+
+def test_a_carriers_axis_and_bearings_turn_with_it(work, open_page):
+    # scenarios/turbine_yawing_aircraft.toml: the axis (body z) is fixed in a yawing carrier, so the dashed axis line,
+    # the bearings and their force arrows are drawn along R(q(t)) a_b, not where they were at t = 0.
+    csv_path, html_path, _ = make_page(work, "turbine_yawing_aircraft.toml", "turbine")
+    rows = read_csv(csv_path)
+    page = open_page(html_path)
+    row = rows[200]  # t = 1 s: the aircraft has yawed by 0.22 rad
+    page.js("(t) => window.eulerdyn.setTime(t)", row["t"])
+    drawn = page.js("""() => {
+        const g = window.eulerdyn.axis_group;
+        g.updateWorldMatrix(true, true);
+        const line = g.children[0].geometry.attributes.position;
+        const a = [line.getX(1), line.getY(1), line.getZ(1)];
+        const n = Math.hypot(...a);
+        const q = g.quaternion;
+        const turn = (v) => {  // v turned by the group's quaternion
+            const [x, y, z] = v, [qx, qy, qz, qw] = [q.x, q.y, q.z, q.w];
+            const ix = qw * x + qy * z - qz * y, iy = qw * y + qz * x - qx * z, iz = qw * z + qx * y - qy * x,
+                iw = -qx * x - qy * y - qz * z;
+            return [ix * qw + iw * -qx + iy * -qz - iz * -qy, iy * qw + iw * -qy + iz * -qx - ix * -qz,
+                iz * qw + iw * -qz + ix * -qy - iy * -qx];
+        };
+        return turn(a.map((c) => c / n));
+    }""")
+    q = [row[f"q_{c}"] for c in "wxyz"]
+    want = rotate(q, [0.0, 0.0, 1.0])
+    assert max(abs(a - b) for a, b in zip(drawn, want)) < 1e-6, (drawn, want)
+    assert abs(want[1]) > 0.2, "the axis has turned away from space x"
