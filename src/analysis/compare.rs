@@ -48,8 +48,10 @@ impl Oracle {
             Motion::FixedAxis(_) => return Some(Oracle::FixedAxis),
             Motion::Hinge(_) => return None,
             Motion::Free {
-                gyrostat: Some(g), ..
-            } => return symmetric_gyrostat(scene, g),
+                omega0_b,
+                gyrostat: Some(g),
+                ..
+            } => return symmetric_gyrostat(scene, omega0_b, g),
             Motion::Free { omega0_b, .. } => *omega0_b,
         };
         let principal = scene.body.principal();
@@ -149,10 +151,7 @@ impl Oracle {
 /// The symmetric gyrostat's closed form, where it applies: no effects, body axes principal with I₁ = I₂, and
 /// every wheel balanced, on body ±z, at a constant relative spin (prescribed, or free: with ω₃ constant a free
 /// wheel keeps its spin too).
-fn symmetric_gyrostat(scene: &Scene, g: &Gyrostat) -> Option<Oracle> {
-    let Motion::Free { omega0_b, .. } = &scene.motion else {
-        return None;
-    };
+fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> Option<Oracle> {
     let inertia = g.body().inertia_b();
     let diagonal = (0..3).all(|i| (0..3).all(|j| i == j || inertia[(i, j)] == 0.0));
     let steady = |r: &crate::motion::gyrostat::Rotor| {

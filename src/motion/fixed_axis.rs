@@ -299,7 +299,7 @@ impl AxisRotation {
 
     /// The same placement turning at θ̇ = `theta_dot` about `axis_b` more: ω += θ̇ u, and in a carrier ω̇ gains
     /// θ̇ Ω_c × u.
-    fn turning(mut self, axis_b: &Vector3<f64>, theta_dot: f64) -> Self {
+    pub fn turning(mut self, axis_b: &Vector3<f64>, theta_dot: f64) -> Self {
         self.omega_b += axis_b * theta_dot;
         self.omega_s += self.u_s * theta_dot;
         if let Some(c) = self.carrier {

@@ -91,17 +91,17 @@ impl Hinge {
     /// θ̇ and the rotation at t from the state of `form`; in the space form θ̇ = (L − u_b·I_A ω_c,b)/I_uu, with
     /// ω_c,b the carrier's rate in body axes (zero without one).
     fn rotation(&self, t: f64, form: Form, y: &HingeState) -> (f64, AxisRotation) {
+        let u_b = self.axis.axis_b().into_inner();
+        let placed = self.axis.placed(t, y[0]);
         let theta_dot = match (form, self.axis.carrier()) {
             (Form::Body, _) => y[1],
             (Form::Space, None) => y[1] / self.i_uu,
             (Form::Space, Some(_)) => {
-                let placed = self.axis.placed(t, y[0]);
-                let u_b = self.axis.axis_b().into_inner();
                 let carried = u_b.dot(&(self.axis.inertia_a_b() * placed.omega_b));
                 (y[1] - carried) / self.i_uu
             }
         };
-        (theta_dot, self.axis.rotation(t, y[0], theta_dot))
+        (theta_dot, placed.turning(&u_b, theta_dot))
     }
 
     /// θ̈ from u·(dH/dt − M_eff) = 0: θ̈ = u_b·(M_eff,b − I_A β_b − ω_b × I_A ω_b)/I_uu with β = ω̇ − θ̈ u the
