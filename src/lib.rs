@@ -39,7 +39,16 @@
 //! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`body`], [`kinetics`],
 //! [`effects`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions ([`motion`]) → the
 //! validated [`scene`] → [`simulate`] → [`analysis`] and [`output`]. The command line is a binary over the
-//! library (feature `cli`, on by default); `default-features = false` leaves out clap, indicatif and ctrlc.
+//! library (feature `cli`, on by default).
+//!
+//! # Features
+//!
+//! All on by default; with `default-features = false` only the core compiles (no clap, indicatif, ctrlc, plotters,
+//! resvg, rayon or rand, and no embedded assets):
+//! - `plot`: figures of a run's CSV ([`output::plot`]) and the work-precision figure;
+//! - `view`: the 3D page ([`output::view`], with the embedded three.js);
+//! - `sweep`: sweeps and Monte Carlo over many scenes ([`analysis::sweep`], every core through rayon);
+//! - `cli`: the command line (needs the three above).
 //! ARCHITECTURE.md draws them and says where a new motion, effect, method or command goes.
 
 pub mod analysis;

@@ -1,17 +1,23 @@
 //! Output: CSV rows (streaming), the atomic file writer (one policy for every output path) and its registry of
-//! pending temporary files, the metadata sidecar, and SVG plots of a run's CSV.
+//! pending temporary files, the metadata sidecar, and (features `plot` and `view`) SVG plots of a run's CSV and its 3D
+//! page.
 
+#[cfg(feature = "plot")]
 pub mod accuracy;
 pub mod atomic;
 pub mod csv_writer;
 pub mod events_file;
 pub mod pending;
+#[cfg(feature = "plot")]
 pub mod plot;
 pub mod run_csv;
 pub mod run_file;
 pub mod sidecar;
+#[cfg(feature = "plot")]
 mod ticks;
+#[cfg(feature = "view")]
 pub mod view;
+#[cfg(feature = "plot")]
 pub mod work_precision;
 
 pub use atomic::{AtomicFile, same_file};

@@ -11,6 +11,7 @@ mod template;
 mod user_moment;
 mod validate;
 
+#[cfg(feature = "sweep")]
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SceneSource, SolverConfig};

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The library without the command line: a crate that depends on eulerdyn with `default-features = false` builds
-# and runs the README's "From Rust code" example (taken from the README itself), and `cargo tree` shows no clap,
-# indicatif or ctrlc in it. Shares this checkout's target directory, so only eulerdyn itself is compiled again.
+# and runs the README's "From Rust code" example (taken from the README itself), and `cargo tree` shows none of
+# clap, indicatif, ctrlc, plotters, resvg, rayon or rand in it (the core only: CONTRACT.md, fourth round). Shares this checkout's target directory, so only eulerdyn itself is compiled again.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 work="$(mktemp -d)"
@@ -31,7 +31,7 @@ example="$(awk '/^## From Rust code/{f=1} f&&/^```rust/{b=1;next} b&&/^```/{exit
   echo '}'
 } > "$work/src/main.rs"
 tree="$(cargo tree --manifest-path "$work/Cargo.toml" -e normal --prefix none)"
-for crate in clap indicatif ctrlc; do
+for crate in clap indicatif ctrlc plotters resvg rayon rand rand_distr; do
   if grep -q "^$crate v" <<<"$tree"; then
     echo "library_only: $crate is compiled for a library user (default-features = false)" >&2
     exit 1
@@ -39,4 +39,12 @@ for crate in clap indicatif ctrlc; do
 done
 out="$(CARGO_TARGET_DIR="$root/target" cargo run -q --manifest-path "$work/Cargo.toml")"
 grep -q "^H_s at t = 1 s: " <<<"$out" || { echo "library_only: unexpected output: $out" >&2; exit 1; }
-echo "library_only: the README's Rust example ran without clap, indicatif or ctrlc: $out"
+# None of the embedded assets: three.js (feature `view`) and the DejaVu Sans font (feature `plot`).
+bin="$root/target/debug/uses-eulerdyn"
+for marker in OrbitControls "DejaVu Sans"; do
+  if grep -q "$marker" "$bin"; then
+    echo "library_only: the core's binary embeds '$marker' (an asset of a feature that is off)" >&2
+    exit 1
+  fi
+done
+echo "library_only: the README's Rust example ran with the core only (no clap, indicatif, ctrlc, plotters, resvg, rayon or rand): $out"
