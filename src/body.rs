@@ -32,17 +32,39 @@ impl InvalidBody {
 #[serde(tag = "type", rename_all = "snake_case")]
 pub enum Shape {
     /// Thin disk of radius R: I = mR²·diag(1/4, 1/4, 1/2).
-    ThinDisk { radius: f64 },
+    ThinDisk {
+        /// R (m).
+        radius: f64,
+    },
     /// Solid disk of radius R and thickness h: I_xx = I_yy = m(3R² + h²)/12, I_zz = mR²/2.
-    Disk { radius: f64, thickness: f64 },
+    Disk {
+        /// R (m).
+        radius: f64,
+        /// h (m).
+        thickness: f64,
+    },
     /// Thin rod of length l along body x: I = (ml²/12)·diag(0, 1, 1).
-    ThinRod { length: f64 },
+    ThinRod {
+        /// l (m).
+        length: f64,
+    },
     /// Solid sphere of radius R: I = (2/5)mR²·E.
-    Sphere { radius: f64 },
+    Sphere {
+        /// R (m).
+        radius: f64,
+    },
     /// Box with edges (a, b, c) along body x, y, z: I_xx = m(b² + c²)/12, and cyclically.
-    Box { size: [f64; 3] },
+    Box {
+        /// (a, b, c) (m).
+        size: [f64; 3],
+    },
     /// Solid cylinder of radius R and height h along body z: I_xx = I_yy = m(3R² + h²)/12, I_zz = mR²/2.
-    Cylinder { radius: f64, height: f64 },
+    Cylinder {
+        /// R (m).
+        radius: f64,
+        /// h (m).
+        height: f64,
+    },
 }
 
 impl Shape {

@@ -51,6 +51,8 @@
 //! - `cli`: the command line (needs the three above).
 //! ARCHITECTURE.md draws them and says where a new motion, effect, method or command goes.
 
+#![warn(missing_docs)]
+
 pub mod analysis;
 pub mod body;
 pub mod effects;

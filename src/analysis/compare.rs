@@ -22,6 +22,7 @@ use crate::simulate::{self, RunError};
 pub enum Oracle {
     /// Torque-free body: ω and attitude (Landau & Lifshitz §37).
     TorqueFree {
+        /// The closed form in principal axes.
         exact: Box<TorqueFreeBody>,
         /// Principal → body: `v_b = r_bp * v_p`; its columns are the principal axes in body axes.
         r_bp: UnitQuaternion<f64>,
@@ -35,6 +36,7 @@ pub enum Oracle {
     /// Torque-free symmetric gyrostat (I₁ = I₂, body axes principal, balanced wheels on the symmetry axis at a
     /// constant relative spin): ω, attitude and H_s (Hughes §3.5; [`SymmetricTorqueFree::gyrostat`]).
     SymmetricGyrostat {
+        /// The closed form (the symmetric top with the wheels' h added).
         exact: Box<SymmetricTorqueFree>,
         /// T = ½ ωᵀIω + Σ (J_k Ω_k (a_k·ω) + ½ J_k Ω_k²), constant.
         energy: f64,
@@ -206,7 +208,9 @@ struct Exact {
 /// relative difference is `abs / scale`.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Largest {
+    /// The largest absolute difference (the quantity's unit).
     pub abs: f64,
+    /// The largest magnitude of the quantity seen.
     pub scale: f64,
 }
 
@@ -229,12 +233,17 @@ impl Largest {
 /// Differences between two sources, per quantity.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Differences {
+    /// |Δω_b| (rad/s).
     pub omega: Largest,
+    /// |ΔH_s| (kg·m²/s).
     pub h_s: Largest,
     /// Angle of the rotation between the two attitudes (rad; absolute).
     pub attitude: Largest,
+    /// |ΔT| (J).
     pub energy: Largest,
+    /// Δ|H| (kg·m²/s).
     pub h_norm: Largest,
+    /// |ΔM_s| (N·m).
     pub moment: Largest,
 }
 
@@ -314,10 +323,13 @@ pub struct ComparisonRow {
 
 /// The outcome of `compare`.
 pub struct Comparison {
+    /// The body form against the space form, row by row.
     pub body_vs_space: Differences,
     /// Against the closed form, for the body and the space form, when one applies.
     pub exact: Option<(&'static str, Differences, Differences)>,
+    /// The largest difference allowed (`compare_tolerance`).
     pub tolerance: f64,
+    /// Rows compared.
     pub rows: u64,
     /// What the comparison means for the scene's method, when that needs saying (`exact`, split2/split4).
     pub note: Option<String>,

@@ -11,6 +11,7 @@ use crate::simulate;
 /// A scene's facts at full precision (SI units; body axes unless the name says otherwise).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SceneFacts {
+    /// The scene's `name`.
     pub name: String,
     /// kg.
     pub mass: f64,
@@ -21,17 +22,21 @@ pub struct SceneFacts {
     /// Principal moments about C (kg·m²) and their axes as the columns of `principal_axes_b` (rows written out),
     /// in [`Principal`]'s order.
     pub principal_moments_c: [f64; 3],
+    /// The principal axes (columns), body axes.
     pub principal_axes_b: [[f64; 3]; 3],
     /// `free`, `fixed_axis` or `hinge`.
     pub motion: MotionKind,
     /// The moment center O (C, a gravity pivot, or the axis point) from C (m), and the inertia about it.
     pub moment_center_from_c_b: [f64; 3],
+    /// The inertia tensor about O (kg·m²), rows.
     pub inertia_o_b: [[f64; 3]; 3],
     /// The fixed axis (unit, body axes), for a fixed axis or hinge.
     pub axis_b: Option<[f64; 3]>,
     /// The fixed step taken (s), for fixed-step methods.
     pub step_used: Option<f64>,
+    /// Rows a run writes.
     pub rows: usize,
+    /// What `check` warns of.
     pub warnings: Vec<String>,
     /// The scene as simulated (defaults written in).
     pub spec: SceneSpec,

@@ -87,8 +87,11 @@ fn vector_names(columns: &[Column]) -> Vec<String> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Direction {
+    /// Crossings upward (the value rising through it).
     Up,
+    /// Crossings downward.
     Down,
+    /// Both.
     Both,
 }
 
@@ -96,7 +99,9 @@ pub enum Direction {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Extremum {
+    /// Local maxima.
     Max,
+    /// Local minima.
     Min,
 }
 
@@ -104,7 +109,12 @@ pub enum Extremum {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Condition {
     /// The quantity crossing `value` in `direction`.
-    Crossing { value: f64, direction: Direction },
+    Crossing {
+        /// The value crossed (the quantity's unit).
+        value: f64,
+        /// Which crossings count.
+        direction: Direction,
+    },
     /// Every local extremum of this kind.
     Extremum(Extremum),
 }
@@ -116,7 +126,9 @@ pub struct Event {
     pub name: String,
     /// `when` as written.
     pub when: String,
+    /// The quantity watched (`when`'s column).
     pub quantity: Quantity,
+    /// What makes an occurrence.
     pub condition: Condition,
     /// `stop`: the run ends at the first occurrence.
     pub stop: bool,
@@ -125,9 +137,13 @@ pub struct Event {
 /// The kind of an occurrence: the `direction` column of the events file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {
+    /// An upward crossing.
     Up,
+    /// A downward crossing.
     Down,
+    /// A local maximum.
     Max,
+    /// A local minimum.
     Min,
 }
 
@@ -154,6 +170,7 @@ pub struct Occurrence {
     pub t: f64,
     /// The quantity's value there.
     pub value: f64,
+    /// Its kind: the events file's `direction`.
     pub kind: Kind,
 }
 

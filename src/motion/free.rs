@@ -53,6 +53,7 @@ pub struct FreeBody {
     "the inertia about the moment center has a zero principal moment ({moments:?} kg*m^2): rotation about that axis (e.g. a thin rod's own axis) is undefined, so free rotation is refused; give the body a thickness (shape = \"cylinder\" or principal moments > 0) or use a fixed-axis motion"
 )]
 pub struct SingularInertia {
+    /// The principal moments about the moment center (kg·m²).
     pub moments: [f64; 3],
 }
 
@@ -216,7 +217,9 @@ fn with_attitude_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>) ->
 /// principal form when I_A is diagonal in body axes, [`FreeBody::omega_dot_b`]), q̇ = ½ q ⊗ (0, ω_b).
 #[derive(Debug, Clone)]
 pub struct BodyForm<M: AppliedMoment> {
+    /// The body about its moment center.
     pub body: FreeBody,
+    /// The applied moment M(t, q, ω).
     pub moment: M,
 }
 
@@ -254,7 +257,9 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
 /// and q̇ = ½ q ⊗ (0, ω_b). R is the rotation of the state's quaternion normalised, [`StateRotation`].
 #[derive(Debug, Clone)]
 pub struct SpaceForm<M: AppliedMoment> {
+    /// The body about its moment center.
     pub body: FreeBody,
+    /// The applied moment M(t, q, ω).
     pub moment: M,
 }
 

@@ -19,13 +19,23 @@ use crate::simulate::{self, RunError, RunReport};
 pub enum WriteRunError {
     /// The output cannot be created (a missing directory, the scene file itself): bad input, nothing written.
     #[error("{}: {problem}", file.display())]
-    Output { file: PathBuf, problem: String },
+    Output {
+        /// The output path.
+        file: PathBuf,
+        /// What is wrong with it.
+        problem: String,
+    },
     /// The run failed (diverged, or the integrator gave up) or a file could not be written or saved.
     #[error(transparent)]
     Run(#[from] RunError<io::Error>),
     /// A file could not be written or saved after the run.
     #[error("{}: {problem}", file.display())]
-    Save { file: PathBuf, problem: String },
+    Save {
+        /// The file.
+        file: PathBuf,
+        /// What failed.
+        problem: String,
+    },
 }
 
 /// Runs `scene` and writes its CSV to `path` and its [`Sidecar`] to `path.meta.json` (none beside a device or a

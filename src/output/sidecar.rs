@@ -25,9 +25,13 @@ pub fn sidecar_path(csv: &Path) -> PathBuf {
 /// The whole document.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Sidecar {
+    /// The version of eulerdyn that wrote the file (`Cargo.toml`), which says which contract it follows.
     pub eulerdyn_version: String,
+    /// The scene as simulated.
     pub scene: SidecarScene,
+    /// The method and its settings.
     pub solver: SidecarSolver,
+    /// The run's effort and its energy drift.
     pub statistics: Statistics,
     /// What the run warned of (a coarse fixed step, a drifting energy), as printed on stderr.
     pub warnings: Vec<String>,
@@ -50,8 +54,11 @@ pub struct SidecarEvents {
 /// One located event: the events file's row.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SidecarEvent {
+    /// The event's `name`.
     pub event: String,
+    /// The time it occurred (s), located to 1e-13 s.
     pub t: f64,
+    /// The quantity's value there (its column's unit).
     pub value: f64,
     /// `up`, `down`, `max` or `min`.
     pub direction: String,
@@ -62,7 +69,9 @@ pub struct SidecarEvent {
 pub struct SidecarScene {
     /// The scene file as given on the command line (`<dict>` from Python, absent for a scene built in code).
     pub path: Option<String>,
+    /// The scene's `name`.
     pub name: String,
+    /// The scene's `description`.
     pub description: String,
     /// `free`, `fixed_axis` or `hinge`.
     pub motion: MotionKind,
@@ -77,27 +86,40 @@ pub struct SidecarScene {
 /// `solver`: the method and its settings as run.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SidecarSolver {
+    /// The method (`rk4`, `dopri5`, `dop853`, `split2`, `split4`, `exact`).
     pub method: String,
+    /// The Runge–Kutta implementation (`native` or `ode_solvers`).
     pub backend: String,
     /// The form of Euler's equation integrated (`body` or `space`).
     pub frame: String,
+    /// Relative tolerance of the adaptive methods.
     pub rtol: f64,
+    /// Absolute tolerance of the adaptive methods.
     pub atol: f64,
+    /// The step asked for (s): the first step of an adaptive method, the step of a fixed-step one.
     pub dt: f64,
+    /// Whether the method takes a fixed step.
     pub fixed_step: bool,
     /// The fixed step actually taken (s), for fixed-step methods.
     pub step_used: Option<f64>,
+    /// The end time (s).
     pub t_end: f64,
+    /// The time between rows (s).
     pub every: f64,
 }
 
 /// `statistics`: the run's effort.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Statistics {
+    /// Steps taken (accepted).
     pub steps: u64,
+    /// Steps rejected by an adaptive method's error control.
     pub rejected_steps: u64,
+    /// Evaluations of the right-hand side (the equations of motion).
     pub rhs_evaluations: u64,
+    /// Rows written to the CSV.
     pub rows: u64,
+    /// Wall-clock time of the run (s).
     pub wall_seconds: f64,
     /// Relative drift of T + V where the scene conserves it.
     pub energy_drift: Option<f64>,
@@ -106,8 +128,11 @@ pub struct Statistics {
 /// One CSV column: its name, SI unit and meaning.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SidecarColumn {
+    /// The column's header.
     pub name: String,
+    /// Its SI unit (`1` for a number without unit).
     pub unit: String,
+    /// What it is, with its frame and the point a moment is about.
     pub meaning: String,
 }
 

@@ -263,13 +263,21 @@ pub fn flag_value<T: Named>(
 /// before their names are checked.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Flags<'a> {
+    /// `--method`.
     pub method: Option<&'a str>,
+    /// `--frame` (the form integrated).
     pub frame: Option<&'a str>,
+    /// `--backend`.
     pub backend: Option<&'a str>,
+    /// `--rtol`.
     pub rtol: Option<f64>,
+    /// `--atol`.
     pub atol: Option<f64>,
+    /// `--dt` (s).
     pub dt: Option<f64>,
+    /// `--t-end` (s).
     pub t_end: Option<f64>,
+    /// `--every` (s).
     pub every: Option<f64>,
 }
 

@@ -19,13 +19,19 @@ use crate::sample::{ColumnSet, rotor_columns};
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverConfig {
+    /// The method (`solver.method`).
     pub method: Method,
     /// The form of Euler's equation integrated (the scene file's `solver.frame`).
     pub form: Form,
+    /// The Runge–Kutta implementation (`solver.backend`).
     pub backend: Backend,
+    /// Relative tolerance (`solver.rtol`).
     pub rtol: f64,
+    /// Absolute tolerance (`solver.atol`).
     pub atol: f64,
+    /// The step (`solver.dt`, s).
     pub dt: f64,
+    /// The end time (`solver.t_end`, s).
     pub t_end: f64,
 }
 
@@ -35,7 +41,9 @@ pub enum Motion {
     /// Free rotation from the initial angular velocity (body axes, rad/s), about the moment center
     /// (C, or the pivot of a gravity effect).
     Free {
+        /// ω at t = 0, body axes (rad/s).
         omega0_b: Vector3<f64>,
+        /// The body about its moment center.
         body: FreeBody,
         /// The body with its rotors (`[[body.rotor]]`), when it has any.
         gyrostat: Option<Box<Gyrostat>>,
@@ -161,18 +169,24 @@ impl Scene {
 /// A validated scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    /// `name`.
     pub name: String,
+    /// `description`.
     pub description: String,
+    /// The body: its mass distribution (`[body]`).
     pub body: RigidBody,
     /// The mass center C from the reference origin, body axes (m): zero without point masses. Every position
     /// in a scene file is measured from the reference origin; every position in the validated scene from C.
     pub center_b: Vector3<f64>,
+    /// The motion (`[motion]`).
     pub motion: Motion,
     /// Attitude at t = 0 (body → space).
     pub attitude0: UnitQuaternion<f64>,
+    /// The effects (`[[effect]]`), in order.
     pub effects: Vec<Effect>,
     /// `[[event]]`s to locate between the rows.
     pub events: Vec<Event>,
+    /// `[solver]`.
     pub solver: SolverConfig,
     /// Row times: k·every, then t_end.
     pub schedule: Schedule,
@@ -189,6 +203,8 @@ pub struct Scene {
 /// Where a scene came from: its file (or `<dict>` for a Python dict) and the text as written.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneSource {
+    /// The scene file (`<dict>` for a Python dict).
     pub path: std::path::PathBuf,
+    /// Its text as written.
     pub text: String,
 }

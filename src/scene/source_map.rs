@@ -116,6 +116,7 @@ struct Entry {
 }
 
 impl<'a> SourceMap<'a> {
+    /// The map of a scene file's `text`.
     pub fn new(text: &'a str) -> Self {
         Self { text }
     }

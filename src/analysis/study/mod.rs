@@ -96,8 +96,11 @@ impl StudyOptions {
 pub struct StudyRow {
     /// The curve's label: the method's name, with `/ode_solvers` for that backend.
     pub method: String,
+    /// The method.
     pub method_name: Method,
+    /// Its implementation.
     pub backend: Backend,
+    /// The form of Euler's equation integrated.
     pub frame: Form,
     /// Relative tolerance (adaptive methods whose result depends on it).
     pub rtol: Option<f64>,
@@ -117,8 +120,11 @@ pub struct StudyRow {
     pub err_h_s: Option<f64>,
     /// Median wall time of the integration (s).
     pub wall_s: f64,
+    /// Steps taken.
     pub steps: u64,
+    /// Steps rejected.
     pub rejected: u64,
+    /// Right-hand-side evaluations.
     pub evals: u64,
     /// Timed repeats behind `wall_s`.
     pub repeats: usize,
@@ -169,6 +175,7 @@ pub struct Cheapest {
 pub struct Skipped {
     /// Method label (`exact`, `dop853/ode_solvers`, …).
     pub method: String,
+    /// Why it was not run.
     pub reason: String,
 }
 
@@ -179,6 +186,7 @@ pub struct Study {
     pub scene_path: PathBuf,
     /// The scene's name.
     pub scene_name: String,
+    /// The end time of every run (s).
     pub t_end: f64,
     /// Rows of every run.
     pub rows_per_run: usize,
@@ -206,17 +214,32 @@ pub enum StudyError {
     Scene(#[from] SceneError),
     /// The scene cannot be studied (too many rows, t_end = 0, no applicable method).
     #[error("{}: {problem}", file.display())]
-    Unsuitable { file: PathBuf, problem: String },
+    Unsuitable {
+        /// The scene file.
+        file: PathBuf,
+        /// Why.
+        problem: String,
+    },
     /// The reference run failed.
     #[error("{}: the reference run failed: {problem}", file.display())]
-    Reference { file: PathBuf, problem: String },
+    Reference {
+        /// The scene file.
+        file: PathBuf,
+        /// Why it failed.
+        problem: String,
+    },
     /// The study was stopped before it finished ([`accuracy_until`]).
     #[error("{}: the study was interrupted", file.display())]
-    Interrupted { file: PathBuf },
+    Interrupted {
+        /// The scene file.
+        file: PathBuf,
+    },
     /// An output file cannot be created (bad path: exit 2) or written (exit 1).
     #[error("{}: {problem}", file.display())]
     Output {
+        /// The output path.
         file: PathBuf,
+        /// What is wrong.
         problem: String,
         /// Whether it is bad input (the path) rather than a failure to write.
         input: bool,

@@ -34,6 +34,7 @@ pub fn format_seconds(s: f64) -> String {
 pub struct CurveCost {
     /// The curve's label (`dop853`, `dop853/ode_solvers`).
     pub method: String,
+    /// The form integrated.
     pub frame: Form,
     /// Index into [`Study::rows`] of the fastest run of the curve reaching each target and counting for it (the
     /// curve converges there: [`convergence`]).

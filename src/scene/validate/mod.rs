@@ -26,13 +26,21 @@ pub use solver::{MAX_FIXED_STEPS, MAX_ROWS};
 /// A key set here is named `solver.dt (from --dt)` in messages.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Overrides {
+    /// `--method`.
     pub method: Option<Method>,
+    /// `--frame` (the form integrated).
     pub frame: Option<Form>,
+    /// `--backend`.
     pub backend: Option<Backend>,
+    /// `--rtol`.
     pub rtol: Option<f64>,
+    /// `--atol`.
     pub atol: Option<f64>,
+    /// `--dt` (s).
     pub dt: Option<f64>,
+    /// `--t-end` (s).
     pub t_end: Option<f64>,
+    /// `--every` (s).
     pub every: Option<f64>,
 }
 
