@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 use crate::effects::Effect;
 use crate::events::Occurrence;
 use crate::sample::Column;
-use crate::scene::{MotionKind, Scene, SceneSpec};
+use crate::scene::{Facts, MotionKind, Scene, SceneSpec};
 use crate::simulate::{self, RunReport};
 
 /// The sidecar of the run whose CSV is `csv`: `csv` with `.meta.json` appended.
@@ -40,6 +40,9 @@ pub struct Sidecar {
     /// The located `[[event]]`s, where the scene has any.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub events: Option<SidecarEvents>,
+    /// What the scene conserves ([`Facts`]); absent in a sidecar written before 0.2.
+    #[serde(default)]
+    pub facts: Option<Facts>,
 }
 
 /// `events`: the events file beside the CSV and its occurrences.
@@ -182,6 +185,7 @@ impl Sidecar {
                 })
                 .collect(),
             events: None,
+            facts: Some(scene.facts()),
         }
     }
 

@@ -3,6 +3,7 @@
 
 pub mod advice;
 mod checks;
+mod facts;
 mod file;
 mod model;
 pub mod source_map;
@@ -11,6 +12,7 @@ mod template;
 mod user_moment;
 mod validate;
 
+pub use facts::{Facts, Invariant};
 #[cfg(feature = "sweep")]
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};

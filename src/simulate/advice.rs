@@ -7,7 +7,6 @@
 
 use std::fmt;
 
-use crate::effects::Effect;
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 
@@ -67,8 +66,8 @@ fn three_digits(x: f64) -> f64 {
     format!("{x:.2e}").parse().unwrap_or(x)
 }
 
-/// Follows E = T + V over the rows of a scene that conserves it — a free body whose only effect, if any, is
-/// gravity (about C or a fixed pivot) — and keeps its largest relative drift |E(t) − E₀| / (T₀ + |V₀|).
+/// Follows E = T + V over the rows of a free body whose [`Facts`](crate::scene::Facts) say it conserves its energy
+/// (T, or T + V under gravity alone) and keeps its largest relative drift |E(t) − E₀| / (T₀ + |V₀|).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EnergyWatch {
     start: Option<(f64, f64)>,
@@ -76,20 +75,11 @@ pub struct EnergyWatch {
 }
 
 impl EnergyWatch {
-    /// The watch of `scene`; `None` when the scene does not conserve its energy (torques, damping, a driven axis,
-    /// a rotor's motor or imbalance).
+    /// The watch of a free body that conserves its energy (`scene.facts()`); `None` otherwise (torques, damping,
+    /// a rotor's motor or imbalance; a prescribed axis, whose energy is given, and a hinge are not watched).
     pub fn of(scene: &Scene) -> Option<Self> {
-        let free = match &scene.motion {
-            Motion::Free { gyrostat, .. } => gyrostat
-                .as_ref()
-                .is_none_or(|g| g.wheels_spin_freely() && !g.imbalanced()),
-            _ => false,
-        };
-        let conservative = scene
-            .effects
-            .iter()
-            .all(|e| matches!(e, Effect::Gravity { .. }));
-        (free && conservative).then_some(Self {
+        let free = matches!(scene.motion, Motion::Free { .. });
+        (free && scene.facts().conserved_energy().is_some()).then_some(Self {
             start: None,
             drift: 0.0,
         })

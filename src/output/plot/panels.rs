@@ -7,7 +7,7 @@ use plotters::style::RGBColor;
 
 use super::Panel;
 use super::series::{RunSeries, SceneFacts};
-use crate::scene::MotionKind;
+use crate::scene::Invariant;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
 /// legend says so.
@@ -278,28 +278,21 @@ fn body_and_space_panel(run: &RunSeries, title: &str, symbol: &str, quantity: &s
     PanelPlot::linear(title, &format!("{symbol} ({unit})"), curves)
 }
 
-/// The CSV columns of the scene's invariants (of |H|, T, T + V and H_s,z), or `None` when there is no sidecar to
-/// tell. Free motion and a hinge keep T and |H| with no effects, and T + V under gravity alone (free motion about
-/// a pivot also H_s,z, the component of H along vertical gravity, whose moment is horizontal); a prescribed
-/// fixed-axis motion keeps T and |H| unless it accelerates; torques, damping, a turning carrier and a rotor's
-/// imbalance leave none.
+/// The CSV columns of the drift curves of the scene's invariants ([`Facts`]: |H|, T, T + V, and H_s,z where H_s
+/// is not conserved whole), or `None` when the sidecar does not tell (none, or one written before 0.2).
 pub(super) fn invariants(scene: Option<&SceneFacts>) -> Option<Vec<&'static str>> {
-    let scene = scene?;
-    let only_gravity = scene.effects.iter().all(|e| e == "gravity");
-    Some(match scene.motion {
-        _ if scene.carried || scene.imbalanced => vec![],
-        MotionKind::FixedAxis if scene.accelerated => vec![],
-        MotionKind::FixedAxis => vec!["H_norm", "energy"],
-        // A rotor's motor may do work: |H| alone is kept (the energy only with free wheels, not told here).
-        _ if scene.rotors && scene.effects.is_empty() => vec!["H_norm"],
-        _ if scene.rotors => vec![],
-        _ if scene.effects.is_empty() => vec!["H_norm", "energy"],
-        MotionKind::Free if only_gravity && scene.vertical_gravity => {
-            vec!["energy_total", "H_s_z"]
-        }
-        _ if only_gravity => vec!["energy_total"],
-        _ => vec![],
-    })
+    let facts = scene?.facts.as_ref()?;
+    let whole_h_s = facts.conserves(Invariant::HSpaceX);
+    Some(
+        (facts.invariants.iter())
+            .filter(|i| match i {
+                Invariant::HSpaceX | Invariant::HSpaceY => false,
+                Invariant::HSpaceZ => !whole_h_s,
+                _ => true,
+            })
+            .map(|i| i.column())
+            .collect(),
+    )
 }
 
 /// The symbol, colour and unit of a drift curve's quantity.
@@ -375,72 +368,5 @@ fn drift_panel(run: &RunSeries) -> PanelPlot {
         log: true,
         notes,
         events: Vec::new(),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn scene(motion: MotionKind, effects: &[&str], accelerated: bool) -> SceneFacts {
-        SceneFacts {
-            name: "s".into(),
-            method: "dop853".into(),
-            frame: "body".into(),
-            motion,
-            effects: effects.iter().map(|e| e.to_string()).collect(),
-            accelerated,
-            vertical_gravity: true,
-            rotors: false,
-            imbalanced: false,
-            carried: false,
-        }
-    }
-
-    #[test]
-    fn the_invariants_are_those_the_scene_has() {
-        assert_eq!(invariants(None), None);
-        let both = Some(vec!["H_norm", "energy"]);
-        assert_eq!(invariants(Some(&scene(MotionKind::Free, &[], false))), both);
-        assert_eq!(
-            invariants(Some(&scene(MotionKind::Hinge, &[], false))),
-            both
-        );
-        assert_eq!(
-            invariants(Some(&scene(MotionKind::FixedAxis, &["gravity"], false))),
-            both
-        );
-        assert_eq!(
-            invariants(Some(&scene(MotionKind::FixedAxis, &[], true))),
-            Some(vec![])
-        );
-        assert_eq!(
-            invariants(Some(&scene(MotionKind::Free, &["gravity"], false))),
-            Some(vec!["energy_total", "H_s_z"])
-        );
-        let tilted_gravity = SceneFacts {
-            vertical_gravity: false,
-            ..scene(MotionKind::Free, &["gravity"], false)
-        };
-        assert_eq!(
-            invariants(Some(&tilted_gravity)),
-            Some(vec!["energy_total"])
-        );
-        assert_eq!(
-            invariants(Some(&scene(MotionKind::Hinge, &["gravity"], false))),
-            Some(vec!["energy_total"])
-        );
-        assert_eq!(
-            invariants(Some(&scene(
-                MotionKind::Hinge,
-                &["gravity", "torque"],
-                false
-            ))),
-            Some(vec![])
-        );
-        assert_eq!(
-            invariants(Some(&scene(MotionKind::Free, &["damping"], false))),
-            Some(vec![])
-        );
     }
 }

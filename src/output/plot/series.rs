@@ -13,7 +13,7 @@ use super::{Panel, PlotError};
 use crate::output::events_file::{EventRow, run_events};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
-use crate::scene::{EffectSpec, MotionKind, MotionSpec};
+use crate::scene::{Facts, MotionKind};
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -42,18 +42,8 @@ pub(super) struct SceneFacts {
     pub(super) method: String,
     pub(super) frame: String,
     pub(super) motion: MotionKind,
-    /// The effects' types (`gravity`, `torque`, `damping`), as listed.
-    pub(super) effects: Vec<String>,
-    /// A prescribed fixed-axis motion with a nonzero angular acceleration (`motion.accel`).
-    pub(super) accelerated: bool,
-    /// Every gravity effect's `g` is along space z (so that, about a fixed pivot, H_s,z is an invariant).
-    pub(super) vertical_gravity: bool,
-    /// The body has rotors (`[[body.rotor]]`), whose motors may do work.
-    pub(super) rotors: bool,
-    /// A rotor has an imbalance, whose turning moment changes |H| too.
-    pub(super) imbalanced: bool,
-    /// The axis is in a turning carrier (`motion.carrier`), which does work on the body.
-    pub(super) carried: bool,
+    /// What the scene conserves (the sidecar's `facts`), `None` in a sidecar written before 0.2.
+    pub(super) facts: Option<Facts>,
 }
 
 /// The curves read from a run's CSV, ready to draw.
@@ -364,30 +354,13 @@ fn scene_file_advice(file: &Path) -> String {
     )
 }
 
-/// The scene's name, method, motion and effects from the run's sidecar ([`Sidecar`]); the scene as simulated
-/// (defaults written in) says whether a prescribed motion accelerates and where gravity points.
+/// The scene's name, method, motion and what it conserves, from the run's sidecar ([`Sidecar`]).
 fn scene_facts(sidecar: &Sidecar) -> SceneFacts {
-    let spec = &sidecar.scene.spec;
-    let accel = match &spec.motion {
-        Some(MotionSpec::FixedAxis(m)) => m.accel,
-        _ => 0.0,
-    };
-    let vertical_gravity = spec.effect.iter().all(|e| match e {
-        EffectSpec::Gravity { g, .. } => g[0] == 0.0 && g[1] == 0.0,
-        _ => true,
-    });
     SceneFacts {
         name: sidecar.scene.name.clone(),
         method: sidecar.solver.method.clone(),
         frame: sidecar.solver.frame.clone(),
         motion: sidecar.scene.motion,
-        effects: sidecar.scene.effects.clone(),
-        accelerated: accel != 0.0,
-        vertical_gravity,
-        rotors: !spec.body.rotor.is_empty(),
-        imbalanced: (spec.body.rotor.iter())
-            .any(|r| r.imbalance_static_gmm != 0.0 || r.imbalance_dynamic_gmm2 != 0.0),
-        carried: (spec.motion.as_ref())
-            .is_some_and(|m| m.axis().is_some_and(|a| a.carrier.is_some())),
+        facts: sidecar.facts.clone(),
     }
 }

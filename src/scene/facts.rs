@@ -1,0 +1,208 @@
+//! What a scene conserves, as one typed value ([`Facts`]) computed from the validated scene: the run's energy
+//! watch, the sidecar's `facts`, `check` and the plot's drift panel all read it instead of deciding again.
+//!
+//! The invariants (Rigid-body dynamics, lecture notes, Thms 24–25; Landau & Lifshitz §§33–35):
+//! - free motion with no effect: H_s (Ḣ_s = M_s = 0, whatever the rotors' motors do: their torques are internal),
+//!   hence |H|; and T when no motor does work (no rotors, or every wheel spinning freely);
+//! - free motion about a fixed pivot under gravity alone: T + V when no motor does work, and H_s,z when g is along
+//!   space z (gravity's moment r × m g is horizontal);
+//! - a hinge: T with no effect, T + V under gravity alone;
+//! - a prescribed fixed axis turning steadily: T and |H| (H_s turns with the body; its magnitude does not);
+//! - nothing with torques, damping or a user's law, an accelerating prescribed axis, a turning carrier (which
+//!   does work on the body), or an imbalanced wheel (its turning moment changes H and T).
+
+use serde::{Deserialize, Serialize};
+
+use super::model::{Motion, Scene};
+use super::spec::MotionSpec;
+use crate::effects::Effect;
+
+/// One conserved quantity, named by its CSV column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub enum Invariant {
+    /// The kinetic energy T (`energy`, J).
+    #[serde(rename = "energy")]
+    Energy,
+    /// T + V (`energy_total`, J), under gravity.
+    #[serde(rename = "energy_total")]
+    EnergyTotal,
+    /// |H| (`H_norm`, kg·m²/s).
+    #[serde(rename = "H_norm")]
+    HNorm,
+    /// H_s,x (`H_s_x`, kg·m²/s, space axes).
+    #[serde(rename = "H_s_x")]
+    HSpaceX,
+    /// H_s,y (`H_s_y`).
+    #[serde(rename = "H_s_y")]
+    HSpaceY,
+    /// H_s,z (`H_s_z`).
+    #[serde(rename = "H_s_z")]
+    HSpaceZ,
+}
+
+impl Invariant {
+    /// The CSV column that holds it.
+    ///
+    /// ```
+    /// use eulerdyn::scene::Invariant;
+    /// assert_eq!(Invariant::HSpaceZ.column(), "H_s_z");
+    /// ```
+    pub fn column(self) -> &'static str {
+        match self {
+            Invariant::Energy => "energy",
+            Invariant::EnergyTotal => "energy_total",
+            Invariant::HNorm => "H_norm",
+            Invariant::HSpaceX => "H_s_x",
+            Invariant::HSpaceY => "H_s_y",
+            Invariant::HSpaceZ => "H_s_z",
+        }
+    }
+}
+
+/// What a scene conserves (the module's rules), in the order: energy, then momentum.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Facts {
+    /// The conserved quantities, by their columns (`energy`, `H_s_x`…`H_s_z`, `H_norm` for a torque-free body;
+    /// `energy_total` and `H_s_z` for a heavy top).
+    pub invariants: Vec<Invariant>,
+}
+
+impl Facts {
+    /// The facts of `scene`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, Invariant, SceneSpec, ShapeSpec};
+    /// let scene = SceneSpec::new(BodySpec::shape(1.0, ShapeSpec::sphere(0.1)), 1.0, 0.01)
+    ///     .with_omega([0.0, 0.0, 3.0])
+    ///     .build()?;
+    /// let facts = scene.facts();
+    /// assert!(facts.conserves(Invariant::Energy) && facts.conserves(Invariant::HSpaceX));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn of(scene: &Scene) -> Self {
+        let gravity_only = scene
+            .effects
+            .iter()
+            .all(|e| matches!(e, Effect::Gravity { .. }));
+        let vertical_gravity = scene.effects.iter().all(|e| match e {
+            Effect::Gravity { g_s, .. } => g_s.x == 0.0 && g_s.y == 0.0,
+            _ => true,
+        });
+        let torque_free = scene.effects.is_empty();
+        let carried = (scene.spec.motion.as_ref())
+            .and_then(MotionSpec::axis)
+            .is_some_and(|a| a.carrier.is_some());
+        use Invariant::*;
+        let invariants = match &scene.motion {
+            Motion::Free { gyrostat, .. } => {
+                if gyrostat.as_ref().is_some_and(|g| g.imbalanced()) {
+                    vec![]
+                } else {
+                    let no_motor_work = gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely());
+                    let energy = if torque_free { Energy } else { EnergyTotal };
+                    let mut kept = Vec::new();
+                    if no_motor_work && gravity_only {
+                        kept.push(energy);
+                    }
+                    if torque_free {
+                        kept.extend([HSpaceX, HSpaceY, HSpaceZ, HNorm]);
+                    } else if gravity_only && vertical_gravity {
+                        kept.push(HSpaceZ);
+                    }
+                    kept
+                }
+            }
+            Motion::Hinge(_) if carried => vec![],
+            Motion::Hinge(_) if torque_free => vec![Energy, HNorm],
+            Motion::Hinge(_) if gravity_only => vec![EnergyTotal],
+            Motion::Hinge(_) => vec![],
+            Motion::FixedAxis(_) => {
+                let accelerated =
+                    matches!(&scene.spec.motion, Some(MotionSpec::FixedAxis(m)) if m.accel != 0.0);
+                if carried || accelerated {
+                    vec![]
+                } else {
+                    vec![Energy, HNorm]
+                }
+            }
+        };
+        Facts { invariants }
+    }
+
+    /// Whether the scene conserves `invariant`.
+    pub fn conserves(&self, invariant: Invariant) -> bool {
+        self.invariants.contains(&invariant)
+    }
+
+    /// The conserved energy (T or T + V), if any: what the run's energy watch follows.
+    pub fn conserved_energy(&self) -> Option<Invariant> {
+        (self.invariants.iter())
+            .copied()
+            .find(|i| matches!(i, Invariant::Energy | Invariant::EnergyTotal))
+    }
+}
+
+impl Scene {
+    /// What the scene conserves ([`Facts::of`]).
+    pub fn facts(&self) -> Facts {
+        Facts::of(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Invariant::*;
+    use super::*;
+    use crate::scene::{Overrides, parse};
+
+    /// The invariants of the bundled scenario `name` (scenarios/NAME.toml).
+    fn of_scenario(name: &str) -> Vec<Invariant> {
+        let path = std::path::PathBuf::from(format!("scenarios/{name}.toml"));
+        let text = std::fs::read_to_string(&path).expect("a bundled scenario");
+        let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
+        scene.facts().invariants
+    }
+
+    #[test]
+    fn each_motion_conserves_what_its_equations_say() {
+        // Torque-free: T and H_s (Landau & Lifshitz §§33–35), so |H| too.
+        let torque_free = vec![Energy, HSpaceX, HSpaceY, HSpaceZ, HNorm];
+        assert_eq!(of_scenario("tennis_racket"), torque_free);
+        // A heavy top about its pivot: T + V and H_s,z (gravity's moment is horizontal).
+        assert_eq!(of_scenario("heavy_top"), vec![EnergyTotal, HSpaceZ]);
+        // A hinge under gravity alone: T + V.
+        assert_eq!(of_scenario("rod_pendulum"), vec![EnergyTotal]);
+        // A steady prescribed axis: T and |H|; accelerating, or in a turning carrier: nothing.
+        assert_eq!(of_scenario("tilted_disk"), vec![Energy, HNorm]);
+        assert_eq!(of_scenario("disk_spin_up"), vec![]);
+        assert_eq!(of_scenario("turbine_yawing_aircraft"), vec![]);
+        // A sine torque or damping: nothing.
+        assert_eq!(of_scenario("sine_torque"), vec![]);
+        assert_eq!(of_scenario("damped_spin"), vec![]);
+        // A gyrostat whose wheels hold their relative spin (a motor at work): H_s, not T.
+        assert_eq!(
+            of_scenario("kelvin_gyrostat"),
+            vec![HSpaceX, HSpaceY, HSpaceZ, HNorm]
+        );
+    }
+
+    #[test]
+    fn the_conserved_energy_is_t_or_t_plus_v() {
+        let facts = |invariants| Facts { invariants };
+        assert_eq!(facts(vec![Energy, HNorm]).conserved_energy(), Some(Energy));
+        assert_eq!(
+            facts(vec![EnergyTotal, HSpaceZ]).conserved_energy(),
+            Some(EnergyTotal)
+        );
+        assert_eq!(facts(vec![HSpaceZ]).conserved_energy(), None);
+    }
+
+    #[test]
+    fn the_sidecar_names_the_invariants_by_their_columns() {
+        let json = serde_json::to_string(&Facts {
+            invariants: vec![EnergyTotal, HSpaceZ],
+        })
+        .unwrap();
+        assert_eq!(json, r#"{"invariants":["energy_total","H_s_z"]}"#);
+    }
+}
