@@ -592,7 +592,13 @@ fn the_fan_balanced_from_its_measured_table_meets_g63_and_a_check_run_confirms_i
     // The check run: the fan with the corrections, judged by the model that knows its unbalance, meets G 6.3.
     let check = fan_balance(
         &out,
-        &["--grade", "6.3", "--json", "--tolerance-planes", "correction"],
+        &[
+            "--grade",
+            "6.3",
+            "--json",
+            "--tolerance-planes",
+            "correction",
+        ],
     );
     let value: serde_json::Value = serde_json::from_str(&check.expect_code(0).stdout).unwrap();
     let met = value["grade"]["met_before"].as_f64().unwrap();

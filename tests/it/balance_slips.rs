@@ -57,8 +57,12 @@ fn f(v: &Value) -> f64 {
 fn fan_table_in_kg() -> String {
     let text = std::fs::read_to_string(repo_path(FAN_TABLE)).unwrap();
     let slipped = text.replace(",20,", ",0.02,");
-    let bundled = std::fs::read_to_string(repo_path("scenarios/fan_rotor_measured_kg.csv")).unwrap();
-    assert_eq!(bundled, slipped, "scenarios/fan_rotor_measured_kg.csv is the fan's table in kg");
+    let bundled =
+        std::fs::read_to_string(repo_path("scenarios/fan_rotor_measured_kg.csv")).unwrap();
+    assert_eq!(
+        bundled, slipped,
+        "scenarios/fan_rotor_measured_kg.csv is the fan's table in kg"
+    );
     slipped
 }
 
@@ -90,11 +94,22 @@ fn trial_masses_in_kg_are_caught_and_no_verdict_is_given() {
     let target = &json["grade"]["target"];
     assert_eq!(target["verdict"], "unverified");
     assert_eq!(target["verdict_before"], "unverified");
-    assert_eq!(target["pass"], false, "no confident pass in the JSON either");
+    assert_eq!(
+        target["pass"], false,
+        "no confident pass in the JSON either"
+    );
     // With vibration readings (no comparison with the model) the initial grade still gives the slip away.
-    let other = balance_text(&scene, "-0.1,0.08", "0.25", &[&measured[..], &["--readings", "other"]].concat());
+    let other = balance_text(
+        &scene,
+        "-0.1,0.08",
+        "0.25",
+        &[&measured[..], &["--readings", "other"]].concat(),
+    );
     assert!(!other.contains("not the rigid-rotor model's"), "{other}");
-    assert!(other.contains("finer than G 0.4") && other.contains("in kg instead of g"), "{other}");
+    assert!(
+        other.contains("finer than G 0.4") && other.contains("in kg instead of g"),
+        "{other}"
+    );
     assert!(other.contains("unverified against G 6.3"), "{other}");
 }
 
@@ -117,7 +132,12 @@ fn planes_in_mm_are_caught_in_both_modes_and_the_bearing_plane_grade_does_not_de
     // is the rotor's whatever the correction planes (to round-off, 1e-9); the slip is still warned of.
     let right = balance_json(&scene, "-0.1,0.08", "0.25", &["--grade", "6.3"]);
     let slipped = balance_json(&scene, "-100,80", "0.25", &["--grade", "6.3"]);
-    close(f(&slipped["grade"]["met_before"]), f(&right["grade"]["met_before"]), 1e-9, "G");
+    close(
+        f(&slipped["grade"]["met_before"]),
+        f(&right["grade"]["met_before"]),
+        1e-9,
+        "G",
+    );
     assert_eq!(right["warnings"].as_array().unwrap().len(), 0);
     assert_eq!(slipped["warnings"].as_array().unwrap().len(), 2);
     assert_eq!(slipped["grade"]["target"]["verdict_before"], "unverified");
@@ -146,10 +166,20 @@ fn a_clean_table_gets_no_warning_and_a_verdict() {
     let scene = repo_path(FAN);
     let table = repo_path(FAN_TABLE);
     for readings in ["force", "other"] {
-        let extra = ["--grade", "6.3", "--measured", table.to_str().unwrap(), "--readings", readings];
+        let extra = [
+            "--grade",
+            "6.3",
+            "--measured",
+            table.to_str().unwrap(),
+            "--readings",
+            readings,
+        ];
         let text = balance_text(&scene, "-0.1,0.08", "0.25", &extra);
         assert!(!text.contains("warning:"), "{text}");
-        assert!(text.contains("fail against G 6.3") && text.contains("pass against G 6.3"), "{text}");
+        assert!(
+            text.contains("fail against G 6.3") && text.contains("pass against G 6.3"),
+            "{text}"
+        );
     }
     // The fitted coefficients are the model's within the readings' rounding (0.1 N, 1°): within 1 % and 1°.
     let request = Request {
@@ -163,9 +193,18 @@ fn a_clean_table_gets_no_warning_and_a_verdict() {
     };
     let fan = eulerdyn::scene::load(&scene, &Default::default()).unwrap();
     let found = balance_report(&fan, &request).unwrap().influence.unwrap();
-    let model = influence::rigid_rotor_coefficients([-0.4, 0.3], [-0.1, 0.08], 0.25, 50.0 * std::f64::consts::PI);
-    for (ratio, phase) in eulerdyn::analysis::balance::slips::compare_columns(&found.alpha, &model) {
-        assert!((ratio - 1.0).abs() < 0.01 && phase.abs() < 1.0, "{ratio} {phase}");
+    let model = influence::rigid_rotor_coefficients(
+        [-0.4, 0.3],
+        [-0.1, 0.08],
+        0.25,
+        50.0 * std::f64::consts::PI,
+    );
+    for (ratio, phase) in eulerdyn::analysis::balance::slips::compare_columns(&found.alpha, &model)
+    {
+        assert!(
+            (ratio - 1.0).abs() < 0.01 && phase.abs() < 1.0,
+            "{ratio} {phase}"
+        );
     }
 }
 
@@ -200,8 +239,19 @@ fn a_fan_balanced_at_600_rpm_that_runs_at_2950_rpm_is_judged_at_2950() {
     let service = iso::rpm_to_rad_s(2950.0);
     let text = fan_text().replace("rate = 157.07963267948966", &format!("rate = {service}"));
     let scene = write_file(dir.path(), "fan2950.toml", text);
-    let table = write_file(dir.path(), "at600.csv", fan_table_at(iso::rpm_to_rad_s(600.0)));
-    let measured = ["--grade", "6.3", "--rpm", "600", "--measured", table.to_str().unwrap()];
+    let table = write_file(
+        dir.path(),
+        "at600.csv",
+        fan_table_at(iso::rpm_to_rad_s(600.0)),
+    );
+    let measured = [
+        "--grade",
+        "6.3",
+        "--rpm",
+        "600",
+        "--measured",
+        table.to_str().unwrap(),
+    ];
     let out = balance_text(&scene, "-0.1,0.08", "0.25", &measured);
     for expect in [
         "measured runs at 600.000 rpm (62.8319 rad/s, --rpm); readings: bearing forces in N",
@@ -210,7 +260,10 @@ fn a_fan_balanced_at_600_rpm_that_runs_at_2950_rpm_is_judged_at_2950() {
     ] {
         assert!(out.contains(expect), "`{expect}` is not in\n{out}");
     }
-    assert!(!out.contains("warning:"), "the runs at 600 rpm match the model at --rpm\n{out}");
+    assert!(
+        !out.contains("warning:"),
+        "the runs at 600 rpm match the model at --rpm\n{out}"
+    );
     let at_service = balance_json(&scene, "-0.1,0.08", "0.25", &measured);
     let judged_at_600 = balance_json(
         &scene,
@@ -225,7 +278,12 @@ fn a_fan_balanced_at_600_rpm_that_runs_at_2950_rpm_is_judged_at_2950() {
     close(g_service / g_600, 2950.0 / 600.0, 1e-12, "G ∝ Ω");
     // The exact readings give the model's unbalance: the same grade as the model's own (round-off, 1e-9).
     let model = balance_json(&scene, "-0.1,0.08", "0.25", &["--grade", "6.3"]);
-    close(g_service, f(&model["grade"]["met_before"]), 1e-9, "G from the readings");
+    close(
+        g_service,
+        f(&model["grade"]["met_before"]),
+        1e-9,
+        "G from the readings",
+    );
 }
 
 #[test]
@@ -233,7 +291,14 @@ fn a_grade_needs_the_service_speed_of_a_scene_at_rest() {
     let dir = tempfile::tempdir().unwrap();
     let at_rest = fan_text().replace("rate = 157.07963267948966", "rate = 0.0");
     let scene = write_file(dir.path(), "rest.toml", &at_rest);
-    let args = ["balance", scene.to_str().unwrap(), "--planes", "-0.1,0.08", "--radius", "0.25"];
+    let args = [
+        "balance",
+        scene.to_str().unwrap(),
+        "--planes",
+        "-0.1,0.08",
+        "--radius",
+        "0.25",
+    ];
     // --rpm is the runs' speed, not the service speed: it does not stand in for it.
     let out = eulerdyn(args.iter().chain(&["--grade", "6.3", "--rpm", "1500"]));
     assert_eq!(out.code, Some(2));
@@ -249,11 +314,13 @@ fn a_grade_needs_the_service_speed_of_a_scene_at_rest() {
 /// A 2 kg thin disk (R = 0.3 m) turning about its symmetry axis at 100 rad/s in bearings `bearings`, with the
 /// point masses `masses` (kg, at) as its unbalance.
 fn disk(bearings: [f64; 2], masses: &[(f64, [f64; 3])]) -> String {
-    let mut text = String::from(
-        "[body]\nmass = 2.0\nshape = { type = \"thin_disk\", radius = 0.3 }\n",
-    );
+    let mut text =
+        String::from("[body]\nmass = 2.0\nshape = { type = \"thin_disk\", radius = 0.3 }\n");
     for (m, at) in masses {
-        text += &format!("[[body.point_mass]]\nmass = {m}\nat = [{}, {}, {}]\n", at[0], at[1], at[2]);
+        text += &format!(
+            "[[body.point_mass]]\nmass = {m}\nat = [{}, {}, {}]\n",
+            at[0], at[1], at[2]
+        );
     }
     text + &format!(
         "[motion]\ntype = \"fixed_axis\"\naxis = [0.0, 0.0, 1.0]\nrate = 100.0\nbearings = [{}, {}]\n\
@@ -266,7 +333,11 @@ fn disk(bearings: [f64; 2], masses: &[(f64, [f64; 3])]) -> String {
 fn assessed(text: &str, planes: [f64; 2], tolerance: TolerancePlanes) -> iso::Assessment {
     let scene = eulerdyn::scene::parse(Path::new("disk.toml"), text, &Default::default()).unwrap();
     let request = Request {
-        planes: Planes { a: planes[0], b: planes[1], radius: 0.2 },
+        planes: Planes {
+            a: planes[0],
+            b: planes[1],
+            radius: 0.2,
+        },
         grade: Some(6.3),
         rpm: None,
         service_rpm: None,
@@ -288,7 +359,11 @@ fn a_static_unbalance_goes_to_the_bearings_by_the_lever_rule_with_and_without_th
     // 0.6 and 0.4 (ISO 21940-11, 7.2.1, no clamp): each plane at its share, G = U Ω/(1000 m) = 49.75 mm/s
     // (the definition e·Ω of 6.3.1). The same for correction planes between the bearings and outside them.
     for planes in [[-0.1, 0.1], [-0.5, 0.6]] {
-        let g = assessed(&disk([-0.2, 0.3], &masses), planes, TolerancePlanes::Bearings);
+        let g = assessed(
+            &disk([-0.2, 0.3], &masses),
+            planes,
+            TolerancePlanes::Bearings,
+        );
         assert_eq!(g.planes, TolerancePlanes::Bearings);
         assert_eq!(g.z, [-0.2, 0.3]);
         close(g.unbalance[0][0], 600.0, 1e-12, "U_A");
@@ -298,17 +373,35 @@ fn a_static_unbalance_goes_to_the_bearings_by_the_lever_rule_with_and_without_th
     }
     // Bearings at −0.05 and 0.45 m: U_A = 900, U_B = 100; the lever shares 0.9 and 0.1 are clamped to 0.7 and
     // 0.3 (7.2.2): G = (900/0.7)·Ω/(1000 m) = 63.97 mm/s.
-    let g = assessed(&disk([-0.05, 0.45], &masses), [-0.1, 0.1], TolerancePlanes::Bearings);
+    let g = assessed(
+        &disk([-0.05, 0.45], &masses),
+        [-0.1, 0.1],
+        TolerancePlanes::Bearings,
+    );
     close(g.unbalance[0][0], 900.0, 1e-12, "U_A");
     close(g.unbalance[0][1], 100.0, 1e-12, "U_B");
     assert_eq!(g.shares, [0.7, 0.3]);
-    close(g.met[0], 900.0 / 0.7 * 100.0 / (1000.0 * m), 1e-12, "G clamped");
+    close(
+        g.met[0],
+        900.0 / 0.7 * 100.0 / (1000.0 * m),
+        1e-12,
+        "G clamped",
+    );
     // In the correction planes −0.1, 0.3 (last round's allotment): U = 1000·0.3/0.4 = 750 and 250, shares 0.75
     // and 0.25 clamped to 0.7 and 0.3: G = (750/0.7)·Ω/(1000 m) = 53.30 mm/s.
-    let g = assessed(&disk([-0.2, 0.3], &masses), [-0.1, 0.3], TolerancePlanes::Correction);
+    let g = assessed(
+        &disk([-0.2, 0.3], &masses),
+        [-0.1, 0.3],
+        TolerancePlanes::Correction,
+    );
     assert_eq!(g.planes, TolerancePlanes::Correction);
     close(g.unbalance[0][0], 750.0, 1e-12, "U_1");
-    close(g.met[0], 750.0 / 0.7 * 100.0 / (1000.0 * m), 1e-12, "G in the correction planes");
+    close(
+        g.met[0],
+        750.0 / 0.7 * 100.0 / (1000.0 * m),
+        1e-12,
+        "G in the correction planes",
+    );
     assert_eq!(g.target.unwrap().verdict, [Verdict::Fail, Verdict::Pass]);
 }
 
@@ -328,7 +421,11 @@ fn a_couple_unbalance_goes_to_the_bearings_as_a_couple_over_their_span() {
     close(g.unbalance[0][0], 1000.0, 1e-12, "U_1");
     close(g.met[0], 1000.0 / 0.5 * 100.0 / (1000.0 * 2.02), 1e-12, "G");
     // iso::to_planes directly: the same resultant and moment.
-    let [u_a, u_b] = iso::to_planes([phasor(1000.0, 0.0), phasor(1000.0, 180.0)], [-0.1, 0.1], [-0.2, 0.3]);
+    let [u_a, u_b] = iso::to_planes(
+        [phasor(1000.0, 0.0), phasor(1000.0, 180.0)],
+        [-0.1, 0.1],
+        [-0.2, 0.3],
+    );
     assert!((u_a - phasor(400.0, 0.0)).norm() < 1e-9 && (u_b - phasor(400.0, 180.0)).norm() < 1e-9);
 }
 
@@ -351,7 +448,12 @@ fn masses_print_in_g_and_angles_in_0_to_360_once_each() {
     }
     // Measured: the angle is in `corrections` only (no second form of it under `influence`).
     let table = repo_path(FAN_TABLE);
-    let fan = balance_json(&repo_path(FAN), "-0.1,0.08", "0.25", &["--measured", table.to_str().unwrap()]);
+    let fan = balance_json(
+        &repo_path(FAN),
+        "-0.1,0.08",
+        "0.25",
+        &["--measured", table.to_str().unwrap()],
+    );
     assert!(fan["influence"].get("corrections_g").is_none());
     for c in fan["corrections"].as_array().unwrap() {
         assert!((0.0..360.0).contains(&f(&c["angle_deg"])));
@@ -373,6 +475,14 @@ fn balance_onto_its_own_scene_is_refused_and_the_scene_is_untouched() {
         scene.to_str().unwrap(),
     ]);
     assert_eq!(out.code, Some(2), "{}", out.stderr);
-    assert!(out.stderr.contains("would overwrite the scene file"), "{}", out.stderr);
-    assert_eq!(std::fs::read_to_string(&scene).unwrap(), fan_text(), "comments kept");
+    assert!(
+        out.stderr.contains("would overwrite the scene file"),
+        "{}",
+        out.stderr
+    );
+    assert_eq!(
+        std::fs::read_to_string(&scene).unwrap(),
+        fan_text(),
+        "comments kept"
+    );
 }

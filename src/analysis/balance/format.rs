@@ -1,7 +1,7 @@
 //! One format for every figure `eulerdyn balance` prints: numbers to significant digits, angles in [0, 360)
 //! degrees (never 360.0), masses in g.
 
-use super::model::Correction;
+use nalgebra::Vector3;
 
 /// `x` to `digits` significant digits, in exponent form outside 1e-3 ≤ |x| < 1e6 ("0" for zero).
 pub(crate) fn sig(x: f64, digits: usize) -> String {
@@ -29,19 +29,25 @@ pub(crate) fn angle_text(deg: f64) -> String {
     format!("{:.1}", wrap_deg((wrap_deg(deg) * 10.0).round() / 10.0))
 }
 
-/// One correction as every mode prints it: "plane A at -0.1 m: correction 15.42 g at 213.8 deg, at = […] m".
-pub(crate) fn correction_line(plane: &str, c: &Correction) -> String {
-    if c.mass == 0.0 {
-        return format!("plane {plane} at {} m: correction 0 g (none needed)\n", c.z);
+/// One correction as every mode prints it: "plane A at -0.1 m: correction 15.42 g at 213.8 deg, at = […] m":
+/// the plane `plane` at `z` (m), the mass `mass` (kg) at `angle_deg` and its position `at_b` (m, body axes).
+pub(crate) fn correction_line(
+    plane: &str,
+    z: f64,
+    (mass, angle_deg): (f64, f64),
+    at_b: &Vector3<f64>,
+) -> String {
+    if mass == 0.0 {
+        return format!("plane {plane} at {z} m: correction 0 g (none needed)\n");
     }
     format!(
         "plane {plane} at {} m: correction {} g at {} deg, at = [{:.6}, {:.6}, {:.6}] m (body axes, from the reference origin)\n",
-        c.z,
-        sig(c.mass * 1e3, 4),
-        angle_text(c.angle_deg),
-        c.at_b.x,
-        c.at_b.y,
-        c.at_b.z
+        z,
+        sig(mass * 1e3, 4),
+        angle_text(angle_deg),
+        at_b.x,
+        at_b.y,
+        at_b.z
     )
 }
 

@@ -66,7 +66,13 @@ pub fn standard_grade_met(grade: f64) -> Option<f64> {
 pub fn to_planes(u: [Complex<f64>; 2], from: [f64; 2], to: [f64; 2]) -> [Complex<f64>; 2] {
     let [l_a, l_b] = to;
     let span = l_b - l_a;
-    let lever = |k: usize, z: f64| if k == 0 { (l_b - z) / span } else { (z - l_a) / span };
+    let lever = |k: usize, z: f64| {
+        if k == 0 {
+            (l_b - z) / span
+        } else {
+            (z - l_a) / span
+        }
+    };
     [0, 1].map(|k| u[0] * lever(k, from[0]) + u[1] * lever(k, from[1]))
 }
 
@@ -165,7 +171,12 @@ pub fn assess(
     (omega, from_service_rpm): (f64, bool),
     grade: Option<f64>,
 ) -> Assessment {
-    let Judged { mass, z_c, planes, z } = judged;
+    let Judged {
+        mass,
+        z_c,
+        planes,
+        z,
+    } = judged;
     let shares = plane_shares(z[0], z[1], z_c);
     let met = unbalance.map(|u| grade_met(u, shares, mass, omega));
     let target = grade.map(|g| {

@@ -202,7 +202,13 @@ pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, Reques
         Some(found) => measured_unbalance(found, request.planes.radius),
     };
     let mut grade = service_speed.map(|speed| judge(&rotor, request, &unbalance, speed));
-    let warnings = slips::warnings(&rotor, request, influence.as_ref(), runs_omega, grade.as_ref());
+    let warnings = slips::warnings(
+        &rotor,
+        request,
+        influence.as_ref(),
+        runs_omega,
+        grade.as_ref(),
+    );
     if !warnings.is_empty() {
         grade.iter_mut().for_each(Assessment::unverify);
     }

@@ -83,7 +83,7 @@ impl Balance {
             self.reference_name, r.x, r.y, r.z
         );
         for (name, c) in ["A", "B"].iter().zip(&self.corrections) {
-            text += &super::format::correction_line(name, c);
+            text += &super::format::correction_line(name, c.z, (c.mass, c.angle_deg), &c.at_b);
         }
         text += &format!(
             "largest rotating bearing reaction at {} rad/s without effects: {:.6e} N before, {:.6e} N after\n",

@@ -116,7 +116,7 @@ impl Report {
             );
         }
         for (name, c) in PLANES.iter().zip(&self.balance.corrections) {
-            text += &correction_line(name, c);
+            text += &correction_line(name, c.z, (c.mass, c.angle_deg), &c.at_b);
         }
         let v0 = &found.measured_initial;
         text += &format!(
@@ -138,16 +138,24 @@ impl Report {
     fn runs_text(&self) -> String {
         let readings = match self.readings {
             super::Readings::Force => "bearing forces in N (compared with the rigid-rotor model)",
-            super::Readings::Other => "vibration in any unit (--readings other: not compared with the model)",
+            super::Readings::Other => {
+                "vibration in any unit (--readings other: not compared with the model)"
+            }
         };
         match self.runs_speed {
             Some((omega, from_rpm)) => format!(
                 "measured runs at {} rpm ({} rad/s, {}); readings: {readings}\n",
                 sig(omega * 30.0 / std::f64::consts::PI, 6),
                 sig(omega, 6),
-                if from_rpm { "--rpm" } else { "the scene's rate" }
+                if from_rpm {
+                    "--rpm"
+                } else {
+                    "the scene's rate"
+                }
             ),
-            None => format!("measured runs at an unknown speed (no --rpm, the scene at rest); readings: {readings}\n"),
+            None => format!(
+                "measured runs at an unknown speed (no --rpm, the scene at rest); readings: {readings}\n"
+            ),
         }
     }
 

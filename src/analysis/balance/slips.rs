@@ -86,7 +86,11 @@ pub fn compare_columns(fitted: &Matrix2<Phasor>, model: &Matrix2<Phasor>) -> [(f
 }
 
 /// The warning when the fitted coefficients `fitted` are not the model's `model` (at `omega`, rad/s).
-fn coefficient_slip(fitted: &Matrix2<Phasor>, model: &Matrix2<Phasor>, omega: f64) -> Option<String> {
+fn coefficient_slip(
+    fitted: &Matrix2<Phasor>,
+    model: &Matrix2<Phasor>,
+    omega: f64,
+) -> Option<String> {
     let columns = compare_columns(fitted, model);
     let agree = |(ratio, phase): (f64, f64)| {
         (1.0 / AMPLITUDE_LIMIT..=AMPLITUDE_LIMIT).contains(&ratio) && phase.abs() <= PHASE_LIMIT_DEG
@@ -119,7 +123,10 @@ fn coefficient_slip(fitted: &Matrix2<Phasor>, model: &Matrix2<Phasor>, omega: f6
 /// The warning when the initial unbalance is outside every grade of the standard (G 0.4 to G 4000).
 fn grade_slip(grade: &Assessment) -> Option<String> {
     let met = grade.met[0];
-    let (finest, coarsest) = (STANDARD_GRADES[0], STANDARD_GRADES[STANDARD_GRADES.len() - 1]);
+    let (finest, coarsest) = (
+        STANDARD_GRADES[0],
+        STANDARD_GRADES[STANDARD_GRADES.len() - 1],
+    );
     let (side, likely) = if met < finest {
         (
             format!("finer than G {finest}"),
