@@ -80,7 +80,7 @@ fn trial_masses_in_kg_are_caught_and_no_verdict_is_given() {
     // too small, and the rotor seems finer than G 0.4.
     for expect in [
         "warning: the influence coefficients fitted to the table are not the rigid-rotor model's",
-        "plane A 1.00e3 ×",
+        "plane A 1003 × at 0.1 deg, plane B 1000 × at 0.0 deg",
         "in kg instead of g",
         "finer than G 0.4",
         "before: meets G",
