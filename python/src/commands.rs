@@ -2,7 +2,9 @@
 
 use std::path::PathBuf;
 
-use eulerdyn::analysis::balance::{Planes, Request, RequestError, balance_report, table};
+use eulerdyn::analysis::balance::{
+    Planes, Readings, Request, RequestError, TolerancePlanes, balance_report, table,
+};
 use eulerdyn::analysis::compare::{Comparison, compare_until};
 use eulerdyn::analysis::describe::describe;
 use eulerdyn::analysis::study::{self, StudyError, StudyOptions};
@@ -11,7 +13,7 @@ use eulerdyn::simulate::{self, RunFailed};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::{json_to_py, toml_to_py, vec3};
+use crate::convert::{json_to_py, toml_to_py};
 use crate::errors::{no_panic, run_error, run_error_message, scene_error};
 use crate::input::SceneInput;
 use crate::run::{SignalCheck, stop_on};
@@ -203,13 +205,15 @@ pub fn accuracy(
 }
 
 /// Two-plane balancing of a fixed-axis or hinge scene (a path or a dict), as `eulerdyn balance --planes A,B
-/// --radius R [--grade G] [--rpm N] [--measured PHASORS.csv]`. Returns a dict: every key of `--json` (mode,
-/// planes, unbalance_gmm, grade, influence, …), and text (what the command prints), corrections (per plane: plane,
-/// z, mass, mass_g, angle_deg, at_b), reference_b, reference_name, rate, largest_reaction_before/after, scene (the
-/// balanced scene as a dict) and toml (it as a scene file). Raises SceneError for bad input or a scene that cannot
-/// be balanced.
+/// --radius R [--grade G] [--service-rpm N] [--rpm N] [--tolerance-planes bearings|correction] [--measured
+/// PHASORS.csv [--readings force|other]]`. Returns a dict: every key of `--json` (mode, planes, corrections (per
+/// plane: plane, z, mass_g, angle_deg in [0, 360), at_b), unbalance_gmm, grade, influence, warnings, …), and text
+/// (what the command prints), scene (the balanced scene as a dict) and toml (it as a scene file). Raises
+/// SceneError for bad input or a scene that cannot be balanced.
 #[pyfunction]
-#[pyo3(signature = (scene, *, planes, radius, grade=None, rpm=None, measured=None))]
+#[pyo3(signature = (scene, *, planes, radius, grade=None, rpm=None, measured=None, service_rpm=None,
+                    tolerance_planes="bearings", readings="force"))]
+#[allow(clippy::too_many_arguments)]
 pub fn balance<'py>(
     py: Python<'py>,
     scene: &Bound<'py, PyAny>,
@@ -218,8 +222,29 @@ pub fn balance<'py>(
     grade: Option<f64>,
     rpm: Option<f64>,
     measured: Option<PathBuf>,
+    service_rpm: Option<f64>,
+    tolerance_planes: &str,
+    readings: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
     no_panic(|| {
+        let tolerance_planes = match tolerance_planes {
+            "bearings" => TolerancePlanes::Bearings,
+            "correction" => TolerancePlanes::Correction,
+            other => {
+                return Err(crate::errors::SceneError::new_err(format!(
+                    "tolerance_planes={other:?}: give \"bearings\" or \"correction\""
+                )));
+            }
+        };
+        let readings = match readings {
+            "force" => Readings::Force,
+            "other" => Readings::Other,
+            other => {
+                return Err(crate::errors::SceneError::new_err(format!(
+                    "readings={other:?}: give \"force\" or \"other\""
+                )));
+            }
+        };
         let input = SceneInput::from_py(scene)?;
         let measured = match measured {
             Some(path) => {
@@ -236,6 +261,9 @@ pub fn balance<'py>(
             },
             grade,
             rpm,
+            service_rpm,
+            tolerance_planes,
+            readings,
             measured,
         };
         let scene = input.scene(py, &Overrides::default())?;
@@ -247,23 +275,6 @@ pub fn balance<'py>(
         let d = json_to_py(py, &report.json())?.cast_into::<PyDict>()?;
         d.set_item("text", report.text())?;
         let result = &report.balance;
-        let corrections = PyList::empty(py);
-        for (name, c) in ["A", "B"].iter().zip(&result.corrections) {
-            let item = PyDict::new(py);
-            item.set_item("plane", name)?;
-            item.set_item("z", c.z)?;
-            item.set_item("mass", c.mass)?;
-            item.set_item("mass_g", c.mass * 1e3)?;
-            item.set_item("angle_deg", c.angle_deg)?;
-            item.set_item("at_b", vec3(&c.at_b))?;
-            corrections.append(item)?;
-        }
-        d.set_item("corrections", corrections)?;
-        d.set_item("reference_b", vec3(&result.reference_b))?;
-        d.set_item("reference_name", result.reference_name)?;
-        d.set_item("rate", result.rate)?;
-        d.set_item("largest_reaction_before", result.largest_reaction[0])?;
-        d.set_item("largest_reaction_after", result.largest_reaction[1])?;
         let toml_text = result
             .balanced_toml()
             .map_err(crate::errors::RunError::new_err)?;

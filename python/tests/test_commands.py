@@ -136,7 +136,7 @@ def test_balance_of_the_notes_disk():
     m, r, theta, r_c, (z1, z2) = 2.0, 0.3, math.radians(30.0), 0.2, (-0.1, 0.1)
     result = eulerdyn.balance(disk_dict(), planes=(z1, z2), radius=r_c)
     expected = 0.25 * m * r * r * math.sin(theta) * math.cos(theta) / (r_c * (z2 - z1))
-    masses = [c["mass"] for c in result["corrections"]]
+    masses = [c["mass_g"] * 1e-3 for c in result["corrections"]]
     assert masses == pytest.approx([expected, expected], rel=1e-12)
     assert [c["plane"] for c in result["corrections"]] == ["A", "B"]
     # At R_c from the axis u = (0, −sin θ, cos θ) (body axes), on opposite sides of it, in their planes.
@@ -165,28 +165,39 @@ def test_balance_to_a_grade_from_measurements_is_what_the_cli_prints(scenario):
     flags = (*FAN_ARGS, "--grade", "6.3", "--measured", str(table))
     assert result["text"] == run_cli("balance", str(path), *flags).stdout
     report = json.loads(run_cli("balance", str(path), *flags, "--json").stdout)
-    for key in ("mode", "unbalance_gmm", "grade", "influence", "planes"):
+    for key in ("mode", "unbalance_gmm", "grade", "influence", "planes", "corrections", "warnings"):
         assert result[key] == report[key], key
     assert result["mode"] == "measured"
     assert result["grade"]["target"]["pass"] and not result["grade"]["target"]["pass_before"]
     assert not result["influence"]["condition_warning"]
-    masses = [c["mass_g"] for c in result["corrections"]]
-    assert masses == pytest.approx([c["amp"] for c in result["influence"]["corrections_g"]], rel=1e-12)
+    # Each mass and angle once (issue 35): no second form under "influence", angles in [0, 360).
+    assert "corrections_g" not in result["influence"]
+    assert all(0.0 <= c["angle_deg"] < 360.0 for c in result["corrections"])
+    assert result["warnings"] == [] and result["grade"]["tolerance_planes"] == "bearings"
 
 
 def test_balance_one_shot_and_at_another_speed(scenario):
     path = scenario("fan_rotor_g63.toml")
     result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, measured=scenario("fan_rotor_initial.csv"))
     assert result["mode"] == "one_shot" and "one-shot balancing" in result["text"]
-    # ISO 21940-11: U_per = 1000 G m / Ω, at --rpm's speed.
-    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, rpm=3000.0)
+    # ISO 21940-11: U_per = 1000 G m / Ω, at the service speed (--service-rpm; issue 35: --rpm is the runs').
+    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, service_rpm=3000.0)
     target = result["grade"]["target"]
-    assert target["u_per_gmm"] == pytest.approx(1000 * 6.3 * result["grade"]["mass"] / (3000 * math.pi / 30), rel=1e-14)
+    mass = result["grade"]["mass_kg"]
+    assert target["u_per_gmm"] == pytest.approx(1000 * 6.3 * mass / (3000 * math.pi / 30), rel=1e-14)
+    flags = (*FAN_ARGS, "--grade", "6.3", "--service-rpm", "3000", "--tolerance-planes", "correction")
+    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, service_rpm=3000.0,
+                              tolerance_planes="correction")
+    assert result["text"] == run_cli("balance", str(path), *flags).stdout
 
 
 @pytest.mark.parametrize(
     "keywords, cli_flags",
-    [({"grade": 0.0}, ("--grade", "0")), ({"rpm": -1500.0}, ("--rpm", "-1500"))],
+    [
+        ({"grade": 0.0}, ("--grade", "0")),
+        ({"rpm": -1500.0}, ("--rpm", "-1500")),
+        ({"service_rpm": 0.0}, ("--service-rpm", "0")),
+    ],
 )
 def test_balance_refuses_a_bad_grade_or_speed_as_the_cli_does(scenario, keywords, cli_flags):
     path = scenario("fan_rotor_g63.toml")

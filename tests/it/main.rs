@@ -2,6 +2,7 @@
 //! the release build), a module per topic. `common` holds the helpers they share.
 
 mod balance_grade;
+mod balance_slips;
 mod body;
 mod carriers;
 mod cli_end_to_end;

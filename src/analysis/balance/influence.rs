@@ -24,7 +24,7 @@ pub fn phasor(amp: f64, phase_deg: f64) -> Phasor {
 
 /// A phasor's amplitude and phase in degrees, the phase in [0, 360).
 pub fn polar_deg(v: Phasor) -> (f64, f64) {
-    (v.norm(), v.arg().to_degrees().rem_euclid(360.0))
+    (v.norm(), super::format::wrap_deg(v.arg().to_degrees()))
 }
 
 /// The 1× phasor of a signal sampled at the rotation angles `theta` (rad): the single-frequency discrete Fourier

@@ -1,24 +1,29 @@
 //! Balance quality grades of rigid rotors, ISO 21940-11:2016 ("Mechanical vibration — Rotor balancing — Part 11:
 //! Procedures and tolerances for rotors with rigid behaviour", formerly ISO 1940-1).
 //!
-//! A grade G (mm/s) bounds the product e·Ω of the specific unbalance e = U/m and the service speed Ω. The
-//! permissible residual unbalance of the whole rotor is therefore (ISO 21940-11, balance tolerances)
+//! A grade G (mm/s) bounds the product e·Ω of the specific unbalance e = U/m and the maximum service speed Ω
+//! (5.3, 6.3.1). The permissible residual unbalance of the whole rotor is therefore (6.3.3)
 //!
 //! ```text
 //!   U_per = 1000 · G · m / Ω   g·mm     (m in kg, Ω in rad/s)   = 9549 · G · m / n   (n in r/min)
 //! ```
 //!
-//! and it is allotted to the two correction planes in inverse proportion to their distance from the centre of
-//! mass, U_per,A = U_per·|z_B − z_C|/|z_B − z_A| and U_per,B = U_per·|z_A − z_C|/|z_B − z_A| (ISO 21940-11,
-//! allocation to the tolerance planes), each share kept between 30 % and 70 % of U_per. The grade a rotor meets is the smallest G for which each
-//! plane's unbalance is within its share: G = max_i U_i Ω / (1000 m share_i).
+//! The tolerance planes are the bearing planes (4.4): the unbalance found in the correction planes z_1, z_2 is
+//! converted to the bearing planes L_A, L_B keeping its resultant and its moment ([`to_planes`]), and U_per is
+//! allotted to them by the lever rule about the centre of mass z_C (7.2.1), U_per,A = U_per·|L_B − z_C|/|L_B − L_A|
+//! and U_per,B = U_per·|L_A − z_C|/|L_B − L_A|, each share kept between 30 % and 70 % of U_per (7.2.2, 7.2.3:
+//! a centre of mass near one bearing or outside them). With `--tolerance-planes correction` (or a scene without
+//! bearings) the correction planes take the bearings' place in the same formulas. The grade a rotor meets is the
+//! smallest G for which each tolerance plane's unbalance is within its share: G = max_i U_i Ω / (1000 m share_i).
+
+use nalgebra::Complex;
 
 /// The balance quality grades ISO 21940-11 lists (G 0.4 to G 4000), mm/s: each 2.5 times the one before.
 pub const STANDARD_GRADES: [f64; 11] = [
     0.4, 1.0, 2.5, 6.3, 16.0, 40.0, 100.0, 250.0, 630.0, 1600.0, 4000.0,
 ];
 
-/// Each plane's share of U_per is kept within these fractions (ISO 21940-11).
+/// Each tolerance plane's share of U_per is kept within these fractions (ISO 21940-11, 7.2.2 and 7.2.3).
 pub const SHARE_LIMITS: [f64; 2] = [0.3, 0.7];
 
 /// Ω (rad/s) of a speed `n` in revolutions per minute: Ω = 2π n / 60.
@@ -26,14 +31,15 @@ pub fn rpm_to_rad_s(n: f64) -> f64 {
     n * std::f64::consts::PI / 30.0
 }
 
-/// The permissible residual unbalance U_per = 1000·G·m/Ω (g·mm) of a rotor of mass `mass` (kg) at the speed
-/// `omega` (rad/s) for the grade `grade` (mm/s), ISO 21940-11.
+/// The permissible residual unbalance U_per = 1000·G·m/Ω (g·mm) of a rotor of mass `mass` (kg) at the maximum
+/// service speed `omega` (rad/s) for the grade `grade` (mm/s), ISO 21940-11, 6.3.3.
 pub fn permissible_unbalance(grade: f64, mass: f64, omega: f64) -> f64 {
     1000.0 * grade * mass / omega.abs()
 }
 
-/// The shares of U_per of the planes at `z_a` and `z_b` for the centre of mass at `z_c` (same origin):
-/// |z_B − z_C|/|z_B − z_A| for A and |z_A − z_C|/|z_B − z_A| for B, each clamped to [`SHARE_LIMITS`].
+/// The shares of U_per of the tolerance planes at `z_a` and `z_b` for the centre of mass at `z_c` (same origin),
+/// the lever rule of ISO 21940-11, 7.2.1: |z_B − z_C|/|z_B − z_A| for A and |z_A − z_C|/|z_B − z_A| for B, each
+/// clamped to [`SHARE_LIMITS`] (7.2.2 inboard, 7.2.3 outboard rotors).
 pub fn plane_shares(z_a: f64, z_b: f64, z_c: f64) -> [f64; 2] {
     let span = (z_b - z_a).abs();
     let [low, high] = SHARE_LIMITS;
@@ -54,16 +60,87 @@ pub fn standard_grade_met(grade: f64) -> Option<f64> {
     STANDARD_GRADES.iter().copied().find(|&g| g >= grade)
 }
 
-/// A rotor's unbalance judged against ISO 21940-11 at one speed.
+/// Unbalances `u` (complex, g·mm) in the planes `from` converted to the planes `to` (axial positions, same
+/// origin) with the same resultant and moment (ISO 21940-11, 4.2 and 4.4: the unbalance stated in the tolerance
+/// planes), the lever rule: U_A = Σ_i (L_B − z_i) U_i/(L_B − L_A), U_B = Σ_i (z_i − L_A) U_i/(L_B − L_A).
+pub fn to_planes(u: [Complex<f64>; 2], from: [f64; 2], to: [f64; 2]) -> [Complex<f64>; 2] {
+    let [l_a, l_b] = to;
+    let span = l_b - l_a;
+    let lever = |k: usize, z: f64| {
+        if k == 0 {
+            (l_b - z) / span
+        } else {
+            (z - l_a) / span
+        }
+    };
+    [0, 1].map(|k| u[0] * lever(k, from[0]) + u[1] * lever(k, from[1]))
+}
+
+/// Where U_per is allotted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TolerancePlanes {
+    /// The bearing planes (ISO 21940-11, 4.4), when the scene has bearings; else the correction planes.
+    #[default]
+    Bearings,
+    /// The correction planes (`--tolerance-planes correction`).
+    Correction,
+}
+
+impl TolerancePlanes {
+    /// The word of `--tolerance-planes` and of the JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Bearings => "bearings",
+            Self::Correction => "correction",
+        }
+    }
+}
+
+/// A verdict against the grade asked for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    Pass,
+    Fail,
+    /// A warning about the input (a likely unit slip) stands: no verdict is given.
+    Unverified,
+}
+
+impl Verdict {
+    /// "pass", "fail" or "unverified".
+    pub fn word(self) -> &'static str {
+        match self {
+            Self::Pass => "pass",
+            Self::Fail => "fail",
+            Self::Unverified => "unverified",
+        }
+    }
+}
+
+/// The rotor and the planes a grade is judged in: its mass (kg), its centre of mass along the axis (m), the
+/// tolerance planes used and their axial positions (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Judged {
+    pub mass: f64,
+    pub z_c: f64,
+    pub planes: TolerancePlanes,
+    pub z: [f64; 2],
+}
+
+/// A rotor's unbalance judged against ISO 21940-11 at its service speed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Assessment {
-    /// The speed (rad/s) and where it came from (`--rpm` or the scene's rate).
+    /// The maximum service speed (rad/s).
     pub omega: f64,
-    /// Whether the speed is `--rpm`'s rather than the scene's.
-    pub from_rpm: bool,
+    /// Whether it is `--service-rpm`'s rather than the scene's rate.
+    pub from_service_rpm: bool,
     /// The rotor's mass (kg) and its centre of mass along the axis (m, from the axis point).
     pub mass: f64,
     pub z_c: f64,
+    /// The tolerance planes and their axial positions (m).
+    pub planes: TolerancePlanes,
+    pub z: [f64; 2],
+    /// The unbalance in the tolerance planes (g·mm), `[before, after]`.
+    pub unbalance: [[f64; 2]; 2],
     /// The planes' shares of U_per.
     pub shares: [f64; 2],
     /// The grade met before and after balancing (mm/s).
@@ -77,41 +154,62 @@ pub struct Assessment {
 pub struct Target {
     /// The grade G (mm/s).
     pub grade: f64,
-    /// U_per (g·mm) and its allotment to planes A and B.
+    /// U_per (g·mm) and its allotment to the tolerance planes A and B.
     pub u_per: f64,
     pub u_per_planes: [f64; 2],
-    /// Whether the rotor meets the grade before and after balancing.
+    /// Whether the unbalance is within U_per's shares before and after balancing.
     pub pass: [bool; 2],
+    /// The verdicts printed: `pass`/`fail`, or `unverified` when a warning about the input stands.
+    pub verdict: [Verdict; 2],
 }
 
-/// Judges the plane unbalances `before` and `after` (g·mm) of a rotor of mass `mass` with its centre of mass at
-/// `z_c` between the planes `z_a`, `z_b`, at `omega` (rad/s), against `grade` when given.
+/// Judges the tolerance-plane unbalances `unbalance` (g·mm, `[before, after]`) of the rotor `judged` at the service
+/// speed `omega` (rad/s; `from_service_rpm`: given by `--service-rpm`) against `grade` when given.
 pub fn assess(
-    before: [f64; 2],
-    after: [f64; 2],
-    (z_a, z_b, z_c): (f64, f64, f64),
-    (mass, omega, from_rpm): (f64, f64, bool),
+    unbalance: [[f64; 2]; 2],
+    judged: Judged,
+    (omega, from_service_rpm): (f64, bool),
     grade: Option<f64>,
 ) -> Assessment {
-    let shares = plane_shares(z_a, z_b, z_c);
-    let met = [before, after].map(|u| grade_met(u, shares, mass, omega));
+    let Judged {
+        mass,
+        z_c,
+        planes,
+        z,
+    } = judged;
+    let shares = plane_shares(z[0], z[1], z_c);
+    let met = unbalance.map(|u| grade_met(u, shares, mass, omega));
     let target = grade.map(|g| {
         let u_per = permissible_unbalance(g, mass, omega);
+        let pass = met.map(|m| m <= g);
         Target {
             grade: g,
             u_per,
             u_per_planes: shares.map(|s| s * u_per),
-            pass: met.map(|m| m <= g),
+            pass,
+            verdict: pass.map(|p| if p { Verdict::Pass } else { Verdict::Fail }),
         }
     });
     Assessment {
         omega: omega.abs(),
-        from_rpm,
+        from_service_rpm,
         mass,
         z_c,
+        planes,
+        z,
+        unbalance,
         shares,
         met,
         target,
+    }
+}
+
+impl Assessment {
+    /// After a warning about the input every verdict reads `unverified`.
+    pub fn unverify(&mut self) {
+        if let Some(t) = &mut self.target {
+            t.verdict = [Verdict::Unverified; 2];
+        }
     }
 }
 

@@ -1,12 +1,16 @@
 //! Balancing a rigid rotor in two planes (`eulerdyn balance`): from its known mass distribution ([`balance`],
 //! the model), from measured 1× phasors by influence coefficients ([`influence`], `--measured`), or from one
 //! measured run with the coefficients the model predicts (one-shot); and the balance grade the rotor meets before
-//! and after, ISO 21940-11 ([`iso`]). [`balance_report`] does all of it; [`Report`] prints it as text and JSON.
+//! and after, ISO 21940-11 ([`iso`]), judged at the service speed in the tolerance planes; [`slips`] warns of input
+//! that would make that verdict wrong with confidence. [`balance_report`] does all of it; [`Report`] prints it as
+//! text and JSON.
 
+mod format;
 pub mod influence;
 pub mod iso;
 mod model;
 mod report;
+pub mod slips;
 pub mod table;
 
 use std::path::{Path, PathBuf};
@@ -16,8 +20,12 @@ use nalgebra::{Complex, Matrix2, Vector2, Vector3};
 pub use model::{Balance, BalanceError, Correction, Planes, balance};
 
 use crate::scene::{Scene, SceneError, SceneSpec};
+pub use format::wrap_deg;
+pub use iso::TolerancePlanes;
+pub use slips::Readings;
+
 use influence::Phasor;
-use iso::Assessment;
+use iso::{Assessment, Judged};
 use model::Rotor;
 
 /// What `eulerdyn balance` is asked.
@@ -27,8 +35,15 @@ pub struct Request {
     pub planes: Planes,
     /// `--grade G` (mm/s), > 0.
     pub grade: Option<f64>,
-    /// `--rpm N`, > 0: the speed instead of the scene's rate.
+    /// `--rpm N`, > 0: the speed of the measured runs (the model's coefficients at it), instead of the scene's
+    /// rate.
     pub rpm: Option<f64>,
+    /// `--service-rpm N`, > 0: the maximum service speed the grade is judged at, instead of the scene's rate.
+    pub service_rpm: Option<f64>,
+    /// `--tolerance-planes`: where U_per is allotted (the bearing planes by default).
+    pub tolerance_planes: TolerancePlanes,
+    /// `--readings`: what the table's readings are (bearing forces in N by default).
+    pub readings: Readings,
     /// `--measured PHASORS.csv`: the table's path (for messages) and its text.
     pub measured: Option<(PathBuf, String)>,
 }
@@ -92,10 +107,16 @@ pub struct Report {
     pub balance: Balance,
     /// Unbalance per plane, g·mm, complex U·e^{iφ} (φ the heavy spot's angle): `[before, after]`.
     pub unbalance: [[Phasor; 2]; 2],
-    /// The grade met, when the speed is known.
+    /// The grade met, when the service speed is known.
     pub grade: Option<Assessment>,
     /// Balancing by influence coefficients (`--measured`).
     pub influence: Option<Influence>,
+    /// The speed of the measured runs (rad/s), when known, and whether it is `--rpm`'s.
+    pub runs_speed: Option<(f64, bool)>,
+    /// What the readings are.
+    pub readings: Readings,
+    /// Warnings about the input (a likely unit slip); with any, every verdict reads `unverified`.
+    pub warnings: Vec<String>,
 }
 
 impl Influence {
@@ -105,8 +126,12 @@ impl Influence {
     }
 }
 
-/// `--grade` and `--rpm` must be finite and > 0.
-pub fn check_options(grade: Option<f64>, rpm: Option<f64>) -> Result<(), RequestError> {
+/// `--grade`, `--rpm` and `--service-rpm` must be finite and > 0.
+pub fn check_options(
+    grade: Option<f64>,
+    rpm: Option<f64>,
+    service_rpm: Option<f64>,
+) -> Result<(), RequestError> {
     if let Some(g) = grade.filter(|g| !(g.is_finite() && *g > 0.0)) {
         return Err(RequestError::Option(format!(
             "--grade {g}: the balance grade G must be a number > 0 (mm/s), e.g. --grade 6.3"
@@ -117,15 +142,22 @@ pub fn check_options(grade: Option<f64>, rpm: Option<f64>) -> Result<(), Request
             "--rpm {n}: the speed must be a number > 0 (revolutions per minute)"
         )));
     }
+    if let Some(n) = service_rpm.filter(|n| !(n.is_finite() && *n > 0.0)) {
+        return Err(RequestError::Option(format!(
+            "--service-rpm {n}: the maximum service speed must be a number > 0 (revolutions per minute)"
+        )));
+    }
     Ok(())
 }
 
 /// Balances `scene` as `request` asks (`eulerdyn balance`): the model's corrections, or with a measured table
-/// those of its influence coefficients; the unbalance per plane before and after; the balance grade at the speed
-/// (`--rpm` or the scene's rate) when it is known. The balanced scene is the scene as simulated
-/// ([`Scene::spec`], defaults written in) with the two correction masses added.
+/// those of its influence coefficients (one-shot: the model's at the runs' speed, `--rpm` or the scene's rate);
+/// the unbalance per plane before and after; the balance grade at the maximum service speed (`--service-rpm` or
+/// the scene's rate) in the tolerance planes, when that speed is known; and the warnings of [`slips`]. The
+/// balanced scene is the scene as simulated ([`Scene::spec`], defaults written in) with the two correction masses
+/// added.
 pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, RequestError> {
-    check_options(request.grade, request.rpm)?;
+    check_options(request.grade, request.rpm, request.service_rpm)?;
     let path_buf = scene
         .source
         .as_ref()
@@ -140,15 +172,15 @@ pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, Reques
     };
     let cannot = |e: BalanceError| RequestError::Scene(refuse(format!("cannot balance: {e}")));
     let rotor = Rotor::new(&spec, &request.planes).map_err(cannot)?;
-    let omega = request
-        .rpm
-        .map(iso::rpm_to_rad_s)
-        .or(Some(rotor.axis.rate().abs()).filter(|w| *w > 0.0));
-    if request.grade.is_some() && omega.is_none() {
+    let scene_rate = Some(rotor.axis.rate().abs()).filter(|w| *w > 0.0);
+    let runs_speed = speed(request.rpm, scene_rate);
+    let service_speed = speed(request.service_rpm, scene_rate);
+    if request.grade.is_some() && service_speed.is_none() {
         return Err(RequestError::Scene(refuse(
-            "--grade needs the speed: the scene's motion.rate is 0; give --rpm".into(),
+            "--grade needs the maximum service speed: the scene's motion.rate is 0; give --service-rpm".into(),
         )));
     }
+    let runs_omega = runs_speed.map(|(w, _)| w);
     let (corrections, influence) = match &request.measured {
         None => {
             let [v_a, v_b] = rotor.plane_vectors();
@@ -160,7 +192,7 @@ pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, Reques
             (model, None)
         }
         Some((table, table_text)) => {
-            let found = measured(&rotor, table, table_text, omega)?;
+            let found = measured(&rotor, table, table_text, runs_omega)?;
             (measured_corrections(&rotor, &found), Some(found))
         }
     };
@@ -169,13 +201,17 @@ pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, Reques
         None => model_unbalance(&rotor, &balance.balanced).map_err(cannot)?,
         Some(found) => measured_unbalance(found, request.planes.radius),
     };
-    let grade = omega.map(|w| {
-        let magnitudes = unbalance.map(|u| u.map(|v| v.norm()));
-        let z_c = rotor.axis.rho_c_b().dot(&rotor.u_b);
-        let planes = (request.planes.a, request.planes.b, z_c);
-        let speed = (rotor.axis.mass(), w, request.rpm.is_some());
-        iso::assess(magnitudes[0], magnitudes[1], planes, speed, request.grade)
-    });
+    let mut grade = service_speed.map(|speed| judge(&rotor, request, &unbalance, speed));
+    let warnings = slips::warnings(
+        &rotor,
+        request,
+        influence.as_ref(),
+        runs_omega,
+        grade.as_ref(),
+    );
+    if !warnings.is_empty() {
+        grade.iter_mut().for_each(Assessment::unverify);
+    }
     Ok(Report {
         scene_file: path.to_path_buf(),
         planes: request.planes,
@@ -183,7 +219,40 @@ pub fn balance_report(scene: &Scene, request: &Request) -> Result<Report, Reques
         unbalance,
         grade,
         influence,
+        runs_speed,
+        readings: request.readings,
+        warnings,
     })
+}
+
+/// A speed (rad/s) and whether its flag gave it: the flag's `rpm`, else the scene's rate `scene_rate`.
+fn speed(rpm: Option<f64>, scene_rate: Option<f64>) -> Option<(f64, bool)> {
+    rpm.map(|n| (iso::rpm_to_rad_s(n), true))
+        .or(scene_rate.map(|w| (w, false)))
+}
+
+/// The grade of the correction planes' `unbalance` (g·mm, `[before, after]`) at the service `speed`: in the
+/// bearing planes (converted with the same resultant and moment, ISO 21940-11, 4.4) when the scene has bearings
+/// and `--tolerance-planes` is `bearings`, else in the correction planes.
+fn judge(
+    rotor: &Rotor,
+    request: &Request,
+    unbalance: &[[Phasor; 2]; 2],
+    speed: (f64, bool),
+) -> Assessment {
+    let correction_z = [request.planes.a, request.planes.b];
+    let (planes, z) = match (request.tolerance_planes, rotor.axis.bearings()) {
+        (TolerancePlanes::Bearings, Some(b)) => (TolerancePlanes::Bearings, [b.a, b.b]),
+        _ => (TolerancePlanes::Correction, correction_z),
+    };
+    let in_planes = unbalance.map(|u| iso::to_planes(u, correction_z, z).map(|v| v.norm()));
+    let judged = Judged {
+        mass: rotor.axis.mass(),
+        z_c: rotor.axis.rho_c_b().dot(&rotor.u_b),
+        planes,
+        z,
+    };
+    iso::assess(in_planes, judged, speed, request.grade)
 }
 
 /// The model's unbalance per plane (g·mm, at the heavy spot's angle): before, the opposite of the corrections

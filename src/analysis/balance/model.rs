@@ -17,7 +17,7 @@ use nalgebra::{Unit, Vector3};
 
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::support::Bearings;
-use crate::scene::{InvalidScene, PointMassSpec, SceneSpec};
+use crate::scene::{BodySpec, InvalidScene, PointMassSpec, SceneSpec};
 
 /// The correction planes: axial positions `a` and `b` from the axis point, and the radius of the masses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,7 +37,7 @@ pub struct Correction {
     pub z: f64,
     /// Mass (kg); 0 when the plane needs none.
     pub mass: f64,
-    /// Angle about the axis from the reference direction (degrees, right-handed about the axis).
+    /// Angle about the axis from the reference direction (degrees in [0, 360), right-handed about the axis).
     pub angle_deg: f64,
     /// Position from the reference origin, body axes (m) — the scene file's `at`.
     pub at_b: Vector3<f64>,
@@ -73,8 +73,8 @@ pub enum BalanceError {
 }
 
 impl Balance {
-    /// What `eulerdyn balance` prints: the reference direction, each plane's mass and where it goes, and the
-    /// largest rotating bearing reaction before and after.
+    /// What `eulerdyn balance` prints: the reference direction, each plane's mass (g) and angle (deg, in
+    /// [0, 360)) and where it goes, and the largest rotating bearing reaction before and after.
     pub fn report(&self) -> String {
         let mut text = String::new();
         let r = &self.reference_b;
@@ -83,14 +83,7 @@ impl Balance {
             self.reference_name, r.x, r.y, r.z
         );
         for (name, c) in ["A", "B"].iter().zip(&self.corrections) {
-            if c.mass == 0.0 {
-                text += &format!("plane {name} at {} m: mass 0 kg (none needed)\n", c.z);
-            } else {
-                text += &format!(
-                    "plane {name} at {} m: mass {:.9e} kg at {:.6} deg, at = [{:e}, {:e}, {:e}] m (body axes, from the reference origin)\n",
-                    c.z, c.mass, c.angle_deg, c.at_b.x, c.at_b.y, c.at_b.z
-                );
-            }
+            text += &super::format::correction_line(name, c.z, (c.mass, c.angle_deg), &c.at_b);
         }
         text += &format!(
             "largest rotating bearing reaction at {} rad/s without effects: {:.6e} N before, {:.6e} N after\n",
@@ -146,6 +139,8 @@ pub(crate) struct Rotor {
     pub reference_name: &'static str,
     /// The axis point from the reference origin, body axes: the origin of the planes' positions.
     pub origin_b: Vector3<f64>,
+    /// The scene's body (its shape and point masses: how far the rotor reaches).
+    pub body: BodySpec,
 }
 
 impl Rotor {
@@ -175,6 +170,7 @@ impl Rotor {
             reference_b,
             reference_name,
             origin_b: axis.point_b() + scene.center_b,
+            body: spec.body.clone(),
         })
     }
 
@@ -214,7 +210,7 @@ impl Rotor {
         Correction {
             z,
             mass,
-            angle_deg: angle.to_degrees(),
+            angle_deg: super::format::wrap_deg(angle.to_degrees()),
             at_b: self.origin_b + self.u_b * z + across * self.planes.radius,
         }
     }

@@ -3,30 +3,17 @@
 use nalgebra::{Matrix2, Vector2};
 use serde_json::{Value, json};
 
+use super::format::{angle_text, correction_line, sig};
 use super::influence::{Phasor, polar_deg};
-use super::iso::{self, Assessment};
+use super::iso::{self, Assessment, TolerancePlanes, Verdict};
 use super::{Influence, Report, Source};
 
 const PLANES: [&str; 2] = ["A", "B"];
 
-/// `x` to `digits` significant digits, in exponent form outside 1e-3 ≤ |x| < 1e6 ("0" for zero).
-fn sig(x: f64, digits: usize) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return format!("{x}");
-    }
-    let exponent = x.abs().log10().floor() as i32;
-    if (-3..6).contains(&exponent) {
-        let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
-        format!("{x:.decimals$}")
-    } else {
-        format!("{x:.*e}", digits - 1)
-    }
-}
-
 /// "12.34 at 56.7 deg" (a phase that rounds to 360.0 is shown as 0.0).
 fn polar_text(v: Phasor) -> String {
     let (amp, phase) = polar_deg(v);
-    format!("{} at {:.1} deg", sig(amp, 4), angle_shown(phase))
+    format!("{} at {} deg", sig(amp, 4), angle_text(phase))
 }
 
 /// A residual `v` as [`polar_text`], or "0 (round-off)" when it is below 1e-9 of `scale` (what it was before).
@@ -40,11 +27,6 @@ fn residual_text(v: Phasor, scale: f64) -> String {
 
 /// A residual below this fraction of its value before balancing is round-off, and printed as such.
 const ROUND_OFF: f64 = 1e-9;
-
-/// An angle in [0, 360) rounded to 0.1 deg for printing, 360.0 shown as 0.0.
-fn angle_shown(deg: f64) -> f64 {
-    ((deg * 10.0).round() / 10.0).rem_euclid(360.0)
-}
 
 /// A phasor as JSON: amplitude, phase (deg, in [0, 360)), real and imaginary parts.
 fn polar_json(v: Phasor) -> Value {
@@ -80,8 +62,11 @@ impl Report {
                 residual_text(after, before.norm())
             );
         }
+        for warning in &self.warnings {
+            text += &format!("warning: {warning}\n");
+        }
         if let Some(grade) = &self.grade {
-            text += &grade_text(grade);
+            text += &grade_text(grade, !self.warnings.is_empty());
         }
         text
     }
@@ -108,12 +93,12 @@ impl Report {
             ),
             Source::Model => format!(
                 "one-shot balancing: {} has only the initial run; influence coefficients predicted by the scene's \
-                 rigid-rotor model (force on the bearing, N per g at R = {} m, at {} rad/s):\n",
+                 rigid-rotor model (force on the bearing, N per g at R = {} m, at the runs' speed):\n",
                 found.table.display(),
                 self.planes.radius,
-                sig(self.speed(), 6)
             ),
         };
+        text += &self.runs_text();
         text += "              plane A                  plane B\n";
         for (i, name) in PLANES.iter().enumerate() {
             let [a, b] = [found.alpha[(i, 0)], found.alpha[(i, 1)]].map(polar_text);
@@ -130,18 +115,8 @@ impl Report {
                 super::CONDITION_WARNING
             );
         }
-        for (j, c) in self.balance.corrections.iter().enumerate() {
-            let (mass_g, angle) = polar_deg(found.corrections_g[j]);
-            text += &format!(
-                "plane {} at {} m: correction {} g at {:.1} deg, at = [{:.6}, {:.6}, {:.6}] m (body axes, from the reference origin)\n",
-                PLANES[j],
-                c.z,
-                sig(mass_g, 4),
-                angle_shown(angle),
-                c.at_b.x,
-                c.at_b.y,
-                c.at_b.z
-            );
+        for (name, c) in PLANES.iter().zip(&self.balance.corrections) {
+            text += &correction_line(name, c.z, (c.mass, c.angle_deg), &c.at_b);
         }
         let v0 = &found.measured_initial;
         text += &format!(
@@ -158,9 +133,30 @@ impl Report {
         text
     }
 
-    /// The speed the report uses (rad/s): the grade's, or the scene's rate.
-    fn speed(&self) -> f64 {
-        self.grade.as_ref().map_or(self.balance.rate, |g| g.omega)
+    /// "measured runs at 600.000 rpm (62.8319 rad/s, --rpm); readings: bearing forces in N" (or "the scene's
+    /// rate"; "vibration, any unit").
+    fn runs_text(&self) -> String {
+        let readings = match self.readings {
+            super::Readings::Force => "bearing forces in N (compared with the rigid-rotor model)",
+            super::Readings::Other => {
+                "vibration in any unit (--readings other: not compared with the model)"
+            }
+        };
+        match self.runs_speed {
+            Some((omega, from_rpm)) => format!(
+                "measured runs at {} rpm ({} rad/s, {}); readings: {readings}\n",
+                sig(omega * 30.0 / std::f64::consts::PI, 6),
+                sig(omega, 6),
+                if from_rpm {
+                    "--rpm"
+                } else {
+                    "the scene's rate"
+                }
+            ),
+            None => format!(
+                "measured runs at an unknown speed (no --rpm, the scene at rest); readings: {readings}\n"
+            ),
+        }
     }
 
     /// Every figure of the text, as JSON.
@@ -171,7 +167,7 @@ impl Report {
             .iter()
             .zip(PLANES)
             .map(|(c, name)| {
-                json!({ "plane": name, "z": c.z, "mass": c.mass, "mass_g": c.mass * 1e3,
+                json!({ "plane": name, "z": c.z, "mass_g": c.mass * 1e3,
                         "angle_deg": c.angle_deg, "at_b": [c.at_b.x, c.at_b.y, c.at_b.z] })
             })
             .collect();
@@ -194,6 +190,10 @@ impl Report {
             "unbalance_gmm": { "before": unbalance(0), "after": unbalance(1) },
             "grade": self.grade.as_ref().map(grade_json),
             "influence": self.influence.as_ref().map(influence_json),
+            "runs_rpm": self.runs_speed.map(|(w, _)| w * 30.0 / std::f64::consts::PI),
+            "runs_speed_from": self.runs_speed.map(|(_, from_rpm)| if from_rpm { "rpm" } else { "scene" }),
+            "readings": self.readings.name(),
+            "warnings": self.warnings,
         })
     }
 }
@@ -208,7 +208,6 @@ fn influence_json(found: &Influence) -> Value {
         "coefficients": matrix_json(&found.alpha),
         "condition_number": found.condition,
         "condition_warning": found.ill_conditioned(),
-        "corrections_g": vector_json(&found.corrections_g),
         "initial_readings": vector_json(&found.measured_initial),
         "fitted_initial_readings": vector_json(&found.fitted_initial),
         "predicted_residual_readings": vector_json(&found.residual),
@@ -223,22 +222,40 @@ fn grade_name(g: f64) -> String {
     }
 }
 
-/// The grade block of the text.
-fn grade_text(grade: &Assessment) -> String {
-    let source = if grade.from_rpm {
-        "--rpm"
+/// The grade block of the text; `warned`: a warning about the input stands (the verdicts read `unverified`).
+fn grade_text(grade: &Assessment, warned: bool) -> String {
+    let source = if grade.from_service_rpm {
+        "--service-rpm"
     } else {
         "the scene's rate"
     };
     let mut text = format!(
-        "balance grade (ISO 21940-11) at {} rpm ({} rad/s, {source}), rotor mass {} kg, centre of mass at {} m along the axis:\n",
+        "balance grade (ISO 21940-11) at the service speed {} rpm ({} rad/s, {source}), rotor mass {} kg, centre of mass at {} m along the axis:\n",
         sig(grade.omega * 30.0 / std::f64::consts::PI, 6),
         sig(grade.omega, 6),
         sig(grade.mass, 6),
         sig(grade.z_c, 4)
     );
+    let [a, b] = grade.z;
+    text += &match grade.planes {
+        TolerancePlanes::Bearings => format!(
+            "  tolerance planes: the bearings, A at {a} m and B at {b} m (the correction planes' unbalance converted \
+             to them, same resultant and moment)\n"
+        ),
+        TolerancePlanes::Correction => {
+            format!("  tolerance planes: the correction planes, A at {a} m and B at {b} m\n")
+        }
+    };
+    let [before, after] = grade.unbalance;
     text += &format!(
-        "  shares of U_per: plane A {:.1} %, plane B {:.1} % (by the centre of mass, kept within 30-70 %)\n",
+        "  unbalance in the tolerance planes (g·mm): A {} before, {} after; B {} before, {} after\n",
+        sig(before[0], 4),
+        sig(after[0], 4),
+        sig(before[1], 4),
+        sig(after[1], 4)
+    );
+    text += &format!(
+        "  shares of U_per: plane A {:.1} %, plane B {:.1} % (lever rule about the centre of mass, kept within 30-70 %)\n",
         grade.shares[0] * 100.0,
         grade.shares[1] * 100.0
     );
@@ -253,8 +270,8 @@ fn grade_text(grade: &Assessment) -> String {
     }
     for (k, when) in ["before", "after"].iter().enumerate() {
         let verdict = grade.target.as_ref().map_or(String::new(), |t| {
-            let word = if t.pass[k] { "pass" } else { "fail" };
-            format!(": {word} against G {}", t.grade)
+            let why = if warned { " (see the warnings)" } else { "" };
+            format!(": {} against G {}{why}", t.verdict[k].word(), t.grade)
         });
         let met = if k == 1 && grade.met[1] <= ROUND_OFF * grade.met[0] {
             "every grade (the residual is round-off)".to_string()
@@ -271,9 +288,12 @@ fn grade_json(grade: &Assessment) -> Value {
     json!({
         "omega": grade.omega,
         "rpm": grade.omega * 30.0 / std::f64::consts::PI,
-        "speed_from": if grade.from_rpm { "rpm" } else { "scene" },
-        "mass": grade.mass,
+        "speed_from": if grade.from_service_rpm { "service_rpm" } else { "scene" },
+        "mass_kg": grade.mass,
         "z_c": grade.z_c,
+        "tolerance_planes": grade.planes.name(),
+        "tolerance_planes_z": grade.z,
+        "tolerance_unbalance_gmm": { "before": grade.unbalance[0], "after": grade.unbalance[1] },
         "shares": grade.shares,
         "met_before": grade.met[0],
         "met_after": grade.met[1],
@@ -283,8 +303,10 @@ fn grade_json(grade: &Assessment) -> Value {
             "grade": t.grade,
             "u_per_gmm": t.u_per,
             "u_per_planes_gmm": t.u_per_planes,
-            "pass_before": t.pass[0],
-            "pass": t.pass[1],
+            "pass_before": t.verdict[0] == Verdict::Pass,
+            "pass": t.verdict[1] == Verdict::Pass,
+            "verdict_before": t.verdict[0].word(),
+            "verdict": t.verdict[1].word(),
         })),
     })
 }

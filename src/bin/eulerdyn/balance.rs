@@ -7,8 +7,10 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use eulerdyn::analysis::balance::{Planes, Report, Request, balance_report, check_options, table};
-use eulerdyn::output::AtomicFile;
+use eulerdyn::analysis::balance::{
+    Planes, Readings, Report, Request, TolerancePlanes, balance_report, check_options, table,
+};
+use eulerdyn::output::{AtomicFile, same_file};
 use eulerdyn::scene::{self, Overrides};
 
 #[derive(Debug, Args)]
@@ -24,9 +26,22 @@ pub struct BalanceArgs {
     /// Balance grade G (mm/s, ISO 21940-11, e.g. 6.3 for a fan): U_per, its shares, pass/fail.
     #[arg(long, value_name = "G", allow_negative_numbers = true)]
     pub grade: Option<f64>,
-    /// The speed (revolutions per minute) for the grade and the one-shot coefficients, instead of the scene's rate.
+    /// The speed of the measured runs (revolutions per minute), for the model's coefficients, instead of the
+    /// scene's rate.
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub rpm: Option<f64>,
+    /// The rotor's maximum service speed (revolutions per minute), the one the grade is judged at (ISO 21940-11),
+    /// instead of the scene's rate.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub service_rpm: Option<f64>,
+    /// Where U_per is allotted: the bearing planes (ISO 21940-11; the correction planes when the scene has no
+    /// bearings) or the correction planes.
+    #[arg(long, value_name = "PLANES", default_value = "bearings", value_parser = ["bearings", "correction"])]
+    pub tolerance_planes: String,
+    /// What the table's readings are: bearing forces in N (compared with the rigid-rotor model), or vibration in
+    /// any unit.
+    #[arg(long, value_name = "KIND", default_value = "force", value_parser = ["force", "other"])]
+    pub readings: String,
     /// Balance from measured 1× phasors (CSV: run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,
     /// B_amp,B_phase_deg) by influence coefficients; only an initial row: one-shot, with the model's coefficients.
     #[arg(long, value_name = "PHASORS.csv")]
@@ -54,7 +69,13 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
             args.planes
         ));
     };
-    check_options(args.grade, args.rpm).map_err(|e| e.to_string())?;
+    check_options(args.grade, args.rpm, args.service_rpm).map_err(|e| e.to_string())?;
+    if let Some(out) = args.output.as_ref().filter(|out| same_file(path, out)) {
+        return Err(format!(
+            "{}: the output would overwrite the scene file; give another path",
+            out.display()
+        ));
+    }
     let measured = match &args.measured {
         Some(table) => Some((
             table.clone(),
@@ -70,6 +91,17 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
         },
         grade: args.grade,
         rpm: args.rpm,
+        service_rpm: args.service_rpm,
+        tolerance_planes: if args.tolerance_planes == "correction" {
+            TolerancePlanes::Correction
+        } else {
+            TolerancePlanes::Bearings
+        },
+        readings: if args.readings == "other" {
+            Readings::Other
+        } else {
+            Readings::Force
+        },
         measured,
     };
     let scene = scene::parse(path, &text, &Overrides::default()).map_err(|e| e.to_string())?;
