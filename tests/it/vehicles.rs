@@ -97,7 +97,13 @@ fn assert_lever_rule(rows: &[Sample], a_v: impl Fn(f64) -> Vector3<f64>) {
         let r = support.bearings.unwrap();
         let r_a = f_perp * ((b - s_c) / (b - a)) + thrust;
         close(&r.r_a_s, &r_a, M * G, "R_A", s.t);
-        close(&r.r_b_s, &(f_perp * ((s_c - a) / (b - a))), M * G, "R_B", s.t);
+        close(
+            &r.r_b_s,
+            &(f_perp * ((s_c - a) / (b - a))),
+            M * G,
+            "R_B",
+            s.t,
+        );
     }
     assert_equilibrium(rows, BEARINGS, |s| s.q * Vector3::z(), weight_moment_s);
 }
@@ -163,9 +169,12 @@ fn the_turbine_in_a_3g_turn_carries_the_load_factor_and_the_gyroscopic_couple() 
             close(&r.r_a_s, &(f * 0.5 + lift), 0.0, "R_A", s.t);
             close(&r.r_b_s, &(f * 0.5 - lift), 0.0, "R_B", s.t);
         }
-        assert_equilibrium(&rows, (-0.45, 0.45), |s| s.q * Vector3::z(), |_| {
-            Vector3::zeros()
-        });
+        assert_equilibrium(
+            &rows,
+            (-0.45, 0.45),
+            |s| s.q * Vector3::z(),
+            |_| Vector3::zeros(),
+        );
         by_form.push(rows);
     }
     assert_forms_agree(&by_form);
@@ -176,7 +185,10 @@ fn assert_forms_agree(by_form: &[Vec<Sample>]) {
     for (b, s) in by_form[0].iter().zip(&by_form[1]) {
         let scale = b.m_s.norm() + b.support.unwrap().f_sup_s.norm();
         close(&b.m_s, &s.m_s, scale, "M_s, body vs space form", b.t);
-        let (rb, rs) = (b.support.unwrap().bearings.unwrap(), s.support.unwrap().bearings.unwrap());
+        let (rb, rs) = (
+            b.support.unwrap().bearings.unwrap(),
+            s.support.unwrap().bearings.unwrap(),
+        );
         close(&rb.r_a_s, &rs.r_a_s, scale, "R_A, body vs space form", b.t);
         close(&rb.r_b_s, &rs.r_b_s, scale, "R_B, body vs space form", b.t);
     }
@@ -192,7 +204,9 @@ fn an_unbalanced_rotor_in_a_rolling_heaving_turning_vehicle_agrees_in_both_forms
     )
     .replace("point = [0.0, 0.0, 0.05]", "point = [0.02, 0.0, 0.05]");
     let by_form: Vec<Vec<Sample>> = (Form::ALL.iter())
-        .map(|form| rows(&text.replace("frame = \"body\"", &format!("frame = \"{}\"", form.name()))))
+        .map(|form| {
+            rows(&text.replace("frame = \"body\"", &format!("frame = \"{}\"", form.name())))
+        })
         .collect();
     assert!(by_form[0][3].f_s.is_some(), "C off the axis: F = m a_C");
     for rows in &by_form {
@@ -202,7 +216,13 @@ fn an_unbalanced_rotor_in_a_rolling_heaving_turning_vehicle_agrees_in_both_forms
         assert_equilibrium(rows, BEARINGS, |s| s.q * Vector3::z(), m_eff);
         for s in rows {
             let f_sup = s.support.unwrap().f_sup_s;
-            close(&(s.f_s.unwrap() - Vector3::new(0.0, 0.0, -G * M)), &f_sup, 0.0, "F − m g", s.t);
+            close(
+                &(s.f_s.unwrap() - Vector3::new(0.0, 0.0, -G * M)),
+                &f_sup,
+                0.0,
+                "F − m g",
+                s.t,
+            );
         }
     }
     assert_forms_agree(&by_form);
@@ -275,10 +295,15 @@ fn a_pendulum_in_an_accelerating_vehicle_swings_about_atan_a_over_g() {
         for s in &rows {
             let theta = s.theta.unwrap();
             // It swings symmetrically about θ_eq: within [2 θ_eq, 0] (to the integration's 1e-9).
-            assert!(theta <= 1e-9 && theta >= 2.0 * theta_eq - 1e-9, "t = {}: θ = {theta}", s.t);
+            assert!(
+                theta <= 1e-9 && theta >= 2.0 * theta_eq - 1e-9,
+                "t = {}: θ = {theta}",
+                s.t
+            );
             assert!(s.support.unwrap().m_drive.abs() <= 1e-12 * (s.m_s.norm() + M * G * d));
         }
-        let weight = |s: &Sample| (s.q * Vector3::new(0.0, 0.0, -d)).cross(&Vector3::new(0.0, 0.0, -G * M));
+        let weight =
+            |s: &Sample| (s.q * Vector3::new(0.0, 0.0, -d)).cross(&Vector3::new(0.0, 0.0, -G * M));
         assert_equilibrium(&rows, (-0.05, 0.05), |s| s.q * Vector3::x(), weight);
         theta_by_form.push(rows);
     }
@@ -373,7 +398,7 @@ fn the_carrier_scene_without_a_vehicle_writes_the_csv_it_wrote_before() {
 }
 
 /// (length, FNV-1a) of the turbine's CSV from main at 83964dc.
-const MAIN_TURBINE_CSV: (usize, u64) = (0, 0);
+const MAIN_TURBINE_CSV: (usize, u64) = (1_511_367, 0x282b_0258_9aea_6b3a);
 
 #[test]
 fn check_and_the_sidecar_describe_the_vehicle() {
@@ -391,5 +416,9 @@ fn check_and_the_sidecar_describe_the_vehicle() {
     let meta = std::fs::read_to_string(dir.path().join("turn.csv.meta.json")).unwrap();
     let json: serde_json::Value = serde_json::from_str(&meta).unwrap();
     let carrier = &json["scene"]["spec"]["motion"]["carrier"];
-    assert_eq!(carrier["center"], serde_json::json!([0.0, 693.67, 0.0]), "{meta}");
+    assert_eq!(
+        carrier["center"],
+        serde_json::json!([0.0, 693.67, 0.0]),
+        "{meta}"
+    );
 }

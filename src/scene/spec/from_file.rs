@@ -8,10 +8,10 @@ use super::file_form::{
     MotionFile, PointMassFile, ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec, VehicleSpec,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec,
     ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec,
     InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive,
-    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec,
+    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec, VehicleSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -214,7 +214,9 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
             }) {
                 return invalid(
                     table().key("carrier").key(name),
-                    format!("`{name}` applies to the carrier of a fixed-axis or hinge motion; a free body has no axis point"),
+                    format!(
+                        "`{name}` applies to the carrier of a fixed-axis or hinge motion; a free body has no axis point"
+                    ),
                 );
             }
             only_keys(&table(), "motion type = \"free\"", &[], &given)?;

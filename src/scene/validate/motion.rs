@@ -165,7 +165,10 @@ fn validate_carrier(carrier: &CarrierSpec) -> Checked<Carrier> {
     };
     let both_sines = matches!(
         (carrier.profile, vehicle.accel_profile),
-        (CarrierProfileSpec::Sine { .. }, CarrierProfileSpec::Sine { .. })
+        (
+            CarrierProfileSpec::Sine { .. },
+            CarrierProfileSpec::Sine { .. }
+        )
     );
     if both_sines && carrier.profile != vehicle.accel_profile {
         return invalid(
