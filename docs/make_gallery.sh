@@ -32,6 +32,12 @@ $eulerdyn plot "$work/motor_runup.csv" -o "$out/motor_runup_bearings.svg" --pane
 $eulerdyn run scenarios/turbine_yawing_aircraft.toml -o "$work/turbine.csv"
 $eulerdyn plot "$work/turbine.csv" -o "$out/turbine_bearings.svg" --panels omega,bearings_space
 
+# The same rotor in a coordinated 3 g turn about a centre 694 m away: the bearings carry m (a − g), 3 g along the
+# apparent vertical, and the gyroscopic couple as vertical forces ±C ω Ω/(b − a); in space axes the horizontal part
+# turns with the heading.
+$eulerdyn run scenarios/turbine_turn_3g.toml -o "$work/turbine_turn.csv"
+$eulerdyn plot "$work/turbine_turn.csv" -o "$out/turbine_turn_bearings.svg" --panels omega,bearings_space
+
 # What accuracy costs: the work-precision study of the benchmark body (about 10 s; its times differ run to run).
 [ -n "${GALLERY_FIGURES_ONLY:-}" ] && exit 0
 $eulerdyn accuracy scenarios/asymmetric_free.toml -o docs/work_precision.csv --plot docs/work_precision.svg

@@ -458,14 +458,7 @@ fn carrier_lines(w: &mut Description, axis: &FixedAxis) {
     let Some(carrier) = axis.carrier() else {
         return;
     };
-    let profile = match carrier.profile() {
-        CarrierProfile::Constant => "constant".to_string(),
-        CarrierProfile::Sine { omega_f, phase } => format!(
-            "times sin(2 pi {} Hz t + {} deg)",
-            plain(omega_f / std::f64::consts::TAU),
-            plain(phase.to_degrees())
-        ),
-    };
+    let profile = profile_text(carrier.profile());
     line(
         w,
         "carrier",
@@ -474,6 +467,41 @@ fn carrier_lines(w: &mut Description, axis: &FixedAxis) {
             vec3(carrier.rate_s())
         ),
     );
+    let Some(vehicle) = carrier.vehicle() else {
+        return;
+    };
+    line(
+        w,
+        "vehicle",
+        &format!(
+            "turns about {} m from the axis point (space axes at t = 0), accelerates at {} m/s^2 (space axes), {}",
+            vec3(vehicle.center_s()),
+            vec3(vehicle.accel_s()),
+            profile_text(vehicle.profile())
+        ),
+    );
+    let a_a_s = carrier.at(0.0).accel_a_s.unwrap_or_default();
+    line(
+        w,
+        "",
+        &format!(
+            "the axis point accelerates at a_A = {} m/s^2 at t = 0: the support carries m a_A = {} N besides the weight",
+            vec3(&a_a_s),
+            vec3(&(a_a_s * axis.mass()))
+        ),
+    );
+}
+
+/// A carrier's profile in words.
+fn profile_text(profile: CarrierProfile) -> String {
+    match profile {
+        CarrierProfile::Constant => "constant".to_string(),
+        CarrierProfile::Sine { omega_f, phase } => format!(
+            "times sin(2 pi {} Hz t + {} deg)",
+            plain(omega_f / std::f64::consts::TAU),
+            plain(phase.to_degrees())
+        ),
+    }
 }
 
 /// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).

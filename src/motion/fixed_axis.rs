@@ -3,7 +3,9 @@
 //! computed in body axes (Euler's equation with constant I) and, independently, in space axes with the
 //! coordinate-dependent inertia I_s(θ) (eq. 8.10). In a turning carrier ([`crate::motion::carrier`]) the axis is
 //! fixed in the carrier and the methods taking an [`AxisAngle`] alone describe the rotation relative to it;
-//! [`FixedAxis::rotation`] and [`FixedAxis::sample`] give the motion in space, ω = Ω_c + θ̇ u.
+//! [`FixedAxis::rotation`] and [`FixedAxis::sample`] give the motion in space, ω = Ω_c + θ̇ u. In a vehicle
+//! ([`crate::motion::carrier::vehicle`]) A accelerates at a_A: the rotation is the same, C's acceleration gains a_A
+//! and the moment about A gains ρ × m a_A; every moment here is about A.
 
 use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
@@ -289,6 +291,11 @@ pub struct AxisRotation {
 }
 
 impl AxisRotation {
+    /// The axis point's acceleration a_A in a vehicle (space axes); `None` when A is fixed in space.
+    pub fn accel_a_s(&self) -> Option<Vector3<f64>> {
+        self.carrier.and_then(|c| c.accel_a_s)
+    }
+
     /// ω̇_s = θ̈ u + (Ω̇_c + θ̇ Ω_c × u).
     pub fn alpha_s(&self, theta_ddot: f64) -> Vector3<f64> {
         match self.carrier {
@@ -347,16 +354,32 @@ impl FixedAxis {
             .turning(&self.axis_b.into_inner(), theta_dot)
     }
 
-    /// a_C = ω̇ × ρ + ω × (ω × ρ), space axes, ρ = R ρ_C (A is fixed in space, carrier or not).
+    /// a_C = a_A + ω̇ × ρ + ω × (ω × ρ), space axes, ρ = R ρ_C, where a_A is the axis point's acceleration in a
+    /// vehicle ([`crate::motion::carrier::vehicle`]) and is absent otherwise (A fixed in space).
     fn accel_c_at(&self, rotation: &AxisRotation, theta_ddot: f64) -> Vector3<f64> {
         let rho_s = rotation.q * self.rho_c_b;
         let omega_s = rotation.omega_s;
-        rotation.alpha_s(theta_ddot).cross(&rho_s) + omega_s.cross(&omega_s.cross(&rho_s))
+        let relative =
+            rotation.alpha_s(theta_ddot).cross(&rho_s) + omega_s.cross(&omega_s.cross(&rho_s));
+        match rotation.accel_a_s() {
+            None => relative,
+            Some(a_a_s) => a_a_s + relative,
+        }
+    }
+
+    /// In a vehicle, the moment about A of the d'Alembert force at C, ρ × m a_A (space axes; `None` without a
+    /// vehicle): the resultant moment about the accelerating point A is M = dH_A/dt + ρ × m a_A, with H_A = I_A ω
+    /// the moment of momentum relative to A (Rigid-body dynamics, lecture notes: moments about a moving point).
+    pub fn transport_moment_s(&self, rotation: &AxisRotation) -> Option<Vector3<f64>> {
+        let a_a_s = rotation.accel_a_s()?;
+        Some((rotation.q * self.rho_c_b).cross(&(a_a_s * self.mass)))
     }
 
     /// M = dH_A/dt in a carrier, in the form `frame` selects, returned in (body, space) axes. Body form:
     /// M_b = I_A ω̇_b + ω_b × I_A ω_b; space form, with I_s = R I_A Rᵀ, which now depends on θ and t:
-    /// M_s = İ_s ω_s + I_s ω̇_s with İ_s = ω̂_s I_s − I_s ω̂_s (Ṙ = ω̂_s R).
+    /// M_s = İ_s ω_s + I_s ω̇_s with İ_s = ω̂_s I_s − I_s ω̂_s (Ṙ = ω̂_s R). In a vehicle A accelerates and both
+    /// add ρ × m a_A ([`Self::transport_moment_s`]; body form: ρ_b × m Rᵀ a_A), so that M stays the resultant
+    /// moment about A.
     fn moment_in_carrier(
         &self,
         rotation: &AxisRotation,
@@ -369,6 +392,13 @@ impl FixedAxis {
             Form::Body => {
                 let (omega_b, alpha_b) = (rotation.omega_b, q.inverse_transform_vector(&alpha_s));
                 let m_b = self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b));
+                let m_b = match rotation.accel_a_s() {
+                    None => m_b,
+                    Some(a_a_s) => {
+                        let a_a_b = q.inverse_transform_vector(&a_a_s);
+                        m_b + self.rho_c_b.cross(&(a_a_b * self.mass))
+                    }
+                };
                 (m_b, q * m_b)
             }
             Form::Space => {
@@ -377,6 +407,10 @@ impl FixedAxis {
                 let w_hat = rotation.omega_s.cross_matrix();
                 let i_s_dot = w_hat * i_s - i_s * w_hat;
                 let m_s = i_s_dot * rotation.omega_s + i_s * alpha_s;
+                let m_s = match self.transport_moment_s(rotation) {
+                    None => m_s,
+                    Some(transport_s) => m_s + transport_s,
+                };
                 (q.inverse_transform_vector(&m_s), m_s)
             }
         }
@@ -402,7 +436,7 @@ impl FixedAxis {
     /// The full kinetic state at time t, with the required moment computed in the form `frame` selects (the other
     /// frame's components by rotation): body form [`FixedAxis::moment_b`], space form [`FixedAxis::moment_s`] (in
     /// a carrier, their generalisations with ω = Ω_c + θ̇ u). Energy is ½ ω·H_A, the body's whole kinetic energy
-    /// since A is fixed.
+    /// since A is fixed (in a vehicle, where A accelerates, the kinetic energy of the motion relative to A).
     pub fn sample(&self, t: f64, frame: Form) -> Sample {
         let angle = self.angle(t);
         let rotation = self.rotation(t, angle.theta, angle.theta_dot);
@@ -458,7 +492,7 @@ impl FixedAxis {
 
 impl FixedAxis {
     /// What the support supplies when the resultant moment about A is `m_s` and the effects' is `m_eff_s` (space
-    /// axes): F_sup = m a_C − m g, M_sup = m_s − m_eff_s, the drive's M_sup·u and, with bearings, their split (see
+    /// axes): F_sup = m a_C − m g (a_C including a vehicle's a_A), M_sup = m_s − m_eff_s (both about A), the drive's M_sup·u and, with bearings, their split (see
     /// [`crate::motion::support`]; u and the bearings turn with the carrier).
     fn support(
         &self,

@@ -12,6 +12,10 @@
 //! In a turning carrier (ω = Ω_c + θ̇ u, [`crate::motion::carrier`]) the drive still supplies nothing about u:
 //! u·(dH/dt − M_eff) = 0 gives θ̈ with the carrier's inertial terms, and in space axes L = u·H_s obeys
 //! L̇ = (Ω_c × u)·H_s + u·M_eff,s since u turns with the carrier.
+//!
+//! In a vehicle the axis point A accelerates at a_A ([`crate::motion::carrier::vehicle`]) and the moment about A
+//! is dH_A/dt + ρ × m a_A: the d'Alembert force −m a_A at C acts like more weight, so θ̈ and L̇ gain
+//! −u·(ρ × m a_A) (a pendulum in a vehicle accelerating at a hangs along g − a).
 
 use nalgebra::{SVector, Vector3};
 
@@ -104,8 +108,9 @@ impl Hinge {
         (theta_dot, placed.turning(&u_b, theta_dot))
     }
 
-    /// θ̈ from u·(dH/dt − M_eff) = 0: θ̈ = u_b·(M_eff,b − I_A β_b − ω_b × I_A ω_b)/I_uu with β = ω̇ − θ̈ u the
-    /// carrier's part; without a carrier the last two terms vanish (β = 0, ω ∥ u) and θ̈ = u_b·M_eff,b/I_uu.
+    /// θ̈ from u·(dH/dt + ρ × m a_A − M_eff) = 0: θ̈ = u_b·(M_eff,b − ρ_b × m a_A,b − I_A β_b − ω_b × I_A ω_b)/I_uu
+    /// with β = ω̇ − θ̈ u the carrier's part (a_A only in a vehicle); without a carrier the last three terms vanish
+    /// (β = 0, ω ∥ u) and θ̈ = u_b·M_eff,b/I_uu.
     fn theta_ddot(&self, rotation: &AxisRotation, m_eff_b: &Vector3<f64>) -> f64 {
         let u_b = self.axis.axis_b().into_inner();
         match rotation.carrier {
@@ -117,6 +122,13 @@ impl Hinge {
                     rotation.q.inverse_transform_vector(&rotation.bias_s),
                 );
                 let inertial = i_a * beta_b + omega_b.cross(&(i_a * omega_b));
+                let inertial = match rotation.accel_a_s() {
+                    None => inertial,
+                    Some(a_a_s) => {
+                        let a_a_b = rotation.q.inverse_transform_vector(&a_a_s);
+                        inertial + self.axis.rho_c_b().cross(&(a_a_b * self.axis.mass()))
+                    }
+                };
                 u_b.dot(&(m_eff_b - inertial)) / self.i_uu
             }
         }
@@ -153,8 +165,8 @@ impl OdeSystem<2> for HingeBodyForm<'_> {
     }
 }
 
-/// The hinge's equation in space axes: L = u·H_s, L' = u̇·H_s + u·Ḣ_s = (Ω_c × u)·H_s + u·M_eff,s (the first term
-/// only in a carrier), θ' = θ̇.
+/// The hinge's equation in space axes: L = u·H_s, L' = u̇·H_s + u·Ḣ_s = (Ω_c × u)·H_s + u·(M_eff,s − ρ × m a_A)
+/// (the first term only in a carrier, a_A only in a vehicle), θ' = θ̇.
 pub struct HingeSpaceForm<'a>(pub &'a Hinge);
 
 impl OdeSystem<2> for HingeSpaceForm<'_> {
@@ -167,7 +179,11 @@ impl OdeSystem<2> for HingeSpaceForm<'_> {
             None => axial,
             Some(c) => {
                 let h_s = rotation.q * (hinge.axis.inertia_a_b() * rotation.omega_b);
-                c.omega_c_s.cross(&rotation.u_s).dot(&h_s) + axial
+                let l_dot = c.omega_c_s.cross(&rotation.u_s).dot(&h_s) + axial;
+                match hinge.axis.transport_moment_s(&rotation) {
+                    None => l_dot,
+                    Some(transport_s) => l_dot - rotation.u_s.dot(&transport_s),
+                }
             }
         };
         HingeState::new(theta_dot, l_dot)

@@ -22,7 +22,7 @@ pub use spec::{
     ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, Extremum, FixedAxisSpec,
     HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec, PointMassSpec,
     ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
-    TorqueTableSpec,
+    TorqueTableSpec, VehicleSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

@@ -30,7 +30,8 @@ fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
             "motor_runup_bearings.svg",
             "tennis_racket.svg",
             "tilted_disk_h.svg",
-            "turbine_bearings.svg"
+            "turbine_bearings.svg",
+            "turbine_turn_bearings.svg"
         ]
     );
     for name in made {

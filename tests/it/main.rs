@@ -31,4 +31,5 @@ mod sidecar;
 mod study;
 mod sweep;
 mod user_moments;
+mod vehicles;
 mod view;

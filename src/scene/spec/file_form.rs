@@ -222,7 +222,7 @@ pub(super) struct MotionFile {
         skip_serializing_if = "Option::is_none"
     )]
     pub(super) axis_in_space: Option<[f64; 3]>,
-    /// The carrier that holds the axis: `{ rate, profile, freq_hz, phase_deg }`.
+    /// The carrier that holds the axis: `{ rate, profile, freq_hz, phase_deg, center, accel, accel_profile }`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) carrier: Option<CarrierFile>,
 }
@@ -247,6 +247,23 @@ pub(super) struct CarrierFile {
     /// Degrees (sine).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) phase_deg: Option<f64>,
+    /// m, from the axis point at t = 0, space axes (a vehicle's centre of rotation).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub(super) center: Option<[f64; 3]>,
+    /// m/s², space axes (a vehicle's own acceleration).
+    #[serde(
+        default,
+        deserialize_with = "exactly_n",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub(super) accel: Option<[f64; 3]>,
+    /// Default constant.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) accel_profile: Option<CarrierProfileKind>,
 }
 
 /// A carrier's `profile`.

@@ -11,7 +11,7 @@ use super::{
     AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec,
     ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec,
     InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive,
-    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec,
+    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec, VehicleSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
@@ -207,6 +207,18 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
             "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
         ),
         Some(MotionKind::Free) => {
+            if let Some(name) = (doc.carrier.as_ref()).and_then(|c| {
+                [("center", c.center.is_some()), ("accel", c.accel.is_some())]
+                    .into_iter()
+                    .find_map(|(name, given)| given.then_some(name))
+            }) {
+                return invalid(
+                    table().key("carrier").key(name),
+                    format!(
+                        "`{name}` applies to the carrier of a fixed-axis or hinge motion; a free body has no axis point"
+                    ),
+                );
+            }
             only_keys(&table(), "motion type = \"free\"", &[], &given)?;
             Ok(MotionSpec::Free)
         }
@@ -268,7 +280,8 @@ fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
     })
 }
 
-/// `carrier = { rate, profile, freq_hz, phase_deg }`: `rate` required, `freq_hz` with a sine only.
+/// `carrier = { rate, profile, freq_hz, phase_deg, center, accel, accel_profile }`: `rate` required, `freq_hz`
+/// when `profile` or `accel_profile` is a sine and only then; `accel_profile` with `accel` only.
 fn carrier(doc: &CarrierFile) -> Checked<CarrierSpec> {
     let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
     let Some(rate) = doc.rate else {
@@ -277,39 +290,66 @@ fn carrier(doc: &CarrierFile) -> Checked<CarrierSpec> {
             "a carrier needs `rate = [x, y, z]`: its angular velocity (rad/s, space axes)",
         );
     };
-    let profile = match doc.profile.unwrap_or(CarrierProfileKind::Constant) {
-        CarrierProfileKind::Constant => {
-            if let Some(name) = [("freq_hz", doc.freq_hz), ("phase_deg", doc.phase_deg)]
-                .iter()
-                .find_map(|(name, v)| v.map(|_| *name))
-            {
-                return invalid(
-                    key(name),
-                    format!("`{name}` applies to a carrier with profile = \"sine\" only"),
-                );
-            }
-            CarrierProfileSpec::Constant
-        }
-        CarrierProfileKind::Sine => CarrierProfileSpec::Sine {
+    if doc.accel_profile.is_some() && doc.accel.is_none() {
+        return invalid(
+            key("accel_profile"),
+            "`accel_profile` applies to a carrier with `accel = [x, y, z]` only",
+        );
+    }
+    let kinds = [doc.profile, doc.accel_profile].map(|k| k.unwrap_or(CarrierProfileKind::Constant));
+    let sine = if kinds.contains(&CarrierProfileKind::Sine) {
+        CarrierProfileSpec::Sine {
             freq_hz: required(key("freq_hz"), doc.freq_hz, "a sine carrier")?,
             phase_deg: doc.phase_deg.unwrap_or(0.0),
-        },
+        }
+    } else {
+        if let Some(name) = [("freq_hz", doc.freq_hz), ("phase_deg", doc.phase_deg)]
+            .iter()
+            .find_map(|(name, v)| v.map(|_| *name))
+        {
+            return invalid(
+                key(name),
+                format!("`{name}` applies to a carrier with profile = \"sine\" only"),
+            );
+        }
+        CarrierProfileSpec::Constant
     };
-    Ok(CarrierSpec { rate, profile })
+    let profile_of = |kind| match kind {
+        CarrierProfileKind::Constant => CarrierProfileSpec::Constant,
+        CarrierProfileKind::Sine => sine,
+    };
+    let vehicle = (doc.center.is_some() || doc.accel.is_some()).then(|| VehicleSpec {
+        center: doc.center.unwrap_or([0.0; 3]),
+        accel: doc.accel.unwrap_or([0.0; 3]),
+        accel_profile: profile_of(kinds[1]),
+    });
+    Ok(CarrierSpec {
+        rate,
+        profile: profile_of(kinds[0]),
+        vehicle,
+    })
 }
 
+/// The file form of a carrier; a sine's `freq_hz` and `phase_deg` are the carrier's or, with a constant rate
+/// profile, the vehicle's `accel_profile`'s (validation refuses two different sines).
 fn carrier_file(carrier: &CarrierSpec) -> CarrierFile {
-    let (profile, freq_hz, phase_deg) = match carrier.profile {
-        CarrierProfileSpec::Constant => (CarrierProfileKind::Constant, None, None),
+    let kind_of = |profile: &CarrierProfileSpec| match profile {
+        CarrierProfileSpec::Constant => (CarrierProfileKind::Constant, None),
         CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
-            (CarrierProfileKind::Sine, Some(freq_hz), Some(phase_deg))
+            (CarrierProfileKind::Sine, Some((*freq_hz, *phase_deg)))
         }
     };
+    let (profile, rate_sine) = kind_of(&carrier.profile);
+    let accel_kind = carrier.vehicle.map(|v| kind_of(&v.accel_profile));
+    let sine = rate_sine.or(accel_kind.and_then(|(_, sine)| sine));
     CarrierFile {
         rate: Some(carrier.rate),
         profile: Some(profile),
-        freq_hz,
-        phase_deg,
+        freq_hz: sine.map(|(freq_hz, _)| freq_hz),
+        phase_deg: sine.map(|(_, phase_deg)| phase_deg),
+        center: carrier.vehicle.map(|v| v.center),
+        accel: carrier.vehicle.map(|v| v.accel),
+        accel_profile: accel_kind.map(|(kind, _)| kind),
     }
 }
 

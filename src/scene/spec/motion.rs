@@ -49,6 +49,20 @@ pub struct CarrierSpec {
     pub rate: [f64; 3],
     /// `profile` and its keys (absent: constant).
     pub profile: CarrierProfileSpec,
+    /// `center`, `accel`, `accel_profile`: the carrier is a vehicle (absent: it turns about the axis point, which
+    /// stays fixed).
+    pub vehicle: Option<VehicleSpec>,
+}
+
+/// A carrier's `center`, `accel` and `accel_profile` ([`crate::motion::carrier::vehicle`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VehicleSpec {
+    /// `center`: the point the carrier turns about, from the axis point at t = 0, space axes (m; absent: 0).
+    pub center: [f64; 3],
+    /// `accel`: the vehicle's linear acceleration, space axes (m/s²; absent: 0).
+    pub accel: [f64; 3],
+    /// `accel_profile` (absent: constant); a sine shares the carrier's `freq_hz` and `phase_deg`.
+    pub accel_profile: CarrierProfileSpec,
 }
 
 /// A carrier's `profile`: p(t).
@@ -77,6 +91,7 @@ impl CarrierSpec {
         Self {
             rate,
             profile: CarrierProfileSpec::Constant,
+            vehicle: None,
         }
     }
 
@@ -91,7 +106,24 @@ impl CarrierSpec {
         Self {
             rate,
             profile: CarrierProfileSpec::Sine { freq_hz, phase_deg },
+            vehicle: None,
         }
+    }
+
+    /// The same carrier as a vehicle ([`VehicleSpec`]).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{CarrierProfileSpec, CarrierSpec, VehicleSpec};
+    /// let turn = CarrierSpec::constant([0.0, 0.0, 0.3]).with_vehicle(VehicleSpec {
+    ///     center: [0.0, 12.0, 0.0],
+    ///     accel: [0.0; 3],
+    ///     accel_profile: CarrierProfileSpec::Constant,
+    /// });
+    /// assert_eq!(turn.vehicle.unwrap().center, [0.0, 12.0, 0.0]);
+    /// ```
+    pub fn with_vehicle(mut self, vehicle: VehicleSpec) -> Self {
+        self.vehicle = Some(vehicle);
+        self
     }
 }
 

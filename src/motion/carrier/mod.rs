@@ -9,8 +9,15 @@
 //! direction, its attitude is one rotation about r̂ by |r|ψ(t), in closed form:
 //! ψ = t (constant) or ψ = (cos φ − cos(ω_f t + φ))/ω_f = 2 sin(ω_f t/2 + φ) sin(ω_f t/2)/ω_f (sine; the product
 //! form has no cancellation at small ω_f t).
+//!
+//! A carrier that is a vehicle ([`vehicle`]) turns about a point of its own and accelerates; its axis point A then
+//! accelerates at a_A (its attitude, rate and angular acceleration are the same).
+
+pub mod vehicle;
 
 use nalgebra::{UnitQuaternion, Vector3};
+
+use vehicle::Vehicle;
 
 /// How the carrier's rate varies in time.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,15 +38,19 @@ pub enum CarrierProfile {
 pub struct Carrier {
     rate_s: Vector3<f64>,
     profile: CarrierProfile,
+    /// The vehicle's centre and acceleration; `None`: the carrier turns about A, which stays fixed.
+    vehicle: Option<Vehicle>,
 }
 
 /// The carrier at one time: its attitude R_c (carrier → space), rate Ω_c and angular acceleration Ω̇_c (space
-/// axes).
+/// axes), and in a vehicle the acceleration a_A of the axis point A ([`Vehicle::accel_a_s`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CarrierMotion {
     pub q_c: UnitQuaternion<f64>,
     pub omega_c_s: Vector3<f64>,
     pub omega_c_dot_s: Vector3<f64>,
+    /// a_A (m/s², space axes); `None` without a vehicle (A fixed in space).
+    pub accel_a_s: Option<Vector3<f64>>,
 }
 
 impl Carrier {
@@ -54,7 +65,22 @@ impl Carrier {
     /// assert!((x_s - Vector3::y()).norm() < 1e-15);
     /// ```
     pub fn new(rate_s: Vector3<f64>, profile: CarrierProfile) -> Self {
-        Self { rate_s, profile }
+        Self {
+            rate_s,
+            profile,
+            vehicle: None,
+        }
+    }
+
+    /// The same carrier as a `vehicle` that turns about its own centre and accelerates.
+    pub fn with_vehicle(mut self, vehicle: Vehicle) -> Self {
+        self.vehicle = Some(vehicle);
+        self
+    }
+
+    /// The vehicle, if the carrier is one.
+    pub fn vehicle(&self) -> Option<&Vehicle> {
+        self.vehicle.as_ref()
     }
 
     /// The rate vector r (rad/s, space axes) the profile multiplies.
@@ -72,7 +98,7 @@ impl Carrier {
         self.rate_s.norm()
     }
 
-    /// R_c(t), Ω_c(t) = r p(t) and Ω̇_c(t) = r p'(t).
+    /// R_c(t), Ω_c(t) = r p(t), Ω̇_c(t) = r p'(t) and, in a vehicle, a_A(t).
     pub fn at(&self, t: f64) -> CarrierMotion {
         let (p, p_dot, psi) = match self.profile {
             CarrierProfile::Constant => (1.0, 0.0, t),
@@ -87,10 +113,17 @@ impl Carrier {
                 (s, omega_f * c, psi)
             }
         };
+        let (q_c, omega_c_s, omega_c_dot_s) = (
+            UnitQuaternion::from_scaled_axis(self.rate_s * psi),
+            self.rate_s * p,
+            self.rate_s * p_dot,
+        );
         CarrierMotion {
-            q_c: UnitQuaternion::from_scaled_axis(self.rate_s * psi),
-            omega_c_s: self.rate_s * p,
-            omega_c_dot_s: self.rate_s * p_dot,
+            q_c,
+            omega_c_s,
+            omega_c_dot_s,
+            accel_a_s: (self.vehicle.as_ref())
+                .map(|v| v.accel_a_s(t, &q_c, &omega_c_s, &omega_c_dot_s)),
         }
     }
 }
