@@ -76,6 +76,11 @@ pub struct RunSeries {
     pub(super) events: Vec<EventRow>,
     /// The panels read for: those asked for or, when none were, the panels the run has ([`Panel::of_run`]).
     pub panels: Vec<Panel>,
+    /// The run's scale of moment of momentum (kg·m²/s): the largest 2T/|ω_b| over the rows (≤ |I ω|, by
+    /// Cauchy–Schwarz, 2T = ω·Iω ≤ |ω| |Iω|), when the H panels read `energy` and `omega_b_*`; else 0.
+    pub(super) momentum_scale: f64,
+    /// The indices in a row's values of `energy` and `omega_b_x` (for [`RunSeries::momentum_scale`]).
+    scale_index: Option<(usize, usize)>,
 }
 
 /// The vectors whose magnitude a panel draws, by column prefix.
@@ -117,6 +122,12 @@ impl RunSeries {
                 })
             })
             .collect();
+        let at = |c: &str| wanted.iter().position(|w| *w == c);
+        let reads_scale = panels.iter().any(|p| matches!(p, Panel::HBody | Panel::HSpace));
+        let scale_index = match (at("energy"), at("omega_b_x")) {
+            (Some(energy), Some(omega)) if reads_scale => Some((energy, omega)),
+            _ => None,
+        };
         Self {
             file: file.to_path_buf(),
             rows: 0,
@@ -127,6 +138,8 @@ impl RunSeries {
             scene: None,
             events: Vec::new(),
             panels: panels.to_vec(),
+            momentum_scale: 0.0,
+            scale_index,
         }
     }
 
@@ -141,6 +154,14 @@ impl RunSeries {
             let r = &values[norm.index..norm.index + 3];
             norm.points
                 .push(t, (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt());
+        }
+        if let Some((energy, omega)) = self.scale_index {
+            let w = &values[omega..omega + 3];
+            let omega_norm = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+            if omega_norm > 0.0 {
+                let scale = 2.0 * values[energy].abs() / omega_norm;
+                self.momentum_scale = self.momentum_scale.max(scale);
+            }
         }
         for (drift, &k) in self.drifts.iter_mut().zip(drift_index) {
             let x = values[k];
@@ -174,11 +195,13 @@ impl RunSeries {
 pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     if path.as_os_str() == "-" {
         let reader = RunCsvReader::new(Path::new("stdin"), std::io::stdin().lock())?;
-        return read_rows(reader, panels);
+        return read_rows(reader, panels, false);
     }
-    let mut series = read_rows(RunCsvReader::open(path)?, panels)?;
     let sidecar = Sidecar::read(path).ok();
-    series.scene = sidecar.as_ref().map(scene_facts);
+    let facts = sidecar.as_ref().map(scene_facts);
+    let carried = facts.as_ref().is_some_and(|f| f.carried);
+    let mut series = read_rows(RunCsvReader::open(path)?, panels, carried)?;
+    series.scene = facts;
     series.events = run_events(path, sidecar.as_ref())?;
     Ok(series)
 }
@@ -189,17 +212,29 @@ pub fn read_run_from(
     reader: impl Read,
     panels: &[Panel],
 ) -> Result<RunSeries, PlotError> {
-    read_rows(RunCsvReader::new(file, reader)?, panels)
+    read_rows(RunCsvReader::new(file, reader)?, panels, false)
 }
 
-/// Reads the data rows of `csv` (its header read) into the curves of `panels` (when empty, those the run has).
-fn read_rows(mut csv: RunCsvReader<impl Read>, panels: &[Panel]) -> Result<RunSeries, PlotError> {
+/// Reads the data rows of `csv` (its header read) into the curves of `panels` (when empty, those the run has; for
+/// a run in a turning carrier, `carried`, the bearing forces in space axes rather than in the spinning body's).
+fn read_rows(
+    mut csv: RunCsvReader<impl Read>,
+    panels: &[Panel],
+    carried: bool,
+) -> Result<RunSeries, PlotError> {
     let file = csv.file().to_path_buf();
     if csv.index_of("t").is_none() && looks_like_a_scene(&csv) {
         return Err(PlotError::input(&file, scene_file_advice(&file)));
     }
     let panels = if panels.is_empty() {
-        Panel::of_run(|c| csv.index_of(c).is_some())
+        let has = |c: &str| csv.index_of(c).is_some();
+        let space = carried && Panel::BearingsSpace.columns().iter().all(|c| has(c));
+        (Panel::of_run(has).into_iter())
+            .map(|p| match p {
+                Panel::Bearings if space => Panel::BearingsSpace,
+                p => p,
+            })
+            .collect()
     } else {
         panels.to_vec()
     };
