@@ -68,7 +68,8 @@ pub fn for_people(v: f64) -> String {
         }
     };
     if (-4..6).contains(&exponent) {
-        trim(&format!("{:.*}", (5 - exponent) as usize, v))
+        let decimals = (5 - exponent) as usize;
+        trim(&format!("{v:.decimals$}"))
     } else {
         let sign = if exponent < 0 { '-' } else { '+' };
         format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())

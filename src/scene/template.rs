@@ -66,7 +66,12 @@ impl SceneTemplate {
         let absent = first_absent(&self.table, key)?;
         let mut table = self.table.clone();
         set_number(&mut table, &truncated(key, absent + 1), probe).ok()?;
-        let message = table.try_into::<SceneSpec>().err()?.message().trim().to_string();
+        let message = table
+            .try_into::<SceneSpec>()
+            .err()?
+            .message()
+            .trim()
+            .to_string();
         let (wrong, valid) = unknown_field(&message)?;
         let Some(Segment::Key(name)) = key.segments().get(absent) else {
             return None;
@@ -87,7 +92,11 @@ impl SceneTemplate {
         Some(format!(
             "`{key}` is not a key of the scene format: `{wrong}` is unknown there; the nearest valid key is \
              `{fixed}` (valid there: {})",
-            valid.iter().map(|v| format!("`{v}`")).collect::<Vec<_>>().join(", ")
+            valid
+                .iter()
+                .map(|v| format!("`{v}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
         ))
     }
 

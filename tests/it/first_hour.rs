@@ -40,7 +40,10 @@ fn geomspace_and_logspace_take_end_values_and_logspace_warns_so() {
     assert!(!quiet.contains("warning"), "{quiet}");
     let (log, warned) = sweep_values("logspace = [2.0, 8.0, 3]");
     assert_eq!(log, geom);
-    assert!(warned.contains("sweep.toml: warning: vary[0].logspace"), "{warned}");
+    assert!(
+        warned.contains("sweep.toml: warning: vary[0].logspace"),
+        "{warned}"
+    );
     assert!(warned.contains("geomspace = [2, 8, 3]"), "{warned}");
     assert!(warned.contains("not from 10^2 to 10^8"), "{warned}");
 }
@@ -62,7 +65,11 @@ fn a_misspelt_sweep_key_names_the_nearest_valid_key() {
         let outcome = eulerdyn(["sweep", text(&sweep)]);
         outcome.expect_code(2);
         let expected = format!("the nearest valid key is `{nearest}`");
-        assert!(outcome.stderr.contains(&expected), "{key}: {}", outcome.stderr);
+        assert!(
+            outcome.stderr.contains(&expected),
+            "{key}: {}",
+            outcome.stderr
+        );
         assert!(outcome.stderr.contains("vary[0].key"), "{}", outcome.stderr);
         assert!(!outcome.stderr.contains("does not give this array"));
     }
@@ -87,7 +94,11 @@ fn a_torque_table_with_a_byte_order_mark_and_crlf_runs_as_the_plain_one() {
     };
     let mut csvs = Vec::new();
     for name in ["plain", "saved"] {
-        let path = write_file(dir.path(), &format!("{name}.toml"), scene(&format!("{name}.csv")));
+        let path = write_file(
+            dir.path(),
+            &format!("{name}.toml"),
+            scene(&format!("{name}.csv")),
+        );
         eulerdyn(["check", text(&path)]).expect_code(0);
         let out = eulerdyn(["run", text(&path), "-q"]);
         out.expect_code(0);
@@ -126,7 +137,11 @@ fn check_rounds_for_people_and_lists_the_imbalance_among_the_effects() {
     // 20 g·mm = 2e-5 kg·m, computed as 20 × 1e-6 = 1.9999999999999998e-5 and printed rounded.
     assert!(out.stdout.contains("static 2e-05 kg*m"), "{}", out.stdout);
     assert!(!out.stdout.contains("0.0000199999"), "{}", out.stdout);
-    let effects = out.stdout.lines().find(|l| l.starts_with("effects")).unwrap();
+    let effects = out
+        .stdout
+        .lines()
+        .find(|l| l.starts_with("effects"))
+        .unwrap();
     assert!(effects.contains("imbalance of rotor wheel"), "{effects}");
     assert!(!out.stdout.contains("warning"), "{}", out.stdout);
 }
@@ -138,11 +153,19 @@ fn an_imbalance_no_wheel_could_have_is_warned_of_as_a_unit_slip() {
     // radius of gyration.
     let big = eulerdyn(["check", text(&wheel_scene(dir.path(), "2e7"))]);
     big.expect_code(0);
-    assert!(big.stdout.contains("is more than a wheel of J = 0.06"), "{}", big.stdout);
+    assert!(
+        big.stdout.contains("is more than a wheel of J = 0.06"),
+        "{}",
+        big.stdout
+    );
     // 2e-5 kg·m written in the g·mm key: 10⁶ × too small, finer than any balancing grade.
     let small = eulerdyn(["check", text(&wheel_scene(dir.path(), "2e-5"))]);
     small.expect_code(0);
-    assert!(small.stdout.contains("finer than any balancing grade"), "{}", small.stdout);
+    assert!(
+        small.stdout.contains("finer than any balancing grade"),
+        "{}",
+        small.stdout
+    );
     assert!(small.stdout.contains("that is 20 g*mm"), "{}", small.stdout);
 }
 
@@ -183,13 +206,28 @@ fn a_torque_free_satellite_draws_h_s_flat_at_its_value() {
         .collect();
     // Both H panels: H_s = 0 (the scene's description: nothing outside acts, the body starts at rest) and so H_b.
     assert_eq!(notes.len(), 2, "{notes:?}");
-    for label in ["H_s,x = 0", "H_s,y = 0", "H_s,z = 0", "H_b,x = 0", "|H| = 0"] {
+    for label in [
+        "H_s,x = 0",
+        "H_s,y = 0",
+        "H_s,z = 0",
+        "H_b,x = 0",
+        "|H| = 0",
+    ] {
         assert!(all.iter().any(|t| t.2 == label), "{label}");
     }
     // The H_s panel's y ticks are those of a flat line at 0 (the range ±1 around it), not round-off magnified.
-    let title = all.iter().position(|t| t.2 == "Moment of momentum H, space axes").unwrap();
-    let ticks: Vec<&str> = all[title..title + 16].iter().map(|t| t.2.as_str()).collect();
-    assert!(ticks.contains(&"1.0") && ticks.contains(&"-1.0"), "{ticks:?}");
+    let title = all
+        .iter()
+        .position(|t| t.2 == "Moment of momentum H, space axes")
+        .unwrap();
+    let ticks: Vec<&str> = all[title..title + 16]
+        .iter()
+        .map(|t| t.2.as_str())
+        .collect();
+    assert!(
+        ticks.contains(&"1.0") && ticks.contains(&"-1.0"),
+        "{ticks:?}"
+    );
     assert!(!ticks.iter().any(|t| t.contains("e-1")), "{ticks:?}");
 }
 
@@ -222,6 +260,9 @@ fn legends_fit_their_panels() {
         let chars = content.chars().count() as f64;
         let right = x + 4.0 * 0.56 * 12.0 * chars;
         let edge = if x < half { half } else { width };
-        assert!(right <= edge, "{content:?} at x = {x} ends at {right} > {edge}");
+        assert!(
+            right <= edge,
+            "{content:?} at x = {x} ends at {right} > {edge}"
+        );
     }
 }

@@ -6,8 +6,8 @@
 use plotters::style::RGBColor;
 
 use super::Panel;
-use crate::analysis::describe::for_people;
 use super::series::{RunSeries, SceneFacts};
+use crate::analysis::describe::for_people;
 use crate::scene::MotionKind;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
@@ -254,7 +254,11 @@ pub const ROUND_OFF: f64 = 1e-12;
 /// noise): each at its mean, rounded to a multiple
 /// of `tolerance`, its value in its legend label (`H_s,x = 0`); a note says so.
 fn flatten_constant(mut plot: PanelPlot, tolerance: f64, unit: &str) -> PanelPlot {
-    let values = || plot.curves.iter().flat_map(|c| c.points.iter().map(|p| p.1));
+    let values = || {
+        plot.curves
+            .iter()
+            .flat_map(|c| c.points.iter().map(|p| p.1))
+    };
     let lo = values().fold(f64::INFINITY, f64::min);
     let hi = values().fold(f64::NEG_INFINITY, f64::max);
     // A range within 1e-9 of its magnitude is drawn flat at its value already (`draw::linear_range`).

@@ -123,7 +123,9 @@ impl RunSeries {
             })
             .collect();
         let at = |c: &str| wanted.iter().position(|w| *w == c);
-        let reads_scale = panels.iter().any(|p| matches!(p, Panel::HBody | Panel::HSpace));
+        let reads_scale = panels
+            .iter()
+            .any(|p| matches!(p, Panel::HBody | Panel::HSpace));
         let scale_index = match (at("energy"), at("omega_b_x")) {
             (Some(energy), Some(omega)) if reads_scale => Some((energy, omega)),
             _ => None,
