@@ -215,7 +215,8 @@ fn a_torque_free_satellite_draws_h_s_flat_at_its_value() {
     ] {
         assert!(all.iter().any(|t| t.2 == label), "{label}");
     }
-    // The H_s panel's y ticks are those of a flat line at 0 (the range ±1 around it), not round-off magnified.
+    // The H_s panel's y ticks are those of a flat line at 0 (the range ±1 around it), not round-off magnified into
+    // ticks of 1e-17.
     let title = all
         .iter()
         .position(|t| t.2 == "Moment of momentum H, space axes")
@@ -225,10 +226,10 @@ fn a_torque_free_satellite_draws_h_s_flat_at_its_value() {
         .map(|t| t.2.as_str())
         .collect();
     assert!(
-        ticks.contains(&"1.0") && ticks.contains(&"-1.0"),
+        ticks.iter().any(|t| ["1", "0.5", "-0.5", "-1"].contains(t)),
         "{ticks:?}"
     );
-    assert!(!ticks.iter().any(|t| t.contains("e-1")), "{ticks:?}");
+    assert!(!ticks.iter().any(|t| t.contains("e-")), "{ticks:?}");
 }
 
 #[test]
