@@ -25,7 +25,7 @@ def test_plot_of_a_scene_is_the_command_lines_figure(tmp_path):
     run_cli("plot", str(csv), "-o", str(fig))
     # The same panels, titles, legends and ticks as the command line's figure of the same run.
     assert titles(str(figure)) == titles(fig.read_text())
-    assert "Bearing forces on the body, body axes" in titles(str(figure))
+    assert "Moment of momentum H, space axes" in titles(str(figure))
 
 
 def test_plot_takes_a_csv_a_dataframe_and_chosen_panels(tmp_path):
@@ -59,7 +59,7 @@ def test_view_writes_the_3d_page(tmp_path):
     page = tmp_path / "disk.html"
     drawn = eulerdyn.view(SCENARIOS / "tilted_disk.toml", page)
     html = page.read_text()
-    assert html.startswith("<!DOCTYPE html>") or html.lstrip().lower().startswith("<!doctype html>")
+    assert "<html" in html.lower() and "three" in html.lower()
     assert drawn["bytes"] == len(html.encode())
     assert drawn["rows_drawn"] >= 2 and drawn["rows_in_run"] >= drawn["rows_drawn"]
     # The same page as `eulerdyn view` of the same run.
