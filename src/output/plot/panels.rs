@@ -287,7 +287,7 @@ fn flatten_constant(mut plot: PanelPlot, tolerance: f64, unit: &str) -> PanelPlo
 fn h_panel(run: &RunSeries, columns: &str, axes: &str) -> PanelPlot {
     flatten_constant(
         h_curves(run, columns, axes),
-        ROUND_OFF * run.momentum_scale,
+        ROUND_OFF * run.momentum_scale(),
         "kg·m²/s",
     )
 }

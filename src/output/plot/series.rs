@@ -76,10 +76,10 @@ pub struct RunSeries {
     pub(super) events: Vec<EventRow>,
     /// The panels read for: those asked for or, when none were, the panels the run has ([`Panel::of_run`]).
     pub panels: Vec<Panel>,
-    /// The run's scale of moment of momentum (kg·m²/s): the largest 2T/|ω_b| over the rows (≤ |I ω|, by
-    /// Cauchy–Schwarz, 2T = ω·Iω ≤ |ω| |Iω|), when the H panels read `energy` and `omega_b_*`; else 0.
-    pub(super) momentum_scale: f64,
-    /// The indices in a row's values of `energy` and `omega_b_x` (for [`RunSeries::momentum_scale`]).
+    /// The largest |T| and |ω_b| over the rows, when the H panels read `energy` and `omega_b_*` (else 0), for
+    /// [`RunSeries::momentum_scale`].
+    extremes: (f64, f64),
+    /// The indices in a row's values of `energy` and `omega_b_x`.
     scale_index: Option<(usize, usize)>,
 }
 
@@ -140,7 +140,7 @@ impl RunSeries {
             scene: None,
             events: Vec::new(),
             panels: panels.to_vec(),
-            momentum_scale: 0.0,
+            extremes: (0.0, 0.0),
             scale_index,
         }
     }
@@ -160,10 +160,10 @@ impl RunSeries {
         if let Some((energy, omega)) = self.scale_index {
             let w = &values[omega..omega + 3];
             let omega_norm = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
-            if omega_norm > 0.0 {
-                let scale = 2.0 * values[energy].abs() / omega_norm;
-                self.momentum_scale = self.momentum_scale.max(scale);
-            }
+            self.extremes = (
+                self.extremes.0.max(values[energy].abs()),
+                self.extremes.1.max(omega_norm),
+            );
         }
         for (drift, &k) in self.drifts.iter_mut().zip(drift_index) {
             let x = values[k];
@@ -185,6 +185,18 @@ impl RunSeries {
             .find(|(name, _)| *name == column)
             .map(|(_, d)| d.points())
             .unwrap_or_default()
+    }
+
+    /// The run's scale of moment of momentum (kg·m²/s), 2 max T / max |ω_b| (0 when not read or at rest): for a
+    /// rigid body 2T = ω·Iω ≤ |ω| |Iω| (Cauchy–Schwarz), so it is at most the largest |Iω|; a rotor's energy
+    /// ½ J Ω² raises it by up to Ω/|ω_b|.
+    pub(super) fn momentum_scale(&self) -> f64 {
+        let (energy, omega) = self.extremes;
+        if omega > 0.0 {
+            2.0 * energy / omega
+        } else {
+            0.0
+        }
     }
 
     /// Whether the CSV column `column` was read (an optional column the file has, or a required one).
