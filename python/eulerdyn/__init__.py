@@ -9,7 +9,9 @@ Each function mirrors a command of the ``eulerdyn`` command line and calls the s
 - :func:`compare` — both forms of Euler's equation against each other and the closed form;
 - :func:`accuracy` — the work-precision study, as a DataFrame;
 - :func:`balance` — two-plane balancing of a fixed-axis or hinge scene;
-- :func:`sweep` — many runs of a scene with keys varied, a row per run.
+- :func:`sweep` — many runs of a scene with keys varied, a row per run;
+- :func:`plot` — eulerdyn's figure of a run (SVG, shown inline in a notebook);
+- :func:`view` — eulerdyn's 3D page of a run, written to an HTML file.
 
 A scene is the path of a scene file (TOML) or a dict of the same keys, e.g.
 ``{"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "solver": {"t_end": 1.0}, "output": {"every": 0.1}}``;
@@ -21,17 +23,21 @@ version of the eulerdyn crate the extension was built from.
 """
 
 from ._api import SceneLike, accuracy, balance, check, compare, events, run, sweep
+from ._figures import Svg, plot, view
 from ._eulerdyn import RunError, SceneError, __version__
 
 __all__ = [
     "RunError",
     "SceneError",
     "SceneLike",
+    "Svg",
     "accuracy",
     "balance",
     "check",
     "compare",
     "events",
+    "plot",
     "run",
     "sweep",
+    "view",
 ]

@@ -8,7 +8,21 @@ import pandas as pd
 from ._eulerdyn import RunError as RunError
 from ._eulerdyn import SceneError as SceneError
 
-__all__ = ["RunError", "SceneError", "SceneLike", "accuracy", "balance", "check", "compare", "events", "run", "sweep"]
+__all__ = [
+    "RunError",
+    "SceneError",
+    "SceneLike",
+    "Svg",
+    "accuracy",
+    "balance",
+    "check",
+    "compare",
+    "events",
+    "plot",
+    "run",
+    "sweep",
+    "view",
+]
 
 __version__: str
 """The version of the eulerdyn crate the extension was built from."""
@@ -75,3 +89,25 @@ def sweep(
     shard: Optional[str] = None,
 ) -> pd.DataFrame:
     """The results table of a sweep file or a dict of its keys (``eulerdyn sweep``), a row per run."""
+
+RunLike = Union[str, "os.PathLike[str]", Mapping[str, Any], pd.DataFrame]
+
+class Svg:
+    """An SVG figure: ``str(svg)`` is its text; Jupyter shows it inline."""
+
+    data: str
+    def __init__(self, data: str) -> None: ...
+    def _repr_svg_(self) -> str: ...
+    def save(self, path: Union[str, "os.PathLike[str]"]) -> None: ...
+
+def plot(
+    source: RunLike,
+    panels: Optional[Union[str, Sequence[str]]] = None,
+    *,
+    title: Optional[str] = None,
+    size: Optional[str] = None,
+) -> Svg:
+    """eulerdyn's figure of a run (a CSV path, a scene or a DataFrame), as ``eulerdyn plot`` draws it."""
+
+def view(source: RunLike, path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
+    """Writes eulerdyn's 3D page of a run to ``path``, as ``eulerdyn view`` does."""

@@ -63,3 +63,14 @@ def balance(
 
 def sweep(sweep: _Scene, *, jobs: Optional[int] = None, shard: Optional[str] = None) -> str:
     """The sweep's results table as CSV text."""
+
+def plot(
+    csv: str, panels: Optional[str] = None, title: Optional[str] = None, size: Optional[str] = None
+) -> str:
+    """The figure of a run's CSV as SVG text, as ``eulerdyn plot`` draws it."""
+
+def view(csv: str, out: str) -> Dict[str, Any]:
+    """Writes the 3D page of a run's CSV to ``out``; what was drawn, as a dict."""
+
+def run_to_csv(scene: _Scene, csv: str) -> None:
+    """Runs the scene and writes its CSV and sidecar, as ``eulerdyn run SCENE -o CSV`` does."""

@@ -1,5 +1,5 @@
 //! `eulerdyn._eulerdyn`: the eulerdyn library for Python, one function per command of the command line (`run`,
-//! `check`, `compare`, `accuracy`, `balance`, `sweep`). Each takes a scene file's path or a dict of the same keys, calls the
+//! `check`, `compare`, `accuracy`, `balance`, `sweep`, `plot`, `view`). Each takes a scene file's path or a dict of the same keys, calls the
 //! library (nothing is computed here), and returns plain Python data that `eulerdyn/__init__.py` turns into pandas
 //! DataFrames.
 //!
@@ -11,6 +11,7 @@
 mod commands;
 mod convert;
 mod errors;
+mod figures;
 mod input;
 mod moment;
 mod run;
@@ -31,5 +32,8 @@ fn _eulerdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::accuracy, m)?)?;
     m.add_function(wrap_pyfunction!(commands::balance, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(figures::plot, m)?)?;
+    m.add_function(wrap_pyfunction!(figures::view, m)?)?;
+    m.add_function(wrap_pyfunction!(figures::run_to_csv, m)?)?;
     Ok(())
 }

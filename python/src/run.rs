@@ -276,7 +276,7 @@ fn law_error(py: Python<'_>, input: &SceneInput, name: &str, failure: LawFailure
 }
 
 /// Issues a Python `UserWarning` (the command line prints the same text on stderr as `warning: …`).
-fn warn(py: Python<'_>, message: String) -> PyResult<()> {
+pub fn warn(py: Python<'_>, message: String) -> PyResult<()> {
     let text = CString::new(message.replace('\0', " ")).unwrap_or_default();
     PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 2)
 }

@@ -139,6 +139,9 @@ pub fn sweep(
 ) -> PyResult<String> {
     no_panic(|| {
         let (plan, _staged) = load(py, sweep)?;
+        for warning in plan.warnings() {
+            crate::run::warn(py, format!("{}: {warning}", plan.file.display()))?;
+        }
         let shard = match shard {
             Some(text) => Shard::parse(&text).map_err(SceneError::new_err)?,
             None => Shard::ALL,

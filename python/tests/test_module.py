@@ -27,7 +27,10 @@ def test_dir_shows_the_modules_names_only():
     names = dir(eulerdyn)
     public = {n for n in names if not n.startswith("_")}
     assert public == set(eulerdyn.__all__)
-    assert public == {"RunError", "SceneError", "SceneLike", "accuracy", "balance", "check", "compare", "events", "run", "sweep"}
+    assert public == {
+        "RunError", "SceneError", "SceneLike", "Svg", "accuracy", "balance", "check", "compare", "events", "plot",
+        "run", "sweep", "view",
+    }
     # What the implementation imports stays out of it (issue 27).
     for name in ("np", "pd", "os", "csv", "io", "math", "Dict", "Any", "Mapping", "Optional", "annotations"):
         assert name not in names, name

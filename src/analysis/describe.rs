@@ -51,6 +51,31 @@ fn plain(v: f64) -> String {
     }
 }
 
+/// A value rounded for people: six significant digits, trailing zeros dropped, scientific notation below 1e-4
+/// or from 1e6 (as C's `%g`): 1.9999999999999998e-5 → `2e-05`, 0.05 → `0.05`, 1234.5678 → `1234.57`.
+pub fn for_people(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let scientific = format!("{v:.5e}");
+    let (mantissa, exponent) = scientific.split_once('e').unwrap_or((&scientific, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    let trim = |text: &str| {
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text.to_string()
+        }
+    };
+    if (-4..6).contains(&exponent) {
+        let decimals = (5 - exponent) as usize;
+        trim(&format!("{v:.decimals$}"))
+    } else {
+        let sign = if exponent < 0 { '-' } else { '+' };
+        format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())
+    }
+}
+
 fn vec3(v: &Vector3<f64>) -> String {
     format!("({}, {}, {})", fixed(v[0]), fixed(v[1]), fixed(v[2]))
 }
@@ -115,8 +140,8 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 "{}: axis {} (body axes), J = {} kg*m^2, Omega(0) = {} rad/s relative, {drive}",
                 r.name,
                 vec3(&r.axis_b.into_inner()),
-                r.inertia,
-                r.spin0
+                for_people(r.inertia),
+                for_people(r.spin0)
             ),
         );
         if let Some(u) = &r.imbalance {
@@ -126,8 +151,8 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 &format!(
                     "  imbalance: static {} kg*m (a force U_s Omega^2), dynamic {} kg*m^2 (a couple U_d Omega^2), \
                      turning with the wheel from body direction {} at t = 0; wheel centre {} m from the moment center",
-                    u.static_kgm,
-                    u.dynamic_kgm2,
+                    for_people(u.static_kgm),
+                    for_people(u.dynamic_kgm2),
                     vec3(&u.w2_b),
                     vec3(&u.r_b)
                 ),
@@ -653,9 +678,27 @@ fn support_lines(w: &mut Description, scene: &Scene) {
     );
 }
 
-/// The effects, one a line (or why there are none).
+/// The effects, one a line, then each wheel's imbalance (a moment on the body turning with the wheel), or why
+/// there are none.
 fn effect_lines(w: &mut Description, scene: &Scene) {
-    if scene.effects.is_empty() {
+    let imbalances: Vec<String> = match &scene.motion {
+        Motion::Free {
+            gyrostat: Some(g), ..
+        } => (g.rotors().iter())
+            .filter_map(|r| {
+                let u = r.imbalance.as_ref()?;
+                Some(format!(
+                    "imbalance of rotor {}: static {} kg*m, dynamic {} kg*m^2 (a force and a couple turning with the \
+                     wheel, growing as its spin squared)",
+                    r.name,
+                    for_people(u.static_kgm),
+                    for_people(u.dynamic_kgm2)
+                ))
+            })
+            .collect(),
+        _ => Vec::new(),
+    };
+    if scene.effects.is_empty() && imbalances.is_empty() {
         let none = match scene.motion {
             Motion::FixedAxis(_) => "none: the motion is prescribed",
             Motion::Hinge(_) => "none: the hinge turns at its initial rate",
@@ -663,8 +706,9 @@ fn effect_lines(w: &mut Description, scene: &Scene) {
         };
         line(w, "effects", none);
     }
-    for (k, e) in scene.effects.iter().enumerate() {
-        line(w, if k == 0 { "effects" } else { "" }, &effect_text(e));
+    let texts = scene.effects.iter().map(effect_text).chain(imbalances);
+    for (k, text) in texts.enumerate() {
+        line(w, if k == 0 { "effects" } else { "" }, &text);
     }
 }
 
@@ -841,5 +885,19 @@ mod tests {
         let sphere = principal([2.0, 2.0, 2.0]);
         let (angle, _) = tilt_from_principal(&sphere, &Vector3::new(1.0, 2.0, 3.0));
         assert!(angle < 1e-6, "{angle}");
+    }
+
+    #[test]
+    fn numbers_for_people_have_six_significant_digits() {
+        // 20 g*mm in kg*m as the scene's conversion computes it (20 × 1e-6 = 1.9999999999999998e-5).
+        let twenty_gmm = 20.0 * 1e-6;
+        assert_ne!(twenty_gmm, 2e-5);
+        assert_eq!(for_people(twenty_gmm), "2e-05");
+        assert_eq!(for_people(0.05), "0.05");
+        assert_eq!(for_people(1234.5678), "1234.57");
+        assert_eq!(for_people(-3.0), "-3");
+        assert_eq!(for_people(2.5e7), "2.5e+07");
+        assert_eq!(for_people(0.0), "0");
+        assert_eq!(for_people(0.000123456789), "0.000123457");
     }
 }

@@ -148,8 +148,10 @@ impl TorqueTable {
     }
 }
 
-/// The rows of a table's text: the times and moments, or what is wrong and in which row.
+/// The rows of a table's text: the times and moments, or what is wrong and in which row. A UTF-8 byte-order mark
+/// and CRLF line ends (as spreadsheets save CSV) are accepted.
 fn parse_rows(text: &str) -> Result<(Vec<f64>, Vec<Vector3<f64>>), String> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
         .enumerate()
@@ -352,5 +354,12 @@ mod tests {
             let e = parse_rows(text).unwrap_err();
             assert!(e.contains(expected), "{text:?}: {e}");
         }
+    }
+
+    #[test]
+    fn a_spreadsheet_s_bom_and_crlf_are_accepted() {
+        let plain = parse_rows("t,M_x,M_y,M_z\n0,1,2,3\n1,4,5,6\n").unwrap();
+        let saved = parse_rows("\u{feff}t,M_x,M_y,M_z\r\n0,1,2,3\r\n1,4,5,6\r\n").unwrap();
+        assert_eq!(saved, plain);
     }
 }

@@ -14,6 +14,11 @@ pub const RADIANS_TO_WHOLE_DEGREES: f64 = 0.01;
 /// A free asymmetric body is near the separatrix when |δ| < this, δ = (H² − 2E·I₂) / (2E·(I₃ − I₁)).
 pub const SEPARATRIX_DISTANCE: f64 = 1e-3;
 
+/// A wheel's static imbalance (g·mm) below this looks like kg·m written as g·mm (10⁶ × too small): ISO 21940-11's
+/// finest grade, G 0.4 (e·Ω = 0.4 mm/s), allows U = m_w·(0.4 mm/s)/Ω, which for a wheel of 20 g at 60 000 rpm
+/// (Ω = 6283 rad/s) is 1.3e-3 g·mm; a wheel ten times finer than that is not made.
+pub const SMALLEST_PLAUSIBLE_IMBALANCE_GMM: f64 = 1e-4;
+
 /// Whether an angle written in degrees, `deg`, looks like radians: 0 < |deg| < 2π, its value read as radians is
 /// within [`RADIANS_TO_WHOLE_DEGREES`] of a whole number of degrees, and it has more than one decimal (a skew of
 /// 0.5°, 1° or 1.5° is a real rotor's, not a slip; 0.5236 or 0.0349 is 30° or 2° in radians).
@@ -66,6 +71,38 @@ pub fn unit_slips(spec: &SceneSpec) -> Vec<String> {
             "motion.tilt_deg = {v} is {v} degrees; if radians were meant, that is {:.1} degrees",
             v.to_degrees()
         ));
+    }
+    out.extend(imbalance_slips(spec));
+    out
+}
+
+/// Wheel imbalances no wheel could have. A wheel of mass m_w and axial moment J = m_w k² (k its radius of
+/// gyration) has at most U_s = m_w·k (its whole mass at k from the axis) = √(J·m_w) ≤ √(J·m), m the body's mass,
+/// which includes the wheel's: a larger U_s is a unit slip (kg·m or g·m written as g·mm, or kg·m² as g·mm²). A U_s
+/// below [`SMALLEST_PLAUSIBLE_IMBALANCE_GMM`] is finer than any balancing grade: kg·m written as g·mm.
+fn imbalance_slips(spec: &SceneSpec) -> Vec<String> {
+    let mut out = Vec::new();
+    for (k, rotor) in spec.body.rotor.iter().enumerate() {
+        let key = format!("body.rotor.{k}.imbalance_static_gmm");
+        let u_gmm = rotor.imbalance_static_gmm;
+        // √(J m) in kg·m, then in g·mm (1 kg·m = 10⁶ g·mm).
+        let most_gmm = (rotor.inertia * spec.body.mass).sqrt() * 1e6;
+        if u_gmm > most_gmm {
+            out.push(format!(
+                "{key} = {u_gmm} g*mm is more than a wheel of J = {} kg*m^2 in a body of {} kg can have (its whole \
+                 mass at its radius of gyration: sqrt(J*m) = {most_gmm:.3e} g*mm); is it in g*mm?",
+                rotor.inertia, spec.body.mass
+            ));
+        } else if u_gmm > 0.0 && u_gmm < SMALLEST_PLAUSIBLE_IMBALANCE_GMM {
+            // The value read as kg·m, in g·mm, to 7 significant digits (2e-5 kg·m: 20 g·mm, not 20.000000000000004).
+            let as_kgm: f64 = format!("{:.6e}", u_gmm * 1e6)
+                .parse()
+                .unwrap_or(u_gmm * 1e6);
+            out.push(format!(
+                "{key} = {u_gmm} g*mm is finer than any balancing grade (G 0.4 allows 1.3e-3 g*mm on a 20 g \
+                 wheel at 60000 rpm); if kg*m were meant, that is {as_kgm} g*mm"
+            ));
+        }
     }
     out
 }

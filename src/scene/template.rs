@@ -39,6 +39,9 @@ impl SceneTemplate {
     /// table still reads as a scene. The error says why not (a key the format does not know, a key whose value is
     /// not a number, an array element of an array the base scene does not give).
     pub fn check_numeric_key(&self, key: &KeyPath, probe: f64) -> Result<(), String> {
+        if let Some(problem) = self.unknown_key(key, probe) {
+            return Err(problem);
+        }
         let mut table = self.table.clone();
         set_number(&mut table, key, probe)?;
         match table.try_into::<SceneSpec>() {
@@ -54,6 +57,47 @@ impl SceneTemplate {
                 }
             }
         }
+    }
+
+    /// When a key of `key`'s path that the base scene does not give is not a key of the scene format either, the
+    /// message naming it and the nearest valid key (by edit distance) in its place: a misspelt key is found
+    /// before the arrays or tables it would lead into.
+    fn unknown_key(&self, key: &KeyPath, probe: f64) -> Option<String> {
+        let absent = first_absent(&self.table, key)?;
+        let mut table = self.table.clone();
+        set_number(&mut table, &truncated(key, absent + 1), probe).ok()?;
+        let message = table
+            .try_into::<SceneSpec>()
+            .err()?
+            .message()
+            .trim()
+            .to_string();
+        let (wrong, valid) = unknown_field(&message)?;
+        let Some(Segment::Key(name)) = key.segments().get(absent) else {
+            return None;
+        };
+        if *name != wrong {
+            return None;
+        }
+        let nearest = valid
+            .iter()
+            .min_by_key(|v| edit_distance(&wrong.to_lowercase(), &v.to_lowercase()))?;
+        let mut fixed = truncated(key, absent).key(nearest);
+        for segment in &key.segments()[absent + 1..] {
+            fixed = match segment {
+                Segment::Key(name) => fixed.key(name),
+                Segment::Index(i) => fixed.index(*i),
+            };
+        }
+        Some(format!(
+            "`{key}` is not a key of the scene format: `{wrong}` is unknown there; the nearest valid key is \
+             `{fixed}` (valid there: {})",
+            valid
+                .iter()
+                .map(|v| format!("`{v}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ))
     }
 
     /// The scene with each key set to its value.
@@ -130,6 +174,11 @@ impl<'a> Here<'a> {
 
 /// The first `n` segments of `key`, written as in messages.
 fn prefix(key: &KeyPath, n: usize) -> String {
+    truncated(key, n).to_string()
+}
+
+/// The first `n` segments of `key`.
+fn truncated(key: &KeyPath, n: usize) -> KeyPath {
     let mut path = KeyPath::root();
     for segment in &key.segments()[..n] {
         path = match segment {
@@ -137,7 +186,57 @@ fn prefix(key: &KeyPath, n: usize) -> String {
             Segment::Index(i) => path.index(*i),
         };
     }
-    path.to_string()
+    path
+}
+
+/// The index of the first segment of `key` that is a key `table` does not give (none when the path stops at a
+/// value or an index before it, or is given whole).
+fn first_absent(table: &Table, key: &KeyPath) -> Option<usize> {
+    let mut here: Option<&Value> = None;
+    for (i, segment) in key.segments().iter().enumerate() {
+        let next = match (here, segment) {
+            (None, Segment::Key(name)) => table.get(name),
+            (Some(Value::Table(t)), Segment::Key(name)) => t.get(name),
+            (Some(Value::Array(a)), Segment::Index(n)) => a.get(*n),
+            _ => return None,
+        };
+        match next {
+            Some(value) => here = Some(value),
+            None => return matches!(segment, Segment::Key(_)).then_some(i),
+        }
+    }
+    None
+}
+
+/// serde's "unknown field `x`, expected one of `a`, `b`" (or "expected `a` or `b`"): x and the valid names.
+fn unknown_field(message: &str) -> Option<(String, Vec<String>)> {
+    let rest = message.strip_prefix("unknown field `")?;
+    let (wrong, rest) = rest.split_once('`')?;
+    let expected = rest.split_once("expected")?.1;
+    let valid: Vec<String> = expected
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .map(str::to_string)
+        .collect();
+    (!valid.is_empty()).then(|| (wrong.to_string(), valid))
+}
+
+/// The Levenshtein distance of `a` and `b` (insertions, deletions and substitutions of characters), by the
+/// two-row dynamic programme of Wagner & Fischer, "The string-to-string correction problem", JACM 21 (1974).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let substitute = diagonal + usize::from(ca != *cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substitute.min(row[j] + 1).min(diagonal + 1);
+        }
+    }
+    row[b.len()]
 }
 
 fn out_of_range(path: &str, len: usize) -> String {
@@ -217,5 +316,37 @@ mod tests {
             .unwrap_err();
         assert!(range.contains("out of range (the array has 3"), "{range}");
         assert!(t.check_numeric_key(&key("motion.rate"), 1.0).is_ok());
+    }
+
+    #[test]
+    fn a_misspelt_key_names_the_nearest_valid_key() {
+        let t = disk();
+        let array = t.check_numeric_key(&key("effects.0.c"), 1.0).unwrap_err();
+        assert!(
+            array.contains("the nearest valid key is `effect.0.c`"),
+            "{array}"
+        );
+        assert!(!array.contains("does not give this array"), "{array}");
+        let table = t.check_numeric_key(&key("solvr.rtol"), 1e-8).unwrap_err();
+        assert!(
+            table.contains("the nearest valid key is `solver.rtol`"),
+            "{table}"
+        );
+        let leaf = t
+            .check_numeric_key(&key("motion.tilt_degs"), 1.0)
+            .unwrap_err();
+        assert!(
+            leaf.contains("the nearest valid key is `motion.tilt_deg`"),
+            "{leaf}"
+        );
+    }
+
+    #[test]
+    fn the_edit_distance_counts_single_character_edits() {
+        // Wagner & Fischer (1974): kitten → sitting takes 3 edits (two substitutions, one insertion).
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("effects", "effect"), 1);
+        assert_eq!(edit_distance("", "abc"), 3);
+        assert_eq!(edit_distance("same", "same"), 0);
     }
 }

@@ -11,6 +11,7 @@ mod common;
 mod events;
 mod exact_closed_forms;
 mod exact_grid;
+mod first_hour;
 mod fixed_axis;
 mod free_rotation;
 mod gallery;

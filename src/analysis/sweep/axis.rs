@@ -72,8 +72,9 @@ impl Axis {
         Ok(Self::Grid(values))
     }
 
-    /// `logspace = [from, to, n]`: n values spaced geometrically from `from` to `to`, both included; `from` and
-    /// `to` are the values themselves (not powers of ten), non-zero and of one sign.
+    /// `geomspace = [from, to, n]` (as numpy's `geomspace`; `logspace` is the same): n values spaced
+    /// geometrically from `from` to `to`, both included, x_k = from·(to/from)^(k/(n−1)); `from` and `to` are the
+    /// values themselves (not powers of ten, unlike numpy's `logspace`), non-zero and of one sign.
     ///
     /// ```
     /// use eulerdyn::analysis::sweep::Axis;

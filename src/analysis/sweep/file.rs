@@ -41,6 +41,7 @@ pub(super) struct VaryFile {
     values: Option<Vec<f64>>,
     linspace: Option<[f64; 3]>,
     logspace: Option<[f64; 3]>,
+    geomspace: Option<[f64; 3]>,
     normal: Option<NormalFile>,
     uniform: Option<UniformFile>,
 }
@@ -99,6 +100,10 @@ impl VaryFile {
                 "logspace",
                 self.logspace.map(|[a, b, n]| Axis::logspace(a, b, n)),
             ),
+            (
+                "geomspace",
+                self.geomspace.map(|[a, b, n]| Axis::logspace(a, b, n)),
+            ),
             ("normal", self.normal.map(|d| Axis::normal(d.mean, d.sd))),
             (
                 "uniform",
@@ -118,10 +123,20 @@ impl VaryFile {
             };
             return Err(blame.at(
                 vary,
-                format!("give exactly one of values, linspace, logspace, normal, uniform (given: {given})"),
+                format!("give exactly one of values, linspace, geomspace, logspace, normal, uniform (given: {given})"),
             ));
         }
         let (name, axis) = ways.remove(0);
         axis.map_err(|problem| blame.at(vary.key(name), problem))
+    }
+
+    /// The warning of a `logspace`, whose end values are values, not numpy's powers of ten; `None` otherwise.
+    pub fn logspace_warning(&self, index: usize) -> Option<String> {
+        let [from, to, n] = self.logspace?;
+        Some(format!(
+            "vary[{index}].logspace = [{from}, {to}, {n}] runs from {from} to {to} (the end values themselves, \
+             as numpy's geomspace), not from 10^{from} to 10^{to} as numpy's logspace would; write \
+             `geomspace = [{from}, {to}, {n}]` to say so, or give the values 10^a and 10^b"
+        ))
     }
 }

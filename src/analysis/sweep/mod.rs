@@ -56,6 +56,7 @@ pub struct Sweep {
     runs_per_point: u64,
     total: u64,
     layout: TableLayout,
+    warnings: Vec<String>,
 }
 
 /// Which runs this process runs: those with `run % count == index − 1` (`--shard index/count`).
@@ -118,6 +119,9 @@ impl Sweep {
             return Err(blame.at(root.key("runs"), "must be at least 1".into()));
         }
         let mut varied = Vec::with_capacity(spec.vary.len());
+        let warnings = (spec.vary.iter().enumerate())
+            .filter_map(|(i, v)| v.logspace_warning(i))
+            .collect();
         for (i, v) in spec.vary.iter().enumerate() {
             let at = || root.clone().key("vary").index(i).key("key");
             let axis = v.axis(i, &blame)?;
@@ -148,7 +152,13 @@ impl Sweep {
             runs_per_point: spec.runs,
             total,
             layout,
+            warnings,
         })
+    }
+
+    /// What the sweep file may mean otherwise than it says (a `logspace`'s end values), for the user to read.
+    pub fn warnings(&self) -> &[String] {
+        &self.warnings
     }
 
     /// The number of runs.

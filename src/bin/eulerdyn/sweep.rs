@@ -44,6 +44,9 @@ pub enum SweepFailure {
 pub fn sweep_command(args: &SweepArgs, quiet: bool) -> Result<(String, bool), SweepFailure> {
     let input = |m: String| SweepFailure::Input(m);
     let sweep = Sweep::load(&args.sweep).map_err(|e| input(e.to_string()))?;
+    for warning in sweep.warnings() {
+        eprintln!("{}: warning: {warning}", args.sweep.display());
+    }
     // The base scene's own warnings (unit slips, the separatrix), once: every run is a variant of it.
     if let Ok(base) = scene::load(&sweep.scene_file, &Overrides::default()) {
         for warning in scene::advice::warnings(&base) {

@@ -142,10 +142,60 @@ fn legend_columns(plot: &PanelPlot, width: i32) -> (usize, i32) {
     (((width - 16) / entry).max(1) as usize, entry)
 }
 
-/// The lines a panel's legend needs in a panel `width` px wide: its entries in columns, then its notes.
+/// The legend's left margin (px), and the indent of an entry's label after its line sample (px).
+const LEGEND_LEFT: i32 = 12;
+const LABEL_INDENT: i32 = 36;
+
+/// The characters of legend text (at [`TEXT_PX`], 0.56 of it per character as in [`fitted_px`]) that fit in a
+/// panel `width` px wide from `indent` px, at least 8.
+fn chars_fitting(width: i32, indent: i32) -> usize {
+    (f64::from(width - indent - LEGEND_LEFT) / (0.56 * TEXT_PX)).max(8.0) as usize
+}
+
+/// `text` broken at spaces into lines of at most `chars` characters (a longer word on a line of its own).
+fn wrap(text: &str, chars: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(line) if line.chars().count() + 1 + word.chars().count() <= chars => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+/// The lines of each curve's label, of each event's name and of each note in a panel `width` px wide: a label
+/// wider than the panel (one entry a line) and a note wider than it are wrapped, so that the legend fits.
+fn legend_texts(plot: &PanelPlot, width: i32) -> (Vec<Vec<String>>, Vec<Vec<String>>) {
+    let (per_line, _) = legend_columns(plot, width);
+    let label_chars = if per_line == 1 {
+        chars_fitting(width, LEGEND_LEFT + LABEL_INDENT)
+    } else {
+        usize::MAX
+    };
+    let labels = (plot.curves.iter().map(|c| &c.label))
+        .chain(plot.events.iter().map(|e| &e.name))
+        .map(|label| wrap(label, label_chars))
+        .collect();
+    let note_chars = chars_fitting(width, LEGEND_LEFT);
+    let notes = plot.notes.iter().map(|n| wrap(n, note_chars)).collect();
+    (labels, notes)
+}
+
+/// The lines a panel's legend needs in a panel `width` px wide: its entries in columns (a wrapped label's lines
+/// when one a line), then its notes' lines.
 fn legend_rows(plot: &PanelPlot, width: i32) -> usize {
     let (per_line, _) = legend_columns(plot, width);
-    (plot.curves.len() + plot.events.len()).div_ceil(per_line) + plot.notes.len()
+    let (labels, notes) = legend_texts(plot, width);
+    let entries = if per_line == 1 {
+        labels.iter().map(Vec::len).sum()
+    } else {
+        labels.len().div_ceil(per_line)
+    };
+    entries + notes.iter().map(Vec::len).sum::<usize>()
 }
 
 /// The x (time) range of the charts: the run's, or a unit range around a single time.
@@ -473,21 +523,35 @@ fn draw_legend(area: &Area<'_>, plot: &PanelPlot) -> DrawResult {
         .pos(Pos::new(HPos::Left, VPos::Center));
     let (w, _) = area.dim_in_pixel();
     let (per_line, entry) = legend_columns(plot, w as i32 / DOT);
-    let left = 12;
+    let (labels, notes) = legend_texts(plot, w as i32 / DOT);
+    let left = LEGEND_LEFT;
     let mut y = LEGEND_LINE / 2;
     let entries = plot.curves.len() + plot.events.len();
-    for k in 0..entries {
+    for (k, lines) in labels.iter().enumerate() {
         let column = (k % per_line) as i32;
         let at = (DOT * (left + column * entry), DOT * y);
         match plot.curves.get(k) {
-            Some(curve) => draw_legend_entry(area, curve, at, &text, DOT)?,
+            Some(curve) => {
+                let first = lines.first().cloned().unwrap_or_default();
+                let shown = Curve {
+                    label: first,
+                    points: Vec::new(),
+                    ..*curve
+                };
+                draw_legend_entry(area, &shown, at, &text, DOT)?
+            }
             None => draw_event_legend_entry(area, &plot.events[k - plot.curves.len()], at, &text)?,
+        }
+        for more in lines.iter().skip(1) {
+            y += LEGEND_LINE;
+            let at = (DOT * (left + column * entry + LABEL_INDENT), DOT * y);
+            area.draw(&Text::new(more.clone(), at, text.clone()))?;
         }
         if column as usize + 1 == per_line || k + 1 == entries {
             y += LEGEND_LINE;
         }
     }
-    for line in &plot.notes {
+    for line in notes.iter().flatten() {
         area.draw(&Text::new(
             line.clone(),
             (DOT * left, DOT * y),
@@ -538,6 +602,18 @@ pub(crate) fn decade_label(v: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn legend_text_is_wrapped_at_spaces_to_fit() {
+        assert_eq!(
+            wrap("|H|: absolute (kg·m²/s), as |H|(0) = 0", 20),
+            vec!["|H|: absolute", "(kg·m²/s), as |H|(0)", "= 0"]
+        );
+        assert_eq!(wrap("short", 20), vec!["short"]);
+        for line in wrap("a b c d e f g h i j k l m n o p", 5) {
+            assert!(line.chars().count() <= 5, "{line}");
+        }
+    }
 
     #[test]
     fn ranges_of_constants_are_widened_around_the_value() {

@@ -142,9 +142,11 @@ impl Panel {
     }
 
     /// The CSV columns the panel draws when the file has them: V and T + V (gravity scenes) for the energy panel,
-    /// T + V and H_s,z (an invariant under vertical gravity) for the drift panel.
+    /// T + V and H_s,z (an invariant under vertical gravity) for the drift panel; the H panels read T and ω_b for
+    /// the run's momentum scale, below which a change of H is drawn flat.
     pub fn optional_columns(self) -> &'static [&'static str] {
         match self {
+            Panel::HBody | Panel::HSpace => &["energy", "omega_b_x", "omega_b_y", "omega_b_z"],
             Panel::Energy => &["potential", "energy_total"],
             Panel::Drift => &["energy_total", "H_s_z"],
             _ => &[],

@@ -7,6 +7,7 @@ use plotters::style::RGBColor;
 
 use super::Panel;
 use super::series::{RunSeries, SceneFacts};
+use crate::analysis::describe::for_people;
 use crate::scene::Invariant;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
@@ -242,8 +243,57 @@ fn support_panel(run: &RunSeries) -> PanelPlot {
     PanelPlot::linear("Support force F_sup, space axes", "F_sup (N)", curves)
 }
 
-/// H in one set of axes (columns `{columns}_x` …), with |H| grey, dashed with squares.
+/// A change of H within this fraction of the run's momentum scale is round-off: H = I ω + Σ J Ω a is summed in
+/// binary64 (unit round-off ε = 1.1e-16) at every row, and Runge–Kutta steps keep the linear invariant H_b of a
+/// torque-free gyrostat to round-off (HNW I, §II.1: every RK method conserves linear invariants); 1e-12 ≈ 10⁴ ε
+/// leaves room for round-off accumulated over 10⁴ rows.
+pub const ROUND_OFF: f64 = 1e-12;
+
+/// Draws flat the curves of `plot` when all of them stay within `tolerance` of each other's range but not within
+/// 1e-9 of their magnitude (a quantity constant to round-off about zero, which auto-scaling would blow up into
+/// noise): each at its mean, rounded to a multiple
+/// of `tolerance`, its value in its legend label (`H_s,x = 0`); a note says so.
+fn flatten_constant(mut plot: PanelPlot, tolerance: f64, unit: &str) -> PanelPlot {
+    let values = || {
+        plot.curves
+            .iter()
+            .flat_map(|c| c.points.iter().map(|p| p.1))
+    };
+    let lo = values().fold(f64::INFINITY, f64::min);
+    let hi = values().fold(f64::NEG_INFINITY, f64::max);
+    // A range within 1e-9 of its magnitude is drawn flat at its value already (`draw::linear_range`).
+    let relative = hi - lo <= 1e-9 * lo.abs().max(hi.abs());
+    let constant = tolerance > 0.0 && lo <= hi && hi - lo <= tolerance && !relative;
+    if !constant {
+        return plot;
+    }
+    for curve in &mut plot.curves {
+        let n = curve.points.len().max(1) as f64;
+        let mean = curve.points.iter().map(|p| p.1).sum::<f64>() / n;
+        // + 0.0 turns a rounded −0 into 0.
+        let value = (mean / tolerance).round() * tolerance + 0.0;
+        for p in &mut curve.points {
+            p.1 = value;
+        }
+        curve.label = format!("{} = {}", curve.label, for_people(value));
+    }
+    plot.notes
+        .push(format!("constant to round-off ({tolerance:.0e} {unit})"));
+    plot
+}
+
+/// H in one set of axes (columns `{columns}_x` …), with |H| grey, dashed with squares; drawn flat when it is
+/// constant to [`ROUND_OFF`] of the run's momentum scale.
 fn h_panel(run: &RunSeries, columns: &str, axes: &str) -> PanelPlot {
+    flatten_constant(
+        h_curves(run, columns, axes),
+        ROUND_OFF * run.momentum_scale(),
+        "kg·m²/s",
+    )
+}
+
+/// H in one set of axes (columns `{columns}_x` …), with |H| grey, dashed with squares.
+fn h_curves(run: &RunSeries, columns: &str, axes: &str) -> PanelPlot {
     let symbol = format!("H_{}", &axes[..1]);
     let norm = Curve {
         label: "|H|".into(),

@@ -13,7 +13,7 @@ use super::{Panel, PlotError};
 use crate::output::events_file::{EventRow, run_events};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
-use crate::scene::{Facts, MotionKind};
+use crate::scene::{Facts, MotionKind, MotionSpec};
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -44,6 +44,8 @@ pub(super) struct SceneFacts {
     pub(super) motion: MotionKind,
     /// What the scene conserves (the sidecar's `facts`), `None` in a sidecar written before 0.2.
     pub(super) facts: Option<Facts>,
+    /// The axis is in a turning carrier (`motion.carrier`): its bearing loads are drawn in space axes.
+    pub(super) carried: bool,
 }
 
 /// The curves read from a run's CSV, ready to draw.
@@ -66,6 +68,11 @@ pub struct RunSeries {
     pub(super) events: Vec<EventRow>,
     /// The panels read for: those asked for or, when none were, the panels the run has ([`Panel::of_run`]).
     pub panels: Vec<Panel>,
+    /// The largest |T| and |ω_b| over the rows, when the H panels read `energy` and `omega_b_*` (else 0), for
+    /// [`RunSeries::momentum_scale`].
+    extremes: (f64, f64),
+    /// The indices in a row's values of `energy` and `omega_b_x`.
+    scale_index: Option<(usize, usize)>,
 }
 
 /// The vectors whose magnitude a panel draws, by column prefix.
@@ -107,6 +114,14 @@ impl RunSeries {
                 })
             })
             .collect();
+        let at = |c: &str| wanted.iter().position(|w| *w == c);
+        let reads_scale = panels
+            .iter()
+            .any(|p| matches!(p, Panel::HBody | Panel::HSpace));
+        let scale_index = match (at("energy"), at("omega_b_x")) {
+            (Some(energy), Some(omega)) if reads_scale => Some((energy, omega)),
+            _ => None,
+        };
         Self {
             file: file.to_path_buf(),
             rows: 0,
@@ -117,6 +132,8 @@ impl RunSeries {
             scene: None,
             events: Vec::new(),
             panels: panels.to_vec(),
+            extremes: (0.0, 0.0),
+            scale_index,
         }
     }
 
@@ -131,6 +148,14 @@ impl RunSeries {
             let r = &values[norm.index..norm.index + 3];
             norm.points
                 .push(t, (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt());
+        }
+        if let Some((energy, omega)) = self.scale_index {
+            let w = &values[omega..omega + 3];
+            let omega_norm = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+            self.extremes = (
+                self.extremes.0.max(values[energy].abs()),
+                self.extremes.1.max(omega_norm),
+            );
         }
         for (drift, &k) in self.drifts.iter_mut().zip(drift_index) {
             let x = values[k];
@@ -154,6 +179,18 @@ impl RunSeries {
             .unwrap_or_default()
     }
 
+    /// The run's scale of moment of momentum (kg·m²/s), 2 max T / max |ω_b| (0 when not read or at rest): for a
+    /// rigid body 2T = ω·Iω ≤ |ω| |Iω| (Cauchy–Schwarz), so it is at most the largest |Iω|; a rotor's energy
+    /// ½ J Ω² raises it by up to Ω/|ω_b|.
+    pub(super) fn momentum_scale(&self) -> f64 {
+        let (energy, omega) = self.extremes;
+        if omega > 0.0 {
+            2.0 * energy / omega
+        } else {
+            0.0
+        }
+    }
+
     /// Whether the CSV column `column` was read (an optional column the file has, or a required one).
     pub(super) fn has(&self, column: &str) -> bool {
         self.columns.iter().any(|(name, _)| *name == column)
@@ -164,11 +201,13 @@ impl RunSeries {
 pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     if path.as_os_str() == "-" {
         let reader = RunCsvReader::new(Path::new("stdin"), std::io::stdin().lock())?;
-        return read_rows(reader, panels);
+        return read_rows(reader, panels, false);
     }
-    let mut series = read_rows(RunCsvReader::open(path)?, panels)?;
     let sidecar = Sidecar::read(path).ok();
-    series.scene = sidecar.as_ref().map(scene_facts);
+    let facts = sidecar.as_ref().map(scene_facts);
+    let carried = facts.as_ref().is_some_and(|f| f.carried);
+    let mut series = read_rows(RunCsvReader::open(path)?, panels, carried)?;
+    series.scene = facts;
     series.events = run_events(path, sidecar.as_ref())?;
     Ok(series)
 }
@@ -179,17 +218,29 @@ pub fn read_run_from(
     reader: impl Read,
     panels: &[Panel],
 ) -> Result<RunSeries, PlotError> {
-    read_rows(RunCsvReader::new(file, reader)?, panels)
+    read_rows(RunCsvReader::new(file, reader)?, panels, false)
 }
 
-/// Reads the data rows of `csv` (its header read) into the curves of `panels` (when empty, those the run has).
-fn read_rows(mut csv: RunCsvReader<impl Read>, panels: &[Panel]) -> Result<RunSeries, PlotError> {
+/// Reads the data rows of `csv` (its header read) into the curves of `panels` (when empty, those the run has; for
+/// a run in a turning carrier, `carried`, the bearing forces in space axes rather than in the spinning body's).
+fn read_rows(
+    mut csv: RunCsvReader<impl Read>,
+    panels: &[Panel],
+    carried: bool,
+) -> Result<RunSeries, PlotError> {
     let file = csv.file().to_path_buf();
     if csv.index_of("t").is_none() && looks_like_a_scene(&csv) {
         return Err(PlotError::input(&file, scene_file_advice(&file)));
     }
     let panels = if panels.is_empty() {
-        Panel::of_run(|c| csv.index_of(c).is_some())
+        let has = |c: &str| csv.index_of(c).is_some();
+        let space = carried && Panel::BearingsSpace.columns().iter().all(|c| has(c));
+        (Panel::of_run(has).into_iter())
+            .map(|p| match p {
+                Panel::Bearings if space => Panel::BearingsSpace,
+                p => p,
+            })
+            .collect()
     } else {
         panels.to_vec()
     };
@@ -362,5 +413,8 @@ fn scene_facts(sidecar: &Sidecar) -> SceneFacts {
         frame: sidecar.solver.frame.clone(),
         motion: sidecar.scene.motion,
         facts: sidecar.facts.clone(),
+        carried: (sidecar.scene.spec.motion.as_ref())
+            .and_then(MotionSpec::axis)
+            .is_some_and(|a| a.carrier.is_some()),
     }
 }
