@@ -6,5 +6,6 @@ pub mod balance;
 pub mod compare;
 pub mod describe;
 pub mod facts;
+pub mod score;
 pub mod study;
 pub mod sweep;

@@ -25,6 +25,7 @@ mod properties;
 mod readme;
 mod rotors;
 mod scene_errors;
+mod score;
 mod scene_fuzz;
 mod sidecar;
 mod study;
