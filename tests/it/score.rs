@@ -39,7 +39,11 @@ fn exact() -> TorqueFreeBody {
 
 /// Rows (t, q, ω_b) as a CSV with the suite's header, ω omitted when `with_omega` is false.
 fn csv(rows: &[(f64, UnitQuaternion<f64>, Vector3<f64>)], with_omega: bool) -> String {
-    let mut out = if with_omega { suite::HEADER.to_string() } else { "t,q_w,q_x,q_y,q_z".into() };
+    let mut out = if with_omega {
+        suite::HEADER.to_string()
+    } else {
+        "t,q_w,q_x,q_y,q_z".into()
+    };
     out.push('\n');
     for (t, q, w) in rows {
         let q = q.quaternion();
@@ -54,18 +58,28 @@ fn csv(rows: &[(f64, UnitQuaternion<f64>, Vector3<f64>)], with_omega: bool) -> S
 
 /// Times k/60 up to `t_end`.
 fn frames(t_end: f64) -> Vec<f64> {
-    (0..=(t_end * 60.0).round() as usize).map(|k| k as f64 / 60.0).collect()
+    (0..=(t_end * 60.0).round() as usize)
+        .map(|k| k as f64 / 60.0)
+        .collect()
 }
 
 /// The exact rows of [`FREE`] at 60 Hz.
 fn exact_rows() -> Vec<(f64, UnitQuaternion<f64>, Vector3<f64>)> {
     let e = exact();
-    frames(5.0).into_iter().map(|t| (t, e.attitude(t), e.omega_p(t))).collect()
+    frames(5.0)
+        .into_iter()
+        .map(|t| (t, e.attitude(t), e.omega_p(t)))
+        .collect()
 }
 
 fn score_text(dir: &Path, name: &str, text: &str, scene: &str) -> score::Score {
     let path = write_file(dir, name, text);
-    score::score(&path, &scene_from(scene, &Overrides::default()), &ReadOptions::default()).unwrap()
+    score::score(
+        &path,
+        &scene_from(scene, &Overrides::default()),
+        &ReadOptions::default(),
+    )
+    .unwrap()
 }
 
 #[test]
@@ -97,7 +111,11 @@ fn a_rotation_by_k_t_scores_k_t_end() {
     assert!((m.largest - k * 5.0).abs() < 1e-12, "{m:?}");
     assert!((m.last - k * 5.0).abs() < 1e-12 && m.at == 5.0, "{m:?}");
     assert!(m.passes == (k * 5.0 <= score::metrics::ATTITUDE_MAX));
-    assert_eq!(s.metrics.len(), 1, "without omega only the attitude is measured");
+    assert_eq!(
+        s.metrics.len(),
+        1,
+        "without omega only the attitude is measured"
+    );
 }
 
 /// Semi-implicit Euler at step h: ω ← ω + h·I⁻¹(−ω × Iω) (Euler's equation, torque-free), then q ← q·exp(hω/2)
@@ -135,16 +153,31 @@ fn semi_implicit_euler_scores_what_the_test_computes() {
     let m = s.metric("attitude").unwrap();
     assert!((m.largest - attitude).abs() < 1e-10, "{m:?} vs {attitude}");
     let m = s.metric("energy").unwrap();
-    assert!((m.largest - drift).abs() < 1e-10 * drift.max(1.0), "{m:?} vs {drift}");
-    assert!(attitude > 1e-3, "semi-implicit Euler at 60 Hz is first order: a visible error");
+    assert!(
+        (m.largest - drift).abs() < 1e-10 * drift.max(1.0),
+        "{m:?} vs {drift}"
+    );
+    assert!(
+        attitude > 1e-3,
+        "semi-implicit Euler at 60 Hz is first order: a visible error"
+    );
 }
 
 #[test]
 fn without_the_gyroscopic_term_h_turns_in_space_and_fails() {
     let dir = tempfile::tempdir().unwrap();
     let scene = write_file(dir.path(), "free.toml", FREE);
-    let theirs = write_file(dir.path(), "nogyro.csv", csv(&semi_implicit_euler(1.0 / 60.0, false), true));
-    let out = eulerdyn(["score", theirs.to_str().unwrap(), "--scene", scene.to_str().unwrap()]);
+    let theirs = write_file(
+        dir.path(),
+        "nogyro.csv",
+        csv(&semi_implicit_euler(1.0 / 60.0, false), true),
+    );
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]);
     out.expect_code(1);
     let line = (out.stdout.lines())
         .find(|l| l.starts_with("H direction drift in space (rad)"))
@@ -183,7 +216,10 @@ fn a_time_shifted_flip_reports_the_shift() {
     // Every flip comes `shift` late. The crossing is interpolated linearly between rows 1/600 s apart; at the
     // crossing ω_y is at its steepest (an inflection), so the interpolation error is O(h³·ω_y''') ≈ 1e-8 s.
     assert!(m.note.is_none(), "{m:?}");
-    assert!((m.largest - shift).abs() < 1e-6 && (m.last - shift).abs() < 1e-6, "{m:?}");
+    assert!(
+        (m.largest - shift).abs() < 1e-6 && (m.last - shift).abs() < 1e-6,
+        "{m:?}"
+    );
     assert!(m.passes == (shift <= score::metrics::EVENT_TIME_MAX));
 }
 
@@ -195,7 +231,11 @@ fn the_suite_s_own_references_score_at_round_off() {
     let own = dir.path().join("self");
     std::fs::create_dir(&own).unwrap();
     for (name, _) in suite::SCENES {
-        std::fs::copy(dir.path().join(format!("{name}.csv")), own.join(format!("{name}.csv"))).unwrap();
+        std::fs::copy(
+            dir.path().join(format!("{name}.csv")),
+            own.join(format!("{name}.csv")),
+        )
+        .unwrap();
     }
     let scores = suite::score_suite(dir.path(), "self", &ReadOptions::default()).unwrap();
     for s in &scores {
@@ -205,10 +245,25 @@ fn the_suite_s_own_references_score_at_round_off() {
             assert!(m.largest < 1e-12, "{}: {m:?}", s.scene);
         }
     }
-    let card = eulerdyn(["score", "--suite", dir.path().to_str().unwrap(), "--engine", "self"]);
+    let card = eulerdyn([
+        "score",
+        "--suite",
+        dir.path().to_str().unwrap(),
+        "--engine",
+        "self",
+    ]);
     card.expect_code(0);
-    assert!(card.stdout.starts_with("report card: self"), "{}", card.stdout);
-    assert_eq!(card.stdout.lines().filter(|l| l.ends_with("pass")).count(), 6, "{}", card.stdout);
+    assert!(
+        card.stdout.starts_with("report card: self"),
+        "{}",
+        card.stdout
+    );
+    assert_eq!(
+        card.stdout.lines().filter(|l| l.ends_with("pass")).count(),
+        6,
+        "{}",
+        card.stdout
+    );
 }
 
 /// Scores `text` as their CSV with `extra` arguments and a --plot path; asserts exit 2, a message naming the file
@@ -218,9 +273,14 @@ fn refused(text: &[u8], extra: &[&str], expect: &[&str]) {
     let scene = write_file(dir.path(), "free.toml", FREE);
     let theirs = write_file(dir.path(), "theirs.csv", text);
     let fig = dir.path().join("fig.svg");
-    let mut args: Vec<String> = ["score", theirs.to_str().unwrap(), "--scene", scene.to_str().unwrap()]
-        .map(String::from)
-        .to_vec();
+    let mut args: Vec<String> = [
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]
+    .map(String::from)
+    .to_vec();
     args.extend(["--plot".into(), fig.to_str().unwrap().into()]);
     args.extend(extra.iter().map(|s| s.to_string()));
     let out = eulerdyn(&args);
@@ -229,7 +289,11 @@ fn refused(text: &[u8], extra: &[&str], expect: &[&str]) {
     for e in expect {
         assert!(out.stderr.contains(e), "`{e}` in: {}", out.stderr);
     }
-    assert_eq!(dir_entries(dir.path()), ["free.toml", "theirs.csv"], "nothing written");
+    assert_eq!(
+        dir_entries(dir.path()),
+        ["free.toml", "theirs.csv"],
+        "nothing written"
+    );
 }
 
 /// The exact CSV of [`FREE`] with row `row` (1-based) changed by `f`.
@@ -244,8 +308,16 @@ fn with_row(row: usize, f: impl Fn(&str) -> String) -> Vec<u8> {
 #[test]
 fn bad_input_is_refused_naming_file_row_and_column() {
     let text = csv(&exact_rows(), true);
-    refused(text.replacen("t,", "time,", 1).as_bytes(), &[], &["theirs.csv", "no time column `t`"]);
-    refused(text.replacen("q_w", "qw", 1).as_bytes(), &[], &["theirs.csv", "no attitude columns"]);
+    refused(
+        text.replacen("t,", "time,", 1).as_bytes(),
+        &[],
+        &["theirs.csv", "no time column `t`"],
+    );
+    refused(
+        text.replacen("q_w", "qw", 1).as_bytes(),
+        &[],
+        &["theirs.csv", "no attitude columns"],
+    );
     refused(
         &with_row(10, |l| format!("0.1{}", &l[l.find(',').unwrap()..])),
         &[],
@@ -259,11 +331,27 @@ fn bad_input_is_refused_naming_file_row_and_column() {
             cells.join(",")
         }),
         &[],
-        &["theirs.csv", "row 3, column `q_w,q_x,q_y,q_z`", "off a unit quaternion"],
+        &[
+            "theirs.csv",
+            "row 3, column `q_w,q_x,q_y,q_z`",
+            "off a unit quaternion",
+        ],
     );
     let past = format!("{}5.1,1,0,0,0,0,0,2\n", text);
-    refused(past.as_bytes(), &[], &["theirs.csv", "row 302, column `t`", "past the scene's t_end = 5"]);
-    refused(text.as_bytes(), &["--map", "w=q_w"], &["--map w=", "not one of eulerdyn's column names"]);
+    refused(
+        past.as_bytes(),
+        &[],
+        &[
+            "theirs.csv",
+            "row 302, column `t`",
+            "past the scene's t_end = 5",
+        ],
+    );
+    refused(
+        text.as_bytes(),
+        &["--map", "w=q_w"],
+        &["--map w=", "not one of eulerdyn's column names"],
+    );
 }
 
 #[test]
@@ -277,9 +365,18 @@ fn a_slightly_off_quaternion_is_normalised_with_a_warning() {
         cells.join(",")
     });
     let theirs = write_file(dir.path(), "theirs.csv", text);
-    let out = eulerdyn(["score", theirs.to_str().unwrap(), "--scene", scene.to_str().unwrap()]);
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]);
     out.expect_code(0);
-    assert!(out.stdout.contains("normalised") && out.stdout.contains("the first row 3"), "{}", out.stdout);
+    assert!(
+        out.stdout.contains("normalised") && out.stdout.contains("the first row 3"),
+        "{}",
+        out.stdout
+    );
 }
 
 #[test]
@@ -293,18 +390,38 @@ fn a_spreadsheet_csv_other_orders_and_axes_score_the_same() {
     let mut matrix = String::from("t,R_11,R_12,R_13,R_21,R_22,R_23,R_31,R_32,R_33\n");
     for (t, q, w) in exact_rows() {
         let (c, w_s) = (q.quaternion(), q * w);
-        text.push_str(&format!("{t},{},{},{},{},{},{},{}\r\n", c.i, c.j, c.k, c.w, w_s.x, w_s.y, w_s.z));
+        text.push_str(&format!(
+            "{t},{},{},{},{},{},{},{}\r\n",
+            c.i, c.j, c.k, c.w, w_s.x, w_s.y, w_s.z
+        ));
         let r = q.to_rotation_matrix();
-        let m: Vec<String> = (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| r[(i, j)].to_string()).collect();
+        let m: Vec<String> = (0..3)
+            .flat_map(|i| (0..3).map(move |j| (i, j)))
+            .map(|(i, j)| r[(i, j)].to_string())
+            .collect();
         matrix.push_str(&format!("{t},{}\n", m.join(",")));
     }
     let sheet = write_file(dir.path(), "sheet.csv", text);
     let matrix = write_file(dir.path(), "matrix.csv", matrix);
-    let map = |pairs: &[(&str, &str)]| pairs.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect();
+    let map = |pairs: &[(&str, &str)]| {
+        pairs
+            .iter()
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .collect()
+    };
     let options = ReadOptions {
         quaternion: score::QuaternionOrder::Xyzw,
         omega: Some(eulerdyn::frames::Axes::Space),
-        map: map(&[("t", "time"), ("q_0", "qx"), ("q_1", "qy"), ("q_2", "qz"), ("q_3", "qw"), ("omega_x", "wx"), ("omega_y", "wy"), ("omega_z", "wz")]),
+        map: map(&[
+            ("t", "time"),
+            ("q_0", "qx"),
+            ("q_1", "qy"),
+            ("q_2", "qz"),
+            ("q_3", "qw"),
+            ("omega_x", "wx"),
+            ("omega_y", "wy"),
+            ("omega_z", "wz"),
+        ]),
     };
     let a = score::score(&plain, &scene_text, &ReadOptions::default()).unwrap();
     let b = score::score(&sheet, &scene_text, &options).unwrap();
@@ -321,9 +438,21 @@ fn a_spreadsheet_csv_other_orders_and_axes_score_the_same() {
 fn the_plot_is_written_atomically() {
     let dir = tempfile::tempdir().unwrap();
     let scene = write_file(dir.path(), "free.toml", FREE);
-    let theirs = write_file(dir.path(), "euler.csv", csv(&semi_implicit_euler(1.0 / 60.0, true), true));
+    let theirs = write_file(
+        dir.path(),
+        "euler.csv",
+        csv(&semi_implicit_euler(1.0 / 60.0, true), true),
+    );
     let fig: PathBuf = dir.path().join("errors.svg");
-    let out = eulerdyn(["score", theirs.to_str().unwrap(), "--scene", scene.to_str().unwrap(), "--json", "--plot", fig.to_str().unwrap()]);
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+        "--json",
+        "--plot",
+        fig.to_str().unwrap(),
+    ]);
     assert!(out.code == Some(0) || out.code == Some(1), "{}", out.stderr);
     let json: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
     assert_eq!(json["metrics"][0]["key"], "attitude");

@@ -49,7 +49,11 @@ fn draw(root: &Area<'_>, title: &str, curves: &[Curve]) -> DrawResult {
     let t1 = points().map(|p| p.0).fold(f64::MIN_POSITIVE, f64::max);
     let lo = points().map(|p| p.1).fold(f64::INFINITY, f64::min);
     let hi = points().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
-    let (y0, y1) = if lo.is_finite() { decade_range(lo, hi) } else { (-17.0, 0.0) };
+    let (y0, y1) = if lo.is_finite() {
+        decade_range(lo, hi)
+    } else {
+        (-17.0, 0.0)
+    };
     let y_fmt = |v: &f64| decade_label(*v);
     let mut chart = ChartBuilder::on(&body)
         .margin(12)

@@ -117,7 +117,11 @@ pub fn metrics(
     let attitude = (rows.iter().zip(refs))
         .map(|(r, s)| attitude_angle(&r.q, &s.q))
         .collect();
-    let mut all = vec![(series("attitude error angle (rad)", attitude), "attitude", ATTITUDE_MAX)];
+    let mut all = vec![(
+        series("attitude error angle (rad)", attitude),
+        "attitude",
+        ATTITUDE_MAX,
+    )];
     if let Some(theirs) = samples {
         let omega_scale = scale(refs, |s| s.omega_b.norm());
         let energy = |s: &Sample| s.energy + s.potential.unwrap_or(0.0);
@@ -128,16 +132,31 @@ pub fn metrics(
         let energy = pairs().map(|(a, b)| (energy(a) - energy(b)).abs() / energy_scale);
         let h_norm = pairs().map(|(a, b)| (a.h_s.norm() - b.h_s.norm()).abs() / h_scale);
         let h_direction = pairs().map(|(a, b)| angle(&a.h_s, &b.h_s));
-        all.push((series("angular velocity error (relative)", omega.collect()), "omega", OMEGA_MAX));
-        all.push((series("energy drift (relative)", energy.collect()), "energy", ENERGY_MAX));
-        all.push((series("|H| drift (relative)", h_norm.collect()), "h_norm", H_NORM_MAX));
+        all.push((
+            series("angular velocity error (relative)", omega.collect()),
+            "omega",
+            OMEGA_MAX,
+        ));
+        all.push((
+            series("energy drift (relative)", energy.collect()),
+            "energy",
+            ENERGY_MAX,
+        ));
+        all.push((
+            series("|H| drift (relative)", h_norm.collect()),
+            "h_norm",
+            H_NORM_MAX,
+        ));
         all.push((
             series("H direction drift in space (rad)", h_direction.collect()),
             "h_direction",
             H_DIRECTION_MAX,
         ));
     }
-    let mut metrics: Vec<Metric> = all.iter().map(|(s, key, max)| s.metric(key, *max)).collect();
+    let mut metrics: Vec<Metric> = all
+        .iter()
+        .map(|(s, key, max)| s.metric(key, *max))
+        .collect();
     if let Some(theirs) = samples {
         metrics.extend(event_metrics(scene, theirs, reference));
     }
@@ -182,7 +201,10 @@ fn event_metric(e: &Event, found: &[f64], expected: &[f64]) -> Metric {
     let errors: Vec<(f64, f64)> = (found.iter().zip(expected))
         .map(|(a, b)| ((a - b).abs(), *b))
         .collect();
-    let (largest, at) = errors.iter().fold((0.0, 0.0), |acc, &(v, t)| if v > acc.0 { (v, t) } else { acc });
+    let (largest, at) = errors.iter().fold(
+        (0.0, 0.0),
+        |acc, &(v, t)| if v > acc.0 { (v, t) } else { acc },
+    );
     let note = (found.len() != expected.len()).then(|| {
         format!(
             "{} occurrences on their rows, {} on the reference",
@@ -230,7 +252,10 @@ pub fn locate(e: &Event, t: &[f64], q: &[f64]) -> Vec<f64> {
                     Extremum::Min => d0 < 0.0 && d1 >= 0.0,
                 };
                 if turn {
-                    found.push(vertex([t[k - 1], t[k], t[k + 1]], [q[k - 1], q[k], q[k + 1]]));
+                    found.push(vertex(
+                        [t[k - 1], t[k], t[k + 1]],
+                        [q[k - 1], q[k], q[k + 1]],
+                    ));
                 }
             }
         }

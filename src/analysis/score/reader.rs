@@ -40,8 +40,8 @@ pub struct ReadOptions {
 
 /// eulerdyn's names for the columns it reads: the targets `--map` accepts.
 pub const NAMES: [&str; 21] = [
-    "t", "q_w", "q_x", "q_y", "q_z", "q_0", "q_1", "q_2", "q_3", "R_11", "R_12", "R_13", "R_21", "R_22", "R_23",
-    "R_31", "R_32", "R_33", "omega_x", "omega_y", "omega_z",
+    "t", "q_w", "q_x", "q_y", "q_z", "q_0", "q_1", "q_2", "q_3", "R_11", "R_12", "R_13", "R_21",
+    "R_22", "R_23", "R_31", "R_32", "R_33", "omega_x", "omega_y", "omega_z",
 ];
 /// The angular velocity's columns.
 const OMEGA: [&str; 3] = ["omega_x", "omega_y", "omega_z"];
@@ -146,11 +146,17 @@ fn attitude_columns<R: std::io::Read>(
     }
     if let Some(i) = all(&["q_0", "q_1", "q_2", "q_3"]) {
         return Some(match order {
-            QuaternionOrder::Wxyz => Attitude::Quaternion([i[0], i[1], i[2], i[3]], ["q_0", "q_1", "q_2", "q_3"]),
-            QuaternionOrder::Xyzw => Attitude::Quaternion([i[3], i[0], i[1], i[2]], ["q_3", "q_0", "q_1", "q_2"]),
+            QuaternionOrder::Wxyz => {
+                Attitude::Quaternion([i[0], i[1], i[2], i[3]], ["q_0", "q_1", "q_2", "q_3"])
+            }
+            QuaternionOrder::Xyzw => {
+                Attitude::Quaternion([i[3], i[0], i[1], i[2]], ["q_3", "q_0", "q_1", "q_2"])
+            }
         });
     }
-    let names = ["R_11", "R_12", "R_13", "R_21", "R_22", "R_23", "R_31", "R_32", "R_33"];
+    let names = [
+        "R_11", "R_12", "R_13", "R_21", "R_22", "R_23", "R_31", "R_32", "R_33",
+    ];
     all(&names).map(|i| Attitude::Matrix(std::array::from_fn(|k| i[k])))
 }
 
@@ -194,7 +200,11 @@ impl<'p> Reading<'p> {
             }
             Attitude::Matrix(i) => {
                 index.extend(i);
-                names.extend((1..=3).flat_map(|r| (1..=3).map(move |c| format!("R_{r}{c}"))).map(|n| column(&n)));
+                names.extend(
+                    (1..=3)
+                        .flat_map(|r| (1..=3).map(move |c| format!("R_{r}{c}")))
+                        .map(|n| column(&n)),
+                );
             }
         }
         self.attitude_names = names[1..].join(",");
@@ -206,22 +216,43 @@ impl<'p> Reading<'p> {
     }
 
     fn refuse(&self, row: u64, column: &str, problem: String) -> ScoreError {
-        ScoreError::Input(format!("{}: row {row}, column `{column}`: {problem}", self.path.display()))
+        ScoreError::Input(format!(
+            "{}: row {row}, column `{column}`: {problem}",
+            self.path.display()
+        ))
     }
 
     /// Adds data row `row` (1-based).
-    fn add(&mut self, row: u64, v: &[f64], attitude: &Attitude, with_omega: bool) -> Result<(), ScoreError> {
+    fn add(
+        &mut self,
+        row: u64,
+        v: &[f64],
+        attitude: &Attitude,
+        with_omega: bool,
+    ) -> Result<(), ScoreError> {
         let t = v[0];
         if let Some(last) = self.rows.last()
             && t <= last.t
         {
-            return Err(self.refuse(row, "t", format!("time {t} does not increase (the row before has {})", last.t)));
+            return Err(self.refuse(
+                row,
+                "t",
+                format!("time {t} does not increase (the row before has {})", last.t),
+            ));
         }
         if t < 0.0 {
-            return Err(self.refuse(row, "t", format!("time {t} is negative: the scene starts at t = 0")));
+            return Err(self.refuse(
+                row,
+                "t",
+                format!("time {t} is negative: the scene starts at t = 0"),
+            ));
         }
         if t > self.t_end * (1.0 + 1e-12) + 1e-12 {
-            return Err(self.refuse(row, "t", format!("time {t} is past the scene's t_end = {}", self.t_end)));
+            return Err(self.refuse(
+                row,
+                "t",
+                format!("time {t} is past the scene's t_end = {}", self.t_end),
+            ));
         }
         let (q, off) = match attitude {
             Attitude::Quaternion(..) => {
@@ -231,7 +262,11 @@ impl<'p> Reading<'p> {
             Attitude::Matrix(_) => {
                 let r = Matrix3::new(v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]);
                 let off = (r.transpose() * r - Matrix3::identity()).abs().max();
-                let off = if r.determinant() < 0.0 { f64::INFINITY } else { off };
+                let off = if r.determinant() < 0.0 {
+                    f64::INFINITY
+                } else {
+                    off
+                };
                 let rotation = Rotation3::from_matrix_eps(&r, 1e-15, 100, Rotation3::identity());
                 (UnitQuaternion::from_rotation_matrix(&rotation), off)
             }
@@ -282,6 +317,9 @@ impl<'p> Reading<'p> {
                 self.normalised.1
             ));
         }
-        Ok(Trajectory { rows: self.rows, warnings })
+        Ok(Trajectory {
+            rows: self.rows,
+            warnings,
+        })
     }
 }

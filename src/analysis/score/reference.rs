@@ -96,7 +96,9 @@ fn pick(by_k: &[Option<Sample>], times: &[f64], every: f64) -> Result<Vec<Sample
         .map(|&t| {
             let k = (t / every).round() as usize;
             by_k.get(k).copied().flatten().ok_or_else(|| {
-                ScoreError::Run(format!("the reference has no row at t = {t} (a `stop` event ended it)"))
+                ScoreError::Run(format!(
+                    "the reference has no row at t = {t} (a `stop` event ended it)"
+                ))
             })
         })
         .collect()

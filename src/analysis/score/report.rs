@@ -30,7 +30,12 @@ pub fn text(score: &Score) -> String {
             }
         )),
     }
-    for line in score.warnings.iter().map(|w| format!("warning: {w}")).chain(score.notes.iter().cloned()) {
+    for line in score
+        .warnings
+        .iter()
+        .map(|w| format!("warning: {w}"))
+        .chain(score.notes.iter().cloned())
+    {
         out.push_str(&line);
         out.push('\n');
     }
@@ -47,14 +52,20 @@ pub fn text(score: &Score) -> String {
             m.last,
             m.threshold,
             verdict(m.passes),
-            m.note.as_ref().map(|n| format!(" ({n})")).unwrap_or_default()
+            m.note
+                .as_ref()
+                .map(|n| format!(" ({n})"))
+                .unwrap_or_default()
         ));
     }
     let failed = score.metrics.iter().filter(|m| !m.passes).count();
     out.push_str(&if failed == 0 {
         "verdict: pass (every metric within its threshold)\n".to_string()
     } else {
-        format!("verdict: FAIL ({failed} of {} metrics over their thresholds)\n", score.metrics.len())
+        format!(
+            "verdict: FAIL ({failed} of {} metrics over their thresholds)\n",
+            score.metrics.len()
+        )
     });
     out
 }
@@ -72,7 +83,8 @@ const CARD: [(&str, &str); 6] = [
 /// The report card of an engine on the suite: one row per scene, the largest value of each metric with `*` where
 /// it is over its threshold (events: the worst event), `-` where it was not measured.
 pub fn card(engine: &str, scores: &[Score]) -> String {
-    let mut out = format!("report card: {engine} (largest error over the scene; * over the threshold)\n");
+    let mut out =
+        format!("report card: {engine} (largest error over the scene; * over the threshold)\n");
     out.push_str(&format!("{:<24}", "scene"));
     for (_, heading) in CARD {
         out.push_str(&format!(" {heading:>13}"));

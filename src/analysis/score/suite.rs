@@ -18,9 +18,15 @@ pub const RATE_HZ: f64 = 60.0;
 
 /// The suite's scenes: file stem and scene file.
 pub const SCENES: [(&str, &str); 6] = [
-    ("symmetric_precession", include_str!("scenes/symmetric_precession.toml")),
+    (
+        "symmetric_precession",
+        include_str!("scenes/symmetric_precession.toml"),
+    ),
     ("tennis_racket", include_str!("scenes/tennis_racket.toml")),
-    ("major_axis_spin", include_str!("scenes/major_axis_spin.toml")),
+    (
+        "major_axis_spin",
+        include_str!("scenes/major_axis_spin.toml"),
+    ),
     ("fast_top", include_str!("scenes/fast_top.toml")),
     ("torque_pulse", include_str!("scenes/torque_pulse.toml")),
     ("full_tensor", include_str!("scenes/full_tensor.toml")),
@@ -31,8 +37,12 @@ pub const HEADER: &str = "t,q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z";
 
 /// The scene `name` of the suite, parsed (its file named `DIR/<name>.toml` in messages).
 fn parse(dir: &Path, name: &str, text: &str) -> Result<Scene, ScoreError> {
-    scene::parse(&dir.join(format!("{name}.toml")), text, &Overrides::default())
-        .map_err(|e| ScoreError::Input(e.to_string()))
+    scene::parse(
+        &dir.join(format!("{name}.toml")),
+        text,
+        &Overrides::default(),
+    )
+    .map_err(|e| ScoreError::Input(e.to_string()))
 }
 
 /// The times k/[`RATE_HZ`] up to the scene's t_end.
@@ -47,7 +57,10 @@ fn reference_csv(scene: &Scene, file: &str) -> Result<String, ScoreError> {
     let mut out = format!("{HEADER}\n");
     for s in &reference.samples {
         let (q, w) = (s.q.quaternion(), s.omega_b);
-        out.push_str(&format!("{},{},{},{},{},{},{},{}\n", s.t, q.w, q.i, q.j, q.k, w.x, w.y, w.z));
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{},{}\n",
+            s.t, q.w, q.i, q.j, q.k, w.x, w.y, w.z
+        ));
     }
     Ok(out)
 }
@@ -59,12 +72,13 @@ pub fn setup(name: &str, scene: &Scene) -> serde_json::Value {
     let inertia = scene.body.inertia_c();
     let omega0 = scene.motion.rigid_free().map(|(w, _)| v(w));
     let q = scene.attitude0.quaternion();
+    let inertia_c_b = [0, 1, 2].map(|i| [0, 1, 2].map(|j| inertia[(i, j)]));
     let mut out = json!({
         "name": name,
         "t_end": scene.schedule.t_end(),
         "rate_hz": RATE_HZ,
         "mass": scene.body.mass(),
-        "inertia_c_b": [0, 1, 2].map(|i| [0, 1, 2].map(|j| inertia[(i, j)])),
+        "inertia_c_b": inertia_c_b,
         "omega0_b": omega0,
         "q0_wxyz": [q.w, q.i, q.j, q.k],
         "gravity_s": null,
@@ -77,15 +91,24 @@ pub fn setup(name: &str, scene: &Scene) -> serde_json::Value {
                 out["gravity_s"] = json!(v(g_s));
                 out["pivot_from_c_b"] = json!(v(pivot_b));
             }
-            Effect::Torque { frame, value, profile } => {
+            Effect::Torque {
+                frame,
+                value,
+                profile,
+            } => {
                 let (t_on, t_off) = match profile {
                     TorqueProfile::Step { t_on, t_off } => (*t_on, *t_off),
                     _ => (0.0, f64::INFINITY),
                 };
-                let frame = if *frame == Axes::Space { "space" } else { "body" };
-                out["torque"] = json!({"frame": frame, "value": v(value), "t_on": t_on, "t_off": t_off});
+                let frame = if *frame == Axes::Space {
+                    "space"
+                } else {
+                    "body"
+                };
+                out["torque"] =
+                    json!({"frame": frame, "value": v(value), "t_on": t_on, "t_off": t_off});
             }
-            Effect::Damping { .. } => {}
+            _ => {}
         }
     }
     out
@@ -104,7 +127,9 @@ fn note(text: &str) -> String {
 /// and `<name>.json` (the adapters' setup), and `README.md` (the notes). Nothing is written unless every file
 /// could be made. Returns the paths written.
 pub fn write_suite(dir: &Path) -> Result<Vec<PathBuf>, ScoreError> {
-    let output = |p: &Path, e: std::io::Error| ScoreError::Run(format!("{}: cannot write: {e}", p.display()));
+    let output = |p: &Path, e: std::io::Error| {
+        ScoreError::Run(format!("{}: cannot write: {e}", p.display()))
+    };
     std::fs::create_dir_all(dir).map_err(|e| output(dir, e))?;
     let mut contents: Vec<(PathBuf, String)> = Vec::new();
     let mut readme = String::from(
@@ -133,11 +158,16 @@ pub fn write_suite(dir: &Path) -> Result<Vec<PathBuf>, ScoreError> {
 }
 
 /// Scores the outputs of `engine` in `DIR/ENGINE/<scene>.csv` against the suite's scenes in `dir`.
-pub fn score_suite(dir: &Path, engine: &str, options: &ReadOptions) -> Result<Vec<Score>, ScoreError> {
+pub fn score_suite(
+    dir: &Path,
+    engine: &str,
+    options: &ReadOptions,
+) -> Result<Vec<Score>, ScoreError> {
     let mut scores = Vec::new();
     for (name, _) in SCENES {
         let scene_path = dir.join(format!("{name}.toml"));
-        let scene = scene::load(&scene_path, &Overrides::default()).map_err(|e| ScoreError::Input(e.to_string()))?;
+        let scene = scene::load(&scene_path, &Overrides::default())
+            .map_err(|e| ScoreError::Input(e.to_string()))?;
         let theirs = dir.join(engine).join(format!("{name}.csv"));
         if !theirs.is_file() {
             return Err(ScoreError::Input(format!(

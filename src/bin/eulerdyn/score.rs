@@ -30,10 +30,20 @@ pub struct ScoreArgs {
     #[arg(value_name = "THEIRS.csv", required_unless_present = "suite")]
     pub theirs: Option<PathBuf>,
     /// The scene their trajectory simulates (TOML).
-    #[arg(long, value_name = "SCENE", required_unless_present = "suite", conflicts_with = "suite")]
+    #[arg(
+        long,
+        value_name = "SCENE",
+        required_unless_present = "suite",
+        conflicts_with = "suite"
+    )]
     pub scene: Option<PathBuf>,
     /// Score an engine's outputs DIR/ENGINE/<scene>.csv against the suite written by `eulerdyn suite --out DIR`.
-    #[arg(long, value_name = "DIR", requires = "engine", conflicts_with = "theirs")]
+    #[arg(
+        long,
+        value_name = "DIR",
+        requires = "engine",
+        conflicts_with = "theirs"
+    )]
     pub suite: Option<PathBuf>,
     /// The engine's folder in the suite (with --suite).
     #[arg(long, value_name = "NAME")]
@@ -119,9 +129,18 @@ pub fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
                 .map_err(|e| ScoreError::Input(e.to_string()))?;
             let s = score::score(theirs, &scene, &options)?;
             let title = format!("{}: errors against the referee", theirs.display());
-            (report::text(&s), serde_json::to_string_pretty(&s), s.passes(), (title, s.series.clone()))
+            (
+                report::text(&s),
+                serde_json::to_string_pretty(&s),
+                s.passes(),
+                (title, s.series.clone()),
+            )
         }
-        _ => return Err(ScoreError::Input("give THEIRS.csv --scene SCENE, or --suite DIR --engine NAME".into())),
+        _ => {
+            return Err(ScoreError::Input(
+                "give THEIRS.csv --scene SCENE, or --suite DIR --engine NAME".into(),
+            ));
+        }
     };
     if let Some(path) = &args.plot {
         write_plot(path, &figure.0, &figure.1)?;
@@ -137,7 +156,9 @@ pub fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
     if passes {
         Ok(())
     } else {
-        Err(ScoreError::Run("not every metric passes the referee's threshold".into()))
+        Err(ScoreError::Run(
+            "not every metric passes the referee's threshold".into(),
+        ))
     }
 }
 
