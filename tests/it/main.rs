@@ -28,6 +28,7 @@ mod readme;
 mod rotors;
 mod scene_errors;
 mod scene_fuzz;
+mod score;
 mod sidecar;
 mod study;
 mod sweep;

@@ -6,6 +6,7 @@ mod balance;
 mod cli;
 mod interrupt;
 mod progress;
+mod score;
 mod sweep;
 mod view;
 

@@ -1,0 +1,110 @@
+//! `eulerdyn score`: another program's trajectory of a scene against eulerdyn's solution of it — the referee the
+//! engine comparisons lacked (Erez, Tassa & Todorov, ICRA 2015, could only measure drift).
+//!
+//! [`reader`] reads their CSV, [`reference`] computes the referee at their times (the closed form where one
+//! applies, else dop853 at rtol 1e-13 with its error estimated), [`metrics`] compares row by row — attitude
+//! angle, ω, energy, |H|, H's direction in space, event times — [`report`] prints, [`suite`] is the conformance
+//! suite (`eulerdyn suite`, `eulerdyn score --suite`), [`figure`] draws the errors against time.
+
+pub mod figure;
+pub mod metrics;
+pub mod reader;
+pub mod reference;
+pub mod report;
+pub mod suite;
+
+use std::path::Path;
+
+pub use metrics::{Metric, Series};
+pub use reader::{QuaternionOrder, ReadOptions};
+pub use reference::ErrorEstimate;
+
+use crate::scene::Scene;
+
+/// The referee must be at least this many times more accurate than the errors it reports.
+pub const REFEREE_MARGIN: f64 = 100.0;
+
+/// Why scoring stopped: bad input (exit 2) or a failed reference run (exit 1).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ScoreError {
+    #[error("{0}")]
+    Input(String),
+    #[error("{0}")]
+    Run(String),
+}
+
+/// The score of one trajectory.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct Score {
+    /// Their file.
+    pub file: String,
+    /// The scene's name.
+    pub scene: String,
+    pub rows: usize,
+    /// Their last time (s).
+    pub t_last: f64,
+    /// What the reference is.
+    pub reference: String,
+    /// The reference's own error where it is not the closed form's round-off.
+    pub reference_error: Option<ErrorEstimate>,
+    /// Whether the referee is at least [`REFEREE_MARGIN`] × more accurate than every error it reports.
+    pub referee_adequate: bool,
+    pub metrics: Vec<Metric>,
+    /// Warnings from reading their file.
+    pub warnings: Vec<String>,
+    /// What was not measured, and why.
+    pub notes: Vec<String>,
+    /// The metrics' values against time (the figure's curves).
+    #[serde(skip)]
+    pub series: Vec<Series>,
+}
+
+impl Score {
+    /// Whether every metric is within its threshold.
+    pub fn passes(&self) -> bool {
+        self.metrics.iter().all(|m| m.passes)
+    }
+
+    /// The metric with this key.
+    pub fn metric(&self, key: &str) -> Option<&Metric> {
+        self.metrics.iter().find(|m| m.key == key)
+    }
+}
+
+/// Scores the trajectory in `path` against `scene`.
+pub fn score(path: &Path, scene: &Scene, options: &ReadOptions) -> Result<Score, ScoreError> {
+    let t_end = scene.schedule.t_end();
+    let trajectory = reader::read_trajectory(path, options, t_end)?;
+    let rows = &trajectory.rows;
+    let shown = path.display().to_string();
+    let times: Vec<f64> = rows.iter().map(|r| r.t).collect();
+    let reference = reference::reference(scene, &shown, &times)?;
+    let samples = metrics::their_samples(scene, rows);
+    let mut notes = Vec::new();
+    if samples.is_none() {
+        notes.push(if rows[0].omega_b.is_none() {
+            "no omega columns: ω, energy, H and event times not measured".to_string()
+        } else {
+            "not a free rigid body: ω, energy, H and event times not measured".to_string()
+        });
+    }
+    let (metrics, series) = metrics::metrics(scene, rows, samples.as_deref(), &reference);
+    let referee_adequate = reference.estimate.is_none_or(|e| {
+        let reported = |key: &str| metrics.iter().find(|m| m.key == key).map(|m| m.largest);
+        let ok = |est: f64, key: &str| reported(key).is_none_or(|v| REFEREE_MARGIN * est <= v);
+        ok(e.attitude, "attitude") && ok(e.omega, "omega")
+    });
+    Ok(Score {
+        file: shown,
+        scene: scene.name.clone(),
+        rows: rows.len(),
+        t_last: rows[rows.len() - 1].t,
+        reference: reference.source,
+        reference_error: reference.estimate,
+        referee_adequate,
+        metrics,
+        warnings: trajectory.warnings,
+        notes,
+        series,
+    })
+}

@@ -1,0 +1,172 @@
+//! `eulerdyn score` (another program's trajectory against the referee) and `eulerdyn suite` (the conformance
+//! suite): arguments and printing over [`eulerdyn::analysis::score`].
+
+use std::path::{Path, PathBuf};
+
+use clap::{Args, ValueEnum};
+
+use eulerdyn::analysis::score::{
+    self, QuaternionOrder, ReadOptions, Score, ScoreError, Series, figure, report, suite,
+};
+use eulerdyn::frames::Axes;
+use eulerdyn::output::AtomicFile;
+use eulerdyn::scene::{self, Overrides};
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum OrderArg {
+    Wxyz,
+    Xyzw,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum OmegaArg {
+    Body,
+    Space,
+}
+
+#[derive(Debug, Args)]
+pub struct ScoreArgs {
+    /// Their trajectory: a CSV with t, the attitude (q_w..q_z, q_0..q_3 or R_11..R_33) and optionally omega_x..z.
+    #[arg(value_name = "THEIRS.csv", required_unless_present = "suite")]
+    pub theirs: Option<PathBuf>,
+    /// The scene their trajectory simulates (TOML).
+    #[arg(
+        long,
+        value_name = "SCENE",
+        required_unless_present = "suite",
+        conflicts_with = "suite"
+    )]
+    pub scene: Option<PathBuf>,
+    /// Score an engine's outputs DIR/ENGINE/<scene>.csv against the suite written by `eulerdyn suite --out DIR`.
+    #[arg(
+        long,
+        value_name = "DIR",
+        requires = "engine",
+        conflicts_with = "theirs"
+    )]
+    pub suite: Option<PathBuf>,
+    /// The engine's folder in the suite (with --suite).
+    #[arg(long, value_name = "NAME")]
+    pub engine: Option<String>,
+    /// The order of the generic quaternion columns q_0..q_3: scalar first or last.
+    #[arg(long, value_enum, default_value = "wxyz")]
+    pub quaternion: OrderArg,
+    /// The axes of omega_x..z.
+    #[arg(long, value_enum, default_value = "body")]
+    pub omega: OmegaArg,
+    /// NAME=COLUMN: read eulerdyn's column NAME (t, q_w…, R_11…, omega_x…) from their column COLUMN; repeatable.
+    #[arg(long = "map", value_name = "NAME=COLUMN")]
+    pub map: Vec<String>,
+    /// Print the score as JSON instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Draw the errors against time (log scale) into this SVG file.
+    #[arg(long, value_name = "FIG.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct SuiteArgs {
+    /// The folder to write the suite into (created if needed).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+}
+
+/// The reading options of `args`; a `--map` without `=` is refused.
+fn options(args: &ScoreArgs) -> Result<ReadOptions, ScoreError> {
+    let map = (args.map.iter())
+        .map(|m| {
+            m.split_once('=')
+                .map(|(n, c)| (n.trim().to_string(), c.trim().to_string()))
+                .ok_or_else(|| ScoreError::Input(format!("--map {m}: expected NAME=COLUMN")))
+        })
+        .collect::<Result<_, _>>()?;
+    Ok(ReadOptions {
+        quaternion: match args.quaternion {
+            OrderArg::Wxyz => QuaternionOrder::Wxyz,
+            OrderArg::Xyzw => QuaternionOrder::Xyzw,
+        },
+        omega: Some(match args.omega {
+            OmegaArg::Body => Axes::Body,
+            OmegaArg::Space => Axes::Space,
+        }),
+        map,
+    })
+}
+
+/// Writes the figure of `series` to `path`.
+fn write_plot(path: &Path, title: &str, series: &[Series]) -> Result<(), ScoreError> {
+    let svg = figure::render_svg(title, series).map_err(ScoreError::Run)?;
+    let fail = |e: String| ScoreError::Run(format!("{}: cannot write: {e}", path.display()));
+    let file = AtomicFile::create(path).map_err(|e| fail(e.to_string()))?;
+    file.write_and_commit(svg.as_bytes())
+        .map_err(|e| fail(e.to_string()))
+}
+
+/// `eulerdyn score`: prints the score (or the suite's report card); `Err(Run)` when a verdict fails (exit 1).
+pub fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
+    let options = options(args)?;
+    let (text, json, passes, figure) = match (&args.suite, &args.theirs, &args.scene) {
+        (Some(dir), _, _) => {
+            let engine = args.engine.as_deref().unwrap_or_default();
+            let scores = suite::score_suite(dir, engine, &options)?;
+            let series: Vec<Series> = (scores.iter())
+                .map(|s| Series {
+                    name: s.scene.clone(),
+                    ..s.series[0].clone()
+                })
+                .collect();
+            let title = format!("{engine}: attitude error against the referee (rad)");
+            (
+                report::card(engine, &scores),
+                serde_json::to_string_pretty(&scores),
+                scores.iter().all(Score::passes),
+                (title, series),
+            )
+        }
+        (None, Some(theirs), Some(scene_path)) => {
+            let scene = scene::load(scene_path, &Overrides::default())
+                .map_err(|e| ScoreError::Input(e.to_string()))?;
+            let s = score::score(theirs, &scene, &options)?;
+            let title = format!("{}: errors against the referee", theirs.display());
+            (
+                report::text(&s),
+                serde_json::to_string_pretty(&s),
+                s.passes(),
+                (title, s.series.clone()),
+            )
+        }
+        _ => {
+            return Err(ScoreError::Input(
+                "give THEIRS.csv --scene SCENE, or --suite DIR --engine NAME".into(),
+            ));
+        }
+    };
+    if let Some(path) = &args.plot {
+        write_plot(path, &figure.0, &figure.1)?;
+    }
+    if args.json {
+        println!("{}", json.map_err(|e| ScoreError::Run(e.to_string()))?);
+    } else {
+        print!("{text}");
+    }
+    if !quiet && let Some(path) = &args.plot {
+        eprintln!("wrote {}", path.display());
+    }
+    if passes {
+        Ok(())
+    } else {
+        Err(ScoreError::Run(
+            "not every metric passes the referee's threshold".into(),
+        ))
+    }
+}
+
+/// `eulerdyn suite`: writes the suite, says what on stderr.
+pub fn suite_command(args: &SuiteArgs, quiet: bool) -> Result<(), ScoreError> {
+    let written = suite::write_suite(&args.out)?;
+    if !quiet {
+        eprintln!("wrote {} files into {}", written.len(), args.out.display());
+    }
+    Ok(())
+}

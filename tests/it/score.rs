@@ -1,0 +1,461 @@
+//! `eulerdyn score` and `eulerdyn suite`: trajectories whose errors the test knows, scored by the referee, and
+//! every bad input refused with exit 2, naming the file, row and column, writing nothing.
+
+use std::path::{Path, PathBuf};
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+use crate::common::{dir_entries, eulerdyn, scene_from, write_file};
+use eulerdyn::analysis::score::{self, ReadOptions, suite};
+use eulerdyn::exact::TorqueFreeBody;
+use eulerdyn::scene::Overrides;
+
+/// A torque-free asymmetric body (I = 1, 2, 3: body axes principal), t_end = 5 s.
+const FREE: &str = r#"name = "free"
+
+[body]
+mass = 1.0
+inertia = [1.0, 2.0, 3.0]
+
+[initial]
+omega = [0.4, 0.2, 2.0]
+
+[solver]
+t_end = 5.0
+
+[output]
+every = 0.05
+"#;
+
+/// The closed form of [`FREE`] (Landau & Lifshitz §37), evaluated directly.
+fn exact() -> TorqueFreeBody {
+    TorqueFreeBody::new(
+        Vector3::new(1.0, 2.0, 3.0),
+        Vector3::new(0.4, 0.2, 2.0),
+        UnitQuaternion::identity(),
+    )
+    .unwrap()
+}
+
+/// Rows (t, q, ω_b) as a CSV with the suite's header, ω omitted when `with_omega` is false.
+fn csv(rows: &[(f64, UnitQuaternion<f64>, Vector3<f64>)], with_omega: bool) -> String {
+    let mut out = if with_omega {
+        suite::HEADER.to_string()
+    } else {
+        "t,q_w,q_x,q_y,q_z".into()
+    };
+    out.push('\n');
+    for (t, q, w) in rows {
+        let q = q.quaternion();
+        out.push_str(&format!("{t},{},{},{},{}", q.w, q.i, q.j, q.k));
+        if with_omega {
+            out.push_str(&format!(",{},{},{}", w.x, w.y, w.z));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Times k/60 up to `t_end`.
+fn frames(t_end: f64) -> Vec<f64> {
+    (0..=(t_end * 60.0).round() as usize)
+        .map(|k| k as f64 / 60.0)
+        .collect()
+}
+
+/// The exact rows of [`FREE`] at 60 Hz.
+fn exact_rows() -> Vec<(f64, UnitQuaternion<f64>, Vector3<f64>)> {
+    let e = exact();
+    frames(5.0)
+        .into_iter()
+        .map(|t| (t, e.attitude(t), e.omega_p(t)))
+        .collect()
+}
+
+fn score_text(dir: &Path, name: &str, text: &str, scene: &str) -> score::Score {
+    let path = write_file(dir, name, text);
+    score::score(
+        &path,
+        &scene_from(scene, &Overrides::default()),
+        &ReadOptions::default(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn the_exact_solution_scores_round_off() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = score_text(dir.path(), "exact.csv", &csv(&exact_rows(), true), FREE);
+    // The referee is the same closed form (Landau & Lifshitz §37) stepped on the equal grid with re-anchoring,
+    // within 1e-13 of the direct evaluation (src/exact/equal_grid.rs); 1e-12 leaves a decade for the printed
+    // CSV's round trip (shortest representation: exact).
+    for key in ["attitude", "omega", "energy", "h_norm", "h_direction"] {
+        let m = s.metric(key).unwrap();
+        assert!(m.largest < 1e-12, "{key}: {m:?}");
+    }
+    assert!(s.passes() && s.referee_adequate && s.reference_error.is_none());
+}
+
+#[test]
+fn a_rotation_by_k_t_scores_k_t_end() {
+    let dir = tempfile::tempdir().unwrap();
+    let k = 0.02; // rad/s
+    let axis = Vector3::new(1.0, -2.0, 0.5).normalize();
+    let rows: Vec<_> = (exact_rows().into_iter())
+        .map(|(t, q, w)| (t, UnitQuaternion::from_scaled_axis(axis * (k * t)) * q, w))
+        .collect();
+    let s = score_text(dir.path(), "turned.csv", &csv(&rows, false), FREE);
+    // Turning every attitude by k·t about a fixed space axis puts it k·t from the reference (the angle of
+    // a⁻¹b); 1e-12 is the closed form's round-off (above) plus that of composing the rotation.
+    let m = s.metric("attitude").unwrap();
+    assert!((m.largest - k * 5.0).abs() < 1e-12, "{m:?}");
+    assert!((m.last - k * 5.0).abs() < 1e-12 && m.at == 5.0, "{m:?}");
+    assert!(m.passes == (k * 5.0 <= score::metrics::ATTITUDE_MAX));
+    assert_eq!(
+        s.metrics.len(),
+        1,
+        "without omega only the attitude is measured"
+    );
+}
+
+/// Semi-implicit Euler at step h: ω ← ω + h·I⁻¹(−ω × Iω) (Euler's equation, torque-free), then q ← q·exp(hω/2)
+/// with the new ω; with `gyroscopic` false the ω × Iω term is left out (ω stays constant).
+fn semi_implicit_euler(h: f64, gyroscopic: bool) -> Vec<(f64, UnitQuaternion<f64>, Vector3<f64>)> {
+    let inertia = Vector3::new(1.0, 2.0, 3.0);
+    let (mut q, mut w) = (UnitQuaternion::identity(), Vector3::new(0.4, 0.2, 2.0));
+    let mut rows = vec![(0.0, q, w)];
+    for k in 1..=(5.0 / h).round() as usize {
+        if gyroscopic {
+            let h_b = inertia.component_mul(&w);
+            w += h * (-w.cross(&h_b)).component_div(&inertia);
+        }
+        q *= UnitQuaternion::from_scaled_axis(w * h);
+        rows.push((k as f64 * h, q, w));
+    }
+    rows
+}
+
+#[test]
+fn semi_implicit_euler_scores_what_the_test_computes() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = semi_implicit_euler(1.0 / 60.0, true);
+    let s = score_text(dir.path(), "euler.csv", &csv(&rows, true), FREE);
+    let e = exact();
+    let energy = |w: &Vector3<f64>| 0.5 * w.dot(&Vector3::new(1.0, 2.0, 3.0).component_mul(w));
+    let mut attitude: f64 = 0.0;
+    let mut drift: f64 = 0.0;
+    for (t, q, w) in &rows {
+        attitude = attitude.max(q.angle_to(&e.attitude(*t)));
+        drift = drift.max((energy(w) - e.energy()).abs() / e.energy());
+    }
+    // The test's own errors against the closed form, to the referee's round-off (1e-12, above) relative to
+    // errors of order 1e-2.
+    let m = s.metric("attitude").unwrap();
+    assert!((m.largest - attitude).abs() < 1e-10, "{m:?} vs {attitude}");
+    let m = s.metric("energy").unwrap();
+    assert!(
+        (m.largest - drift).abs() < 1e-10 * drift.max(1.0),
+        "{m:?} vs {drift}"
+    );
+    assert!(
+        attitude > 1e-3,
+        "semi-implicit Euler at 60 Hz is first order: a visible error"
+    );
+}
+
+#[test]
+fn without_the_gyroscopic_term_h_turns_in_space_and_fails() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let theirs = write_file(
+        dir.path(),
+        "nogyro.csv",
+        csv(&semi_implicit_euler(1.0 / 60.0, false), true),
+    );
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]);
+    out.expect_code(1);
+    let line = (out.stdout.lines())
+        .find(|l| l.starts_with("H direction drift in space (rad)"))
+        .unwrap_or_else(|| panic!("{}", out.stdout));
+    assert!(line.ends_with("FAIL"), "{line}");
+    // With ω constant H_s = R(t)·Iω turns with the body; the angle is large (order 1 rad within 5 s).
+    let largest: f64 = line.split_whitespace().nth(6).unwrap().parse().unwrap();
+    assert!(largest > 0.1, "{line}");
+}
+
+/// The suite's tennis racket with an event `flip`, at 600 Hz.
+fn racket() -> (String, TorqueFreeBody) {
+    let text = suite::SCENES[1].1.to_string();
+    let e = TorqueFreeBody::new(
+        Vector3::new(1.0, 2.0, 3.0),
+        Vector3::new(0.05, 2.0, 0.05),
+        UnitQuaternion::identity(),
+    )
+    .unwrap();
+    (text, e)
+}
+
+#[test]
+fn a_time_shifted_flip_reports_the_shift() {
+    let dir = tempfile::tempdir().unwrap();
+    let (scene, e) = racket();
+    let shift = 0.05;
+    let rows: Vec<_> = (0..=12 * 600)
+        .map(|k| {
+            let t = k as f64 / 600.0;
+            (t, e.attitude(t - shift), e.omega_p(t - shift))
+        })
+        .collect();
+    let s = score_text(dir.path(), "late.csv", &csv(&rows, true), &scene);
+    let m = s.metric("event:flip").unwrap();
+    // Every flip comes `shift` late. The crossing is interpolated linearly between rows 1/600 s apart; at the
+    // crossing ω_y is at its steepest (an inflection), so the interpolation error is O(h³·ω_y''') ≈ 1e-8 s.
+    assert!(m.note.is_none(), "{m:?}");
+    assert!(
+        (m.largest - shift).abs() < 1e-6 && (m.last - shift).abs() < 1e-6,
+        "{m:?}"
+    );
+    assert!(m.passes == (shift <= score::metrics::EVENT_TIME_MAX));
+}
+
+#[test]
+fn the_suite_s_own_references_score_at_round_off() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = eulerdyn(["suite", "--out", dir.path().to_str().unwrap()]);
+    out.expect_code(0);
+    let own = dir.path().join("self");
+    std::fs::create_dir(&own).unwrap();
+    for (name, _) in suite::SCENES {
+        std::fs::copy(
+            dir.path().join(format!("{name}.csv")),
+            own.join(format!("{name}.csv")),
+        )
+        .unwrap();
+    }
+    let scores = suite::score_suite(dir.path(), "self", &ReadOptions::default()).unwrap();
+    for s in &scores {
+        for m in &s.metrics {
+            // The reference read back from its CSV (shortest round-trip digits): the same rows exactly, so
+            // nothing beyond the round-off of recomputing H and the energy from them.
+            assert!(m.largest < 1e-12, "{}: {m:?}", s.scene);
+        }
+    }
+    let card = eulerdyn([
+        "score",
+        "--suite",
+        dir.path().to_str().unwrap(),
+        "--engine",
+        "self",
+    ]);
+    card.expect_code(0);
+    assert!(
+        card.stdout.starts_with("report card: self"),
+        "{}",
+        card.stdout
+    );
+    assert_eq!(
+        card.stdout.lines().filter(|l| l.ends_with("pass")).count(),
+        6,
+        "{}",
+        card.stdout
+    );
+}
+
+/// Scores `text` as their CSV with `extra` arguments and a --plot path; asserts exit 2, a message naming the file
+/// and `expect`, and that nothing was written.
+fn refused(text: &[u8], extra: &[&str], expect: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let theirs = write_file(dir.path(), "theirs.csv", text);
+    let fig = dir.path().join("fig.svg");
+    let mut args: Vec<String> = [
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]
+    .map(String::from)
+    .to_vec();
+    args.extend(["--plot".into(), fig.to_str().unwrap().into()]);
+    args.extend(extra.iter().map(|s| s.to_string()));
+    let out = eulerdyn(&args);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(!out.panicked());
+    for e in expect {
+        assert!(out.stderr.contains(e), "`{e}` in: {}", out.stderr);
+    }
+    assert_eq!(
+        dir_entries(dir.path()),
+        ["free.toml", "theirs.csv"],
+        "nothing written"
+    );
+}
+
+/// The exact CSV of [`FREE`] with row `row` (1-based) changed by `f`.
+fn with_row(row: usize, f: impl Fn(&str) -> String) -> Vec<u8> {
+    let text = csv(&exact_rows(), true);
+    let lines: Vec<String> = (text.lines().enumerate())
+        .map(|(i, l)| if i == row { f(l) } else { l.to_string() })
+        .collect();
+    (lines.join("\n") + "\n").into_bytes()
+}
+
+#[test]
+fn bad_input_is_refused_naming_file_row_and_column() {
+    let text = csv(&exact_rows(), true);
+    refused(
+        text.replacen("t,", "time,", 1).as_bytes(),
+        &[],
+        &["theirs.csv", "no time column `t`"],
+    );
+    refused(
+        text.replacen("q_w", "qw", 1).as_bytes(),
+        &[],
+        &["theirs.csv", "no attitude columns"],
+    );
+    refused(
+        &with_row(10, |l| format!("0.1{}", &l[l.find(',').unwrap()..])),
+        &[],
+        &["theirs.csv", "row 10, column `t`", "does not increase"],
+    );
+    refused(
+        &with_row(3, |l| {
+            let mut cells: Vec<String> = l.split(',').map(String::from).collect();
+            let w: f64 = cells[1].parse().unwrap();
+            cells[1] = format!("{}", w + 1e-5);
+            cells.join(",")
+        }),
+        &[],
+        &[
+            "theirs.csv",
+            "row 3, column `q_w,q_x,q_y,q_z`",
+            "off a unit quaternion",
+        ],
+    );
+    let past = format!("{}5.1,1,0,0,0,0,0,2\n", text);
+    refused(
+        past.as_bytes(),
+        &[],
+        &[
+            "theirs.csv",
+            "row 302, column `t`",
+            "past the scene's t_end = 5",
+        ],
+    );
+    refused(
+        text.as_bytes(),
+        &["--map", "w=q_w"],
+        &["--map w=", "not one of eulerdyn's column names"],
+    );
+}
+
+#[test]
+fn a_slightly_off_quaternion_is_normalised_with_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let text = with_row(3, |l| {
+        let mut cells: Vec<String> = l.split(',').map(String::from).collect();
+        let w: f64 = cells[1].parse().unwrap();
+        cells[1] = format!("{}", w * (1.0 + 1e-9));
+        cells.join(",")
+    });
+    let theirs = write_file(dir.path(), "theirs.csv", text);
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]);
+    out.expect_code(0);
+    assert!(
+        out.stdout.contains("normalised") && out.stdout.contains("the first row 3"),
+        "{}",
+        out.stdout
+    );
+}
+
+#[test]
+fn a_spreadsheet_csv_other_orders_and_axes_score_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene_text = scene_from(FREE, &Overrides::default());
+    let plain = write_file(dir.path(), "plain.csv", csv(&exact_rows(), true));
+    // A spreadsheet's save: byte-order mark, CRLF, renamed columns, scalar-last quaternion, ω in space axes,
+    // and the matrix form.
+    let mut text = String::from("\u{feff}time,qx,qy,qz,qw,wx,wy,wz\r\n");
+    let mut matrix = String::from("t,R_11,R_12,R_13,R_21,R_22,R_23,R_31,R_32,R_33\n");
+    for (t, q, w) in exact_rows() {
+        let (c, w_s) = (q.quaternion(), q * w);
+        text.push_str(&format!(
+            "{t},{},{},{},{},{},{},{}\r\n",
+            c.i, c.j, c.k, c.w, w_s.x, w_s.y, w_s.z
+        ));
+        let r = q.to_rotation_matrix();
+        let m: Vec<String> = (0..3)
+            .flat_map(|i| (0..3).map(move |j| (i, j)))
+            .map(|(i, j)| r[(i, j)].to_string())
+            .collect();
+        matrix.push_str(&format!("{t},{}\n", m.join(",")));
+    }
+    let sheet = write_file(dir.path(), "sheet.csv", text);
+    let matrix = write_file(dir.path(), "matrix.csv", matrix);
+    let map = |pairs: &[(&str, &str)]| {
+        pairs
+            .iter()
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .collect()
+    };
+    let options = ReadOptions {
+        quaternion: score::QuaternionOrder::Xyzw,
+        omega: Some(eulerdyn::frames::Axes::Space),
+        map: map(&[
+            ("t", "time"),
+            ("q_0", "qx"),
+            ("q_1", "qy"),
+            ("q_2", "qz"),
+            ("q_3", "qw"),
+            ("omega_x", "wx"),
+            ("omega_y", "wy"),
+            ("omega_z", "wz"),
+        ]),
+    };
+    let a = score::score(&plain, &scene_text, &ReadOptions::default()).unwrap();
+    let b = score::score(&sheet, &scene_text, &options).unwrap();
+    let c = score::score(&matrix, &scene_text, &ReadOptions::default()).unwrap();
+    // The same trajectory in other clothes: the same errors, to round-off (1e-12 as above; the matrix's
+    // conversion to a quaternion adds a few ε).
+    for (x, y) in a.metrics.iter().zip(&b.metrics) {
+        assert!((x.largest - y.largest).abs() < 1e-12, "{x:?} {y:?}");
+    }
+    assert!(c.metric("attitude").unwrap().largest < 1e-12);
+}
+
+#[test]
+fn the_plot_is_written_atomically() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let theirs = write_file(
+        dir.path(),
+        "euler.csv",
+        csv(&semi_implicit_euler(1.0 / 60.0, true), true),
+    );
+    let fig: PathBuf = dir.path().join("errors.svg");
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+        "--json",
+        "--plot",
+        fig.to_str().unwrap(),
+    ]);
+    assert!(out.code == Some(0) || out.code == Some(1), "{}", out.stderr);
+    let json: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    assert_eq!(json["metrics"][0]["key"], "attitude");
+    let svg = std::fs::read_to_string(&fig).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("attitude error angle"));
+}
