@@ -12,6 +12,7 @@ use crate::effects::{Effect, TorqueProfile};
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
+use crate::wheels::WheelControl;
 use crate::method::Method;
 use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::sample::Sample;
@@ -159,8 +160,10 @@ fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> O
         let constant = match &r.drive {
             Drive::Accel(alpha) => *alpha == 0.0,
             Drive::Torque(tau) => tau.is_zero(),
+            Drive::Free => true,
+            Drive::Table(_) | Drive::Law => false,
         };
-        on_z && constant && r.imbalance.is_none()
+        on_z && constant && r.imbalance.is_none() && r.control == WheelControl::default()
     };
     let applies = scene.effects.is_empty()
         && diagonal

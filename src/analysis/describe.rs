@@ -107,6 +107,15 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
             Drive::Torque(_) => {
                 "driven by its motor torque (the body feels the opposite)".to_string()
             }
+            Drive::Table(table) => format!(
+                "motor torque commanded by the table {}",
+                table.path().display()
+            ),
+            Drive::Law => format!(
+                "motor torque commanded by the wheel law \"{}\"",
+                gyrostat.law().map_or("", |law| law.name.as_str())
+            ),
+            Drive::Free => "free: no motor (friction only)".to_string(),
         };
         line(
             w,
@@ -119,6 +128,7 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 r.spin0
             ),
         );
+        wheel_control(w, &r.control);
         if let Some(u) = &r.imbalance {
             line(
                 w,
@@ -813,5 +823,27 @@ mod tests {
         let sphere = principal([2.0, 2.0, 2.0]);
         let (angle, _) = tilt_from_principal(&sphere, &Vector3::new(1.0, 2.0, 3.0));
         assert!(angle < 1e-6, "{angle}");
+    }
+}
+
+/// A wheel's limits and friction, when it has any (`crate::wheels`).
+fn wheel_control(w: &mut Description, c: &crate::wheels::WheelControl) {
+    let mut parts = Vec::new();
+    if c.max_torque.is_finite() {
+        parts.push(format!("motor torque within +-{} N*m", c.max_torque));
+    }
+    if c.max_speed.is_finite() {
+        let rpm = c.max_speed / crate::wheels::RPM;
+        parts.push(format!("relative speed within +-{rpm} rpm"));
+    }
+    let f = &c.friction;
+    if f.is_some() {
+        parts.push(format!(
+            "friction: Coulomb {} N*m, viscous {} N*m*s, Stribeck {} N*m over {} rad/s (dissipates energy, keeps H)",
+            f.coulomb, f.viscous, f.stribeck_torque, f.stribeck_speed
+        ));
+    }
+    if !parts.is_empty() {
+        line(w, "", &parts.join("; "));
     }
 }

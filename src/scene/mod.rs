@@ -9,6 +9,7 @@ pub mod source_map;
 mod spec;
 mod template;
 mod user_moment;
+mod wheel_law;
 mod validate;
 
 pub(crate) use file::parse_toml;

@@ -77,7 +77,7 @@ pub struct EnergyWatch {
 
 impl EnergyWatch {
     /// The watch of `scene`; `None` when the scene does not conserve its energy (torques, damping, a driven axis,
-    /// a rotor's motor or imbalance).
+    /// a rotor's motor, friction or imbalance).
     pub fn of(scene: &Scene) -> Option<Self> {
         let free = match &scene.motion {
             Motion::Free { gyrostat, .. } => gyrostat

@@ -31,3 +31,4 @@ mod study;
 mod sweep;
 mod user_moments;
 mod view;
+mod wheels;

@@ -54,7 +54,7 @@ fn rotor_momentum_columns(csv: &RunCsvReader<impl Read>) -> Vec<&'static str> {
         })
         .map(String::from)
         .collect();
-    (rotor_columns(&names).iter())
+    (rotor_columns(&names, false).iter())
         .filter(|c| c.name.ends_with("_h"))
         .map(|c| c.name)
         .collect()
