@@ -86,7 +86,10 @@ pub fn solve(
     for _ in 0..=wheels.len() {
         let omega_dot_b = accelerations(inertia_b, driven_inv_b, rhs0_b, wheels, &held, &motor, &friction);
         let mut released = false;
-        for (k, w) in wheels.iter().enumerate().filter(|(k, _)| held[*k]) {
+        for (k, w) in wheels.iter().enumerate() {
+            if !held[k] {
+                continue;
+            }
             let hold = w.inertia * w.axis_b.dot(&omega_dot_b);
             match holds[k] {
                 Hold::SpeedLimit if w.spin.signum() * (w.motor + friction[k] - hold) > 0.0 => {
@@ -121,22 +124,21 @@ fn accelerations(
     motor: &[f64; MAX_ROTORS],
     friction: &[f64; MAX_ROTORS],
 ) -> Vector3<f64> {
+    let any_held = held.iter().any(|&h| h);
     let mut rhs = *rhs0_b;
     let mut inertia_driven_b = *inertia_b;
     for (k, w) in wheels.iter().enumerate() {
         let push = match (w.accel, held[k]) {
             (Some(alpha), _) => w.inertia * alpha,
-            (None, true) => {
-                continue;
-            }
-            (None, false) => {
-                inertia_driven_b -= w.axis_b * w.axis_b.transpose() * w.inertia;
-                push_of(w, motor[k], friction[k])
-            }
+            (None, true) => continue,
+            (None, false) => push_of(w, motor[k], friction[k]),
         };
+        if any_held && w.accel.is_none() {
+            inertia_driven_b -= w.axis_b * w.axis_b.transpose() * w.inertia;
+        }
         rhs -= w.axis_b * push;
     }
-    let inverse = match held.iter().any(|&h| h) {
+    let inverse = match any_held {
         false => *driven_inv_b,
         true => inertia_driven_b
             .try_inverse()

@@ -105,7 +105,7 @@ fn the_speed_limit_holds_the_spin_at_the_limit() {
             // tolerance, 1e-12 relative and 1e-14 absolute, far below 1e-9.
             close(r.spin[0], spin, 1e-9, "Ω");
             close(s.omega_b.x, -J * r.spin[0] / I_XX, 1e-12, "ω_x = −J Ω / I (H_s = 0)");
-            assert!(r.spin[0] <= omega_max * (1.0 + 1e-12), "Ω never passes the limit");
+            assert!(r.spin[0] <= omega_max * (1.0 + 1e-9), "Ω never passes the limit");
             if s.t > t_lim {
                 assert!(r.torque[0].abs() <= 1e-12, "held: τ = {} at {}", r.torque[0], s.t);
                 assert_eq!(r.torque_cmd[0], tau, "the command is kept");
@@ -236,8 +236,9 @@ inertia = 0.05
 torque_table = "cmd.csv"
 max_torque = 0.1
 friction = { viscous = 1e-4 }
-[output]
+[solver]
 t_end = 2.0
+[output]
 every = 0.5
 "#;
 
@@ -266,7 +267,9 @@ fn a_torque_table_drives_a_wheel_and_its_columns_are_written() {
 
 #[test]
 fn bad_wheel_keys_are_refused_naming_the_key() {
-    let with = |extra: &str| WHEEL_SCENE.replace("[output]", &format!("{extra}\n[output]"));
+    let with = |extra: &str| WHEEL_SCENE.replace("[solver]", &format!("{extra}\n[solver]"));
+    // Without the table (not written beside the scene here), so that the second wheel is the one at fault.
+    let untabled = |extra: &str| with(extra).replace("torque_table = \"cmd.csv\"", "torque = 1.0");
     let free = "[[body.rotor]]\naxis = [0.0, 1.0, 0.0]\ninertia = 0.05\nmode = \"free\"";
     let cases = [
         (
@@ -299,16 +302,16 @@ fn bad_wheel_keys_are_refused_naming_the_key() {
         ),
         (
             "free with spin_accel",
-            with(&format!("{free}\nspin_accel = 1.0")),
+            untabled(&format!("{free}\nspin_accel = 1.0")),
             "body.rotor[1].mode",
         ),
         (
             "free with a torque limit",
-            with(&format!("{free}\nmax_torque = 1.0")),
+            untabled(&format!("{free}\nmax_torque = 1.0")),
             "body.rotor[1].max_torque",
         ),
         (
-            "a table with a bad header",
+            "a missing table",
             WHEEL_SCENE.replace("cmd.csv", "missing.csv"),
             "body.rotor[0].torque_table",
         ),
