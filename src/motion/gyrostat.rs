@@ -447,7 +447,12 @@ impl<M: AppliedMoment> OdeSystem<15> for GyrostatForm<'_, M> {
         normalise_quaternion(y);
     }
 
+    /// The moment's next corner, or a wheel's torque table's next row.
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
-        self.moment.corner_after(t)
+        let tables = (self.gyrostat.rotors.iter()).filter_map(|r| match &r.drive {
+            Drive::Table(table) => table.corner_after(t),
+            _ => None,
+        });
+        self.moment.corner_after(t).into_iter().chain(tables).reduce(f64::min)
     }
 }

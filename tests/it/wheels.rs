@@ -333,3 +333,33 @@ fn stribeck_friction_adds_its_breakaway_torque_at_low_speed() {
     close(f.torque(-100.0), 1e-3 + 1e-3, 1e-15, "the Stribeck term has faded");
     assert_eq!(f.breakaway(), 3e-3);
 }
+
+#[test]
+fn wheel_keys_are_sweepable_and_the_plot_has_wheel_panels() {
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "cmd.csv", "t,torque\n0,1\n10,1\n");
+    let scene = write_file(dir.path(), "scene.toml", WHEEL_SCENE);
+    let sweep = write_file(
+        dir.path(),
+        "sweep.toml",
+        "scene = \"scene.toml\"\n[[vary]]\nkey = \"body.rotor.0.max_torque\"\nvalues = [0.02]\n\
+         [[vary]]\nkey = \"body.rotor.0.friction.viscous\"\nvalues = [3e-3]\n",
+    );
+    let plan = eulerdyn::analysis::sweep::Sweep::load(&sweep).unwrap_or_else(|e| panic!("{e}"));
+    let run = plan.scene(&plan.values(0)).unwrap();
+    for s in rows(&run) {
+        let r = s.rotors.unwrap();
+        assert_eq!(r.torque[0], 0.02, "the swept limit");
+        assert_eq!(r.friction[0], -3e-3 * r.spin[0], "the swept friction, τ_f = −c Ω");
+    }
+    let out_csv = dir.path().join("out.csv");
+    let out = eulerdyn(["run", scene.to_str().unwrap(), "-o", out_csv.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let svg = dir.path().join("out.svg");
+    let out = eulerdyn(["plot", out_csv.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for title in ["Wheel spins relative to the body", "Wheel motor torques, applied and commanded", "τ_cmd wx"] {
+        assert!(text.contains(title), "the default figure of a rotor run draws `{title}`");
+    }
+}
