@@ -173,7 +173,7 @@ fn a_pd_law_through_one_wheel_gives_the_second_order_step_response() {
     // θ̈ + 2ζω_n θ̇ + ω_n² θ = ω_n² θ_t, ω_n² = k_p/(I − J), 2ζω_n = k_d/(I − J): the underdamped step response
     // θ = θ_t (1 − e^{−ζω_n t}(cos ω_d t + ζω_n/ω_d sin ω_d t)), ω_d = ω_n √(1 − ζ²) (Ogata, *Modern Control
     // Engineering*, 5th ed., §5-3, eq. 5-10).
-    let (i_zz, j, theta_t, k_p, k_d) = (4.0, 0.1, 0.3, 1.0, 0.8);
+    let (i_zz, j, theta_t, k_p, k_d): (f64, f64, f64, f64, f64) = (4.0, 0.1, 0.3, 1.0, 0.8);
     let (wn, zeta) = {
         let wn = (k_p / (i_zz - j)).sqrt();
         (wn, k_d / (i_zz - j) / (2.0 * wn))
