@@ -14,7 +14,9 @@ use eulerdyn::scene::{Overrides, load};
 use nalgebra::{UnitQuaternion, Vector3};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let out = std::env::args().nth(1).unwrap_or("slew_three_wheels.csv".into());
+    let out = std::env::args()
+        .nth(1)
+        .unwrap_or("slew_three_wheels.csv".into());
     let target = UnitQuaternion::from_euler_angles(0.6, -0.4, 0.9);
     let (k_p, k_d) = (0.6, 3.0);
     let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
@@ -27,7 +29,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::path::Path::new("scenarios/slew_three_wheels.toml"),
         &Overrides::default(),
     )?
-        .with_wheel_law("pd_slew", pd)?;
+    .with_wheel_law("pd_slew", pd)?;
     let report = write_run(&scene, std::path::Path::new(&out))?;
     println!("wrote {out} ({} rows)", report.rows);
     let text = std::fs::read_to_string(&out)?;
@@ -35,14 +37,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
     let at = |name: &str| header.iter().position(|c| *c == name);
     let columns = ["t", "wheel_x_spin", "wheel_y_spin", "wheel_z_spin"].map(at);
-    println!("{:>6} {:>14} {:>14} {:>14}", "t (s)", "wheel_x (rpm)", "wheel_y (rpm)", "wheel_z (rpm)");
+    println!(
+        "{:>6} {:>14} {:>14} {:>14}",
+        "t (s)", "wheel_x (rpm)", "wheel_y (rpm)", "wheel_z (rpm)"
+    );
     for line in lines {
         let values: Vec<f64> = line.split(',').filter_map(|v| v.parse().ok()).collect();
         let get = |i: Option<usize>| i.and_then(|i| values.get(i).copied()).unwrap_or(f64::NAN);
         let t = get(columns[0]);
         if t % 10.0 == 0.0 {
             let rpm = |i| get(i) * 30.0 / std::f64::consts::PI;
-            println!("{t:6.1} {:14.2} {:14.2} {:14.2}", rpm(columns[1]), rpm(columns[2]), rpm(columns[3]));
+            println!(
+                "{t:6.1} {:14.2} {:14.2} {:14.2}",
+                rpm(columns[1]),
+                rpm(columns[2]),
+                rpm(columns[3])
+            );
         }
     }
     let end = q_end_error(&text, &target);
@@ -55,6 +65,8 @@ fn q_end_error(text: &str, target: &UnitQuaternion<f64>) -> f64 {
     let last: Vec<f64> = (text.lines().last().unwrap_or_default().split(','))
         .filter_map(|v| v.parse().ok())
         .collect();
-    let q = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(last[1], last[2], last[3], last[4]));
+    let q = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+        last[1], last[2], last[3], last[4],
+    ));
     q.angle_to(target)
 }

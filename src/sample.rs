@@ -474,7 +474,11 @@ pub fn rotor_columns(names: &[String], wheels: bool) -> &'static [Column] {
                         "N*m",
                         "motor torque commanded (before the limits)",
                     ),
-                    col(named(name, "friction"), "N*m", "friction torque on the rotor"),
+                    col(
+                        named(name, "friction"),
+                        "N*m",
+                        "friction torque on the rotor",
+                    ),
                 ]
                 .into_iter()
                 .take(if wheels { 5 } else { 3 })

@@ -2,10 +2,10 @@
 //! with Ctrl-C looked for a few times a second.
 
 use std::ffi::CString;
-use std::path::Path;
-use std::sync::Arc;
 use std::fmt;
 use std::ops::ControlFlow;
+use std::path::Path;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use eulerdyn::events::Occurrence;
@@ -228,7 +228,11 @@ pub fn with_laws(
     }
     if let Some(f) = wheel_torque {
         let law = PyLaw::new(f.clone().unbind());
-        let name = law_name(&f, "wheel_torque", "f(t, q, omega_b, spins) -> one torque per wheel")?;
+        let name = law_name(
+            &f,
+            "wheel_torque",
+            "f(t, q, omega_b, spins) -> one torque per wheel",
+        )?;
         scene = (scene.with_wheel_law(&name, SharedWheelLaw(law.clone())))
             .map_err(|inv| input.invalid(py, inv))?;
         laws.push((law, name, "wheel_torque"));
@@ -294,10 +298,7 @@ pub fn law_error(py: Python<'_>, scene: &Path, what: &str, failure: LawFailure) 
     let failed = RunFailed {
         scene: scene.to_path_buf(),
         t: Some(failure.t),
-        reason: format!(
-            "{what} at t = {}: {}",
-            failure.t, failure.error
-        ),
+        reason: format!("{what} at t = {}: {}", failure.t, failure.error),
     };
     let err = run_error(py, &failed);
     err.set_cause(py, Some(failure.error));

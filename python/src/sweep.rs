@@ -206,7 +206,11 @@ fn with_laws(
     let mut wheel_law = None;
     if let Some(f) = wheel_torque {
         let law = PyLaw::new(f.clone().unbind());
-        let name = law_name(&f, "wheel_torque", "f(t, q, omega_b, spins) -> one torque per wheel")?;
+        let name = law_name(
+            &f,
+            "wheel_torque",
+            "f(t, q, omega_b, spins) -> one torque per wheel",
+        )?;
         wheel_law = Some((law.clone(), name.clone()));
         laws.push((law, name, "wheel_torque"));
     }
@@ -215,10 +219,12 @@ fn with_laws(
     }
     let plan = plan.with_prepare(move |mut scene| {
         if let Some((law, name, axes)) = &moment_law {
-            scene = (scene.with_moment(name, *axes, SharedLaw(law.clone()))).map_err(|e| e.to_string())?;
+            scene = (scene.with_moment(name, *axes, SharedLaw(law.clone())))
+                .map_err(|e| e.to_string())?;
         }
         if let Some((law, name)) = &wheel_law {
-            scene = (scene.with_wheel_law(name, SharedWheelLaw(law.clone()))).map_err(|e| e.to_string())?;
+            scene = (scene.with_wheel_law(name, SharedWheelLaw(law.clone())))
+                .map_err(|e| e.to_string())?;
         }
         Ok(scene)
     });

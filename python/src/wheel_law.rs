@@ -40,7 +40,9 @@ impl WheelLaw for SharedWheelLaw {
 
 /// One finite number per wheel, or a TypeError/ValueError that says what f returned instead.
 fn torques_of(result: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<f64>> {
-    let what = format!("the wheel_torque function must return {n} numbers (one motor torque per wheel, in N*m)");
+    let what = format!(
+        "the wheel_torque function must return {n} numbers (one motor torque per wheel, in N*m)"
+    );
     let values: Vec<f64> = result
         .extract()
         .map_err(|_| PyTypeError::new_err(format!("{what}, got {}", describe(result))))?;

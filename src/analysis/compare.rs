@@ -12,12 +12,12 @@ use crate::effects::{Effect, TorqueProfile};
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
-use crate::wheels::WheelControl;
 use crate::method::Method;
 use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
+use crate::wheels::WheelControl;
 
 /// A closed-form solution that applies to a scene.
 pub enum Oracle {

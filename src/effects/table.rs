@@ -172,7 +172,11 @@ fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector
         ));
     };
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
-    let what = if header_names.len() == 4 { "moment" } else { "torque" };
+    let what = if header_names.len() == 4 {
+        "moment"
+    } else {
+        "torque"
+    };
     if names != header_names {
         return Err(format!(
             "row 0 (the header): expected `{expected}` (t in s, the {what} in N*m), got `{}`",
@@ -194,7 +198,9 @@ fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector
             _ => {}
         }
         t.push(values[0]);
-        m.push(Vector3::from_fn(|i, _| values.get(i + 1).copied().unwrap_or(0.0)));
+        m.push(Vector3::from_fn(|i, _| {
+            values.get(i + 1).copied().unwrap_or(0.0)
+        }));
     }
     if t.len() < 2 {
         return Err(format!(

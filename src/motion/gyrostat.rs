@@ -291,7 +291,13 @@ impl Gyrostat {
     ) -> (WheelSolve, [f64; MAX_ROTORS]) {
         let law = (self.law.as_ref()).map(|law| {
             let q = UnitQuaternion::new_normalize(*q);
-            law.commands(self.rotors.len(), t, &q, omega_b, &spins[..self.rotors.len()])
+            law.commands(
+                self.rotors.len(),
+                t,
+                &q,
+                omega_b,
+                &spins[..self.rotors.len()],
+            )
         });
         let mut commands = [0.0; MAX_ROTORS];
         let mut wheels = [Wheel::default(); MAX_ROTORS];
@@ -453,6 +459,10 @@ impl<M: AppliedMoment> OdeSystem<15> for GyrostatForm<'_, M> {
             Drive::Table(table) => table.corner_after(t),
             _ => None,
         });
-        self.moment.corner_after(t).into_iter().chain(tables).reduce(f64::min)
+        self.moment
+            .corner_after(t)
+            .into_iter()
+            .chain(tables)
+            .reduce(f64::min)
     }
 }

@@ -9,8 +9,8 @@ pub mod source_map;
 mod spec;
 mod template;
 mod user_moment;
-mod wheel_law;
 mod validate;
+mod wheel_law;
 
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};

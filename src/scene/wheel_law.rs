@@ -79,7 +79,11 @@ impl Scene {
             };
             let wheel = rotor.name.clone().unwrap_or_else(|| format!("rotor{k}"));
             return invalid(
-                KeyPath::root().key("body").key("rotor").index(k).key(driver),
+                KeyPath::root()
+                    .key("body")
+                    .key("rotor")
+                    .index(k)
+                    .key(driver),
                 format!(
                     "the wheel `{wheel}` has its own driver (`{driver}`), so the wheel law \"{name}\" cannot drive \
                      it: remove `{driver}` or give the law only a body whose wheels have no driver"

@@ -84,7 +84,15 @@ pub fn solve(
     }
     // Each pass releases the held wheels that would not stay held; at most one pass per wheel.
     for _ in 0..=wheels.len() {
-        let omega_dot_b = accelerations(inertia_b, driven_inv_b, rhs0_b, wheels, &held, &motor, &friction);
+        let omega_dot_b = accelerations(
+            inertia_b,
+            driven_inv_b,
+            rhs0_b,
+            wheels,
+            &held,
+            &motor,
+            &friction,
+        );
         let mut released = false;
         for (k, w) in wheels.iter().enumerate() {
             if !held[k] {
@@ -110,7 +118,15 @@ pub fn solve(
             return finish(wheels, omega_dot_b, &held, motor, friction);
         }
     }
-    let omega_dot_b = accelerations(inertia_b, driven_inv_b, rhs0_b, wheels, &held, &motor, &friction);
+    let omega_dot_b = accelerations(
+        inertia_b,
+        driven_inv_b,
+        rhs0_b,
+        wheels,
+        &held,
+        &motor,
+        &friction,
+    );
     finish(wheels, omega_dot_b, &held, motor, friction)
 }
 
@@ -176,7 +192,9 @@ fn finish(
                 alpha
             }
             (None, true) => 0.0,
-            (None, false) => push_of(w, motor[k], friction[k]) / w.inertia - w.axis_b.dot(&omega_dot_b),
+            (None, false) => {
+                push_of(w, motor[k], friction[k]) / w.inertia - w.axis_b.dot(&omega_dot_b)
+            }
         };
     }
     WheelSolve {

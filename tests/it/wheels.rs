@@ -17,9 +17,7 @@ const I_XX: f64 = 2.0;
 const J: f64 = 0.05;
 
 fn rows(scene: &eulerdyn::Scene) -> Vec<Sample> {
-    simulate::samples(scene)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .0
+    simulate::samples(scene).unwrap_or_else(|e| panic!("{e}")).0
 }
 
 /// A body at rest (I_xx = 2, about x) with `wheel` along x, tight dop853, `form`, rows every `every` to `t_end`.
@@ -78,8 +76,17 @@ fn a_clipped_command_exchanges_momentum_at_the_limit() {
         for s in rows(&scene(wheel.clone(), form, 10.0, 0.5)) {
             close(s.omega_b.x, -tau_max * s.t / (I_XX - J), 1e-9, "ω_x");
             let r = s.rotors.expect("rotor columns");
-            close(r.spin[0], tau_max * s.t * I_XX / (J * (I_XX - J)), 1e-9, "Ω");
-            assert_eq!((r.torque[0], r.torque_cmd[0]), (tau_max, 1.0), "applied and commanded");
+            close(
+                r.spin[0],
+                tau_max * s.t * I_XX / (J * (I_XX - J)),
+                1e-9,
+                "Ω",
+            );
+            assert_eq!(
+                (r.torque[0], r.torque_cmd[0]),
+                (tau_max, 1.0),
+                "applied and commanded"
+            );
             assert!(s.h_s.norm() <= 1e-12, "{form:?}: H_s = {}", s.h_s);
         }
     }
@@ -97,17 +104,33 @@ fn the_speed_limit_holds_the_spin_at_the_limit() {
         .with_wheel(limits(None, Some(rpm)));
     for form in Form::ALL {
         let samples = rows(&scene(wheel.clone(), form, 2.0 * t_lim, t_lim / 8.0));
-        assert!(samples.iter().any(|s| s.t > t_lim), "the run passes the limit");
+        assert!(
+            samples.iter().any(|s| s.t > t_lim),
+            "the run passes the limit"
+        );
         for s in samples {
             let r = s.rotors.expect("rotor columns");
             let spin = (tau * s.t * I_XX / (J * (I_XX - J))).min(omega_max);
             // Reaching the limit inside a step: the step's error control keeps the overshoot to the local
             // tolerance, 1e-12 relative and 1e-14 absolute, far below 1e-9.
             close(r.spin[0], spin, 1e-9, "Ω");
-            close(s.omega_b.x, -J * r.spin[0] / I_XX, 1e-12, "ω_x = −J Ω / I (H_s = 0)");
-            assert!(r.spin[0] <= omega_max * (1.0 + 1e-9), "Ω never passes the limit");
+            close(
+                s.omega_b.x,
+                -J * r.spin[0] / I_XX,
+                1e-12,
+                "ω_x = −J Ω / I (H_s = 0)",
+            );
+            assert!(
+                r.spin[0] <= omega_max * (1.0 + 1e-9),
+                "Ω never passes the limit"
+            );
             if s.t > t_lim {
-                assert!(r.torque[0].abs() <= 1e-12, "held: τ = {} at {}", r.torque[0], s.t);
+                assert!(
+                    r.torque[0].abs() <= 1e-12,
+                    "held: τ = {} at {}",
+                    r.torque[0],
+                    s.t
+                );
                 assert_eq!(r.torque_cmd[0], tau, "the command is kept");
             }
         }
@@ -128,7 +151,12 @@ fn a_free_wheel_under_viscous_friction_decays_exponentially() {
             let r = s.rotors.expect("rotor columns");
             let spin = spin0 * (-c * I_XX * s.t / (J * (I_XX - J))).exp();
             close(r.spin[0], spin, 1e-9, "Ω");
-            close(I_XX * s.omega_b.x + J * r.spin[0], J * spin0, 1e-12, "I ω + J Ω");
+            close(
+                I_XX * s.omega_b.x + J * r.spin[0],
+                J * spin0,
+                1e-12,
+                "I ω + J Ω",
+            );
             close(r.friction[0], -c * r.spin[0], 1e-15, "τ_f = −c Ω");
             assert_eq!(r.torque[0], 0.0, "a free wheel has no motor");
             assert!(s.energy < energy || s.t == 0.0, "the energy falls");
@@ -152,10 +180,23 @@ fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter()
             let r = s.rotors.expect("rotor columns");
             let spin = (spin0 - c * I_XX * s.t / (J * (I_XX - J))).max(0.0);
             // The stop: the spin is taken as at rest below STICK_SPEED, so it may end up to that above zero.
-            assert!((r.spin[0] - spin).abs() <= 1e-9 * spin0 + STICK_SPEED, "Ω = {} vs {spin} at {}", r.spin[0], s.t);
-            assert!(r.spin[0] >= -STICK_SPEED, "no chatter through zero: Ω = {}", r.spin[0]);
+            assert!(
+                (r.spin[0] - spin).abs() <= 1e-9 * spin0 + STICK_SPEED,
+                "Ω = {} vs {spin} at {}",
+                r.spin[0],
+                s.t
+            );
+            assert!(
+                r.spin[0] >= -STICK_SPEED,
+                "no chatter through zero: Ω = {}",
+                r.spin[0]
+            );
             if s.t > t_stop {
-                assert!(r.friction[0].abs() <= 1e-12, "stuck, no torque needed: {}", r.friction[0]);
+                assert!(
+                    r.friction[0].abs() <= 1e-12,
+                    "stuck, no torque needed: {}",
+                    r.friction[0]
+                );
                 close(s.omega_b.x, J * spin0 / I_XX, 1e-9, "ω after the stop");
             }
         }
@@ -163,7 +204,10 @@ fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter()
         let after: Vec<f64> = (samples.iter().filter(|s| s.t > t_stop * 1.01))
             .map(|s| s.rotors.unwrap().spin[0])
             .collect();
-        assert!(after.len() > 4 && after.windows(2).all(|w| w[0] == w[1]), "{after:?}");
+        assert!(
+            after.len() > 4 && after.windows(2).all(|w| w[0] == w[1]),
+            "{after:?}"
+        );
     }
 }
 
@@ -184,8 +228,11 @@ fn a_pd_law_through_one_wheel_gives_the_second_order_step_response() {
         vec![-(k_p * (theta_t - theta) - k_d * omega_b.z)]
     };
     for form in Form::ALL {
-        let body = BodySpec::principal(10.0, [3.0, 3.5, i_zz])
-            .with_rotor(RotorSpec::new([0.0, 0.0, 1.0], j, 0.0));
+        let body = BodySpec::principal(10.0, [3.0, 3.5, i_zz]).with_rotor(RotorSpec::new(
+            [0.0, 0.0, 1.0],
+            j,
+            0.0,
+        ));
         let scene = SceneSpec::new(body, 30.0, 0.5)
             .with_method(Method::Dop853)
             .with_tolerances(1e-12, 1e-14)
@@ -198,10 +245,14 @@ fn a_pd_law_through_one_wheel_gives_the_second_order_step_response() {
             let t = s.t;
             let theta = 2.0 * s.q.k.atan2(s.q.w);
             let decay = (-zeta * wn * t).exp();
-            let expected = theta_t * (1.0 - decay * ((wd * t).cos() + zeta * wn / wd * (wd * t).sin()));
+            let expected =
+                theta_t * (1.0 - decay * ((wd * t).cos() + zeta * wn / wd * (wd * t).sin()));
             close(theta, expected, 1e-9, "θ");
             let r = s.rotors.unwrap();
-            assert_eq!(r.torque[0], r.torque_cmd[0], "no limit: applied = commanded");
+            assert_eq!(
+                r.torque[0], r.torque_cmd[0],
+                "no limit: applied = commanded"
+            );
             assert!(s.h_s.norm() <= 1e-12, "H_s = 0");
         }
     }
@@ -212,17 +263,29 @@ fn a_law_is_refused_beside_a_wheel_with_its_own_driver_and_with_a_wrong_count() 
     let body = |drive: RotorDrive| {
         BodySpec::principal(10.0, [1.0, 1.0, 1.0])
             .with_rotor(RotorSpec::new([0.0, 0.0, 1.0], 0.1, 0.0))
-            .with_rotor(RotorSpec::new([1.0, 0.0, 0.0], 0.1, 0.0).with_name("x").with_drive(drive))
+            .with_rotor(
+                RotorSpec::new([1.0, 0.0, 0.0], 0.1, 0.0)
+                    .with_name("x")
+                    .with_drive(drive),
+            )
     };
     let law = |_t: f64, _q: &UnitQuaternion<f64>, _w: &Vector3<f64>, _s: &[f64]| vec![0.0, 0.0];
-    let scene = SceneSpec::new(body(RotorDrive::Free), 1.0, 0.5).build().unwrap();
+    let scene = SceneSpec::new(body(RotorDrive::Free), 1.0, 0.5)
+        .build()
+        .unwrap();
     let e = scene.with_wheel_law("pd", law).unwrap_err();
     assert_eq!(e.key.to_string(), "body.rotor[1].mode", "{e}");
     assert!(e.problem.contains("`x`"), "names the wheel: {e}");
-    let scene = SceneSpec::new(body(RotorDrive::ConstantSpin), 1.0, 0.5).build().unwrap();
+    let scene = SceneSpec::new(body(RotorDrive::ConstantSpin), 1.0, 0.5)
+        .build()
+        .unwrap();
     let one = |_t: f64, _q: &UnitQuaternion<f64>, _w: &Vector3<f64>, _s: &[f64]| vec![0.0];
     let e = scene.with_wheel_law("pd", one).unwrap_err();
-    assert!(e.problem.contains("gives 1 torque(s), the body has 2 wheel(s)"), "{e}");
+    assert!(
+        e.problem
+            .contains("gives 1 torque(s), the body has 2 wheel(s)"),
+        "{e}"
+    );
 }
 
 const WHEEL_SCENE: &str = r#"name = "wheel"
@@ -250,13 +313,27 @@ fn a_torque_table_drives_a_wheel_and_its_columns_are_written() {
     write_file(dir.path(), "cmd.csv", "\u{feff}t,torque\r\n0,1\r\n10,1\r\n");
     let scene = write_file(dir.path(), "scene.toml", WHEEL_SCENE);
     let out_csv = dir.path().join("out.csv");
-    let out = eulerdyn(["run", scene.to_str().unwrap(), "-o", out_csv.to_str().unwrap()]);
+    let out = eulerdyn([
+        "run",
+        scene.to_str().unwrap(),
+        "-o",
+        out_csv.to_str().unwrap(),
+    ]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     let text = std::fs::read_to_string(&out_csv).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let tail = &header[header.len() - 5..];
-    assert_eq!(tail, ["wx_spin", "wx_h", "wx_torque", "wx_torque_cmd", "wx_friction"]);
+    assert_eq!(
+        tail,
+        [
+            "wx_spin",
+            "wx_h",
+            "wx_torque",
+            "wx_torque_cmd",
+            "wx_friction"
+        ]
+    );
     for line in lines {
         let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
         let n = v.len();
@@ -329,8 +406,18 @@ fn stribeck_friction_adds_its_breakaway_torque_at_low_speed() {
         stribeck_speed: 0.5,
     };
     assert_eq!(f.torque(0.0), 0.0);
-    close(f.torque(0.5), -(1e-3 + 2e-3 * (-1.0f64).exp()) - 0.5e-5, 1e-15, "at Ω_s");
-    close(f.torque(-100.0), 1e-3 + 1e-3, 1e-15, "the Stribeck term has faded");
+    close(
+        f.torque(0.5),
+        -(1e-3 + 2e-3 * (-1.0f64).exp()) - 0.5e-5,
+        1e-15,
+        "at Ω_s",
+    );
+    close(
+        f.torque(-100.0),
+        1e-3 + 1e-3,
+        1e-15,
+        "the Stribeck term has faded",
+    );
     assert_eq!(f.breakaway(), 3e-3);
 }
 
@@ -350,16 +437,37 @@ fn wheel_keys_are_sweepable_and_the_plot_has_wheel_panels() {
     for s in rows(&run) {
         let r = s.rotors.unwrap();
         assert_eq!(r.torque[0], 0.02, "the swept limit");
-        assert_eq!(r.friction[0], -3e-3 * r.spin[0], "the swept friction, τ_f = −c Ω");
+        assert_eq!(
+            r.friction[0],
+            -3e-3 * r.spin[0],
+            "the swept friction, τ_f = −c Ω"
+        );
     }
     let out_csv = dir.path().join("out.csv");
-    let out = eulerdyn(["run", scene.to_str().unwrap(), "-o", out_csv.to_str().unwrap()]);
+    let out = eulerdyn([
+        "run",
+        scene.to_str().unwrap(),
+        "-o",
+        out_csv.to_str().unwrap(),
+    ]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     let svg = dir.path().join("out.svg");
-    let out = eulerdyn(["plot", out_csv.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    let out = eulerdyn([
+        "plot",
+        out_csv.to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+    ]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     let text = std::fs::read_to_string(&svg).unwrap();
-    for title in ["Wheel spins relative to the body", "Wheel motor torques, applied and commanded", "τ_cmd wx"] {
-        assert!(text.contains(title), "the default figure of a rotor run draws `{title}`");
+    for title in [
+        "Wheel spins relative to the body",
+        "Wheel motor torques, applied and commanded",
+        "τ_cmd wx",
+    ] {
+        assert!(
+            text.contains(title),
+            "the default figure of a rotor run draws `{title}`"
+        );
     }
 }

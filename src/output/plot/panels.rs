@@ -190,10 +190,20 @@ fn wheels_panel(run: &RunSeries, panel: Panel) -> PanelPlot {
     let mut curves = Vec::new();
     for (name, color) in names.iter().zip(COLORS.iter().cycle()) {
         if panel == Panel::WheelSpin {
-            curves.push(single(run, &format!("{name}_spin"), &format!("Ω {name}"), *color));
+            curves.push(single(
+                run,
+                &format!("{name}_spin"),
+                &format!("Ω {name}"),
+                *color,
+            ));
             continue;
         }
-        curves.push(single(run, &format!("{name}_torque"), &format!("τ {name}"), *color));
+        curves.push(single(
+            run,
+            &format!("{name}_torque"),
+            &format!("τ {name}"),
+            *color,
+        ));
         let command = format!("{name}_torque_cmd");
         if run.has(&command) {
             curves.push(Curve {
@@ -204,8 +214,14 @@ fn wheels_panel(run: &RunSeries, panel: Panel) -> PanelPlot {
         }
     }
     match panel {
-        Panel::WheelSpin => PanelPlot::linear("Wheel spins relative to the body", "Ω (rad/s)", curves),
-        _ => PanelPlot::linear("Wheel motor torques, applied and commanded", "τ (N·m)", curves),
+        Panel::WheelSpin => {
+            PanelPlot::linear("Wheel spins relative to the body", "Ω (rad/s)", curves)
+        }
+        _ => PanelPlot::linear(
+            "Wheel motor torques, applied and commanded",
+            "τ (N·m)",
+            curves,
+        ),
     }
 }
 

@@ -227,7 +227,8 @@ fn read_rows(mut csv: RunCsvReader<impl Read>, panels: &[Panel]) -> Result<RunSe
     }
     let mut wanted = wanted_columns(&panels, |c| csv.index_of(c).is_some());
     if wheel_panels {
-        let controlled = (wheels.iter()).all(|n| csv.index_of(&format!("{n}_torque_cmd")).is_some());
+        let controlled =
+            (wheels.iter()).all(|n| csv.index_of(&format!("{n}_torque_cmd")).is_some());
         (rotor_columns(&wheels, controlled).iter())
             .filter(|c| !c.name.ends_with("_h") && !c.name.ends_with("_friction"))
             .for_each(|c| wanted.push(c.name));

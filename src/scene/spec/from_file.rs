@@ -145,16 +145,18 @@ fn rotor_drive(table: &KeyPath, doc: &RotorFile, keys: &ProfileKeys) -> Checked<
         };
         return invalid(table.clone().key(second), message);
     }
-    Ok(match (doc.spin_accel, doc.torque, &doc.torque_table, doc.mode) {
-        (Some(accel), ..) => RotorDrive::SpinAccel(accel),
-        (_, Some(value), ..) => RotorDrive::Torque {
-            value,
-            profile: profile(table, keys)?,
+    Ok(
+        match (doc.spin_accel, doc.torque, &doc.torque_table, doc.mode) {
+            (Some(accel), ..) => RotorDrive::SpinAccel(accel),
+            (_, Some(value), ..) => RotorDrive::Torque {
+                value,
+                profile: profile(table, keys)?,
+            },
+            (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
+            (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,
+            _ => RotorDrive::ConstantSpin,
         },
-        (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
-        (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,
-        _ => RotorDrive::ConstantSpin,
-    })
+    )
 }
 
 /// `body.shape`: its `type` and the keys that type takes.

@@ -108,12 +108,14 @@ fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Ch
             RotorDrive::ConstantSpin => Drive::Accel(0.0),
             RotorDrive::Free => Drive::Free,
             // The table is read here, once: its errors name the file and the row.
-            RotorDrive::Table(ref file) => Drive::Table(Arc::new(
-                read_wheel_table(file).map_err(|problem| Invalid {
-                    key: key("torque_table"),
-                    problem,
-                })?,
-            )),
+            RotorDrive::Table(ref file) => {
+                Drive::Table(Arc::new(read_wheel_table(file).map_err(|problem| {
+                    Invalid {
+                        key: key("torque_table"),
+                        problem,
+                    }
+                })?))
+            }
             RotorDrive::SpinAccel(alpha) => {
                 Drive::Accel(finite(key("spin_accel"), alpha, "rad/s^2")?)
             }
