@@ -69,6 +69,7 @@ pub mod sample;
 pub mod scene;
 pub mod simulate;
 pub mod trig;
+pub mod wheels;
 
 pub use frames::{Axes, Form};
 pub use method::{Backend, Method};

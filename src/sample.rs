@@ -39,13 +39,16 @@ pub struct Sample {
 pub const MAX_ROTORS: usize = 4;
 
 /// The rotors' values in one row, the first `n` entries used: relative spin Ω_k (rad/s), the wheel's axial moment
-/// of momentum J_k(a_k·ω + Ω_k) (N·m·s) and the motor torque τ_k on the wheel (N·m).
+/// of momentum J_k(a_k·ω + Ω_k) (N·m·s), the motor torque τ_k applied to the wheel (N·m), the torque commanded
+/// (before the limits) and the friction torque on the wheel (N·m).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RotorRows {
     pub n: usize,
     pub spin: [f64; MAX_ROTORS],
     pub h: [f64; MAX_ROTORS],
     pub torque: [f64; MAX_ROTORS],
+    pub torque_cmd: [f64; MAX_ROTORS],
+    pub friction: [f64; MAX_ROTORS],
 }
 
 /// What the support of a body turning about a fixed axis supplies: the force F_sup = m a_C − Σ F_effects, the
@@ -99,6 +102,8 @@ pub struct ColumnSet {
     pub carrier: bool,
     /// `<name>_spin,<name>_h,<name>_torque` per rotor, after all others ([`rotor_columns`]).
     pub rotors: &'static [Column],
+    /// Each rotor's columns go on with `<name>_torque_cmd,<name>_friction` (wheels under control).
+    pub wheels: bool,
 }
 
 /// A column's name, unit and meaning.
@@ -323,6 +328,7 @@ impl ColumnSet {
         potential: true,
         carrier: true,
         rotors: &[],
+        wheels: false,
     };
 
     /// All columns of a run, in order.
@@ -397,9 +403,13 @@ impl ColumnSet {
             out.extend(omega_c_s.unwrap_or(nan3).iter());
         }
         let rotors = s.rotors.unwrap_or_default();
-        for k in 0..self.rotors.len() / 3 {
+        let width = if self.wheels { 5 } else { 3 };
+        for k in 0..self.rotors.len() / width {
             let value = |v: &[f64; MAX_ROTORS]| if k < rotors.n { v[k] } else { f64::NAN };
             out.extend([value(&rotors.spin), value(&rotors.h), value(&rotors.torque)]);
+            if self.wheels {
+                out.extend([value(&rotors.torque_cmd), value(&rotors.friction)]);
+            }
         }
     }
     /// The values of one row, in column order, refusing a non-finite one (the CSV writer and the Python module
@@ -430,16 +440,18 @@ pub struct NonFinite {
 }
 
 /// The columns of rotors named `names`, in order: `<name>_spin` (rad/s), `<name>_h` (N·m·s), `<name>_torque`
-/// (N·m). Column names are `'static`: each distinct list of names is made once per process and kept.
-pub fn rotor_columns(names: &[String]) -> &'static [Column] {
+/// (N·m), and with `wheels` `<name>_torque_cmd` and `<name>_friction` (N·m). Column names are `'static`: each
+/// distinct list of names is made once per process and kept.
+pub fn rotor_columns(names: &[String], wheels: bool) -> &'static [Column] {
     use std::collections::HashMap;
     use std::sync::{Mutex, OnceLock};
-    static MADE: OnceLock<Mutex<HashMap<Vec<String>, &'static [Column]>>> = OnceLock::new();
+    type Made = HashMap<(Vec<String>, bool), &'static [Column]>;
+    static MADE: OnceLock<Mutex<Made>> = OnceLock::new();
     let mut made = MADE
         .get_or_init(Default::default)
         .lock()
         .unwrap_or_else(|poisoned| poisoned.into_inner());
-    made.entry(names.to_vec()).or_insert_with(|| {
+    made.entry((names.to_vec(), wheels)).or_insert_with(|| {
         let named = |name: &str, suffix: &str| -> &'static str {
             Box::leak(format!("{name}_{suffix}").into_boxed_str())
         };
@@ -457,7 +469,19 @@ pub fn rotor_columns(names: &[String]) -> &'static [Column] {
                         "rotor's axial moment of momentum J (a.omega + spin)",
                     ),
                     col(named(name, "torque"), "N*m", "motor torque on the rotor"),
+                    col(
+                        named(name, "torque_cmd"),
+                        "N*m",
+                        "motor torque commanded (before the limits)",
+                    ),
+                    col(
+                        named(name, "friction"),
+                        "N*m",
+                        "friction torque on the rotor",
+                    ),
                 ]
+                .into_iter()
+                .take(if wheels { 5 } else { 3 })
             })
             .collect();
         Box::leak(columns.into_boxed_slice())

@@ -42,6 +42,7 @@ def run(
     every: Optional[float] = None,
     moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
     moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> pd.DataFrame:
     """Simulate a scene; its rows as a DataFrame with the CSV's columns, bit for bit (``eulerdyn run``); the located
     events in ``df.attrs["events"]``."""
@@ -59,6 +60,7 @@ def events(
     every: Optional[float] = None,
     moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
     moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> pd.DataFrame:
     """Only the located events of a run (``event``, ``t``, ``value``, ``direction``), as ``FILE.events.csv``."""
 
@@ -87,6 +89,9 @@ def sweep(
     *,
     jobs: Optional[int] = None,
     shard: Optional[str] = None,
+    moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> pd.DataFrame:
     """The results table of a sweep file or a dict of its keys (``eulerdyn sweep``), a row per run."""
 

@@ -57,6 +57,7 @@ def run(
     every: Optional[float] = None,
     moment: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
     moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> pd.DataFrame:
     """Simulate a scene; its rows as a DataFrame, as ``eulerdyn run SCENE`` writes them as CSV.
 
@@ -79,6 +80,10 @@ def run(
             floats) returns 3 numbers, the moment in N·m. Called at every right-hand-side evaluation (a free body,
             rk4/dopri5/dop853 only); ``check`` and the sidecar name it by its ``__name__``.
         moment_frame: the axes of ``moment``'s result, ``body`` (default) or ``space``.
+        wheel_torque: your own wheel law: ``wheel_torque(t, q, omega_b, spins)`` with ``spins`` the wheels'
+            relative spins (rad/s, one per ``[[body.rotor]]`` in order) returns one commanded motor torque per
+            wheel (N·m); each wheel's ``max_torque``, ``max_speed_rpm`` and ``friction`` then apply. A wheel with
+            its own driver (``torque``, ``spin_accel``, ``torque_table``, ``mode = "free"``) is a SceneError.
 
     Returns:
         The rows, one per output time. ``df.attrs["report"]`` holds what the run did: ``rows``, ``steps``,
@@ -88,8 +93,9 @@ def run(
     Raises:
         SceneError: the scene or an override is not valid (the message names the key, and the keyword argument
             that set it, e.g. ``solver.dt (from dt=)``).
-        RunError: the run failed (diverged, the step size collapsed; ``moment`` raised, or did not return 3 finite
-            numbers: its exception is the ``__cause__``); ``.t`` is the time it stopped at.
+        RunError: the run failed (diverged, the step size collapsed; ``moment`` or ``wheel_torque`` raised, or did
+            not return 3 finite numbers or one per wheel: its exception is the ``__cause__``); ``.t`` is the time
+            it stopped at.
         KeyboardInterrupt: Ctrl-C during the run.
     """
     names, data, report, occurrences = _eulerdyn.run(
@@ -104,6 +110,7 @@ def run(
         every=every,
         moment=moment,
         moment_frame=moment_frame,
+        wheel_torque=wheel_torque,
     )
     values = np.frombuffer(data, dtype=np.float64).reshape(-1, len(names)).copy()
     df = pd.DataFrame(values, columns=list(names))
@@ -226,6 +233,9 @@ def sweep(
     *,
     jobs: Optional[int] = None,
     shard: Optional[str] = None,
+    moment: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> pd.DataFrame:
     """The runs of a sweep, as ``eulerdyn sweep SWEEP.toml``: a base scene run many times with numeric keys set from
     grids (``values``, ``linspace``, ``logspace``) or drawn at random (``normal``, ``uniform``), in parallel, each
@@ -237,6 +247,7 @@ def sweep(
             base scene: a dict of its keys, or its path (relative to the working directory).
         jobs: threads (None: all cores).
         shard: ``"K/N"``: only the runs with ``run % N == K - 1`` (for N processes that split a sweep).
+        moment, moment_frame, wheel_torque: your own laws, acting in every run, as for :func:`run`.
 
     Returns:
         The results table, a row per run sorted by ``run``: ``run``, one column per varied key, ``status``
@@ -251,9 +262,18 @@ def sweep(
         SceneError: the sweep or its base scene is not valid (unknown key, empty grid, ...), a bad shard, or
             ``jobs=0``. The message names the file, or ``<dict>`` and the key within the dict (``vary[0].key``,
             ``scene.body.mass`` for a base scene given as a dict).
+        RunError: ``moment`` or ``wheel_torque`` raised (its exception is the ``__cause__``).
         KeyboardInterrupt: Ctrl-C (the sweep stops between runs).
     """
-    return _sweep_table(_eulerdyn.sweep(_scene(sweep_file), jobs=jobs, shard=shard))
+    text = _eulerdyn.sweep(
+        _scene(sweep_file),
+        jobs=jobs,
+        shard=shard,
+        moment=moment,
+        moment_frame=moment_frame,
+        wheel_torque=wheel_torque,
+    )
+    return _sweep_table(text)
 
 
 def _sweep_table(text: str) -> pd.DataFrame:

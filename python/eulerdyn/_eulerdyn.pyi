@@ -36,6 +36,7 @@ def run(
     every: Optional[float] = None,
     moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
     moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float], Tuple[float, ...]], Sequence[float]]] = None,
     rows: bool = True,
 ) -> Tuple[List[str], bytes, Dict[str, Any], List[Tuple[str, float, float, str]]]:
     """Column names, the rows as native float64 bytes (row-major; empty with ``rows=False``), the run's report, and
@@ -61,7 +62,15 @@ def balance(
 ) -> Dict[str, Any]:
     """The correction masses and the balanced scene, as a dict."""
 
-def sweep(sweep: _Scene, *, jobs: Optional[int] = None, shard: Optional[str] = None) -> str:
+def sweep(
+    sweep: _Scene,
+    *,
+    jobs: Optional[int] = None,
+    shard: Optional[str] = None,
+    moment: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, float, float, float], Tuple[float, float, float], Tuple[float, ...]], Sequence[float]]] = None,
+) -> str:
     """The sweep's results table as CSV text."""
 
 def plot(

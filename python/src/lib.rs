@@ -16,6 +16,7 @@ mod input;
 mod moment;
 mod run;
 mod sweep;
+mod wheel_law;
 
 use pyo3::prelude::*;
 

@@ -83,7 +83,7 @@ fn moment_of(result: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
 }
 
 /// A value's repr and type, for a message.
-fn describe(value: &Bound<'_, PyAny>) -> String {
+pub fn describe(value: &Bound<'_, PyAny>) -> String {
     let repr = value.repr().map(|r| r.to_string()).unwrap_or_default();
     let kind = value
         .get_type()
@@ -93,10 +93,9 @@ fn describe(value: &Bound<'_, PyAny>) -> String {
     format!("{repr} (a {kind})")
 }
 
-impl MomentLaw for PyLaw {
-    /// f's moment; after a failure (kept for the caller) NaN, which stops the run.
-    fn moment(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
-        let nan = Vector3::repeat(f64::NAN);
+impl PyLaw {
+    /// The result of `call` at time `t`; after a failure (kept for the caller) `nan`, which stops the run.
+    pub fn guarded<T>(&self, t: f64, nan: T, call: impl FnOnce() -> PyResult<T>) -> T {
         let Ok(mut failure) = self.failure.lock() else {
             return nan;
         };
@@ -104,13 +103,25 @@ impl MomentLaw for PyLaw {
             return nan;
         }
         // The lock is held during the call: the law is called from one thread at a time anyway.
-        match self.call(t, q, omega_b) {
+        match call() {
             Ok(m) => m,
             Err(error) => {
                 *failure = Some(LawFailure { error, t });
                 nan
             }
         }
+    }
+
+    /// The Python callable.
+    pub fn function(&self) -> &Py<PyAny> {
+        &self.function
+    }
+}
+
+impl MomentLaw for PyLaw {
+    /// f's moment; after a failure (kept for the caller) NaN, which stops the run.
+    fn moment(&self, t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {
+        self.guarded(t, Vector3::repeat(f64::NAN), || self.call(t, q, omega_b))
     }
 }
 

@@ -4,6 +4,8 @@
 use std::ffi::CString;
 use std::fmt;
 use std::ops::ControlFlow;
+use std::path::Path;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use eulerdyn::events::Occurrence;
@@ -19,6 +21,7 @@ use pyo3::types::{PyBytes, PyDict};
 use crate::errors::{no_panic, run_error};
 use crate::input::SceneInput;
 use crate::moment::{LawFailure, PyLaw, SharedLaw};
+use crate::wheel_law::SharedWheelLaw;
 
 /// How often a run looks for Ctrl-C (reacquiring the GIL to run Python's signal handlers).
 const SIGNAL_INTERVAL: Duration = Duration::from_millis(50);
@@ -122,7 +125,7 @@ fn event_rows(occurrences: &[Occurrence]) -> Vec<EventRow> {
 /// of `FILE.events.csv`. Raises SceneError for bad input, RunError for a failed run (and for an exception in
 /// `moment`, which is its cause), KeyboardInterrupt on Ctrl-C.
 #[pyfunction]
-#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None, moment=None, moment_frame=None, rows=true))]
+#[pyo3(signature = (scene, *, method=None, frame=None, backend=None, rtol=None, atol=None, dt=None, t_end=None, every=None, moment=None, moment_frame=None, wheel_torque=None, rows=true))]
 #[allow(clippy::too_many_arguments)]
 #[allow(clippy::type_complexity)]
 pub fn run<'py>(
@@ -138,6 +141,7 @@ pub fn run<'py>(
     every: Option<f64>,
     moment: Option<Bound<'py, PyAny>>,
     moment_frame: Option<String>,
+    wheel_torque: Option<Bound<'py, PyAny>>,
     rows: bool,
 ) -> PyResult<(
     Vec<&'static str>,
@@ -161,26 +165,18 @@ pub fn run<'py>(
             .overrides(&input.path)
             .map_err(|e| input.error(py, e))?;
         let scene_model = input.scene(py, &overrides)?;
-        let (scene_model, law) = match moment {
-            None => (scene_model, None),
-            Some(f) => {
-                let law = PyLaw::new(f.clone().unbind());
-                let name = law_name(&f)?;
-                let axes = moment_axes(moment_frame.as_deref())?;
-                let scene_model = (scene_model.with_moment(&name, axes, SharedLaw(law.clone())))
-                    .map_err(|inv| input.invalid(py, inv))?;
-                (scene_model, Some((law, name)))
-            }
-        };
+        let (scene_model, law) =
+            with_laws(py, &input, scene_model, moment, moment_frame, wheel_torque)?;
         for warning in simulate::warnings_before_run(&scene_model) {
             warn(py, format!("{}: {warning}", input.path.display()))?;
         }
         let columns = simulate::columns(&scene_model);
         let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
         let (result, bytes) = py.detach(|| simulate_rows(&scene_model, &columns, rows));
-        if let Some((law, name)) = &law {
+        for (law, name, what) in &law {
             if let Some(failure) = law.failure() {
-                return Err(law_error(py, &input, name, failure));
+                let what = format!("the {what} function {name}()");
+                return Err(law_error(py, &input.path, &what, failure));
             }
         }
         let (report, occurrences) = match result {
@@ -206,6 +202,42 @@ pub fn run<'py>(
             event_rows(&occurrences),
         ))
     })
+}
+
+/// A Python law, its name and its keyword (`moment`, `wheel_torque`).
+pub type Laws = Vec<(Arc<PyLaw>, String, &'static str)>;
+
+/// The scene with `moment` (a callable f(t, q, omega_b), its result in `moment_frame` axes) acting and
+/// `wheel_torque` (a callable f(t, q, omega_b, spins)) commanding its wheels, and those laws.
+pub fn with_laws(
+    py: Python<'_>,
+    input: &SceneInput,
+    mut scene: Scene,
+    moment: Option<Bound<'_, PyAny>>,
+    moment_frame: Option<String>,
+    wheel_torque: Option<Bound<'_, PyAny>>,
+) -> PyResult<(Scene, Laws)> {
+    let mut laws = Laws::new();
+    if let Some(f) = moment {
+        let law = PyLaw::new(f.clone().unbind());
+        let name = law_name(&f, "moment", "f(t, q, omega_b) -> 3 numbers")?;
+        let axes = moment_axes(moment_frame.as_deref())?;
+        scene = (scene.with_moment(&name, axes, SharedLaw(law.clone())))
+            .map_err(|inv| input.invalid(py, inv))?;
+        laws.push((law, name, "moment"));
+    }
+    if let Some(f) = wheel_torque {
+        let law = PyLaw::new(f.clone().unbind());
+        let name = law_name(
+            &f,
+            "wheel_torque",
+            "f(t, q, omega_b, spins) -> one torque per wheel",
+        )?;
+        scene = (scene.with_wheel_law(&name, SharedWheelLaw(law.clone())))
+            .map_err(|inv| input.invalid(py, inv))?;
+        laws.push((law, name, "wheel_torque"));
+    }
+    Ok((scene, laws))
 }
 
 /// The run's outcome (report and located events, or why it stopped).
@@ -237,11 +269,12 @@ fn simulate_rows(scene: &Scene, columns: &ColumnSet, rows: bool) -> (Outcome, Ve
     (result, bytes)
 }
 
-/// What `check` and the sidecar call the callable: its `__name__` (`python` without one).
-fn law_name(f: &Bound<'_, PyAny>) -> PyResult<String> {
+/// What `check` and the sidecar call the callable given as `keyword` (`signature` what it should be): its
+/// `__name__` (`python` without one).
+pub fn law_name(f: &Bound<'_, PyAny>, keyword: &str, signature: &str) -> PyResult<String> {
     if !f.is_callable() {
         return Err(PyTypeError::new_err(format!(
-            "moment: expected a callable f(t, q, omega_b) -> 3 numbers, got {}",
+            "{keyword}: expected a callable {signature}, got {}",
             f.get_type().name()?
         )));
     }
@@ -251,24 +284,21 @@ fn law_name(f: &Bound<'_, PyAny>) -> PyResult<String> {
 }
 
 /// The axes of the callable's moment: `moment_frame`, `body` (default) or `space`.
-fn moment_axes(frame: Option<&str>) -> PyResult<Axes> {
+pub fn moment_axes(frame: Option<&str>) -> PyResult<Axes> {
     Axes::parse(frame.unwrap_or("body"))
         .map_err(|e| PyValueError::new_err(format!("moment_frame: {e}")))
 }
 
-/// The error of a run stopped by its moment function: Ctrl-C's KeyboardInterrupt as it is; anything else as
-/// `RunError` naming the function, with its exception as the cause.
-fn law_error(py: Python<'_>, input: &SceneInput, name: &str, failure: LawFailure) -> PyErr {
+/// The error of a run stopped by its law (`what`: "the moment function f()"): Ctrl-C's KeyboardInterrupt as it
+/// is; anything else as `RunError` naming the function, with its exception as the cause.
+pub fn law_error(py: Python<'_>, scene: &Path, what: &str, failure: LawFailure) -> PyErr {
     if PyLaw::is_interrupt(py, &failure) {
         return failure.error;
     }
     let failed = RunFailed {
-        scene: input.path.clone(),
+        scene: scene.to_path_buf(),
         t: Some(failure.t),
-        reason: format!(
-            "the moment function {name}() at t = {}: {}",
-            failure.t, failure.error
-        ),
+        reason: format!("{what} at t = {}: {}", failure.t, failure.error),
     };
     let err = run_error(py, &failed);
     err.set_cause(py, Some(failure.error));

@@ -12,7 +12,9 @@ use tempfile::TempDir;
 
 use crate::errors::{SceneError, no_panic, scene_error};
 use crate::input::{DICT_ORIGIN, dict_error, path_of, table_of, type_name};
-use crate::run::SignalCheck;
+use crate::moment::{PyLaw, SharedLaw};
+use crate::run::{Laws, SignalCheck, law_error, law_name, moment_axes};
+use crate::wheel_law::SharedWheelLaw;
 
 /// A sweep given as a dict, written out as the files the library's [`Sweep::load`] reads: the sweep's keys as
 /// `sweep.toml` and, when `scene` is a dict, the base scene as `scene.toml`, in a temporary directory that lives
@@ -129,19 +131,28 @@ fn load(py: Python<'_>, sweep: &Bound<'_, PyAny>) -> PyResult<(Sweep, Option<Sta
 /// Returns the results table as CSV text (the command's columns, one row per run, sorted by run; a failed or
 /// invalid run is a row with its status and message). Raises SceneError for a bad sweep, a bad shard or
 /// jobs = 0, KeyboardInterrupt on Ctrl-C (between runs).
+///
+/// `moment` (f(t, q, omega_b) → 3 numbers, in `moment_frame` axes) acts in every run and `wheel_torque`
+/// (f(t, q, omega_b, spins) → one torque per wheel) commands every run's wheels, as in `run`; an exception in either
+/// stops the sweep's runs and is raised as RunError naming the function.
 #[pyfunction]
-#[pyo3(signature = (sweep, *, jobs=None, shard=None))]
+#[pyo3(signature = (sweep, *, jobs=None, shard=None, moment=None, moment_frame=None, wheel_torque=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn sweep(
     py: Python<'_>,
     sweep: &Bound<'_, PyAny>,
     jobs: Option<usize>,
     shard: Option<String>,
+    moment: Option<Bound<'_, PyAny>>,
+    moment_frame: Option<String>,
+    wheel_torque: Option<Bound<'_, PyAny>>,
 ) -> PyResult<String> {
     no_panic(|| {
         let (plan, _staged) = load(py, sweep)?;
         for warning in plan.warnings() {
             crate::run::warn(py, format!("{}: {warning}", plan.file.display()))?;
         }
+        let (plan, laws) = with_laws(plan, moment, moment_frame, wheel_torque)?;
         let shard = match shard {
             Some(text) => Shard::parse(&text).map_err(SceneError::new_err)?,
             None => Shard::ALL,
@@ -163,6 +174,12 @@ pub fn sweep(
                 .finish()
                 .map_err(|e| SweepError::Deliver(PyRuntimeError::new_err(e.to_string())))
         });
+        for (law, name, what) in &laws {
+            if let Some(failure) = law.failure() {
+                let what = format!("the {what} function {name}()");
+                return Err(law_error(py, &plan.scene_file, &what, failure));
+            }
+        }
         match result {
             Ok(bytes) => {
                 String::from_utf8(bytes).map_err(|e| PyRuntimeError::new_err(e.to_string()))
@@ -171,4 +188,48 @@ pub fn sweep(
             Err(SweepError::Threads(message)) => Err(PyRuntimeError::new_err(message)),
         }
     })
+}
+
+/// The sweep with `moment` and `wheel_torque` applied to each run's scene, and the laws (to read their failures).
+fn with_laws(
+    plan: Sweep,
+    moment: Option<Bound<'_, PyAny>>,
+    moment_frame: Option<String>,
+    wheel_torque: Option<Bound<'_, PyAny>>,
+) -> PyResult<(Sweep, Laws)> {
+    let mut laws = Laws::new();
+    let mut moment_law = None;
+    if let Some(f) = moment {
+        let law = PyLaw::new(f.clone().unbind());
+        let name = law_name(&f, "moment", "f(t, q, omega_b) -> 3 numbers")?;
+        let axes = moment_axes(moment_frame.as_deref())?;
+        moment_law = Some((law.clone(), name.clone(), axes));
+        laws.push((law, name, "moment"));
+    }
+    let mut wheel_law = None;
+    if let Some(f) = wheel_torque {
+        let law = PyLaw::new(f.clone().unbind());
+        let name = law_name(
+            &f,
+            "wheel_torque",
+            "f(t, q, omega_b, spins) -> one torque per wheel",
+        )?;
+        wheel_law = Some((law.clone(), name.clone()));
+        laws.push((law, name, "wheel_torque"));
+    }
+    if laws.is_empty() {
+        return Ok((plan, laws));
+    }
+    let plan = plan.with_prepare(move |mut scene| {
+        if let Some((law, name, axes)) = &moment_law {
+            scene = (scene.with_moment(name, *axes, SharedLaw(law.clone())))
+                .map_err(|e| e.to_string())?;
+        }
+        if let Some((law, name)) = &wheel_law {
+            scene = (scene.with_wheel_law(name, SharedWheelLaw(law.clone())))
+                .map_err(|e| e.to_string())?;
+        }
+        Ok(scene)
+    });
+    Ok((plan, laws))
 }

@@ -17,6 +17,7 @@ use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
+use crate::wheels::WheelControl;
 
 /// A closed-form solution that applies to a scene.
 pub enum Oracle {
@@ -161,8 +162,10 @@ fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> O
         let constant = match &r.drive {
             Drive::Accel(alpha) => *alpha == 0.0,
             Drive::Torque(tau) => tau.is_zero(),
+            Drive::Free => true,
+            Drive::Table(_) | Drive::Law => false,
         };
-        on_z && constant && r.imbalance.is_none()
+        on_z && constant && r.imbalance.is_none() && r.control == WheelControl::default()
     };
     let applies = scene.effects.is_empty()
         && diagonal

@@ -132,6 +132,15 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
             Drive::Torque(_) => {
                 "driven by its motor torque (the body feels the opposite)".to_string()
             }
+            Drive::Table(table) => format!(
+                "motor torque commanded by the table {}",
+                table.path().display()
+            ),
+            Drive::Law => format!(
+                "motor torque commanded by the wheel law \"{}\"",
+                gyrostat.law().map_or("", |law| law.name.as_str())
+            ),
+            Drive::Free => "free: no motor (friction only)".to_string(),
         };
         line(
             w,
@@ -144,6 +153,7 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 for_people(r.spin0)
             ),
         );
+        wheel_control(w, &r.control);
         if let Some(u) = &r.imbalance {
             line(
                 w,
@@ -899,5 +909,27 @@ mod tests {
         assert_eq!(for_people(2.5e7), "2.5e+07");
         assert_eq!(for_people(0.0), "0");
         assert_eq!(for_people(0.000123456789), "0.000123457");
+    }
+}
+
+/// A wheel's limits and friction, when it has any (`crate::wheels`).
+fn wheel_control(w: &mut Description, c: &crate::wheels::WheelControl) {
+    let mut parts = Vec::new();
+    if c.max_torque.is_finite() {
+        parts.push(format!("motor torque within +-{} N*m", c.max_torque));
+    }
+    if c.max_speed.is_finite() {
+        let rpm = c.max_speed / crate::wheels::RPM;
+        parts.push(format!("relative speed within +-{rpm} rpm"));
+    }
+    let f = &c.friction;
+    if f.is_some() {
+        parts.push(format!(
+            "friction: Coulomb {} N*m, viscous {} N*m*s, Stribeck {} N*m over {} rad/s (dissipates energy, keeps H)",
+            f.coulomb, f.viscous, f.stribeck_torque, f.stribeck_speed
+        ));
+    }
+    if !parts.is_empty() {
+        line(w, "", &parts.join("; "));
     }
 }

@@ -64,9 +64,20 @@ impl TorqueTable {
     /// Reads the table at `path`: header `t,M_x,M_y,M_z`, then one row per time. A bad header, a value that is
     /// not a finite number, t not strictly increasing or fewer than 2 rows is an error naming the file and row.
     pub fn read(path: &Path, interpolation: Interpolation) -> Result<Self, String> {
+        Self::read_columns(path, interpolation, &TABLE_HEADER)
+    }
+
+    /// Reads a table whose header is `header` (`t` and one to three components, the missing ones zero), with
+    /// [`TorqueTable::read`]'s checks; a UTF-8 byte-order mark and CRLF line ends are accepted.
+    pub fn read_columns(
+        path: &Path,
+        interpolation: Interpolation,
+        header: &[&str],
+    ) -> Result<Self, String> {
         let text = std::fs::read_to_string(path)
             .map_err(|e| format!("{}: cannot read the table: {e}", path.display()))?;
-        let (t, m) = parse_rows(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+        let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+        let (t, m) = parse_rows(text, header).map_err(|e| format!("{}: {e}", path.display()))?;
         Ok(Self::new(path, interpolation, t, m))
     }
 
@@ -150,29 +161,35 @@ impl TorqueTable {
 
 /// The rows of a table's text: the times and moments, or what is wrong and in which row. A UTF-8 byte-order mark
 /// and CRLF line ends (as spreadsheets save CSV) are accepted.
-fn parse_rows(text: &str) -> Result<(Vec<f64>, Vec<Vector3<f64>>), String> {
+fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector3<f64>>), String> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
         .enumerate()
         .filter(|(_, l)| !l.trim().is_empty());
-    let expected = TABLE_HEADER.join(",");
+    let expected = header_names.join(",");
     let Some((_, header)) = lines.next() else {
         return Err(format!(
             "the table is empty; it needs the header `{expected}` and at least 2 rows"
         ));
     };
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
-    if names != TABLE_HEADER {
+    let what = if header_names.len() == 4 {
+        "moment"
+    } else {
+        "torque"
+    };
+    if names != header_names {
         return Err(format!(
-            "row 0 (the header): expected `{expected}` (t in s, the moment in N*m), got `{}`",
+            "row 0 (the header): expected `{expected}` (t in s, the {what} in N*m), got `{}`",
             header.trim()
         ));
     }
     let (mut t, mut m) = (Vec::new(), Vec::<Vector3<f64>>::new());
     for (row, (index, line)) in lines.enumerate() {
         let at = format!("row {} (line {})", row + 1, index + 1);
-        let values = row_values(line).map_err(|problem| format!("{at}: {problem}"))?;
+        let values =
+            row_values(line, header_names).map_err(|problem| format!("{at}: {problem}"))?;
         match t.last() {
             Some(last) if values[0] <= *last => {
                 return Err(format!(
@@ -183,7 +200,9 @@ fn parse_rows(text: &str) -> Result<(Vec<f64>, Vec<Vector3<f64>>), String> {
             _ => {}
         }
         t.push(values[0]);
-        m.push(Vector3::new(values[1], values[2], values[3]));
+        m.push(Vector3::from_fn(|i, _| {
+            values.get(i + 1).copied().unwrap_or(0.0)
+        }));
     }
     if t.len() < 2 {
         return Err(format!(
@@ -194,18 +213,20 @@ fn parse_rows(text: &str) -> Result<(Vec<f64>, Vec<Vector3<f64>>), String> {
     Ok((t, m))
 }
 
-/// The 4 finite numbers of one row.
-fn row_values(line: &str) -> Result<[f64; 4], String> {
+/// The finite numbers of one row, one per column of `header`.
+fn row_values(line: &str, header: &[&str]) -> Result<Vec<f64>, String> {
     let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-    if fields.len() != TABLE_HEADER.len() {
+    if fields.len() != header.len() {
         return Err(format!(
-            "expected 4 values (t,M_x,M_y,M_z), got {}: `{}`",
+            "expected {} values ({}), got {}: `{}`",
+            header.len(),
+            header.join(","),
             fields.len(),
             line.trim()
         ));
     }
-    let mut values = [0.0; 4];
-    for ((value, field), name) in values.iter_mut().zip(&fields).zip(TABLE_HEADER) {
+    let mut values = vec![0.0; header.len()];
+    for ((value, field), name) in values.iter_mut().zip(&fields).zip(header) {
         *value = match field.parse::<f64>() {
             Ok(v) if v.is_finite() => v,
             _ => return Err(format!("{name} must be a finite number, got `{field}`")),
@@ -351,7 +372,7 @@ mod tests {
             ),
         ];
         for (text, expected) in cases {
-            let e = parse_rows(text).unwrap_err();
+            let e = parse_rows(text, &TABLE_HEADER).unwrap_err();
             assert!(e.contains(expected), "{text:?}: {e}");
         }
     }

@@ -27,11 +27,14 @@
 
 use nalgebra::{Matrix3, Quaternion, SVector, SymmetricEigen, Unit, UnitQuaternion, Vector3};
 
+use std::sync::Arc;
+
 use super::free::FreeBody;
-use crate::effects::{AppliedMoment, TorqueSum};
+use crate::effects::{AppliedMoment, TorqueSum, TorqueTable};
 use crate::frames::{Form, StateRotation};
 use crate::integrate::OdeSystem;
 use crate::sample::{MAX_ROTORS, RotorRows, Sample};
+use crate::wheels::{Wheel, WheelControl, WheelSolve, WheelTorqueLaw};
 
 /// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4, φ_1, …, φ_4).
 pub type State = SVector<f64, 15>;
@@ -46,6 +49,19 @@ pub enum Drive {
     Accel(f64),
     /// The motor torque τ(t) on the wheel (N·m): the `x` component of the sum.
     Torque(TorqueSum),
+    /// The motor torque commanded by a table (`torque_table`): its `x` component.
+    Table(Arc<TorqueTable>),
+    /// The motor torque commanded by the body's wheel law (this wheel's entry).
+    Law,
+    /// No motor (`mode = "free"`): friction only.
+    Free,
+}
+
+impl Drive {
+    /// Whether the wheel's spin follows its torques (not prescribed).
+    pub fn is_driven(&self) -> bool {
+        !matches!(self, Drive::Accel(_))
+    }
 }
 
 /// One rotor, validated.
@@ -62,6 +78,8 @@ pub struct Rotor {
     pub drive: Drive,
     /// Its imbalance, if any.
     pub imbalance: Option<Imbalance>,
+    /// Its torque and speed limits and friction (`crate::wheels`).
+    pub control: WheelControl,
 }
 
 /// A wheel's imbalance (module doc): U_s (kg·m), U_d (kg·m²), the wheel centre r from the moment center and the
@@ -137,6 +155,8 @@ pub struct Gyrostat {
     imbalanced: bool,
     /// I_D⁻¹, body axes.
     inertia_driven_inv_b: Matrix3<f64>,
+    /// The law of the wheels driven by [`Drive::Law`].
+    law: Option<WheelTorqueLaw>,
 }
 
 impl Gyrostat {
@@ -145,7 +165,7 @@ impl Gyrostat {
         assert!(rotors.len() <= MAX_ROTORS, "validation bounds the rotors");
         let wheels = |driven_only: bool| {
             (rotors.iter())
-                .filter(|r| !driven_only || matches!(r.drive, Drive::Torque(_)))
+                .filter(|r| !driven_only || r.drive.is_driven())
                 .fold(*body.inertia_b(), |i, r| {
                     i - r.axis_b.into_inner() * r.axis_b.transpose() * r.inertia
                 })
@@ -163,6 +183,32 @@ impl Gyrostat {
             imbalanced: rotors.iter().any(|r| r.imbalance.is_some()),
             rotors,
             inertia_driven_inv_b,
+            law: None,
+        })
+    }
+
+    /// The gyrostat with the wheel law `law` driving every wheel (each drive becomes [`Drive::Law`]).
+    pub fn with_law(self, law: WheelTorqueLaw) -> Result<Self, WheelsOutsideBody> {
+        let mut rotors = self.rotors;
+        for r in &mut rotors {
+            r.drive = Drive::Law;
+        }
+        let mut g = Self::new(self.body, rotors)?;
+        g.law = Some(law);
+        Ok(g)
+    }
+
+    /// The wheel law, if any.
+    pub fn law(&self) -> Option<&WheelTorqueLaw> {
+        self.law.as_ref()
+    }
+
+    /// Whether the run writes each wheel's command and friction: some wheel has a law, a table, no motor, a
+    /// limit or friction.
+    pub fn controlled(&self) -> bool {
+        (self.rotors.iter()).any(|r| {
+            matches!(r.drive, Drive::Table(_) | Drive::Law | Drive::Free)
+                || r.control != WheelControl::default()
         })
     }
 
@@ -179,7 +225,19 @@ impl Gyrostat {
     /// Whether no motor does work: every wheel is driven by a zero torque (spinning freely). Only then is the
     /// kinetic energy conserved where no effect acts; a prescribed or constant relative spin takes motor work.
     pub fn wheels_spin_freely(&self) -> bool {
-        (self.rotors.iter()).all(|r| matches!(&r.drive, Drive::Torque(tau) if tau.is_zero()))
+        (self.rotors.iter()).all(|r| {
+            let motorless = match &r.drive {
+                Drive::Torque(tau) => tau.is_zero(),
+                Drive::Free => true,
+                _ => false,
+            };
+            motorless && !r.control.friction.is_some()
+        })
+    }
+
+    /// Whether some wheel has friction (which dissipates kinetic energy and keeps H).
+    pub fn has_friction(&self) -> bool {
+        (self.rotors.iter()).any(|r| r.control.friction.is_some())
     }
 
     /// Whether some wheel has an imbalance, whose moment changes H and T.
@@ -220,33 +278,56 @@ impl Gyrostat {
         })
     }
 
-    /// ω̇_b and each Ω̇_k at ω_b, H_b, the external moment M_b and the spins, time t (module doc).
+    /// ω̇_b, each Ω̇_k and the wheels' commanded, motor and friction torques at ω_b, H_b, the external moment M_b,
+    /// the attitude q (unnormalised) and the spins, time t (module doc; `crate::wheels` for the limits).
     fn rates(
         &self,
         t: f64,
+        q: &Quaternion<f64>,
         omega_b: &Vector3<f64>,
         h_b: &Vector3<f64>,
         m_b: &Vector3<f64>,
-    ) -> (Vector3<f64>, [f64; MAX_ROTORS]) {
-        // Each wheel's push on the body: J α (prescribed) or its motor torque τ(t), evaluated once.
-        let mut push = [0.0; MAX_ROTORS];
-        let mut rhs = m_b - omega_b.cross(h_b);
-        for (p, r) in push.iter_mut().zip(&self.rotors) {
-            *p = match &r.drive {
-                Drive::Accel(alpha) => r.inertia * alpha,
+        spins: &[f64],
+    ) -> (WheelSolve, [f64; MAX_ROTORS]) {
+        let law = (self.law.as_ref()).map(|law| {
+            let q = UnitQuaternion::new_normalize(*q);
+            law.commands(
+                self.rotors.len(),
+                t,
+                &q,
+                omega_b,
+                &spins[..self.rotors.len()],
+            )
+        });
+        let mut commands = [0.0; MAX_ROTORS];
+        let mut wheels = [Wheel::default(); MAX_ROTORS];
+        for (k, r) in self.rotors.iter().enumerate() {
+            commands[k] = match &r.drive {
+                Drive::Accel(_) | Drive::Free => 0.0,
                 Drive::Torque(tau) => tau.at(t).x,
+                Drive::Table(table) => table.at(t).x,
+                Drive::Law => law.as_ref().map_or(f64::NAN, |c| c[k]),
             };
-            rhs -= r.axis_b.into_inner() * *p;
-        }
-        let omega_dot_b = self.inertia_driven_inv_b * rhs;
-        let mut spin_dot = [0.0; MAX_ROTORS];
-        for ((dot, r), p) in spin_dot.iter_mut().zip(&self.rotors).zip(push) {
-            *dot = match &r.drive {
-                Drive::Accel(alpha) => *alpha,
-                Drive::Torque(_) => p / r.inertia - r.axis_b.dot(&omega_dot_b),
+            wheels[k] = Wheel {
+                axis_b: r.axis_b.into_inner(),
+                inertia: r.inertia,
+                spin: spins[k],
+                accel: match r.drive {
+                    Drive::Accel(alpha) => Some(alpha),
+                    _ => None,
+                },
+                motor: r.control.clip(commands[k]),
+                control: r.control,
             };
         }
-        (omega_dot_b, spin_dot)
+        let rhs0_b = m_b - omega_b.cross(h_b);
+        let solved = crate::wheels::solve(
+            self.body.inertia_b(),
+            &self.inertia_driven_inv_b,
+            &rhs0_b,
+            &wheels[..self.rotors.len()],
+        );
+        (solved, commands)
     }
 
     /// The initial state of the form `form` from ω_b(0), q(0) and the rotors' initial spins.
@@ -295,7 +376,8 @@ impl Gyrostat {
         let q = UnitQuaternion::new_normalize(Quaternion::new(y[3], y[4], y[5], y[6]));
         let (omega_b, h_b) = self.omega_and_momentum(form, y, |v| q.inverse_transform_vector(v));
         let m_b = self.with_imbalance(moment.moment_b(t, &q, &omega_b), y);
-        let (omega_b_dot, _) = self.rates(t, &omega_b, &h_b, &m_b);
+        let spins = &y.as_slice()[7..ANGLES];
+        let (solved, commands) = self.rates(t, q.quaternion(), &omega_b, &h_b, &m_b, spins);
         let mut rows = RotorRows {
             n: self.rotors.len(),
             ..RotorRows::default()
@@ -304,10 +386,12 @@ impl Gyrostat {
             let spin = y[7 + k];
             rows.spin[k] = spin;
             rows.h[k] = r.inertia * (r.axis_b.dot(&omega_b) + spin);
-            rows.torque[k] = match &r.drive {
-                Drive::Accel(alpha) => r.inertia * (r.axis_b.dot(&omega_b_dot) + alpha),
-                Drive::Torque(tau) => tau.at(t).x,
+            rows.torque[k] = solved.motor[k];
+            rows.torque_cmd[k] = match r.drive {
+                Drive::Accel(_) => solved.motor[k],
+                _ => commands[k],
             };
+            rows.friction[k] = solved.friction[k];
         }
         let mut sample = super::free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
         sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..ANGLES]);
@@ -356,7 +440,8 @@ impl<M: AppliedMoment> OdeSystem<15> for GyrostatForm<'_, M> {
             (self.moment).moment_b_at_state(t, &q_state, || rotation, &omega_b),
             y,
         );
-        let (omega_dot_b, spin_dot) = g.rates(t, &omega_b, &h_b, &m_b);
+        let (solved, _) = g.rates(t, &q_state, &omega_b, &h_b, &m_b, &y.as_slice()[7..ANGLES]);
+        let (omega_dot_b, spin_dot) = (solved.omega_dot_b, solved.spin_dot);
         let first = match self.form {
             Form::Body => omega_dot_b,
             Form::Space => rotation.to_space(&m_b),
@@ -368,7 +453,16 @@ impl<M: AppliedMoment> OdeSystem<15> for GyrostatForm<'_, M> {
         normalise_quaternion(y);
     }
 
+    /// The moment's next corner, or a wheel's torque table's next row.
     fn next_breakpoint(&self, t: f64) -> Option<f64> {
-        self.moment.corner_after(t)
+        let tables = (self.gyrostat.rotors.iter()).filter_map(|r| match &r.drive {
+            Drive::Table(table) => table.corner_after(t),
+            _ => None,
+        });
+        self.moment
+            .corner_after(t)
+            .into_iter()
+            .chain(tables)
+            .reduce(f64::min)
     }
 }

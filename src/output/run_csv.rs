@@ -83,6 +83,19 @@ impl<R: Read> RunCsvReader<R> {
         })
     }
 
+    /// The rotors whose three columns (`<name>_spin`, `<name>_h`, `<name>_torque`) the header has, in its order.
+    pub fn rotor_names(&self) -> Vec<String> {
+        (self.header().iter())
+            .filter_map(|c| c.strip_suffix("_spin"))
+            .filter(|name| {
+                ["h", "torque"]
+                    .iter()
+                    .all(|s| self.index_of(&format!("{name}_{s}")).is_some())
+            })
+            .map(String::from)
+            .collect()
+    }
+
     /// The column names, in file order.
     pub fn header(&self) -> &[String] {
         &self.header

@@ -11,6 +11,7 @@ mod spec;
 mod template;
 mod user_moment;
 mod validate;
+mod wheel_law;
 
 pub use facts::{Facts, Invariant};
 #[cfg(feature = "sweep")]

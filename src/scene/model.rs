@@ -76,7 +76,8 @@ impl Motion {
             };
             let names: Vec<String> = g.rotors().iter().map(|r| r.name.clone()).collect();
             return ColumnSet {
-                rotors: rotor_columns(&names),
+                rotors: rotor_columns(&names, g.controlled()),
+                wheels: g.controlled(),
                 ..ColumnSet::default()
             };
         };

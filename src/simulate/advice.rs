@@ -76,7 +76,7 @@ pub struct EnergyWatch {
 
 impl EnergyWatch {
     /// The watch of a free body that conserves its energy (`scene.facts()`); `None` otherwise (torques, damping,
-    /// a rotor's motor or imbalance; a prescribed axis, whose energy is given, and a hinge are not watched).
+    /// a rotor's motor, friction or imbalance; a prescribed axis, whose energy is given, and a hinge are not watched).
     pub fn of(scene: &Scene) -> Option<Self> {
         let free = matches!(scene.motion, Motion::Free { .. });
         (free && scene.facts().conserved_energy().is_some()).then_some(Self {

@@ -35,3 +35,4 @@ mod sweep;
 mod user_moments;
 mod vehicles;
 mod view;
+mod wheels;

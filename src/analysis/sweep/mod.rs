@@ -57,6 +57,18 @@ pub struct Sweep {
     total: u64,
     layout: TableLayout,
     warnings: Vec<String>,
+    /// What each run's scene gets after it is built (a user's moment or wheel law, [`Sweep::with_prepare`]).
+    prepare: Option<Prepare>,
+}
+
+/// A step applied to each run's built scene.
+#[derive(Clone)]
+pub struct Prepare(pub std::sync::Arc<dyn Fn(Scene) -> Result<Scene, String> + Send + Sync>);
+
+impl std::fmt::Debug for Prepare {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Prepare(..)")
+    }
 }
 
 /// Which runs this process runs: those with `run % count == index − 1` (`--shard index/count`).
@@ -153,6 +165,7 @@ impl Sweep {
             total,
             layout,
             warnings,
+            prepare: None,
         })
     }
 
@@ -208,7 +221,21 @@ impl Sweep {
             .zip(values.iter().copied())
             .collect();
         let spec: SceneSpec = self.template.spec_with(&keyed)?;
-        spec.build().map_err(|e| e.to_string())
+        let scene = spec.build().map_err(|e| e.to_string())?;
+        match &self.prepare {
+            Some(Prepare(prepare)) => prepare(scene),
+            None => Ok(scene),
+        }
+    }
+
+    /// The sweep with `prepare` applied to each run's built scene, e.g. `|s| s.with_wheel_law(…)` (its error makes
+    /// the run invalid).
+    pub fn with_prepare(
+        mut self,
+        prepare: impl Fn(Scene) -> Result<Scene, String> + Send + Sync + 'static,
+    ) -> Self {
+        self.prepare = Some(Prepare(std::sync::Arc::new(prepare)));
+        self
     }
 
     /// Runs run `run` and summarises it. With `series`, the run's rows are handed to it after the run (to write

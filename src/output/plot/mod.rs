@@ -72,6 +72,10 @@ pub enum Panel {
     Support,
     /// The angle θ turned about the fixed axis (fixed_axis and hinge runs).
     Theta,
+    /// Each wheel's spin relative to the body (runs with `[[body.rotor]]`; its columns are the run's).
+    WheelSpin,
+    /// Each wheel's motor torque applied (solid) and commanded (dashed, wheels under control).
+    WheelTorque,
 }
 
 impl Panel {
@@ -111,8 +115,14 @@ impl Panel {
             Panel::BearingsSpace => "bearings_space",
             Panel::Support => "support",
             Panel::Theta => "theta",
+            Panel::WheelSpin => "wheel_spin",
+            Panel::WheelTorque => "wheel_torque",
         }
     }
+
+    /// The panels of rotor runs, drawn after the others by default when the run has wheel columns; their columns
+    /// are named by the wheels (`<name>_spin`, `<name>_torque`, `<name>_torque_cmd`).
+    pub const WHEELS: [Panel; 2] = [Panel::WheelSpin, Panel::WheelTorque];
 
     /// The CSV columns the panel needs (besides `t`).
     pub fn columns(self) -> &'static [&'static str] {
@@ -138,6 +148,7 @@ impl Panel {
             ],
             Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
             Panel::Theta => &["theta"],
+            Panel::WheelSpin | Panel::WheelTorque => &[],
         }
     }
 
@@ -160,6 +171,9 @@ impl Panel {
                 Some("only runs of scenes with `bearings` have the bearing forces")
             }
             Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
+            Panel::WheelSpin | Panel::WheelTorque => {
+                Some("only runs of scenes with [[body.rotor]] have the wheels' columns")
+            }
             _ => None,
         }
     }
@@ -215,7 +229,7 @@ impl Panel {
     pub fn names() -> String {
         Panel::ALL.map(Panel::name).join(", ")
             + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
-               (the same in space axes, drawn only when asked for)"
+               (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_torque"
     }
 }
 
@@ -233,6 +247,7 @@ impl FromStr for Panel {
             .into_iter()
             .chain(Panel::AXIS_ONLY)
             .chain([Panel::BearingsSpace])
+            .chain(Panel::WHEELS)
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }

@@ -179,6 +179,50 @@ fn curves_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
             "θ (rad)",
             vec![single(run, "theta", "θ", BLUE)],
         ),
+        Panel::WheelSpin | Panel::WheelTorque => wheels_panel(run, panel),
+    }
+}
+
+/// The wheels' spins Ω (rad/s), or their motor torques applied (solid) and commanded (dashed), one colour per
+/// wheel in the order of the run's columns.
+fn wheels_panel(run: &RunSeries, panel: Panel) -> PanelPlot {
+    const COLORS: [RGBColor; 4] = [RED, GREEN, BLUE, PURPLE];
+    let names = run.wheel_names();
+    let mut curves = Vec::new();
+    for (name, color) in names.iter().zip(COLORS.iter().cycle()) {
+        if panel == Panel::WheelSpin {
+            curves.push(single(
+                run,
+                &format!("{name}_spin"),
+                &format!("Ω {name}"),
+                *color,
+            ));
+            continue;
+        }
+        curves.push(single(
+            run,
+            &format!("{name}_torque"),
+            &format!("τ {name}"),
+            *color,
+        ));
+        let command = format!("{name}_torque_cmd");
+        if run.has(&command) {
+            curves.push(Curve {
+                dashed: true,
+                marker: Some(Marker::Circle),
+                ..single(run, &command, &format!("τ_cmd {name}"), *color)
+            });
+        }
+    }
+    match panel {
+        Panel::WheelSpin => {
+            PanelPlot::linear("Wheel spins relative to the body", "Ω (rad/s)", curves)
+        }
+        _ => PanelPlot::linear(
+            "Wheel motor torques, applied and commanded",
+            "τ (N·m)",
+            curves,
+        ),
     }
 }
 

@@ -13,6 +13,7 @@ use super::{Panel, PlotError};
 use crate::output::events_file::{EventRow, run_events};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
+use crate::sample::rotor_columns;
 use crate::scene::{Facts, MotionKind, MotionSpec};
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
@@ -73,6 +74,8 @@ pub struct RunSeries {
     extremes: (f64, f64),
     /// The indices in a row's values of `energy` and `omega_b_x`.
     scale_index: Option<(usize, usize)>,
+    /// The wheels whose columns the run has (`<name>_spin`, `<name>_h`, `<name>_torque`), in order.
+    wheels: Vec<String>,
 }
 
 /// The vectors whose magnitude a panel draws, by column prefix.
@@ -134,7 +137,13 @@ impl RunSeries {
             panels: panels.to_vec(),
             extremes: (0.0, 0.0),
             scale_index,
+            wheels: Vec::new(),
         }
+    }
+
+    /// The wheels whose columns the run has, in order (read for the wheel panels only).
+    pub(super) fn wheel_names(&self) -> &[String] {
+        &self.wheels
     }
 
     /// Adds a row's `values` (t first, then the wanted columns); `drift_index[k]` is the value of drift k.
@@ -232,21 +241,42 @@ fn read_rows(
     if csv.index_of("t").is_none() && looks_like_a_scene(&csv) {
         return Err(PlotError::input(&file, scene_file_advice(&file)));
     }
+    let wheels = csv.rotor_names();
     let panels = if panels.is_empty() {
         let has = |c: &str| csv.index_of(c).is_some();
         let space = carried && Panel::BearingsSpace.columns().iter().all(|c| has(c));
-        (Panel::of_run(has).into_iter())
+        let mut panels: Vec<Panel> = (Panel::of_run(has).into_iter())
             .map(|p| match p {
                 Panel::Bearings if space => Panel::BearingsSpace,
                 p => p,
             })
-            .collect()
+            .collect();
+        if !wheels.is_empty() {
+            panels.extend(Panel::WHEELS);
+        }
+        panels
     } else {
         panels.to_vec()
     };
-    let wanted = wanted_columns(&panels, |c| csv.index_of(c).is_some());
+    let wheel_panels = panels.iter().any(|p| Panel::WHEELS.contains(p));
+    if wheel_panels && wheels.is_empty() {
+        return Err(PlotError::input(
+            &file,
+            "no wheels (only runs of scenes with [[body.rotor]] have the columns <name>_spin and <name>_torque that \
+             the wheel_spin and wheel_torque panels draw)",
+        ));
+    }
+    let mut wanted = wanted_columns(&panels, |c| csv.index_of(c).is_some());
+    if wheel_panels {
+        let controlled =
+            (wheels.iter()).all(|n| csv.index_of(&format!("{n}_torque_cmd")).is_some());
+        (rotor_columns(&wheels, controlled).iter())
+            .filter(|c| !c.name.ends_with("_h") && !c.name.ends_with("_friction"))
+            .for_each(|c| wanted.push(c.name));
+    }
     let index = column_indices(&csv, &wanted, &panels)?;
     let mut series = RunSeries::new(&file, &wanted, &panels);
+    series.wheels = wheels;
     let drift_index: Vec<usize> = series
         .drifts
         .iter()

@@ -45,16 +45,8 @@ pub const OPTIONAL: [[&str; 3]; 2] = [
 /// The wheels' axial momentum columns `<name>_h`, in the header's order, of the rotors whose three columns
 /// (`<name>_spin`, `<name>_h`, `<name>_torque`, [`rotor_columns`]) the CSV has.
 fn rotor_momentum_columns(csv: &RunCsvReader<impl Read>) -> Vec<&'static str> {
-    let names: Vec<String> = (csv.header().iter())
-        .filter_map(|c| c.strip_suffix("_spin"))
-        .filter(|name| {
-            ["h", "torque"]
-                .iter()
-                .all(|s| csv.index_of(&format!("{name}_{s}")).is_some())
-        })
-        .map(String::from)
-        .collect();
-    (rotor_columns(&names).iter())
+    let names = csv.rotor_names();
+    (rotor_columns(&names, false).iter())
         .filter(|c| c.name.ends_with("_h"))
         .map(|c| c.name)
         .collect()

@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::ProfileSpec;
+use crate::wheels::WheelKeys;
 
 /// `body.shape`: a homogeneous shape, `type` and its dimensions (the vocabulary type [`crate::body::Shape`]).
 pub type ShapeSpec = crate::body::Shape;
@@ -41,10 +42,12 @@ pub struct RotorSpec {
     pub imbalance_static_gmm: f64,
     /// `imbalance_dynamic_gmm2`: the dynamic imbalance (g·mm², ≥ 0; absent: 0).
     pub imbalance_dynamic_gmm2: f64,
+    /// `max_torque`, `max_speed_rpm`, `friction`: the wheel's limits and friction ([`crate::wheels`]).
+    pub wheel: WheelKeys,
 }
 
 /// What drives a rotor's relative spin.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum RotorDrive {
     /// Neither `spin_accel` nor `torque`: the relative spin stays constant (the motor supplies what that takes).
     ConstantSpin,
@@ -53,6 +56,10 @@ pub enum RotorDrive {
     /// `torque` (N·m) with a torque effect's `profile`: the motor torque on the wheel about its axis; the body
     /// feels its opposite.
     Torque { value: f64, profile: ProfileSpec },
+    /// `torque_table`: the motor torque commanded by a table (header `t,torque`), relative to the scene file.
+    Table(std::path::PathBuf),
+    /// `mode = "free"`: no motor, the wheel spins freely (friction only).
+    Free,
 }
 
 /// How the body's mass is distributed: `shape` or `inertia` (exactly one of them).
@@ -190,6 +197,7 @@ impl RotorSpec {
             at: [0.0; 3],
             imbalance_static_gmm: 0.0,
             imbalance_dynamic_gmm2: 0.0,
+            wheel: WheelKeys::default(),
         }
     }
 
@@ -211,6 +219,12 @@ impl RotorSpec {
     /// With `drive`.
     pub fn with_drive(mut self, drive: RotorDrive) -> Self {
         self.drive = drive;
+        self
+    }
+
+    /// With the limits and friction `wheel`.
+    pub fn with_wheel(mut self, wheel: WheelKeys) -> Self {
+        self.wheel = wheel;
         self
     }
 

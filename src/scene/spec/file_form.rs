@@ -113,6 +113,17 @@ pub(super) struct RotorFile {
     /// g·mm².
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) imbalance_dynamic_gmm2: Option<f64>,
+    /// The wheel's keys (`crate::wheels`): N·m, rpm, its friction, `mode = "free"`, its command table.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) max_torque: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) max_speed_rpm: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) friction: Option<crate::wheels::FrictionKeys>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) mode: Option<crate::wheels::WheelMode>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) torque_table: Option<std::path::PathBuf>,
 }
 
 /// One `[[body.point_mass]]`.

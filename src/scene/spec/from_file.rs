@@ -17,6 +17,7 @@ use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
 use crate::scene::checks::{Checked, invalid, only_keys, required};
 use crate::scene::source_map::KeyPath;
+use crate::wheels::{WheelKeys, WheelMode};
 
 impl SceneFile {
     /// The typed scene, or the first key at fault.
@@ -90,20 +91,7 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
         t_on: doc.t_on,
         t_off: doc.t_off,
     };
-    let drive = match (doc.spin_accel, doc.torque) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                key("torque"),
-                "give either `spin_accel` (a prescribed spin) or `torque` (a motor torque), not both",
-            );
-        }
-        (Some(accel), None) => RotorDrive::SpinAccel(accel),
-        (None, Some(value)) => RotorDrive::Torque {
-            value,
-            profile: profile(&table, &keys)?,
-        },
-        (None, None) => RotorDrive::ConstantSpin,
-    };
+    let drive = rotor_drive(&table, doc, &keys)?;
     if !matches!(drive, RotorDrive::Torque { .. }) {
         let given = [
             ("profile", keys.profile.is_some()),
@@ -128,7 +116,47 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
         at: doc.at.unwrap_or([0.0; 3]),
         imbalance_static_gmm: doc.imbalance_static_gmm.unwrap_or(0.0),
         imbalance_dynamic_gmm2: doc.imbalance_dynamic_gmm2.unwrap_or(0.0),
+        wheel: WheelKeys {
+            max_torque: doc.max_torque,
+            max_speed_rpm: doc.max_speed_rpm,
+            friction: doc.friction,
+        },
     })
+}
+
+/// A rotor's drive: at most one of `spin_accel`, `torque`, `torque_table` and `mode = "free"`.
+fn rotor_drive(table: &KeyPath, doc: &RotorFile, keys: &ProfileKeys) -> Checked<RotorDrive> {
+    let given = [
+        ("spin_accel", doc.spin_accel.is_some()),
+        ("torque", doc.torque.is_some()),
+        ("torque_table", doc.torque_table.is_some()),
+        ("mode", doc.mode.is_some()),
+    ];
+    let mut present = given.iter().filter(|(_, p)| *p).map(|(name, _)| *name);
+    if let (Some(first), Some(second)) = (present.next(), present.next()) {
+        let message = match (first, second) {
+            ("spin_accel", "torque") => {
+                "give either `spin_accel` (a prescribed spin) or `torque` (a motor torque), not both".to_string()
+            }
+            _ => format!(
+                "give at most one of `spin_accel`, `torque`, `torque_table` and `mode = \"free\"`: `{first}` and \
+                 `{second}` both drive the wheel"
+            ),
+        };
+        return invalid(table.clone().key(second), message);
+    }
+    Ok(
+        match (doc.spin_accel, doc.torque, &doc.torque_table, doc.mode) {
+            (Some(accel), ..) => RotorDrive::SpinAccel(accel),
+            (_, Some(value), ..) => RotorDrive::Torque {
+                value,
+                profile: profile(table, keys)?,
+            },
+            (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
+            (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,
+            _ => RotorDrive::ConstantSpin,
+        },
+    )
 }
 
 /// `body.shape`: its `type` and the keys that type takes.
@@ -617,14 +645,19 @@ fn rotor_file(rotor: &RotorSpec) -> RotorFile {
         at: Some(rotor.at),
         imbalance_static_gmm: Some(rotor.imbalance_static_gmm),
         imbalance_dynamic_gmm2: Some(rotor.imbalance_dynamic_gmm2),
+        max_torque: rotor.wheel.max_torque,
+        max_speed_rpm: rotor.wheel.max_speed_rpm,
+        friction: rotor.wheel.friction,
         ..RotorFile::default()
     };
     match rotor.drive {
         RotorDrive::ConstantSpin => {}
+        RotorDrive::Table(ref path) => file.torque_table = Some(path.clone()),
+        RotorDrive::Free => file.mode = Some(WheelMode::Free),
         RotorDrive::SpinAccel(accel) => file.spin_accel = Some(accel),
-        RotorDrive::Torque { value, profile } => {
+        RotorDrive::Torque { value, ref profile } => {
             file.torque = Some(value);
-            let (kind, freq_hz, phase_deg, t_on, t_off) = profile_keys(&profile);
+            let (kind, freq_hz, phase_deg, t_on, t_off) = profile_keys(profile);
             (file.profile, file.freq_hz, file.phase_deg) = (Some(kind), freq_hz, phase_deg);
             (file.t_on, file.t_off) = (t_on, t_off);
         }

@@ -229,6 +229,11 @@ impl SceneSpec {
                 table.file = dir.join(&table.file);
             }
         }
+        for rotor in &mut self.body.rotor {
+            if let RotorDrive::Table(file) = &mut rotor.drive {
+                *file = dir.join(&*file);
+            }
+        }
         self
     }
 }

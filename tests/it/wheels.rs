@@ -1,0 +1,473 @@
+//! Wheels under control (src/wheels): torque and speed limits, friction, free wheels, wheel laws and tables,
+//! against closed forms. Every closed form follows in a line from the gyrostat's equations about one axis x with
+//! no external moment (Hughes, *Spacecraft Attitude Dynamics*, 1986, the gyrostat; src/motion/gyrostat.rs):
+//! I ω̇ + J Ω̇ = 0 (H_s conserved) and J (ω̇ + Ω̇) = τ_m + τ_f, hence (I − J) ω̇ = −(τ_m + τ_f) and
+//! Ω̇ = I (τ_m + τ_f) / (J (I − J)). Tolerances: dop853 at rtol 1e-12 and atol 1e-14 reaches about 1e-11 relative
+//! on these smooth motions (as tests/it/rotors.rs); 1e-9 is asserted, except where a switch (a limit, a stop)
+//! is crossed inside a step, whose tolerance is stated beside it.
+
+use crate::common::{assert_refused_writing_nothing, eulerdyn, write_file};
+use eulerdyn::sample::Sample;
+use eulerdyn::scene::{BodySpec, ProfileSpec, RotorDrive, RotorSpec, SceneSpec};
+use eulerdyn::wheels::{FrictionKeys, STICK_SPEED, WheelKeys};
+use eulerdyn::{Form, Method, simulate};
+use nalgebra::{UnitQuaternion, Vector3};
+
+const I_XX: f64 = 2.0;
+const J: f64 = 0.05;
+
+fn rows(scene: &eulerdyn::Scene) -> Vec<Sample> {
+    simulate::samples(scene).unwrap_or_else(|e| panic!("{e}")).0
+}
+
+/// A body at rest (I_xx = 2, about x) with `wheel` along x, tight dop853, `form`, rows every `every` to `t_end`.
+fn scene(wheel: RotorSpec, form: Form, t_end: f64, every: f64) -> eulerdyn::Scene {
+    let body = BodySpec::principal(10.0, [I_XX, 3.0, 4.0]).with_rotor(wheel);
+    SceneSpec::new(body, t_end, every)
+        .with_method(Method::Dop853)
+        .with_tolerances(1e-12, 1e-14)
+        .with_form(form)
+        .build()
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn close(a: f64, b: f64, tol: f64, what: &str) {
+    assert!(
+        (a - b).abs() <= tol * b.abs().max(1.0),
+        "{what}: {a} vs {b} (difference {:e})",
+        a - b
+    );
+}
+
+fn motor(tau: f64) -> RotorDrive {
+    RotorDrive::Torque {
+        value: tau,
+        profile: ProfileSpec::Constant,
+    }
+}
+
+fn limits(max_torque: Option<f64>, max_speed_rpm: Option<f64>) -> WheelKeys {
+    WheelKeys {
+        max_torque,
+        max_speed_rpm,
+        friction: None,
+    }
+}
+
+fn friction(coulomb: Option<f64>, viscous: Option<f64>) -> WheelKeys {
+    WheelKeys {
+        friction: Some(FrictionKeys {
+            coulomb,
+            viscous,
+            stribeck: None,
+        }),
+        ..WheelKeys::default()
+    }
+}
+
+#[test]
+fn a_clipped_command_exchanges_momentum_at_the_limit() {
+    // τ_cmd = 1 N·m clipped to τ_max = 0.1 N·m: ω_x = −τ_max t / (I − J) (module doc), Ω = τ_max t I / (J (I − J)).
+    let tau_max = 0.1;
+    let wheel = RotorSpec::new([1.0, 0.0, 0.0], J, 0.0)
+        .with_drive(motor(1.0))
+        .with_wheel(limits(Some(tau_max), None));
+    for form in Form::ALL {
+        for s in rows(&scene(wheel.clone(), form, 10.0, 0.5)) {
+            close(s.omega_b.x, -tau_max * s.t / (I_XX - J), 1e-9, "ω_x");
+            let r = s.rotors.expect("rotor columns");
+            close(
+                r.spin[0],
+                tau_max * s.t * I_XX / (J * (I_XX - J)),
+                1e-9,
+                "Ω",
+            );
+            assert_eq!(
+                (r.torque[0], r.torque_cmd[0]),
+                (tau_max, 1.0),
+                "applied and commanded"
+            );
+            assert!(s.h_s.norm() <= 1e-12, "{form:?}: H_s = {}", s.h_s);
+        }
+    }
+}
+
+#[test]
+fn the_speed_limit_holds_the_spin_at_the_limit() {
+    // τ = 0.1 N·m spins the wheel up as above until Ω reaches Ω_max at t_lim = Ω_max J (I − J) / (τ I); then the
+    // motor applies only what holds Ω there: with nothing else acting that is 0, and ω_x = −J Ω_max / I (H_s = 0).
+    let (tau, rpm) = (0.1, 30.0);
+    let omega_max = rpm * std::f64::consts::PI / 30.0;
+    let t_lim = omega_max * J * (I_XX - J) / (tau * I_XX);
+    let wheel = RotorSpec::new([1.0, 0.0, 0.0], J, 0.0)
+        .with_drive(motor(tau))
+        .with_wheel(limits(None, Some(rpm)));
+    for form in Form::ALL {
+        let samples = rows(&scene(wheel.clone(), form, 2.0 * t_lim, t_lim / 8.0));
+        assert!(
+            samples.iter().any(|s| s.t > t_lim),
+            "the run passes the limit"
+        );
+        for s in samples {
+            let r = s.rotors.expect("rotor columns");
+            let spin = (tau * s.t * I_XX / (J * (I_XX - J))).min(omega_max);
+            // Reaching the limit inside a step: the step's error control keeps the overshoot to the local
+            // tolerance, 1e-12 relative and 1e-14 absolute, far below 1e-9.
+            close(r.spin[0], spin, 1e-9, "Ω");
+            close(
+                s.omega_b.x,
+                -J * r.spin[0] / I_XX,
+                1e-12,
+                "ω_x = −J Ω / I (H_s = 0)",
+            );
+            assert!(
+                r.spin[0] <= omega_max * (1.0 + 1e-9),
+                "Ω never passes the limit"
+            );
+            if s.t > t_lim {
+                assert!(
+                    r.torque[0].abs() <= 1e-12,
+                    "held: τ = {} at {}",
+                    r.torque[0],
+                    s.t
+                );
+                assert_eq!(r.torque_cmd[0], tau, "the command is kept");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_free_wheel_under_viscous_friction_decays_exponentially() {
+    // τ_f = −c Ω: Ω = Ω₀ exp(−c I t / (J (I − J))) (module doc) with I ω + J Ω = J Ω₀ (H conserved, ω₀ = 0).
+    let (c, spin0) = (2e-3, 100.0);
+    let wheel = RotorSpec::new([1.0, 0.0, 0.0], J, spin0)
+        .with_drive(RotorDrive::Free)
+        .with_wheel(friction(None, Some(c)));
+    for form in Form::ALL {
+        let samples = rows(&scene(wheel.clone(), form, 20.0, 0.5));
+        let mut energy = f64::INFINITY;
+        for s in samples {
+            let r = s.rotors.expect("rotor columns");
+            let spin = spin0 * (-c * I_XX * s.t / (J * (I_XX - J))).exp();
+            close(r.spin[0], spin, 1e-9, "Ω");
+            close(
+                I_XX * s.omega_b.x + J * r.spin[0],
+                J * spin0,
+                1e-12,
+                "I ω + J Ω",
+            );
+            close(r.friction[0], -c * r.spin[0], 1e-15, "τ_f = −c Ω");
+            assert_eq!(r.torque[0], 0.0, "a free wheel has no motor");
+            assert!(s.energy < energy || s.t == 0.0, "the energy falls");
+            energy = s.energy;
+        }
+    }
+}
+
+#[test]
+fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter() {
+    // τ_f = −c sign(Ω): Ω = Ω₀ − c I t / (J (I − J)) until t_stop = Ω₀ J (I − J) / (c I); then the wheel sticks
+    // (the torque that holds it, J ω̇ = 0, is within c) and ω = J Ω₀ / I.
+    let (c, spin0) = (2e-3, 10.0);
+    let t_stop = spin0 * J * (I_XX - J) / (c * I_XX);
+    let wheel = RotorSpec::new([1.0, 0.0, 0.0], J, spin0)
+        .with_drive(RotorDrive::Free)
+        .with_wheel(friction(Some(c), None));
+    for form in Form::ALL {
+        let samples = rows(&scene(wheel.clone(), form, 2.0 * t_stop, t_stop / 16.0));
+        for s in &samples {
+            let r = s.rotors.expect("rotor columns");
+            let spin = (spin0 - c * I_XX * s.t / (J * (I_XX - J))).max(0.0);
+            // The stop: the spin is taken as at rest below STICK_SPEED, so it may end up to that above zero.
+            assert!(
+                (r.spin[0] - spin).abs() <= 1e-9 * spin0 + STICK_SPEED,
+                "Ω = {} vs {spin} at {}",
+                r.spin[0],
+                s.t
+            );
+            assert!(
+                r.spin[0] >= -STICK_SPEED,
+                "no chatter through zero: Ω = {}",
+                r.spin[0]
+            );
+            if s.t > t_stop {
+                assert!(
+                    r.friction[0].abs() <= 1e-12,
+                    "stuck, no torque needed: {}",
+                    r.friction[0]
+                );
+                close(s.omega_b.x, J * spin0 / I_XX, 1e-9, "ω after the stop");
+            }
+        }
+        // Stopped exactly once: after the stop the spin no longer changes.
+        let after: Vec<f64> = (samples.iter().filter(|s| s.t > t_stop * 1.01))
+            .map(|s| s.rotors.unwrap().spin[0])
+            .collect();
+        assert!(
+            after.len() > 4 && after.windows(2).all(|w| w[0] == w[1]),
+            "{after:?}"
+        );
+    }
+}
+
+#[test]
+fn a_pd_law_through_one_wheel_gives_the_second_order_step_response() {
+    // One wheel along z, τ = −(k_p (θ_t − θ) − k_d θ̇) so that (I − J) θ̈ = −τ (module doc) is
+    // θ̈ + 2ζω_n θ̇ + ω_n² θ = ω_n² θ_t, ω_n² = k_p/(I − J), 2ζω_n = k_d/(I − J): the underdamped step response
+    // θ = θ_t (1 − e^{−ζω_n t}(cos ω_d t + ζω_n/ω_d sin ω_d t)), ω_d = ω_n √(1 − ζ²) (Ogata, *Modern Control
+    // Engineering*, 5th ed., §5-3, eq. 5-10).
+    let (i_zz, j, theta_t, k_p, k_d): (f64, f64, f64, f64, f64) = (4.0, 0.1, 0.3, 1.0, 0.8);
+    let (wn, zeta) = {
+        let wn = (k_p / (i_zz - j)).sqrt();
+        (wn, k_d / (i_zz - j) / (2.0 * wn))
+    };
+    let wd = wn * (1.0 - zeta * zeta).sqrt();
+    let law = move |_t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>, _spins: &[f64]| {
+        let theta = 2.0 * q.k.atan2(q.w);
+        vec![-(k_p * (theta_t - theta) - k_d * omega_b.z)]
+    };
+    for form in Form::ALL {
+        let body = BodySpec::principal(10.0, [3.0, 3.5, i_zz]).with_rotor(RotorSpec::new(
+            [0.0, 0.0, 1.0],
+            j,
+            0.0,
+        ));
+        let scene = SceneSpec::new(body, 30.0, 0.5)
+            .with_method(Method::Dop853)
+            .with_tolerances(1e-12, 1e-14)
+            .with_form(form)
+            .build()
+            .unwrap()
+            .with_wheel_law("pd", law)
+            .unwrap();
+        for s in rows(&scene) {
+            let t = s.t;
+            let theta = 2.0 * s.q.k.atan2(s.q.w);
+            let decay = (-zeta * wn * t).exp();
+            let expected =
+                theta_t * (1.0 - decay * ((wd * t).cos() + zeta * wn / wd * (wd * t).sin()));
+            close(theta, expected, 1e-9, "θ");
+            let r = s.rotors.unwrap();
+            assert_eq!(
+                r.torque[0], r.torque_cmd[0],
+                "no limit: applied = commanded"
+            );
+            assert!(s.h_s.norm() <= 1e-12, "H_s = 0");
+        }
+    }
+}
+
+#[test]
+fn a_law_is_refused_beside_a_wheel_with_its_own_driver_and_with_a_wrong_count() {
+    let body = |drive: RotorDrive| {
+        BodySpec::principal(10.0, [1.0, 1.0, 1.0])
+            .with_rotor(RotorSpec::new([0.0, 0.0, 1.0], 0.1, 0.0))
+            .with_rotor(
+                RotorSpec::new([1.0, 0.0, 0.0], 0.1, 0.0)
+                    .with_name("x")
+                    .with_drive(drive),
+            )
+    };
+    let law = |_t: f64, _q: &UnitQuaternion<f64>, _w: &Vector3<f64>, _s: &[f64]| vec![0.0, 0.0];
+    let scene = SceneSpec::new(body(RotorDrive::Free), 1.0, 0.5)
+        .build()
+        .unwrap();
+    let e = scene.with_wheel_law("pd", law).unwrap_err();
+    assert_eq!(e.key.to_string(), "body.rotor[1].mode", "{e}");
+    assert!(e.problem.contains("`x`"), "names the wheel: {e}");
+    let scene = SceneSpec::new(body(RotorDrive::ConstantSpin), 1.0, 0.5)
+        .build()
+        .unwrap();
+    let one = |_t: f64, _q: &UnitQuaternion<f64>, _w: &Vector3<f64>, _s: &[f64]| vec![0.0];
+    let e = scene.with_wheel_law("pd", one).unwrap_err();
+    assert!(
+        e.problem
+            .contains("gives 1 torque(s), the body has 2 wheel(s)"),
+        "{e}"
+    );
+}
+
+const WHEEL_SCENE: &str = r#"name = "wheel"
+[body]
+mass = 10.0
+inertia = [2.0, 3.0, 4.0]
+[[body.rotor]]
+name = "wx"
+axis = [1.0, 0.0, 0.0]
+inertia = 0.05
+torque_table = "cmd.csv"
+max_torque = 0.1
+friction = { viscous = 1e-4 }
+[solver]
+t_end = 2.0
+[output]
+every = 0.5
+"#;
+
+#[test]
+fn a_torque_table_drives_a_wheel_and_its_columns_are_written() {
+    // A table at 1 N·m (with a byte-order mark and CRLF) clipped to 0.1 N·m: the command and the applied torque
+    // are the table's and the limit's, and the friction column is −c Ω.
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "cmd.csv", "\u{feff}t,torque\r\n0,1\r\n10,1\r\n");
+    let scene = write_file(dir.path(), "scene.toml", WHEEL_SCENE);
+    let out_csv = dir.path().join("out.csv");
+    let out = eulerdyn([
+        "run",
+        scene.to_str().unwrap(),
+        "-o",
+        out_csv.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let text = std::fs::read_to_string(&out_csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let tail = &header[header.len() - 5..];
+    assert_eq!(
+        tail,
+        [
+            "wx_spin",
+            "wx_h",
+            "wx_torque",
+            "wx_torque_cmd",
+            "wx_friction"
+        ]
+    );
+    for line in lines {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let n = v.len();
+        assert_eq!((v[n - 3], v[n - 2]), (0.1, 1.0), "applied and commanded");
+        close(v[n - 1], -1e-4 * v[n - 5], 1e-15, "τ_f = −c Ω");
+    }
+}
+
+#[test]
+fn bad_wheel_keys_are_refused_naming_the_key() {
+    let with = |extra: &str| WHEEL_SCENE.replace("[solver]", &format!("{extra}\n[solver]"));
+    // Without the table (not written beside the scene here), so that the second wheel is the one at fault.
+    let untabled = |extra: &str| with(extra).replace("torque_table = \"cmd.csv\"", "torque = 1.0");
+    let free = "[[body.rotor]]\naxis = [0.0, 1.0, 0.0]\ninertia = 0.05\nmode = \"free\"";
+    let cases = [
+        (
+            "a negative torque limit",
+            WHEEL_SCENE.replace("max_torque = 0.1", "max_torque = -0.1"),
+            "body.rotor[0].max_torque",
+        ),
+        (
+            "a negative speed limit",
+            with("max_speed_rpm = -100.0"),
+            "max_speed_rpm",
+        ),
+        (
+            "an unknown friction key",
+            WHEEL_SCENE.replace("viscous = 1e-4", "viscus = 1e-4"),
+            "viscus",
+        ),
+        (
+            "a negative Coulomb friction",
+            WHEEL_SCENE.replace("viscous = 1e-4", "coulomb = -1e-3"),
+            "body.rotor[0].friction.coulomb",
+        ),
+        (
+            "a zero Stribeck speed",
+            WHEEL_SCENE.replace(
+                "viscous = 1e-4",
+                "stribeck = { torque = 1e-3, speed = 0.0 }",
+            ),
+            "body.rotor[0].friction.stribeck.speed",
+        ),
+        (
+            "free with spin_accel",
+            untabled(&format!("{free}\nspin_accel = 1.0")),
+            "body.rotor[1].mode",
+        ),
+        (
+            "free with a torque limit",
+            untabled(&format!("{free}\nmax_torque = 1.0")),
+            "body.rotor[1].max_torque",
+        ),
+        (
+            "a missing table",
+            WHEEL_SCENE.replace("cmd.csv", "missing.csv"),
+            "body.rotor[0].torque_table",
+        ),
+    ];
+    assert_refused_writing_nothing(&cases);
+}
+
+#[test]
+fn stribeck_friction_adds_its_breakaway_torque_at_low_speed() {
+    // τ_f = −(c + s exp(−(Ω/Ω_s)²)) sign(Ω) − v Ω (Basilisk's reaction wheel friction model).
+    let f = eulerdyn::wheels::Friction {
+        coulomb: 1e-3,
+        viscous: 1e-5,
+        stribeck_torque: 2e-3,
+        stribeck_speed: 0.5,
+    };
+    assert_eq!(f.torque(0.0), 0.0);
+    close(
+        f.torque(0.5),
+        -(1e-3 + 2e-3 * (-1.0f64).exp()) - 0.5e-5,
+        1e-15,
+        "at Ω_s",
+    );
+    close(
+        f.torque(-100.0),
+        1e-3 + 1e-3,
+        1e-15,
+        "the Stribeck term has faded",
+    );
+    assert_eq!(f.breakaway(), 3e-3);
+}
+
+#[test]
+fn wheel_keys_are_sweepable_and_the_plot_has_wheel_panels() {
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "cmd.csv", "t,torque\n0,1\n10,1\n");
+    let scene = write_file(dir.path(), "scene.toml", WHEEL_SCENE);
+    let sweep = write_file(
+        dir.path(),
+        "sweep.toml",
+        "scene = \"scene.toml\"\n[[vary]]\nkey = \"body.rotor.0.max_torque\"\nvalues = [0.02]\n\
+         [[vary]]\nkey = \"body.rotor.0.friction.viscous\"\nvalues = [3e-3]\n",
+    );
+    let plan = eulerdyn::analysis::sweep::Sweep::load(&sweep).unwrap_or_else(|e| panic!("{e}"));
+    let run = plan.scene(&plan.values(0)).unwrap();
+    for s in rows(&run) {
+        let r = s.rotors.unwrap();
+        assert_eq!(r.torque[0], 0.02, "the swept limit");
+        assert_eq!(
+            r.friction[0],
+            -3e-3 * r.spin[0],
+            "the swept friction, τ_f = −c Ω"
+        );
+    }
+    let out_csv = dir.path().join("out.csv");
+    let out = eulerdyn([
+        "run",
+        scene.to_str().unwrap(),
+        "-o",
+        out_csv.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let svg = dir.path().join("out.svg");
+    let out = eulerdyn([
+        "plot",
+        out_csv.to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for title in [
+        "Wheel spins relative to the body",
+        "Wheel motor torques, applied and commanded",
+        "τ_cmd wx",
+    ] {
+        assert!(
+            text.contains(title),
+            "the default figure of a rotor run draws `{title}`"
+        );
+    }
+}
