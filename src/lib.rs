@@ -42,6 +42,11 @@
 //! library (feature `cli`, on by default); `default-features = false` leaves out clap, indicatif and ctrlc.
 //! ARCHITECTURE.md draws them and says where a new motion, effect, method or command goes.
 
+/// The book's Rust examples (docs/book), run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/book/src/reference/rust.md")]
+pub struct BookRustExamples;
+
 pub mod analysis;
 pub mod body;
 pub mod effects;

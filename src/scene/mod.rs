@@ -5,6 +5,7 @@ pub mod advice;
 mod checks;
 mod file;
 mod model;
+pub mod reference;
 pub mod source_map;
 mod spec;
 mod template;

@@ -3,6 +3,7 @@
 
 mod balance_grade;
 mod body;
+mod book;
 mod carriers;
 mod cli_end_to_end;
 mod cli_usability;
