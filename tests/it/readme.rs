@@ -40,7 +40,11 @@ fn shown_outputs(lines: &[&str]) -> Vec<Shown> {
 
 /// The shown outputs of `path` that the commands no longer print (rewritten in place when blessing).
 fn stale_outputs(path: &std::path::Path) -> Vec<String> {
-    let name = path.strip_prefix(repo_path("")).unwrap_or(path).display().to_string();
+    let name = path
+        .strip_prefix(repo_path(""))
+        .unwrap_or(path)
+        .display()
+        .to_string();
     let text = std::fs::read_to_string(path).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     let shown = shown_outputs(&lines);

@@ -55,14 +55,25 @@ mod tests {
         let (_, expected) = problem
             .split_once("expected")
             .unwrap_or_else(|| panic!("{header}: no field list in `{problem}`"));
-        expected.split('`').skip(1).step_by(2).map(String::from).collect()
+        expected
+            .split('`')
+            .skip(1)
+            .step_by(2)
+            .map(String::from)
+            .collect()
     }
 
     #[test]
     fn every_table_lists_exactly_the_keys_serde_accepts() {
         for table in keys() {
-            let declared: BTreeSet<String> = table.keys.iter().map(|k| k.name.to_string()).collect();
-            assert_eq!(declared.len(), table.keys.len(), "{}: a key twice", table.header);
+            let declared: BTreeSet<String> =
+                table.keys.iter().map(|k| k.name.to_string()).collect();
+            assert_eq!(
+                declared.len(),
+                table.keys.len(),
+                "{}: a key twice",
+                table.header
+            );
             assert_eq!(accepted(table.header), declared, "table `{}`", table.header);
         }
     }

@@ -40,7 +40,11 @@ pub(super) fn blocks_of(file: &str, text: &str) -> Vec<Block> {
             line: i + 1,
             info: info.trim().to_string(),
             body,
-            above: if i > 0 { lines[i - 1].trim().into() } else { String::new() },
+            above: if i > 0 {
+                lines[i - 1].trim().into()
+            } else {
+                String::new()
+            },
         });
         i = end + 1;
     }
@@ -99,7 +103,10 @@ impl Drop for TempScene {
 #[test]
 fn every_toml_block_is_a_scene_that_check_accepts() {
     let mut failed = Vec::new();
-    let blocks: Vec<Block> = book_blocks().into_iter().filter(|b| b.info == "toml").collect();
+    let blocks: Vec<Block> = book_blocks()
+        .into_iter()
+        .filter(|b| b.info == "toml")
+        .collect();
     assert!(!blocks.is_empty(), "no ```toml block in the book");
     for b in blocks {
         // Inside scenarios/ so that relative paths resolve as for a bundled scene; not named *.toml, so that the
@@ -112,7 +119,11 @@ fn every_toml_block_is_a_scene_that_check_accepts() {
             failed.push(format!("{}:{}: {}", b.file, b.line, out.stderr.trim()));
         }
     }
-    assert!(failed.is_empty(), "scenes that `eulerdyn check` refuses:\n{}", failed.join("\n"));
+    assert!(
+        failed.is_empty(),
+        "scenes that `eulerdyn check` refuses:\n{}",
+        failed.join("\n")
+    );
 }
 
 /// Whether `printed` matches `expected`, where an expected line `...` matches any number of lines.
@@ -146,10 +157,9 @@ pub(super) fn commands(body: &[String]) -> Vec<(String, Vec<String>)> {
 /// Runs `cmd` with bash from the repository root, with the built `eulerdyn` first on the PATH.
 pub(super) fn shell(cmd: &str) -> std::process::Output {
     let bin = Path::new(env!("CARGO_BIN_EXE_eulerdyn")).parent().unwrap();
-    let path = std::env::join_paths(
-        std::iter::once(bin.to_path_buf())
-            .chain(std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default())),
-    )
+    let path = std::env::join_paths(std::iter::once(bin.to_path_buf()).chain(
+        std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()),
+    ))
     .unwrap();
     Command::new("bash")
         .args(["-o", "pipefail", "-c", cmd])

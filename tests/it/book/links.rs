@@ -55,7 +55,9 @@ pub(super) fn heading_ids(text: &str) -> BTreeSet<String> {
         let title = title.trim_start_matches('#').trim();
         let id: String = (title.chars())
             .filter_map(|c| match c {
-                c if c.is_alphanumeric() || c == '_' || c == '-' => Some(c.to_lowercase().next().unwrap()),
+                c if c.is_alphanumeric() || c == '_' || c == '-' => {
+                    Some(c.to_lowercase().next().unwrap())
+                }
                 c if c.is_whitespace() => Some('-'),
                 _ => None,
             })
@@ -135,7 +137,10 @@ fn every_chapter_is_in_the_summary() {
         .map(|p| p.strip_prefix(&src).unwrap().display().to_string())
         .filter(|p| p != "SUMMARY.md" && !listed.contains(p))
         .collect();
-    assert!(missing.is_empty(), "chapters not in SUMMARY.md: {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "chapters not in SUMMARY.md: {missing:?}"
+    );
 }
 
 #[test]

@@ -21,7 +21,11 @@ fn cell(text: &str) -> String {
 pub(super) fn key_tables() -> String {
     let mut out = String::new();
     for table in keys() {
-        let header = if table.header.is_empty() { "the top level" } else { table.header };
+        let header = if table.header.is_empty() {
+            "the top level"
+        } else {
+            table.header
+        };
         out += &format!("\n### `{header}`\n\n{}.\n\n", table.about);
         out += "| key | type | unit | default | measured from | meaning |\n|---|---|---|---|---|---|\n";
         for k in table.keys {
@@ -54,18 +58,65 @@ pub(super) fn column_table() -> String {
     let none = ColumnSet::default();
     let groups: Vec<(&str, Vec<Column>)> = vec![
         ("always", base.clone()),
-        ("`theta`", only(ColumnSet { theta: true, ..none })),
-        ("`force`", only(ColumnSet { force: true, ..none })),
-        ("`h_s_integrated`", only(ColumnSet { h_s_integrated: true, ..none })),
-        ("`support`", only(ColumnSet { support: true, ..none })),
-        ("`bearings`", only(ColumnSet { bearings: true, ..none })),
-        ("`potential`", only(ColumnSet { potential: true, ..none })),
-        ("`carrier`", only(ColumnSet { carrier: true, ..none })),
+        (
+            "`theta`",
+            only(ColumnSet {
+                theta: true,
+                ..none
+            }),
+        ),
+        (
+            "`force`",
+            only(ColumnSet {
+                force: true,
+                ..none
+            }),
+        ),
+        (
+            "`h_s_integrated`",
+            only(ColumnSet {
+                h_s_integrated: true,
+                ..none
+            }),
+        ),
+        (
+            "`support`",
+            only(ColumnSet {
+                support: true,
+                ..none
+            }),
+        ),
+        (
+            "`bearings`",
+            only(ColumnSet {
+                bearings: true,
+                ..none
+            }),
+        ),
+        (
+            "`potential`",
+            only(ColumnSet {
+                potential: true,
+                ..none
+            }),
+        ),
+        (
+            "`carrier`",
+            only(ColumnSet {
+                carrier: true,
+                ..none
+            }),
+        ),
         ("`rotors`", rotor_columns(&["NAME".to_string()]).to_vec()),
     ];
     let all = ColumnSet::ALL.columns().len() + rotor_columns(&["NAME".to_string()]).len();
-    assert_eq!(groups.iter().map(|(_, g)| g.len()).sum::<usize>(), all, "a column in no group");
-    let mut out = String::from("\n| column | unit | axes | written | meaning |\n|---|---|---|---|---|\n");
+    assert_eq!(
+        groups.iter().map(|(_, g)| g.len()).sum::<usize>(),
+        all,
+        "a column in no group"
+    );
+    let mut out =
+        String::from("\n| column | unit | axes | written | meaning |\n|---|---|---|---|---|\n");
     for (group, columns) in &groups {
         for c in columns {
             out += &format!(
@@ -114,9 +165,13 @@ fn compare_or_bless(file: &str, name: &str, made: &str) -> Option<String> {
     let text = std::fs::read_to_string(&path).unwrap();
     let open = format!("<!-- generated: {name} ");
     let close = format!("<!-- end generated: {name} -->");
-    let start = text.find(&open).unwrap_or_else(|| panic!("{file}: no `{open}…-->`"));
+    let start = text
+        .find(&open)
+        .unwrap_or_else(|| panic!("{file}: no `{open}…-->`"));
     let start = start + text[start..].find("-->").unwrap() + "-->".len();
-    let end = text.find(&close).unwrap_or_else(|| panic!("{file}: no `{close}`"));
+    let end = text
+        .find(&close)
+        .unwrap_or_else(|| panic!("{file}: no `{close}`"));
     if text[start..end] == *made {
         return None;
     }
@@ -124,15 +179,29 @@ fn compare_or_bless(file: &str, name: &str, made: &str) -> Option<String> {
         std::fs::write(&path, format!("{}{made}{}", &text[..start], &text[end..])).unwrap();
         return None;
     }
-    Some(format!("{file}: the `{name}` section differs from the code"))
+    Some(format!(
+        "{file}: the `{name}` section differs from the code"
+    ))
 }
 
 #[test]
 fn the_reference_tables_are_made_from_the_code() {
     let stale: Vec<String> = [
-        ("docs/book/src/reference/keys.md", "keys", key_tables() + "\n"),
-        ("docs/book/src/reference/columns.md", "columns", column_table() + "\n"),
-        ("docs/book/src/reference/commands.md", "commands", command_help() + "\n"),
+        (
+            "docs/book/src/reference/keys.md",
+            "keys",
+            key_tables() + "\n",
+        ),
+        (
+            "docs/book/src/reference/columns.md",
+            "columns",
+            column_table() + "\n",
+        ),
+        (
+            "docs/book/src/reference/commands.md",
+            "commands",
+            command_help() + "\n",
+        ),
     ]
     .iter()
     .filter_map(|(file, name, made)| compare_or_bless(file, name, made))
@@ -147,7 +216,13 @@ fn the_reference_tables_are_made_from_the_code() {
 #[test]
 fn the_key_tables_name_every_table_of_a_scene() {
     let made = key_tables();
-    for table in ["[body]", "[[body.rotor]]", "[[effect]]", "[[event]]", "[solver]"] {
+    for table in [
+        "[body]",
+        "[[body.rotor]]",
+        "[[effect]]",
+        "[[event]]",
+        "[solver]",
+    ] {
         assert!(made.contains(&format!("`{table}`")), "{table}");
     }
     // The keys the hand-written table once left out.
