@@ -53,6 +53,11 @@
 
 #![warn(missing_docs)]
 
+/// The book's Rust examples (docs/book), run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/book/src/reference/rust.md")]
+pub struct BookRustExamples;
+
 pub mod analysis;
 pub mod body;
 pub mod effects;

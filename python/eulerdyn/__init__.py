@@ -18,8 +18,8 @@ A scene is the path of a scene file (TOML) or a dict of the same keys, e.g.
 a sweep likewise. Bad input raises :class:`SceneError` (a ``ValueError``) with the command line's message, naming
 the file (or ``<dict>``) and the key, and the keyword argument that set it (``solver.dt (from dt=)``); a failed
 run raises :class:`RunError` with the time and the reason. Runs release the GIL, and Ctrl-C (KeyboardInterrupt)
-stops them. A column has one dtype whatever its cells: see ``README.md`` (From Python). ``__version__`` is the
-version of the eulerdyn crate the extension was built from.
+stops them. A column has one dtype whatever its cells (the book: Getting started, The first Python call).
+``__version__`` is the version of the eulerdyn crate the extension was built from.
 """
 
 from ._api import SceneLike, accuracy, balance, check, compare, events, run, sweep

@@ -97,6 +97,12 @@ def run(
             not return 3 finite numbers or one per wheel: its exception is the ``__cause__``); ``.t`` is the time
             it stopped at.
         KeyboardInterrupt: Ctrl-C during the run.
+
+    Example:
+        >>> import eulerdyn
+        >>> df = eulerdyn.run("scenarios/tilted_disk.toml", t_end=0.5)
+        >>> len(df), df.columns[0]
+        (51, 't')
     """
     names, data, report, occurrences = _eulerdyn.run(
         _scene(scene),
@@ -136,6 +142,14 @@ def events(scene: SceneLike, **options: Any) -> pd.DataFrame:
     Raises:
         SceneError, RunError, KeyboardInterrupt: as :func:`run` (a bad ``[[event]]`` key is a SceneError naming
             it, e.g. ``event[0].when``).
+
+    Example:
+        >>> import eulerdyn
+        >>> scene = {"body": {"mass": 1.0, "inertia": [1.0, 2.0, 3.0]}, "initial": {"omega": [0.0, 0.0, 1.0]},
+        ...          "event": [{"name": "half", "when": "q_w", "crosses": 0.0}],
+        ...          "solver": {"t_end": 4.0}, "output": {"every": 0.5}}
+        >>> list(eulerdyn.events(scene)["event"])
+        ['half']
     """
     _, _, report, occurrences = _eulerdyn.run(_scene(scene), rows=False, **options)
     df = _events_table(occurrences)
@@ -160,6 +174,9 @@ def _events_table(occurrences: Sequence[Tuple[str, float, float, str]]) -> pd.Da
 def check(scene: SceneLike) -> Dict[str, Any]:
     """What a scene will simulate, as ``eulerdyn check SCENE`` prints it, without running it.
 
+    Args:
+        scene: the path of a scene file, or a dict of its keys.
+
     Returns:
         A dict: ``text`` (the printout), ``items`` (each label of the printout with its lines, e.g.
         ``items["method"]``), and the settings as values: ``name``, ``description``, ``motion`` (``free``,
@@ -168,6 +185,11 @@ def check(scene: SceneLike) -> Dict[str, Any]:
 
     Raises:
         SceneError: the scene is not valid.
+
+    Example:
+        >>> import eulerdyn
+        >>> eulerdyn.check("scenarios/tilted_disk.toml")["motion"]
+        'fixed_axis'
     """
     return dict(_eulerdyn.check(_scene(scene)))
 
@@ -189,6 +211,11 @@ def compare(scene: SceneLike, *, method: Optional[str] = None) -> Dict[str, Any]
     Raises:
         SceneError: the scene or the method is not valid.
         RunError: a run failed.
+
+    Example:
+        >>> import eulerdyn
+        >>> eulerdyn.compare("scenarios/asymmetric_free.toml")["passes"]
+        True
     """
     result = dict(_eulerdyn.compare(_scene(scene), method=method))
     table = result.pop("table")
@@ -221,6 +248,12 @@ def accuracy(scene: SceneLike, *, quick: bool = False) -> pd.DataFrame:
         SceneError: the scene is not valid, or the study cannot use it.
         RunError: the reference run failed.
         KeyboardInterrupt: Ctrl-C (the study stops before its next run).
+
+    Example:
+        >>> import eulerdyn
+        >>> study = eulerdyn.accuracy("scenarios/asymmetric_free.toml", quick=True)
+        >>> "dop853" in set(study["method"])
+        True
     """
     table, summary = _eulerdyn.accuracy(_scene(scene), quick=quick)
     df = _table(table, _STUDY_COUNTS, _STUDY_TEXTS)
@@ -264,6 +297,13 @@ def sweep(
             ``scene.body.mass`` for a base scene given as a dict).
         RunError: ``moment`` or ``wheel_torque`` raised (its exception is the ``__cause__``).
         KeyboardInterrupt: Ctrl-C (the sweep stops between runs).
+
+    Example:
+        >>> import eulerdyn
+        >>> table = eulerdyn.sweep({"scene": "scenarios/tilted_disk.toml",
+        ...                         "vary": [{"key": "motion.rate", "values": [5.0, 10.0]}]}, jobs=1)
+        >>> list(table["status"])
+        ['ok', 'ok']
     """
     text = _eulerdyn.sweep(
         _scene(sweep_file),
@@ -344,6 +384,12 @@ def balance(
         SceneError: the scene is not valid or cannot be balanced (a free body, A = B, radius <= 0), the table
             cannot be used (no initial run, a plane without a trial, a bad cell, a singular system; the message
             names the line), or grade or rpm <= 0.
+
+    Example:
+        >>> import eulerdyn
+        >>> report = eulerdyn.balance("scenarios/fan_rotor_g63.toml", planes=(-0.1, 0.08), radius=0.25, grade=6.3)
+        >>> report["grade"]["target"]["pass"]
+        True
     """
     return dict(
         _eulerdyn.balance(

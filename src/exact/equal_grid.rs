@@ -43,7 +43,7 @@ use super::torque_free::{
 use crate::trig::small_sin_cos;
 
 /// Rows between two direct evaluations of the walk, chosen from the measured round-off growth of the recurrences
-/// (test `roundoff_growth_without_reanchoring_sets_the_anchor_interval`, docs/performance.md): for the benchmark
+/// (test `roundoff_growth_without_reanchoring_sets_the_anchor_interval`, docs/book/src/explanation/performance.md): for the benchmark
 /// body, never re-anchored, the attitude's difference from the direct evaluation grows with the number of rows r —
 /// at h = λ·every ≈ 0.004: 9.9e-15 rad after 256 rows, 2.9e-14 after 1000 and after 10⁴, 5.7e-14 after 10⁵ (ω: 8.8e-16,
 /// 4.6e-15, 4.6e-15, 1.1e-14); at h ≈ 0.04, about in proportion to r: 2.5e-15, 4.9e-15, 5.0e-14, 6.3e-13.

@@ -6,7 +6,7 @@
 //!
 //! The tableau is constant data and the stages are unrolled, so every coefficient is a compile-time constant:
 //! zero coefficients cost nothing and the combinations are straight-line code per component (see
-//! docs/integrators.md for what this costs).
+//! docs/book/src/explanation/integrators.md for what this costs).
 
 use nalgebra::SVector;
 
@@ -33,7 +33,7 @@ pub(crate) struct RkStep<const N: usize, const S: usize> {
 /// The stage arguments are y + Σ_j (a_ij h) k_j, added to y term by term; the solution is y plus the weighted sum of
 /// [`Increment`] (see [`weighted_sum`]).
 // Always inlined: where several systems instantiate it (the library behind the CLI), the compiler otherwise keeps it
-// out of line, returning the stages through memory, and a step costs up to ~1.7 × as much (docs/integrators.md).
+// out of line, returning the stages through memory, and a step costs up to ~1.7 × as much (docs/book/src/explanation/integrators.md).
 #[inline(always)]
 pub(crate) fn step<const N: usize, const S: usize, Sys: OdeSystem<N>>(
     sys: &mut Sys,

@@ -1,6 +1,6 @@
 //! Lie–Poisson splitting of the free rigid body into exact planar rotations, the applied moment as kicks: `split2`
 //! (Strang, order 2) and `split4` (Suzuki's fractal composition, order 4). Background, measurements and the work
-//! counters: docs/splitting.md.
+//! counters: docs/book/src/explanation/splitting.md.
 //!
 //! ```text
 //!   T = |H|²/(2I_r) + Σ_{i=a,c} kᵢHᵢ²/2,  kᵢ = 1/Iᵢ − 1/I_r      (Casimir splitting, the default)

@@ -6,6 +6,7 @@ mod checks;
 mod facts;
 mod file;
 mod model;
+pub mod reference;
 pub mod source_map;
 mod spec;
 mod template;

@@ -128,7 +128,7 @@ fn body(moments: [f64; 3], omega: [f64; 3], q0: UnitQuaternion<f64>) -> TorqueFr
 
 #[test]
 fn roundoff_growth_without_reanchoring_sets_the_anchor_interval() {
-    // The measurement behind ANCHOR_ROWS (docs/performance.md): the benchmark body on the grid of the oracle
+    // The measurement behind ANCHOR_ROWS (docs/book/src/explanation/performance.md): the benchmark body on the grid of the oracle
     // (every = 1e-3 s, h = λ·every ≈ 0.004) and on the benchmark grid (every = 0.01 s, h ≈ 0.04), never re-anchored,
     // against the direct evaluation: the error grows with the number of rows; re-anchored every ANCHOR_ROWS rows it
     // stays at the level of the first ANCHOR_ROWS rows.

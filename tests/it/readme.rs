@@ -1,6 +1,6 @@
-//! The outputs the README shows are the commands' outputs, so that they cannot go stale: the code block after a
-//! line `<!-- output of: eulerdyn ARGS -->` must be exactly what `eulerdyn ARGS` prints on stdout, run from the
-//! repository root. `EULERDYN_BLESS=1 cargo test --test readme` rewrites the blocks from the commands.
+//! The outputs the README and the book show are the commands' outputs, so that they cannot go stale: the code block
+//! after a line `<!-- output of: eulerdyn ARGS -->` must be exactly what `eulerdyn ARGS` prints on stdout, run from
+//! the repository root. `EULERDYN_BLESS=1 cargo test --test readme` rewrites the blocks from the commands.
 
 use crate::common::{eulerdyn, repo_path};
 
@@ -21,15 +21,15 @@ fn shown_outputs(lines: &[&str]) -> Vec<Shown> {
         };
         let args = rest
             .strip_suffix(" -->")
-            .unwrap_or_else(|| panic!("README.md:{}: the mark must end with ` -->`", i + 1));
+            .unwrap_or_else(|| panic!("line {}: the mark must end with ` -->`", i + 1));
         assert!(
             lines.get(i + 1).is_some_and(|l| l.starts_with("```")),
-            "README.md:{}: the mark must be followed by a code block",
+            "line {}: the mark must be followed by a code block",
             i + 1
         );
         let end = (i + 2..lines.len())
             .find(|&k| lines[k] == "```")
-            .unwrap_or_else(|| panic!("README.md:{}: the code block is not closed", i + 2));
+            .unwrap_or_else(|| panic!("line {}: the code block is not closed", i + 2));
         found.push(Shown {
             args: args.split_whitespace().map(str::to_string).collect(),
             lines: i + 2..end,
@@ -38,13 +38,16 @@ fn shown_outputs(lines: &[&str]) -> Vec<Shown> {
     found
 }
 
-#[test]
-fn the_readme_shows_what_the_commands_print() {
-    let path = repo_path("README.md");
-    let text = std::fs::read_to_string(&path).unwrap();
+/// The shown outputs of `path` that the commands no longer print (rewritten in place when blessing).
+fn stale_outputs(path: &std::path::Path) -> Vec<String> {
+    let name = path
+        .strip_prefix(repo_path(""))
+        .unwrap_or(path)
+        .display()
+        .to_string();
+    let text = std::fs::read_to_string(path).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     let shown = shown_outputs(&lines);
-    assert!(!shown.is_empty(), "no `{MARK}…-->` mark in README.md");
     let bless = std::env::var_os("EULERDYN_BLESS").is_some();
     let mut blessed: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
     let mut stale = Vec::new();
@@ -59,7 +62,7 @@ fn the_readme_shows_what_the_commands_print() {
         let printed: Vec<String> = out.stdout.lines().map(str::to_string).collect();
         if printed.as_slice() != &blessed[s.lines.clone()] {
             stale.push(format!(
-                "README.md:{}: `eulerdyn {}` now prints\n{}",
+                "{name}:{}: `eulerdyn {}` now prints\n{}",
                 s.lines.start + 1,
                 s.args.join(" "),
                 out.stdout
@@ -68,12 +71,42 @@ fn the_readme_shows_what_the_commands_print() {
         }
     }
     if bless && !stale.is_empty() {
-        std::fs::write(&path, blessed.join("\n") + "\n").unwrap();
-        return;
+        std::fs::write(path, blessed.join("\n") + "\n").unwrap();
+        return Vec::new();
     }
+    stale
+}
+
+/// README.md and the book's chapters (`docs/book/src`, where the README's sections went).
+fn documents() -> Vec<std::path::PathBuf> {
+    let mut files = vec![repo_path("README.md")];
+    let mut dirs = vec![repo_path("docs/book/src")];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "md") {
+                files.push(path);
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
+#[test]
+fn the_readme_shows_what_the_commands_print() {
+    let files = documents();
+    let marked = files.iter().any(|path| {
+        let text = std::fs::read_to_string(path).unwrap();
+        !shown_outputs(&text.lines().collect::<Vec<_>>()).is_empty()
+    });
+    assert!(marked, "no `{MARK}…-->` mark in README.md or the book");
+    let stale: Vec<String> = files.iter().flat_map(|path| stale_outputs(path)).collect();
     assert!(
         stale.is_empty(),
-        "{}\n(EULERDYN_BLESS=1 cargo test --test readme rewrites the README's blocks)",
+        "{}\n(EULERDYN_BLESS=1 cargo test --test readme rewrites the blocks)",
         stale.join("\n")
     );
 }

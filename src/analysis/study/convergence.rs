@@ -1,5 +1,5 @@
 //! Whether a run's error reached a target because its curve converges there, or by chance: the study names a run
-//! the cheapest to an error level only in the first case (`docs/accuracy_study.md`, "Convergence").
+//! the cheapest to an error level only in the first case (`docs/book/src/explanation/accuracy-study.md`, "Convergence").
 //!
 //! A curve is one method in one form on one backend; its completed runs are ordered from the loosest setting (the
 //! largest rtol or dt) to the tightest. A run of a curve with error ≤ ε **counts** for the target ε when

@@ -5,7 +5,7 @@
 //! form, or a tight DOP853 run), and its integration timed. The outcome is a [`Study`]: a table (one row per run,
 //! [`TABLE_COLUMNS`]), and a summary naming the cheapest method for each of [`TARGETS`] — among the runs whose
 //! curve converges there ([`convergence`]), so that a run reaching a target by chance is not named. How the sweep
-//! is chosen, what each measure means and how the time is taken: `docs/accuracy_study.md`.
+//! is chosen, what each measure means and how the time is taken: `docs/book/src/explanation/accuracy-study.md`.
 //!
 //! - this module: the options, the plan of runs, and [`accuracy`], which runs it;
 //! - `convergence`: whether a run counts for a target (its curve's error falls with the setting there);

@@ -1,0 +1,232 @@
+//! The reference tables, made from the code: the scene keys from `eulerdyn::scene::reference::keys()`, the CSV
+//! columns from `eulerdyn::sample`'s column sets, the commands' flags from their clap definitions (`--help`). Each
+//! sits in its book file between `<!-- generated: NAME … -->` and `<!-- end generated: NAME -->`.
+
+use eulerdyn::sample::{BASE_COLUMNS, Column, ColumnSet, rotor_columns};
+use eulerdyn::scene::reference::keys;
+
+use super::blessing;
+use crate::common::{eulerdyn, repo_path};
+
+/// A table cell: `|` escaped, empty as `–`.
+fn cell(text: &str) -> String {
+    if text.is_empty() {
+        "–".into()
+    } else {
+        text.replace('|', "\\|")
+    }
+}
+
+/// The key tables, one section per table of the file.
+pub(super) fn key_tables() -> String {
+    let mut out = String::new();
+    for table in keys() {
+        let header = if table.header.is_empty() {
+            "the top level"
+        } else {
+            table.header
+        };
+        out += &format!("\n### `{header}`\n\n{}.\n\n", table.about);
+        out += "| key | type | unit | default | measured from | meaning |\n|---|---|---|---|---|---|\n";
+        for k in table.keys {
+            let cells = [k.kind, k.unit, k.default, k.origin, k.doc].map(cell);
+            out += &format!("| `{}` | {} |\n", k.name, cells.join(" | "));
+        }
+    }
+    out
+}
+
+/// The axes a column is expressed in, from its meaning.
+fn axes(column: &Column) -> &'static str {
+    if column.meaning.contains("space axes") {
+        "space"
+    } else if column.meaning.contains("body axes") {
+        "body"
+    } else {
+        "–"
+    }
+}
+
+/// The column table: every column in the order a run writes them, with the `ColumnSet` field that adds it.
+pub(super) fn column_table() -> String {
+    let base = BASE_COLUMNS.to_vec();
+    let only = |set: ColumnSet| -> Vec<Column> {
+        (set.columns().into_iter())
+            .filter(|c| !base.contains(c))
+            .collect()
+    };
+    let none = ColumnSet::default();
+    let groups: Vec<(&str, Vec<Column>)> = vec![
+        ("always", base.clone()),
+        (
+            "`theta`",
+            only(ColumnSet {
+                theta: true,
+                ..none
+            }),
+        ),
+        (
+            "`force`",
+            only(ColumnSet {
+                force: true,
+                ..none
+            }),
+        ),
+        (
+            "`h_s_integrated`",
+            only(ColumnSet {
+                h_s_integrated: true,
+                ..none
+            }),
+        ),
+        (
+            "`support`",
+            only(ColumnSet {
+                support: true,
+                ..none
+            }),
+        ),
+        (
+            "`bearings`",
+            only(ColumnSet {
+                bearings: true,
+                ..none
+            }),
+        ),
+        (
+            "`potential`",
+            only(ColumnSet {
+                potential: true,
+                ..none
+            }),
+        ),
+        (
+            "`carrier`",
+            only(ColumnSet {
+                carrier: true,
+                ..none
+            }),
+        ),
+        ("`rotors`", rotor_columns(&["NAME".to_string()]).to_vec()),
+    ];
+    let all = ColumnSet::ALL.columns().len() + rotor_columns(&["NAME".to_string()]).len();
+    assert_eq!(
+        groups.iter().map(|(_, g)| g.len()).sum::<usize>(),
+        all,
+        "a column in no group"
+    );
+    let mut out =
+        String::from("\n| column | unit | axes | written | meaning |\n|---|---|---|---|---|\n");
+    for (group, columns) in &groups {
+        for c in columns {
+            out += &format!(
+                "| `{}` | {} | {} | {group} | {} |\n",
+                c.name,
+                cell(c.unit),
+                axes(c),
+                cell(c.meaning)
+            );
+        }
+    }
+    out
+}
+
+/// The subcommands `eulerdyn --help` lists.
+fn subcommands() -> Vec<String> {
+    let help = eulerdyn(["--help"]).stdout;
+    (help.lines())
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .map(String::from)
+        .collect()
+}
+
+/// Each command's help, as a shell session the console test runs too.
+pub(super) fn command_help() -> String {
+    let mut out = String::new();
+    for cmd in subcommands() {
+        let help = eulerdyn([cmd.as_str(), "--help"]);
+        assert_eq!(help.code, Some(0), "eulerdyn {cmd} --help: {}", help.stderr);
+        let text: Vec<&str> = help.stdout.lines().map(str::trim_end).collect();
+        out += &format!(
+            "\n## `eulerdyn {cmd}`\n\n```console\n$ eulerdyn {cmd} --help\n{}\n```\n",
+            text.join("\n")
+        );
+    }
+    out
+}
+
+/// Replaces the generated section `name` of `file` with `made`; the stale file's name when they differ.
+fn compare_or_bless(file: &str, name: &str, made: &str) -> Option<String> {
+    let path = repo_path(file);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let open = format!("<!-- generated: {name} ");
+    let close = format!("<!-- end generated: {name} -->");
+    let start = text
+        .find(&open)
+        .unwrap_or_else(|| panic!("{file}: no `{open}…-->`"));
+    let start = start + text[start..].find("-->").unwrap() + "-->".len();
+    let end = text
+        .find(&close)
+        .unwrap_or_else(|| panic!("{file}: no `{close}`"));
+    if text[start..end] == *made {
+        return None;
+    }
+    if blessing() {
+        std::fs::write(&path, format!("{}{made}{}", &text[..start], &text[end..])).unwrap();
+        return None;
+    }
+    Some(format!(
+        "{file}: the `{name}` section differs from the code"
+    ))
+}
+
+#[test]
+fn the_reference_tables_are_made_from_the_code() {
+    let stale: Vec<String> = [
+        (
+            "docs/book/src/reference/keys.md",
+            "keys",
+            key_tables() + "\n",
+        ),
+        (
+            "docs/book/src/reference/columns.md",
+            "columns",
+            column_table() + "\n",
+        ),
+        (
+            "docs/book/src/reference/commands.md",
+            "commands",
+            command_help() + "\n",
+        ),
+    ]
+    .iter()
+    .filter_map(|(file, name, made)| compare_or_bless(file, name, made))
+    .collect();
+    assert!(
+        stale.is_empty(),
+        "{}\n(EULERDYN_BLESS=1 cargo test --release --test it book rewrites them)",
+        stale.join("\n")
+    );
+}
+
+#[test]
+fn the_key_tables_name_every_table_of_a_scene() {
+    let made = key_tables();
+    for table in [
+        "[body]",
+        "[[body.rotor]]",
+        "[[effect]]",
+        "[[event]]",
+        "[solver]",
+    ] {
+        assert!(made.contains(&format!("`{table}`")), "{table}");
+    }
+    // The keys the hand-written table once left out.
+    for key in ["`interpolation`", "`crosses`", "`extremum`", "`file`"] {
+        assert!(made.contains(key), "{key}");
+    }
+}
