@@ -49,6 +49,7 @@
 //! - `view`: the 3D page ([`output::view`], with the embedded three.js);
 //! - `sweep`: sweeps and Monte Carlo over many scenes ([`analysis::sweep`], every core through rayon);
 //! - `cli`: the command line (needs the three above).
+//!
 //! ARCHITECTURE.md draws them and says where a new motion, effect, method or command goes.
 
 #![warn(missing_docs)]

@@ -12,12 +12,15 @@ pub struct Sample {
     pub q: UnitQuaternion<f64>,
     /// Angular velocity (rad/s).
     pub omega_b: Vector3<f64>,
+    /// Angular velocity in space axes (rad/s).
     pub omega_s: Vector3<f64>,
     /// Moment of momentum about the moment center (kg·m²/s).
     pub h_b: Vector3<f64>,
+    /// H in space axes.
     pub h_s: Vector3<f64>,
     /// Resultant external moment about the moment center (N·m).
     pub m_b: Vector3<f64>,
+    /// M in space axes.
     pub m_s: Vector3<f64>,
     /// Kinetic energy ½ ω·H (J).
     pub energy: f64,
@@ -43,11 +46,17 @@ pub const MAX_ROTORS: usize = 4;
 /// (before the limits) and the friction torque on the wheel (N·m).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RotorRows {
+    /// The number of wheels.
     pub n: usize,
+    /// Ω_k (rad/s).
     pub spin: [f64; MAX_ROTORS],
+    /// J_k(a_k·ω + Ω_k) (N·m·s).
     pub h: [f64; MAX_ROTORS],
+    /// τ_k applied (N·m).
     pub torque: [f64; MAX_ROTORS],
+    /// τ_k commanded (N·m).
     pub torque_cmd: [f64; MAX_ROTORS],
+    /// Friction torque on the wheel (N·m).
     pub friction: [f64; MAX_ROTORS],
 }
 
@@ -76,9 +85,13 @@ pub struct SupportLoads {
 /// The forces bearings A and B apply to the body (N): R_A + R_B = F_sup, r_A × R_A + r_B × R_B = M_sup⊥.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BearingLoads {
+    /// R_A in space axes.
     pub r_a_s: Vector3<f64>,
+    /// R_B in space axes.
     pub r_b_s: Vector3<f64>,
+    /// R_A in body axes.
     pub r_a_b: Vector3<f64>,
+    /// R_B in body axes.
     pub r_b_b: Vector3<f64>,
 }
 
@@ -109,8 +122,11 @@ pub struct ColumnSet {
 /// A column's name, unit and meaning.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Column {
+    /// The header.
     pub name: &'static str,
+    /// SI unit.
     pub unit: &'static str,
+    /// What it is (frame, point).
     pub meaning: &'static str,
 }
 

@@ -24,9 +24,19 @@ pub enum TorqueProfile {
     /// M(t) = value.
     Constant,
     /// M(t) = value · sin(2π f t + φ).
-    Sine { freq_hz: f64, phase_rad: f64 },
+    Sine {
+        /// f (Hz).
+        freq_hz: f64,
+        /// φ (rad).
+        phase_rad: f64,
+    },
     /// M(t) = value for t_on ≤ t < t_off, else 0.
-    Step { t_on: f64, t_off: f64 },
+    Step {
+        /// t_on (s).
+        t_on: f64,
+        /// t_off (s).
+        t_off: f64,
+    },
 }
 
 /// One effect of the scene's `[[effect]]` list, validated.
@@ -34,21 +44,31 @@ pub enum TorqueProfile {
 pub enum Effect {
     /// An applied torque (N·m), given in body or space axes, with a time profile.
     Torque {
+        /// The axes `value` is given in.
         frame: Axes,
+        /// The torque (N·m).
         value: Vector3<f64>,
+        /// Its time profile.
         profile: TorqueProfile,
     },
     /// Uniform gravity g (space axes, m/s²) acting at C while the body turns about a fixed pivot
     /// (body axes, relative to C); the pivot becomes the moment center.
     Gravity {
+        /// g (m/s², space axes).
         g_s: Vector3<f64>,
+        /// The pivot from C (m, body axes).
         pivot_b: Vector3<f64>,
     },
     /// Viscous damping M = −c ω (N·m·s).
-    Damping { c: f64 },
+    Damping {
+        /// c (N·m·s).
+        c: f64,
+    },
     /// A tabulated moment (N·m) in body or space axes, read from its file when the scene was validated.
     TorqueTable {
+        /// The axes of the table's moments.
         frame: Axes,
+        /// The table.
         table: Arc<TorqueTable>,
     },
     /// The user's own law ([`MomentLaw`]), named; added to a built scene by

@@ -379,8 +379,12 @@ mod tests {
 
     #[test]
     fn a_spreadsheet_s_bom_and_crlf_are_accepted() {
-        let plain = parse_rows("t,M_x,M_y,M_z\n0,1,2,3\n1,4,5,6\n").unwrap();
-        let saved = parse_rows("\u{feff}t,M_x,M_y,M_z\r\n0,1,2,3\r\n1,4,5,6\r\n").unwrap();
+        let plain = parse_rows("t,M_x,M_y,M_z\n0,1,2,3\n1,4,5,6\n", &TABLE_HEADER).unwrap();
+        let saved = parse_rows(
+            "\u{feff}t,M_x,M_y,M_z\r\n0,1,2,3\r\n1,4,5,6\r\n",
+            &TABLE_HEADER,
+        )
+        .unwrap();
         assert_eq!(saved, plain);
     }
 }

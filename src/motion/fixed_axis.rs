@@ -282,7 +282,9 @@ pub struct AxisRotation {
     pub q: UnitQuaternion<f64>,
     /// The unit axis u in space axes.
     pub u_s: Vector3<f64>,
+    /// ω in body axes (rad/s).
     pub omega_b: Vector3<f64>,
+    /// ω in space axes (rad/s).
     pub omega_s: Vector3<f64>,
     /// ω̇_s − θ̈ u = Ω̇_c + θ̇ Ω_c × u (space axes; zero without a carrier).
     pub bias_s: Vector3<f64>,

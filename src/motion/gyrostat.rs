@@ -75,6 +75,7 @@ pub struct Rotor {
     pub inertia: f64,
     /// Ω at t = 0, relative to the body (rad/s).
     pub spin0: f64,
+    /// What drives its relative spin.
     pub drive: Drive,
     /// Its imbalance, if any.
     pub imbalance: Option<Imbalance>,
@@ -86,10 +87,15 @@ pub struct Rotor {
 /// directions w2 (where the imbalance points at φ = 0) and w3 = a × w2, body axes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Imbalance {
+    /// U_s (kg·m).
     pub static_kgm: f64,
+    /// U_d (kg·m²).
     pub dynamic_kgm2: f64,
+    /// r, the wheel centre from the moment center (m).
     pub r_b: Vector3<f64>,
+    /// w2.
     pub w2_b: Vector3<f64>,
+    /// w3 = a × w2.
     pub w3_b: Vector3<f64>,
 }
 
@@ -143,6 +149,7 @@ impl Imbalance {
      about each wheel axis must exceed the wheels' J"
 )]
 pub struct WheelsOutsideBody {
+    /// The smallest principal moment left (kg·m²).
     pub smallest: f64,
 }
 
@@ -425,8 +432,11 @@ fn normalise_quaternion(y: &mut State) {
 /// Euler's equation of the gyrostat in the form `form` (module doc) under the external moment `moment`.
 #[derive(Debug, Clone)]
 pub struct GyrostatForm<'a, M: AppliedMoment> {
+    /// The body with its wheels.
     pub gyrostat: &'a Gyrostat,
+    /// The external moment.
     pub moment: M,
+    /// The form integrated.
     pub form: Form,
 }
 

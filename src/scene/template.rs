@@ -89,6 +89,7 @@ impl SceneTemplate {
                 Segment::Index(i) => fixed.index(*i),
             };
         }
+        let (key, fixed) = (dotted(key), dotted(&fixed));
         Some(format!(
             "`{key}` is not a key of the scene format: `{wrong}` is unknown there; the nearest valid key is \
              `{fixed}` (valid there: {})",
@@ -255,6 +256,17 @@ fn not_array(path: &str) -> String {
 
 fn not_table(path: &str) -> String {
     format!("`{path}` is an array: give an index (e.g. `{path}.0`)")
+}
+
+/// A key path as a sweep file writes it: `effect.0.c` (a [`KeyPath`] displays `effect[0].c`, as scene messages do).
+fn dotted(key: &KeyPath) -> String {
+    (key.segments().iter())
+        .map(|s| match s {
+            Segment::Key(name) => name.to_string(),
+            Segment::Index(i) => i.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(".")
 }
 
 #[cfg(test)]

@@ -7,7 +7,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct StribeckKeys {
+    /// N·m.
     pub torque: f64,
+    /// rad/s.
     pub speed: f64,
 }
 
@@ -16,10 +18,13 @@ pub struct StribeckKeys {
 #[serde(deny_unknown_fields)]
 pub struct FrictionKeys {
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// Coulomb level (N·m).
     pub coulomb: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// Viscous coefficient (N·m·s).
     pub viscous: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// Stribeck breakaway.
     pub stribeck: Option<StribeckKeys>,
 }
 
@@ -27,6 +32,7 @@ pub struct FrictionKeys {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum WheelMode {
+    /// No motor: the wheel spins freely.
     Free,
 }
 

@@ -43,6 +43,7 @@ where
 pub struct WheelTorqueLaw {
     /// What `check` and the sidecar call it.
     pub name: String,
+    /// The law.
     pub law: Arc<dyn WheelLaw>,
 }
 

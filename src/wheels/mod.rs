@@ -31,9 +31,13 @@ pub const RPM: f64 = std::f64::consts::PI / 30.0;
 /// A wheel's friction, validated (N·m, N·m·s, N·m and rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Friction {
+    /// c (N·m).
     pub coulomb: f64,
+    /// v (N·m·s).
     pub viscous: f64,
+    /// s (N·m).
     pub stribeck_torque: f64,
+    /// Ω_s (rad/s).
     pub stribeck_speed: f64,
 }
 
@@ -73,6 +77,7 @@ pub struct WheelControl {
     pub max_torque: f64,
     /// Ω_max (rad/s), on the relative spin.
     pub max_speed: f64,
+    /// Its friction.
     pub friction: Friction,
 }
 

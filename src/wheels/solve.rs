@@ -22,6 +22,7 @@ pub const STICK_SPEED: f64 = 1e-8;
 /// One wheel as the solve sees it (body axes).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Wheel {
+    /// The spin axis a (unit).
     pub axis_b: Vector3<f64>,
     /// J (kg·m²).
     pub inertia: f64,
@@ -31,16 +32,20 @@ pub struct Wheel {
     pub accel: Option<f64>,
     /// A driven wheel's motor torque after clipping (N·m).
     pub motor: f64,
+    /// Its limits and friction.
     pub control: WheelControl,
 }
 
 /// The accelerations and each wheel's motor and friction torques (N·m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WheelSolve {
+    /// ω̇ (rad/s², body axes).
     pub omega_dot_b: Vector3<f64>,
+    /// Ω̇_k (rad/s²).
     pub spin_dot: [f64; MAX_ROTORS],
     /// The motor torque applied (a prescribed wheel's: what its spin takes, less friction).
     pub motor: [f64; MAX_ROTORS],
+    /// The friction torque on each wheel (N·m).
     pub friction: [f64; MAX_ROTORS],
 }
 

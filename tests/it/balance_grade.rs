@@ -752,7 +752,7 @@ fn a_grade_needs_a_speed_and_one_shot_needs_bearings() {
     );
     // With --service-rpm it is judged at that speed.
     let result = fan_balance(&scene, &["--grade", "6.3", "--service-rpm", "1500"]);
-    let expect = "at 1500.00 rpm (157.080 rad/s, --service-rpm)";
+    let expect = "the service speed 1500.00 rpm (157.080 rad/s, --service-rpm)";
     assert!(
         result.expect_code(0).stdout.contains(expect),
         "{}",

@@ -241,8 +241,16 @@ fn the_suite_s_own_references_score_at_round_off() {
     for s in &scores {
         for m in &s.metrics {
             // The reference read back from its CSV (shortest round-trip digits): the same rows exactly, so
-            // nothing beyond the round-off of recomputing H and the energy from them.
-            assert!(m.largest < 1e-12, "{}: {m:?}", s.scene);
+            // nothing beyond the round-off of recomputing H and the energy from them. An event's time is the
+            // exception: theirs is located between rows 1/60 s apart by linear interpolation, whose error is
+            // second order in the row spacing (measured 1.98e-7 s for the racket's flip); 1e-6 s bounds it, five
+            // orders below the threshold of one frame.
+            let bound = if m.key.starts_with("event:") {
+                1e-6
+            } else {
+                1e-12
+            };
+            assert!(m.largest < bound, "{}: {m:?}", s.scene);
         }
     }
     let card = eulerdyn([

@@ -99,7 +99,9 @@ impl TolerancePlanes {
 /// A verdict against the grade asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Verdict {
+    /// Within the permissible residual unbalance.
     Pass,
+    /// Beyond it.
     Fail,
     /// A warning about the input (a likely unit slip) stands: no verdict is given.
     Unverified,
@@ -120,9 +122,13 @@ impl Verdict {
 /// tolerance planes used and their axial positions (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Judged {
+    /// The rotor's mass (kg).
     pub mass: f64,
+    /// Its centre of mass along the axis (m, from the axis point).
     pub z_c: f64,
+    /// The tolerance planes used.
     pub planes: TolerancePlanes,
+    /// Their axial positions (m).
     pub z: [f64; 2],
 }
 
@@ -135,9 +141,11 @@ pub struct Assessment {
     pub from_service_rpm: bool,
     /// The rotor's mass (kg) and its centre of mass along the axis (m, from the axis point).
     pub mass: f64,
+    /// Its centre of mass along the axis (m, from the axis point).
     pub z_c: f64,
     /// The tolerance planes and their axial positions (m).
     pub planes: TolerancePlanes,
+    /// Their axial positions (m).
     pub z: [f64; 2],
     /// The unbalance in the tolerance planes (g·mm), `[before, after]`.
     pub unbalance: [[f64; 2]; 2],
@@ -156,6 +164,7 @@ pub struct Target {
     pub grade: f64,
     /// U_per (g·mm) and its allotment to the tolerance planes A and B.
     pub u_per: f64,
+    /// U_per's shares in planes A and B (g·mm).
     pub u_per_planes: [f64; 2],
     /// Whether the unbalance is within U_per's shares before and after balancing.
     pub pass: [bool; 2],

@@ -32,6 +32,7 @@ use model::Rotor;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Request {
     /// The correction planes and radius.
+    /// The correction planes and radius.
     pub planes: Planes,
     /// `--grade G` (mm/s), > 0.
     pub grade: Option<f64>,
@@ -76,9 +77,11 @@ pub enum Source {
 pub struct Influence {
     /// The table file.
     pub table: PathBuf,
+    /// Where the coefficients came from (the measured table, or the model).
     pub source: Source,
     /// Rows of the table, and how many of them are trial runs.
     pub runs: usize,
+    /// How many of them are trial runs.
     pub trial_runs: usize,
     /// α: reading per gram at the radius R; row = sensor (A, B), column = plane (A, B).
     pub alpha: Matrix2<Phasor>,
@@ -86,6 +89,7 @@ pub struct Influence {
     pub condition: f64,
     /// The initial readings as measured (the mean of the initial runs) and as the fit gives them.
     pub measured_initial: Vector2<Phasor>,
+    /// The initial readings as the fit gives them.
     pub fitted_initial: Vector2<Phasor>,
     /// W = −α⁻¹ V⁰: the corrections, g at R, complex m·e^{iφ} (φ in the trial masses' convention).
     pub corrections_g: Vector2<Phasor>,
@@ -101,6 +105,7 @@ pub const CONDITION_WARNING: f64 = 100.0;
 pub struct Report {
     /// The scene file.
     pub scene_file: PathBuf,
+    /// The correction planes and radius.
     pub planes: Planes,
     /// The corrections applied (the model's, or the measured ones), the reference direction, the rotating
     /// reactions before and after, and the balanced scene.

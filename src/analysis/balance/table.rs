@@ -25,14 +25,18 @@ pub const HEADER: [&str; 8] = [
 /// One row: its line in the file, its `run` label and what it measured.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
+    /// Its line in the file (1 is the header).
     pub line: usize,
+    /// Its `run` label.
     pub label: String,
+    /// What it measured: an initial run or a trial in plane A or B.
     pub run: Run,
 }
 
 /// The rows of a measured table, checked: at least one initial run, and trials either in both planes or in none.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
+    /// The rows, in file order.
     pub rows: Vec<Row>,
 }
 
@@ -78,6 +82,12 @@ pub fn parse(path: &Path, text: &str) -> Result<Table, SceneError> {
         location: None,
         problem,
     };
+    // A spreadsheet's byte-order mark and CRLF line ends: made plain here, so that the reader's line numbers are
+    // the file's (the csv reader counts the first record after a CRLF header as line 1).
+    let text = text
+        .strip_prefix('\u{feff}')
+        .unwrap_or(text)
+        .replace("\r\n", "\n");
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .trim(csv::Trim::All)

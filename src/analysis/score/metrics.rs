@@ -38,12 +38,15 @@ pub struct Metric {
     pub key: String,
     /// The metric in words, with its unit.
     pub name: String,
+    /// The largest value over their rows.
     pub largest: f64,
     /// The time of the largest value (s).
     pub at: f64,
     /// The value at their last row (the last occurrence for an event).
     pub last: f64,
+    /// The stated threshold.
     pub threshold: f64,
+    /// Whether the largest value is within the threshold.
     pub passes: bool,
     /// What else there is to know (an event missing or extra).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -53,8 +56,11 @@ pub struct Metric {
 /// A metric's values at their times, for the figure.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
+    /// The metric's name.
     pub name: String,
+    /// Their times (s).
     pub t: Vec<f64>,
+    /// The metric at those times.
     pub values: Vec<f64>,
 }
 

@@ -28,8 +28,10 @@ pub const REFEREE_MARGIN: f64 = 100.0;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ScoreError {
     #[error("{0}")]
+    /// Bad input (exit 2): the message names file, row and column.
     Input(String),
     #[error("{0}")]
+    /// The reference run failed (exit 1).
     Run(String),
 }
 
@@ -40,6 +42,7 @@ pub struct Score {
     pub file: String,
     /// The scene's name.
     pub scene: String,
+    /// Their rows scored.
     pub rows: usize,
     /// Their last time (s).
     pub t_last: f64,
@@ -49,6 +52,7 @@ pub struct Score {
     pub reference_error: Option<ErrorEstimate>,
     /// Whether the referee is at least [`REFEREE_MARGIN`] × more accurate than every error it reports.
     pub referee_adequate: bool,
+    /// The metrics, each with its verdict.
     pub metrics: Vec<Metric>,
     /// Warnings from reading their file.
     pub warnings: Vec<String>,

@@ -24,13 +24,16 @@ pub const NORM_WARNED: f64 = 1e-12;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum QuaternionOrder {
     #[default]
+    /// Scalar first: (w, x, y, z).
     Wxyz,
+    /// Scalar last: (x, y, z, w).
     Xyzw,
 }
 
 /// How to read the file: the quaternion order, ω's axes, and `--map NAME=COLUMN` renames.
 #[derive(Debug, Clone, Default)]
 pub struct ReadOptions {
+    /// The order of the columns `q_0..q_3`.
     pub quaternion: QuaternionOrder,
     /// The axes of the `omega_x..z` columns (default body).
     pub omega: Option<Axes>,
@@ -49,15 +52,20 @@ const OMEGA: [&str; 3] = ["omega_x", "omega_y", "omega_z"];
 /// One row of their trajectory: time, attitude (body → space) and ω in body axes when given.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TheirRow {
+    /// Time (s).
     pub t: f64,
+    /// Attitude, body → space.
     pub q: UnitQuaternion<f64>,
+    /// ω in body axes (rad/s), when their file gives ω.
     pub omega_b: Option<Vector3<f64>>,
 }
 
 /// Their whole trajectory, with the warnings reading it gave.
 #[derive(Debug, Clone)]
 pub struct Trajectory {
+    /// Their rows, in time order.
     pub rows: Vec<TheirRow>,
+    /// What reading it warned of (e.g. quaternions normalised).
     pub warnings: Vec<String>,
 }
 

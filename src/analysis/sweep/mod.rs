@@ -38,8 +38,11 @@ pub const MAX_RUNS: u64 = 1 << 40;
 /// One varied key: as written, as a path, and its axis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Varied {
+    /// The key as written in the sweep file.
     pub name: String,
+    /// Its path in the scene.
     pub key: KeyPath,
+    /// Its values: a grid or a distribution.
     pub axis: Axis,
 }
 
@@ -74,7 +77,9 @@ impl std::fmt::Debug for Prepare {
 /// Which runs this process runs: those with `run % count == index − 1` (`--shard index/count`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Shard {
+    /// This shard, from 1.
     pub index: u64,
+    /// How many shards.
     pub count: u64,
 }
 

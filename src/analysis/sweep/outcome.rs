@@ -33,6 +33,7 @@ pub struct RunOutcome {
     pub run: u64,
     /// The varied keys' values, in the sweep file's order.
     pub values: Vec<f64>,
+    /// Whether the run was valid and finished.
     pub status: Status,
     /// Empty when ok.
     pub message: String,
@@ -40,6 +41,7 @@ pub struct RunOutcome {
     pub summary: Option<RunSummary>,
     /// Integrator steps and right-hand-side evaluations (0 unless ok).
     pub steps: u64,
+    /// Right-hand-side evaluations.
     pub evals: u64,
     /// Wall time of the run: making its scene, running it, summarising it (s).
     pub wall_s: f64,
@@ -54,9 +56,11 @@ pub struct RunSummary {
     pub max_f_sup_norm: Option<f64>,
     /// Largest |R_A|, |R_B| (N), where the scene places bearings.
     pub max_r_a_norm: Option<f64>,
+    /// Largest |R_B| (N).
     pub max_r_b_norm: Option<f64>,
     /// Largest |x(t) − x(0)| / |x(0)| of the energy and of |H|; `None` when x(0) = 0.
     pub energy_drift: Option<f64>,
+    /// The same for |H|.
     pub h_drift: Option<f64>,
     /// ω in body axes at the last row (rad/s).
     pub final_omega_b: [f64; 3],

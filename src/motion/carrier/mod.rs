@@ -46,8 +46,11 @@ pub struct Carrier {
 /// axes), and in a vehicle the acceleration a_A of the axis point A ([`Vehicle::accel_a_s`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CarrierMotion {
+    /// R_c, carrier → space.
     pub q_c: UnitQuaternion<f64>,
+    /// Ω_c (rad/s, space axes).
     pub omega_c_s: Vector3<f64>,
+    /// Ω̇_c (rad/s², space axes).
     pub omega_c_dot_s: Vector3<f64>,
     /// a_A (m/s², space axes); `None` without a vehicle (A fixed in space).
     pub accel_a_s: Option<Vector3<f64>>,

@@ -44,7 +44,9 @@ pub const TITLE_PX: f64 = pt_to_px(11.0);
 /// A figure's size in centimetres, as `--size W,H` gives it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FigureSize {
+    /// Width (cm).
     pub width_cm: f64,
+    /// Height (cm).
     pub height_cm: f64,
 }
 
@@ -85,7 +87,9 @@ impl FromStr for FigureSize {
 /// Panels in rows and columns.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Grid {
+    /// Panels across.
     pub columns: usize,
+    /// Panels down.
     pub rows: usize,
 }
 

@@ -258,13 +258,23 @@ impl FromStr for Panel {
 pub enum PlotError {
     /// The CSV cannot be used (bad input).
     #[error("{}: {problem}", file.display())]
-    Input { file: PathBuf, problem: String },
+    Input {
+        /// The file.
+        file: PathBuf,
+        /// What is wrong.
+        problem: String,
+    },
     /// A figure option (`--size`, `--title`, `--dpi`) cannot be used; the message names it (bad input).
     #[error("{0}")]
     Option(String),
     /// The figure could not be drawn or written.
     #[error("{}: {problem}", file.display())]
-    Output { file: PathBuf, problem: String },
+    Output {
+        /// The file.
+        file: PathBuf,
+        /// What failed.
+        problem: String,
+    },
 }
 
 impl From<CsvInputError> for PlotError {
@@ -289,7 +299,9 @@ impl PlotError {
 /// method and rows; `Some("")`: none), and the resolution of a PNG.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct FigureOptions {
+    /// The figure's size.
     pub size: Option<FigureSize>,
+    /// Its title.
     pub title: Option<String>,
     /// Pixels per inch of a PNG (default [`png::DEFAULT_DPI`]); an SVG has none, and is refused one.
     pub dpi: Option<f64>,
@@ -298,7 +310,9 @@ pub struct FigureOptions {
 /// The file format of a figure, by the output's extension: `.png` (any case) is PNG, anything else SVG.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FigureFormat {
+    /// SVG.
     Svg,
+    /// PNG.
     Png,
 }
 

@@ -29,10 +29,20 @@ use super::sidecar::Sidecar;
 pub enum ViewError {
     /// The CSV cannot be used, or the output file cannot be created (bad input, exit 2).
     #[error("{}: {problem}", file.display())]
-    Input { file: PathBuf, problem: String },
+    Input {
+        /// The file.
+        file: PathBuf,
+        /// What is wrong.
+        problem: String,
+    },
     /// The page could not be written (exit 1).
     #[error("{}: {problem}", file.display())]
-    Output { file: PathBuf, problem: String },
+    Output {
+        /// The file.
+        file: PathBuf,
+        /// What failed.
+        problem: String,
+    },
 }
 
 impl From<CsvInputError> for ViewError {
@@ -49,7 +59,9 @@ impl From<CsvInputError> for ViewError {
 pub struct ViewRun {
     /// The CSV's name, shown in the page.
     pub file: PathBuf,
+    /// The rows drawn.
     pub rows: Rows,
+    /// What the page draws of the body and its supports.
     pub geometry: Geometry,
     /// The run's located events, in time order (none for a CSV from stdin).
     pub events: Vec<EventRow>,

@@ -25,7 +25,9 @@ const LOADER_JS: &str = include_str!("../../../assets/view/loader.js");
 /// three.js (`build/three.core.js`, `build/three.module.js`, `examples/jsm/controls/OrbitControls.js`); see
 /// `assets/three/README.md` for the version.
 pub const THREE_CORE: &str = include_str!("../../../assets/three/three.core.js");
+/// three.js's module (`build/three.module.js`).
 pub const THREE_MODULE: &str = include_str!("../../../assets/three/three.module.js");
+/// OrbitControls (`examples/jsm/controls/OrbitControls.js`).
 pub const THREE_ORBIT: &str = include_str!("../../../assets/three/OrbitControls.js");
 
 /// Whether `text` can sit in an HTML `<script>` element as it is: it must not close the element (`</script`)

@@ -55,7 +55,12 @@ pub enum RotorDrive {
     SpinAccel(f64),
     /// `torque` (N·m) with a torque effect's `profile`: the motor torque on the wheel about its axis; the body
     /// feels its opposite.
-    Torque { value: f64, profile: ProfileSpec },
+    Torque {
+        /// τ (N·m).
+        value: f64,
+        /// Its time profile.
+        profile: ProfileSpec,
+    },
     /// `torque_table`: the motor torque commanded by a table (header `t,torque`), relative to the scene file.
     Table(std::path::PathBuf),
     /// `mode = "free"`: no motor, the wheel spins freely (friction only).

@@ -20,7 +20,12 @@ pub struct EventSpec {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ConditionSpec {
     /// `crosses = value`, `direction` (absent: both).
-    Crosses { value: f64, direction: Direction },
+    Crosses {
+        /// The value crossed.
+        value: f64,
+        /// Which crossings count.
+        direction: Direction,
+    },
     /// `extremum = "max" | "min"`.
     Extremum(Extremum),
 }

@@ -6,8 +6,11 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MotionKind {
+    /// `free`.
     Free,
+    /// `fixed_axis`.
     FixedAxis,
+    /// `hinge`.
     Hinge,
 }
 

@@ -107,9 +107,12 @@ pub(super) fn column_table() -> String {
                 ..none
             }),
         ),
-        ("`rotors`", rotor_columns(&["NAME".to_string()]).to_vec()),
+        (
+            "`rotors`",
+            rotor_columns(&["NAME".to_string()], true).to_vec(),
+        ),
     ];
-    let all = ColumnSet::ALL.columns().len() + rotor_columns(&["NAME".to_string()]).len();
+    let all = ColumnSet::ALL.columns().len() + rotor_columns(&["NAME".to_string()], true).len();
     assert_eq!(
         groups.iter().map(|(_, g)| g.len()).sum::<usize>(),
         all,
