@@ -835,6 +835,28 @@ fn output_lines(w: &mut Description, scene: &Scene) {
     );
 }
 
+/// A wheel's limits and friction, when it has any (`crate::wheels`).
+fn wheel_control(w: &mut Description, c: &crate::wheels::WheelControl) {
+    let mut parts = Vec::new();
+    if c.max_torque.is_finite() {
+        parts.push(format!("motor torque within +-{} N*m", c.max_torque));
+    }
+    if c.max_speed.is_finite() {
+        let rpm = c.max_speed / crate::wheels::RPM;
+        parts.push(format!("relative speed within +-{rpm} rpm"));
+    }
+    let f = &c.friction;
+    if f.is_some() {
+        parts.push(format!(
+            "friction: Coulomb {} N*m, viscous {} N*m*s, Stribeck {} N*m over {} rad/s (dissipates energy, keeps H)",
+            f.coulomb, f.viscous, f.stribeck_torque, f.stribeck_speed
+        ));
+    }
+    if !parts.is_empty() {
+        line(w, "", &parts.join("; "));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -909,27 +931,5 @@ mod tests {
         assert_eq!(for_people(2.5e7), "2.5e+07");
         assert_eq!(for_people(0.0), "0");
         assert_eq!(for_people(0.000123456789), "0.000123457");
-    }
-}
-
-/// A wheel's limits and friction, when it has any (`crate::wheels`).
-fn wheel_control(w: &mut Description, c: &crate::wheels::WheelControl) {
-    let mut parts = Vec::new();
-    if c.max_torque.is_finite() {
-        parts.push(format!("motor torque within +-{} N*m", c.max_torque));
-    }
-    if c.max_speed.is_finite() {
-        let rpm = c.max_speed / crate::wheels::RPM;
-        parts.push(format!("relative speed within +-{rpm} rpm"));
-    }
-    let f = &c.friction;
-    if f.is_some() {
-        parts.push(format!(
-            "friction: Coulomb {} N*m, viscous {} N*m*s, Stribeck {} N*m over {} rad/s (dissipates energy, keeps H)",
-            f.coulomb, f.viscous, f.stribeck_torque, f.stribeck_speed
-        ));
-    }
-    if !parts.is_empty() {
-        line(w, "", &parts.join("; "));
     }
 }

@@ -120,7 +120,7 @@ pub fn read_trajectory(
         _ => {
             return Err(input(format!(
                 "only some of the columns {} are present: give all three or none",
-                OMEGA.map(|n| column(n)).join(", ")
+                OMEGA.map(&column).join(", ")
             )));
         }
     };
