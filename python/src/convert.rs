@@ -1,15 +1,9 @@
-//! Rust values as Python values: vectors as tuples, TOML values (a balanced scene) and JSON values (a report) as
+//! Rust values as Python values: TOML values (a balanced scene) and JSON values (a report) as
 //! dicts and lists.
 
-use nalgebra::Vector3;
 use pyo3::IntoPyObjectExt;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-
-/// A 3-vector as a tuple (x, y, z).
-pub fn vec3(v: &Vector3<f64>) -> (f64, f64, f64) {
-    (v.x, v.y, v.z)
-}
 
 /// A TOML value as the Python value `tomllib` would give (a datetime as its text).
 pub fn toml_to_py<'py>(py: Python<'py>, value: &toml::Value) -> PyResult<Bound<'py, PyAny>> {

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use eulerdyn::output::plot::{self, FigureOptions, FigureSize, Panel, PlotError};
+use eulerdyn::output::plot::{FigureOptions, FigureSize, Panel, PlotError, read_run, render_svg};
 use eulerdyn::output::view::{ViewError, view_file};
 use eulerdyn::output::{WriteRunError, write_run};
 use eulerdyn::scene::{Overrides, SceneError};
@@ -56,8 +56,8 @@ pub fn plot(
             dpi: None,
         };
         let drawn = py.detach(|| {
-            let run = plot::read_run(&csv, &panels)?;
-            plot::render_svg(&run, &panels, &options, &csv.with_extension("svg"))
+            let run = read_run(&csv, &panels)?;
+            render_svg(&run, &panels, &options, &csv.with_extension("svg"))
         });
         drawn.map_err(|e| match e {
             PlotError::Input { file, problem } => input_error(py, file, problem),
