@@ -355,6 +355,9 @@ def balance(
     grade: Optional[float] = None,
     rpm: Optional[float] = None,
     measured: Optional[Union[str, "os.PathLike[str]"]] = None,
+    service_rpm: Optional[float] = None,
+    tolerance_planes: str = "bearings",
+    readings: str = "force",
 ) -> Dict[str, Any]:
     """Two-plane balancing of a fixed-axis or hinge scene, as ``eulerdyn balance SCENE --planes A,B --radius R``
     (with ``--grade``, ``--rpm``, ``--measured`` for the keywords of the same names).
@@ -364,7 +367,10 @@ def balance(
         planes: axial positions (A, B) of the correction planes, m from ``motion.point`` along the axis.
         radius: distance of the correction masses from the axis, m.
         grade: the balance grade G (mm/s, ISO 21940-11) to judge the rotor against.
-        rpm: the speed (r/min) for the grade and the one-shot coefficients, instead of the scene's rate.
+        rpm: the speed of the measured runs (r/min), for the one-shot coefficients.
+        service_rpm: the maximum service speed (r/min) the grade is judged at (default: the scene's rate).
+        tolerance_planes: ``"bearings"`` (ISO 21940-11's) or ``"correction"``.
+        readings: ``"force"`` (bearing forces in N, checked against the model) or ``"other"``.
         measured: the path of a table of measured 1x phasors (``run,trial_plane,trial_mass_g,trial_angle_deg,
             A_amp,A_phase_deg,B_amp,B_phase_deg``): balance by influence coefficients.
 
@@ -399,5 +405,8 @@ def balance(
             grade=grade,
             rpm=rpm,
             measured=None if measured is None else os.fspath(measured),
+            service_rpm=service_rpm,
+            tolerance_planes=tolerance_planes,
+            readings=readings,
         )
     )
