@@ -280,7 +280,9 @@ def sweep(
             base scene: a dict of its keys, or its path (relative to the working directory).
         jobs: threads (None: all cores).
         shard: ``"K/N"``: only the runs with ``run % N == K - 1`` (for N processes that split a sweep).
-        moment, moment_frame, wheel_torque: your own laws, acting in every run, as for :func:`run`.
+        moment: your own moment law f(t, q, omega_b) -> (M_x, M_y, M_z), acting in every run, as for :func:`run`.
+        moment_frame: the axes of ``moment``'s result (``"body"`` or ``"space"``), as for :func:`run`.
+        wheel_torque: your own wheel law f(t, q, omega_b, spins) -> one torque per wheel, as for :func:`run`.
 
     Returns:
         The results table, a row per run sorted by ``run``: ``run``, one column per varied key, ``status``

@@ -11,7 +11,7 @@ from conftest import SCENARIOS, run_cli
 
 def titles(svg: str) -> list:
     """The texts of the SVG (panel titles, legends, tick labels), in order."""
-    return re.findall(r"<text[^>]*>([^<]*)</text>", svg)
+    return [t.strip() for t in re.findall(r"<text[^>]*>([^<]*)</text>", svg)]
 
 
 def test_plot_of_a_scene_is_the_command_lines_figure(tmp_path):
