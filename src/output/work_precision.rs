@@ -10,7 +10,8 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::plot::{
-    Area, Curve, DrawResult, FONT, decade_label, decade_range, draw_curve, draw_legend_entry,
+    Area, Curve, DrawResult, FONT, PALETTE, decade_label, decade_range, draw_curve,
+    draw_legend_entry, svg_text,
 };
 use crate::analysis::study::{Study, TARGETS};
 use crate::frames::Form;
@@ -21,20 +22,6 @@ pub const ERROR_FLOOR: f64 = 1e-17;
 const WIDTH: u32 = 1200;
 const HEIGHT: u32 = 760;
 const LEGEND_WIDTH: i32 = 300;
-
-/// Colours of the curves, by method, in the order methods appear.
-const PALETTE: [RGBColor; 10] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
-    RGBColor(23, 190, 207),
-];
 
 /// The curves of a study, a method in one form each, points (log10 wall time, log10 error) sorted by time.
 fn curves(study: &Study) -> Vec<Curve> {
@@ -76,14 +63,7 @@ fn curves(study: &Study) -> Vec<Curve> {
 /// The figure of `study`, as SVG text; the error says what could not be drawn.
 pub fn render_svg(study: &Study) -> Result<String, String> {
     let curves = curves(study);
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (WIDTH, HEIGHT)).into_drawing_area();
-        draw(&root, study, &curves).map_err(|e| format!("cannot draw the figure: {e}"))?;
-        root.present()
-            .map_err(|e| format!("cannot draw the figure: {e}"))?;
-    }
-    Ok(svg)
+    svg_text((WIDTH, HEIGHT), |root| draw(root, study, &curves))
 }
 
 fn draw(root: &Area<'_>, study: &Study, curves: &[Curve]) -> DrawResult {

@@ -1,23 +1,16 @@
 //! The errors against time on a log scale: one curve per metric of a score (`score --plot`), or the attitude
 //! error of each scene of a suite (`score --suite … --plot`). Drawn with plotters' SVG backend through the
-//! figures' shared [`draw_curve`]; values below [`FLOOR`] (an exact 0) are drawn at it.
+//! figures' shared `draw_curve`; values below [`FLOOR`] (an exact 0) are drawn at it.
 
 use plotters::prelude::*;
 
 use super::Series;
-use crate::output::plot::{Area, Curve, DrawResult, FONT, decade_label, decade_range, draw_curve};
+use crate::output::plot::{
+    Area, Curve, DrawResult, FONT, PALETTE, decade_label, decade_range, draw_curve, svg_text,
+};
 
 /// The smallest value drawn.
 pub const FLOOR: f64 = 1e-17;
-
-const PALETTE: [RGBColor; 6] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-];
 
 /// The figure of `series` (their names label the curves) under `title`, as SVG text.
 pub fn render_svg(title: &str, series: &[Series]) -> Result<String, String> {
@@ -32,14 +25,7 @@ pub fn render_svg(title: &str, series: &[Series]) -> Result<String, String> {
                 .collect(),
         })
         .collect();
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (1000, 600)).into_drawing_area();
-        draw(&root, title, &curves).map_err(|e| format!("cannot draw the figure: {e}"))?;
-        root.present()
-            .map_err(|e| format!("cannot draw the figure: {e}"))?;
-    }
-    Ok(svg)
+    svg_text((1000, 600), |root| draw(root, title, &curves))
 }
 
 fn draw(root: &Area<'_>, title: &str, curves: &[Curve]) -> DrawResult {

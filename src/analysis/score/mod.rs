@@ -1,11 +1,12 @@
 //! `eulerdyn score`: another program's trajectory of a scene against eulerdyn's solution of it — the referee the
 //! engine comparisons lacked (Erez, Tassa & Todorov, ICRA 2015, could only measure drift).
 //!
-//! [`reader`] reads their CSV, [`reference`] computes the referee at their times (the closed form where one
+//! [`reader`] reads their CSV, [`reference`](mod@reference) computes the referee at their times (the closed form where one
 //! applies, else dop853 at rtol 1e-13 with its error estimated), [`metrics`] compares row by row — attitude
 //! angle, ω, energy, |H|, H's direction in space, event times — [`report`] prints, [`suite`] is the conformance
-//! suite (`eulerdyn suite`, `eulerdyn score --suite`), [`figure`] draws the errors against time.
+//! suite (`eulerdyn suite`, `eulerdyn score --suite`), `figure` (feature `plot`) draws the errors against time.
 
+#[cfg(feature = "plot")]
 pub mod figure;
 pub mod metrics;
 pub mod reader;

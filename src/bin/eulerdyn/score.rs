@@ -37,7 +37,7 @@ pub struct ScoreArgs {
         conflicts_with = "suite"
     )]
     pub scene: Option<PathBuf>,
-    /// Score an engine's outputs DIR/ENGINE/<scene>.csv against the suite written by `eulerdyn suite --out DIR`.
+    /// Score an engine's outputs DIR/ENGINE/SCENE.csv against the suite written by `eulerdyn suite --out DIR`.
     #[arg(
         long,
         value_name = "DIR",

@@ -26,6 +26,35 @@ pub(crate) type DrawResult = Result<(), DrawingAreaErrorKind<std::io::Error>>;
 pub(crate) type Chart<'a, 'b> =
     ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
+/// Ten colours told apart on screen and in print (matplotlib's `tab10`), in the order curves take them.
+pub(crate) const PALETTE: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+];
+
+/// The SVG text of a `size` (px) figure drawn by `draw`; the error says what could not be drawn.
+pub(crate) fn svg_text(
+    size: (u32, u32),
+    draw: impl FnOnce(&Area<'_>) -> DrawResult,
+) -> Result<String, String> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        draw(&root).map_err(|e| format!("cannot draw the figure: {e}"))?;
+        root.present()
+            .map_err(|e| format!("cannot draw the figure: {e}"))?;
+    }
+    Ok(svg)
+}
+
 /// Drawing units (SVG user units) per pixel: the SVG is drawn at this finer grid, its viewBox scaled down to the
 /// figure's size, so that curves are placed to a quarter pixel (plotters rounds coordinates to whole units).
 pub(crate) const DOT: i32 = 4;

@@ -33,7 +33,7 @@ use super::run_csv::CsvInputError;
 use super::ticks;
 
 pub(crate) use draw::{
-    Area, DrawResult, decade_label, decade_range, draw_curve, draw_legend_entry,
+    Area, DrawResult, PALETTE, decade_label, decade_range, draw_curve, draw_legend_entry, svg_text,
 };
 pub use layout::FigureSize;
 pub(crate) use panels::Curve;
