@@ -112,9 +112,9 @@ fn csv_writing(tmp: &Path) {
     let mut to_file = Vec::new();
     let path = tmp.join("io_bench_rows.csv");
     for _ in 0..5 {
-        to_sink.push(csv_rate(&rows, columns, passes, io::sink()));
+        to_sink.push(csv_rate(&rows, columns.clone(), passes, io::sink()));
         let file = File::create(&path).expect("the bench file is created");
-        to_file.push(csv_rate(&rows, columns, passes, file));
+        to_file.push(csv_rate(&rows, columns.clone(), passes, file));
     }
     let bytes = std::fs::metadata(&path).map(|m| m.len()).unwrap_or(0);
     let _ = std::fs::remove_file(&path);

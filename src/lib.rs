@@ -61,6 +61,8 @@ pub struct BookRustExamples;
 
 pub mod analysis;
 pub mod body;
+#[cfg(feature = "cli")]
+pub mod command;
 pub mod effects;
 pub mod events;
 pub mod exact;

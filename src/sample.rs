@@ -1,5 +1,7 @@
 //! One row of a run: the kinetic state and moment at a time, and which optional columns a run writes.
 
+use std::borrow::Cow;
+
 use nalgebra::{UnitQuaternion, Vector3};
 
 /// The state of the body at one output time. Vectors carry their frame in the name: `_b` body axes, `_s` space
@@ -36,6 +38,36 @@ pub struct Sample {
     pub potential: Option<f64>,
     /// With rotors: each wheel's relative spin, axial momentum and motor torque.
     pub rotors: Option<RotorRows>,
+}
+
+impl Sample {
+    /// The row of a body that only turns, from its attitude q (body → space), ω_b, H about the moment center in
+    /// both axes and the applied moment M in both axes: ω_s = R ω_b, energy T = ½ ω·H; no optional column.
+    pub fn rigid(
+        t: f64,
+        q: UnitQuaternion<f64>,
+        omega_b: Vector3<f64>,
+        (h_b, h_s): (Vector3<f64>, Vector3<f64>),
+        (m_b, m_s): (Vector3<f64>, Vector3<f64>),
+    ) -> Self {
+        Sample {
+            t,
+            q,
+            omega_b,
+            omega_s: q * omega_b,
+            h_b,
+            h_s,
+            m_b,
+            m_s,
+            energy: 0.5 * omega_b.dot(&h_b),
+            theta: None,
+            f_s: None,
+            h_s_integrated: None,
+            support: None,
+            potential: None,
+            rotors: None,
+        }
+    }
 }
 
 /// The most rotors a body may carry (a reaction-wheel pyramid has four).
@@ -96,7 +128,7 @@ pub struct BearingLoads {
 }
 
 /// Which optional columns a run writes (fixed for the whole run).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct ColumnSet {
     /// `theta`.
     pub theta: bool,
@@ -114,16 +146,16 @@ pub struct ColumnSet {
     /// `Omega_c_s_x,Omega_c_s_y,Omega_c_s_z`, after `M_sup_s_*` (a carrier's rate).
     pub carrier: bool,
     /// `<name>_spin,<name>_h,<name>_torque` per rotor, after all others ([`rotor_columns`]).
-    pub rotors: &'static [Column],
+    pub rotors: Vec<Column>,
     /// Each rotor's columns go on with `<name>_torque_cmd,<name>_friction` (wheels under control).
     pub wheels: bool,
 }
 
 /// A column's name, unit and meaning.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Column {
-    /// The header.
-    pub name: &'static str,
+    /// The header: fixed, or made from a rotor's name.
+    pub name: Cow<'static, str>,
     /// SI unit.
     pub unit: &'static str,
     /// What it is (frame, point).
@@ -132,7 +164,7 @@ pub struct Column {
 
 const fn col(name: &'static str, unit: &'static str, meaning: &'static str) -> Column {
     Column {
-        name,
+        name: Cow::Borrowed(name),
         unit,
         meaning,
     }
@@ -343,7 +375,7 @@ impl ColumnSet {
         bearings: true,
         potential: true,
         carrier: true,
-        rotors: &[],
+        rotors: Vec::new(),
         wheels: false,
     };
 
@@ -363,7 +395,7 @@ impl ColumnSet {
         for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
             cols.extend_from_slice(group);
         }
-        cols.extend_from_slice(self.rotors);
+        cols.extend_from_slice(&self.rotors);
         cols
     }
 
@@ -435,7 +467,7 @@ impl ColumnSet {
         match out.iter().position(|v| !v.is_finite()) {
             None => Ok(()),
             Some(i) => Err(NonFinite {
-                column: self.columns()[i].name,
+                column: self.columns()[i].name.to_string(),
                 value: out[i],
                 t: s.t,
             }),
@@ -444,11 +476,11 @@ impl ColumnSet {
 }
 
 /// A row with a non-finite value: its column, the value and the row's time.
-#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("non-finite value {value} in column {column} at t = {t}")]
 pub struct NonFinite {
     /// The column's name.
-    pub column: &'static str,
+    pub column: String,
     /// The value (NaN or infinite).
     pub value: f64,
     /// The row's time (s).
@@ -456,50 +488,33 @@ pub struct NonFinite {
 }
 
 /// The columns of rotors named `names`, in order: `<name>_spin` (rad/s), `<name>_h` (N·m·s), `<name>_torque`
-/// (N·m), and with `wheels` `<name>_torque_cmd` and `<name>_friction` (N·m). Column names are `'static`: each
-/// distinct list of names is made once per process and kept.
-pub fn rotor_columns(names: &[String], wheels: bool) -> &'static [Column] {
-    use std::collections::HashMap;
-    use std::sync::{Mutex, OnceLock};
-    type Made = HashMap<(Vec<String>, bool), &'static [Column]>;
-    static MADE: OnceLock<Mutex<Made>> = OnceLock::new();
-    let mut made = MADE
-        .get_or_init(Default::default)
-        .lock()
-        .unwrap_or_else(|poisoned| poisoned.into_inner());
-    made.entry((names.to_vec(), wheels)).or_insert_with(|| {
-        let named = |name: &str, suffix: &str| -> &'static str {
-            Box::leak(format!("{name}_{suffix}").into_boxed_str())
-        };
-        let columns: Vec<Column> = (names.iter())
-            .flat_map(|name| {
-                [
-                    col(
-                        named(name, "spin"),
-                        "rad/s",
-                        "rotor spin relative to the body",
-                    ),
-                    col(
-                        named(name, "h"),
-                        "N*m*s",
-                        "rotor's axial moment of momentum J (a.omega + spin)",
-                    ),
-                    col(named(name, "torque"), "N*m", "motor torque on the rotor"),
-                    col(
-                        named(name, "torque_cmd"),
-                        "N*m",
-                        "motor torque commanded (before the limits)",
-                    ),
-                    col(
-                        named(name, "friction"),
-                        "N*m",
-                        "friction torque on the rotor",
-                    ),
-                ]
-                .into_iter()
-                .take(if wheels { 5 } else { 3 })
-            })
-            .collect();
-        Box::leak(columns.into_boxed_slice())
-    })
+/// (N·m), and with `wheels` `<name>_torque_cmd` and `<name>_friction` (N·m).
+pub fn rotor_columns(names: &[String], wheels: bool) -> Vec<Column> {
+    const SUFFIXES: [(&str, &str, &str); 5] = [
+        ("spin", "rad/s", "rotor spin relative to the body"),
+        (
+            "h",
+            "N*m*s",
+            "rotor's axial moment of momentum J (a.omega + spin)",
+        ),
+        ("torque", "N*m", "motor torque on the rotor"),
+        (
+            "torque_cmd",
+            "N*m",
+            "motor torque commanded (before the limits)",
+        ),
+        ("friction", "N*m", "friction torque on the rotor"),
+    ];
+    let per_rotor = if wheels { 5 } else { 3 };
+    (names.iter())
+        .flat_map(|name| {
+            SUFFIXES[..per_rotor]
+                .iter()
+                .map(move |&(suffix, unit, meaning)| Column {
+                    name: Cow::Owned(format!("{name}_{suffix}")),
+                    unit,
+                    meaning,
+                })
+        })
+        .collect()
 }

@@ -65,10 +65,8 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
         d.set_item("t_end", solver.t_end)?;
         d.set_item("every", s.schedule.every())?;
         d.set_item("rows", s.schedule.len())?;
-        let columns: Vec<&str> = simulate::columns(&s)
-            .columns()
-            .iter()
-            .map(|c| c.name)
+        let columns: Vec<String> = (simulate::columns(&s).columns().into_iter())
+            .map(|c| c.name.into_owned())
             .collect();
         d.set_item("columns", columns)?;
         Ok(d)

@@ -144,7 +144,7 @@ pub fn run<'py>(
     wheel_torque: Option<Bound<'py, PyAny>>,
     rows: bool,
 ) -> PyResult<(
-    Vec<&'static str>,
+    Vec<String>,
     Bound<'py, PyBytes>,
     Bound<'py, PyDict>,
     Vec<EventRow>,
@@ -171,7 +171,9 @@ pub fn run<'py>(
             warn(py, format!("{}: {warning}", input.path.display()))?;
         }
         let columns = simulate::columns(&scene_model);
-        let names: Vec<&'static str> = columns.columns().iter().map(|c| c.name).collect();
+        let names: Vec<String> = (columns.columns().into_iter())
+            .map(|c| c.name.into_owned())
+            .collect();
         let (result, bytes) = py.detach(|| simulate_rows(&scene_model, &columns, rows));
         for (law, name, what) in &law {
             if let Some(failure) = law.failure() {

@@ -802,11 +802,9 @@ fn method_lines(w: &mut Description, scene: &Scene) -> String {
 fn output_lines(w: &mut Description, scene: &Scene) {
     let s = &scene.solver;
     let rows = scene.schedule.len();
-    let extra: Vec<&str> = simulate::columns(scene)
-        .columns()
-        .iter()
-        .skip(BASE_COLUMNS.len())
-        .map(|c| c.name)
+    let columns = simulate::columns(scene).columns();
+    let extra: Vec<&str> = (columns.iter().skip(BASE_COLUMNS.len()))
+        .map(|c| c.name.as_ref())
         .collect();
     line(
         w,

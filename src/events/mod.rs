@@ -55,7 +55,7 @@ impl Quantity {
             };
         }
         index(when).map(Quantity::Column).ok_or_else(|| {
-            let names: Vec<&str> = columns.iter().map(|c| c.name).collect();
+            let names: Vec<&str> = columns.iter().map(|c| c.name.as_ref()).collect();
             format!(
                 "\"{when}\" is not a column of this run; its columns are {}, and the norms {}",
                 names.join(", "),

@@ -458,11 +458,6 @@ impl SteadyPrecession {
         &self.top
     }
 
-    /// Precession rate Ω about the vertical.
-    pub fn precession_rate(&self) -> f64 {
-        self.rate
-    }
-
     /// Spin rate relative to the precessing frame, `ψ̇ = ω₃ − Ω cos θ`.
     pub fn spin_rate(&self) -> f64 {
         self.omega3 - self.rate * self.theta.cos()

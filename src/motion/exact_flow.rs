@@ -23,7 +23,6 @@ use nalgebra::{UnitQuaternion, Vector3};
 use crate::exact::{ExactError, TorqueFreeBody};
 use crate::frames::Form;
 use crate::integrate::{IntegrateError, Schedule, Stats};
-use crate::kinetics::kinetic_energy;
 use crate::motion::free::FreeBody;
 use crate::sample::Sample;
 
@@ -89,23 +88,8 @@ impl ExactFlow {
                 (self.body.inertia_inv_b() * h_b, h_b, h_s)
             }
         };
-        Sample {
-            t,
-            q,
-            omega_b,
-            omega_s: q * omega_b,
-            h_b,
-            h_s,
-            m_b: Vector3::zeros(),
-            m_s: Vector3::zeros(),
-            energy: kinetic_energy(&omega_b, &h_b),
-            theta: None,
-            f_s: None,
-            h_s_integrated: None,
-            support: None,
-            potential: None,
-            rotors: None,
-        }
+        let zero = Vector3::zeros();
+        Sample::rigid(t, q, omega_b, (h_b, h_s), (zero, zero))
     }
 
     /// Streams the row of every schedule time to `on_row`. A non-finite row (which the closed form does not

@@ -253,23 +253,6 @@ impl FixedAxis {
         self.inertia_s_derivative(angle.theta) * omega_s * angle.theta_dot
             + self.inertia_s(angle.theta) * omega_dot_s
     }
-
-    /// Position of C relative to A in space axes.
-    pub fn rho_c_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        self.attitude(angle.theta) * self.rho_c_b
-    }
-
-    /// Acceleration of C: a_C = α × ρ + ω × (ω × ρ), space axes (tangential and centripetal parts; A is fixed).
-    pub fn accel_c_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        let rotation =
-            (self.relative(angle.theta)).turning(&self.axis_b.into_inner(), angle.theta_dot);
-        self.accel_c_at(&rotation, angle.theta_ddot)
-    }
-
-    /// Required force on the body, F = m a_C (eq. 8.7), space axes.
-    pub fn force_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        self.accel_c_s(angle) * self.mass
-    }
 }
 
 /// The body's rotation at one time, in space: its attitude, the axis in space, ω in both axes and the part of ω̇

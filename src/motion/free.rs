@@ -340,23 +340,7 @@ pub fn free_sample(
     h_s: Vector3<f64>,
     m_b: Vector3<f64>,
 ) -> Sample {
-    Sample {
-        t,
-        q,
-        omega_b,
-        omega_s: q * omega_b,
-        h_b,
-        h_s,
-        m_b,
-        m_s: q * m_b,
-        energy: kinetic_energy(&omega_b, &h_b),
-        theta: None,
-        f_s: None,
-        h_s_integrated: None,
-        support: None,
-        potential: None,
-        rotors: None,
-    }
+    Sample::rigid(t, q, omega_b, (h_b, h_s), (m_b, q * m_b))
 }
 
 #[cfg(test)]

@@ -18,7 +18,8 @@ impl<W: Write> CsvWriter<W> {
     /// Starts the file with its header row.
     pub fn new(inner: W, columns: ColumnSet) -> io::Result<Self> {
         let mut out = BufWriter::with_capacity(1 << 16, inner);
-        let names: Vec<&str> = columns.columns().iter().map(|c| c.name).collect();
+        let header = columns.columns();
+        let names: Vec<&str> = header.iter().map(|c| c.name.as_ref()).collect();
         writeln!(out, "{}", names.join(","))?;
         Ok(Self {
             out,

@@ -83,7 +83,7 @@ pub fn write_run_with_events(
         file: path.to_path_buf(),
         problem: format!("cannot create the output file: {e}"),
     })?;
-    let mut writer = CsvWriter::new(csv_file.file(), columns).map_err(RunError::Sink)?;
+    let mut writer = CsvWriter::new(csv_file.file(), columns.clone()).map_err(RunError::Sink)?;
     let (report, events) = simulate::run_with_events(scene, |s| {
         progress(s.t);
         writer.write(s)

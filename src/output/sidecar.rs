@@ -179,7 +179,7 @@ impl Sidecar {
             columns: columns
                 .iter()
                 .map(|c| SidecarColumn {
-                    name: c.name.into(),
+                    name: c.name.to_string(),
                     unit: c.unit.into(),
                     meaning: c.meaning.into(),
                 })

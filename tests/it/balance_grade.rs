@@ -13,25 +13,27 @@ use eulerdyn::analysis::balance::{
 };
 use nalgebra::{Complex, Matrix2, Vector2};
 
-const FAN: &str = "scenarios/fan_rotor_g63.toml";
-const FAN_TABLE: &str = "scenarios/fan_rotor_measured.csv";
+pub const FAN: &str = "scenarios/fan_rotor_g63.toml";
+pub const FAN_TABLE: &str = "scenarios/fan_rotor_measured.csv";
 const FAN_INITIAL: &str = "scenarios/fan_rotor_initial.csv";
-const FAN_PLANES: Planes = Planes {
+pub const FAN_PLANES: Planes = Planes {
     a: -0.1,
     b: 0.08,
     radius: 0.25,
 };
-const HEADER: &str =
+pub const HEADER: &str =
     "run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,B_amp,B_phase_deg";
 
-fn close(actual: f64, expected: f64, rel: f64, what: &str) {
+/// |actual − expected| ≤ `rel` |expected|.
+pub fn close(actual: f64, expected: f64, rel: f64, what: &str) {
     assert!(
         (actual - expected).abs() <= rel * expected.abs(),
         "{what}: {actual} vs {expected} (rel {rel})"
     );
 }
 
-fn fan_text() -> String {
+/// The fan scenario's text.
+pub fn fan_text() -> String {
     std::fs::read_to_string(repo_path(FAN)).unwrap()
 }
 

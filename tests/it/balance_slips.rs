@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use crate::balance_grade::{FAN, FAN_PLANES, FAN_TABLE, HEADER, close, fan_text};
 use crate::common::{eulerdyn, repo_path, write_file};
 use eulerdyn::analysis::balance::influence::{self, Phasor, phasor};
 use eulerdyn::analysis::balance::iso::{self, Verdict};
@@ -12,27 +13,6 @@ use eulerdyn::analysis::balance::{
 };
 use nalgebra::Vector2;
 use serde_json::Value;
-
-const FAN: &str = "scenarios/fan_rotor_g63.toml";
-const FAN_TABLE: &str = "scenarios/fan_rotor_measured.csv";
-const FAN_PLANES: Planes = Planes {
-    a: -0.1,
-    b: 0.08,
-    radius: 0.25,
-};
-const HEADER: &str =
-    "run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,B_amp,B_phase_deg";
-
-fn close(actual: f64, expected: f64, rel: f64, what: &str) {
-    assert!(
-        (actual - expected).abs() <= rel * expected.abs(),
-        "{what}: {actual} vs {expected} (rel {rel})"
-    );
-}
-
-fn fan_text() -> String {
-    std::fs::read_to_string(repo_path(FAN)).unwrap()
-}
 
 /// `eulerdyn balance SCENE --planes P --radius R` with `extra` arguments, stdout as text (exit 0 expected).
 fn balance_text(scene: &Path, planes: &str, radius: &str, extra: &[&str]) -> String {

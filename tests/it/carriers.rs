@@ -20,57 +20,17 @@ use eulerdyn::scene::Overrides;
 use eulerdyn::simulate;
 use nalgebra::Vector3;
 
-use crate::common::{assert_refused_writing_nothing, eulerdyn, scene_from};
+use crate::common::{
+    DISK_BEARINGS as BEARINGS, DISK_M as M, DISK_SPIN as SPIN, assert_close_1e9 as close,
+    assert_refused_writing_nothing, disk_on_bearings, eulerdyn, rows_of as rows, scene_from,
+};
 use crate::invariant_axis::assert_equilibrium;
 
-const M: f64 = 2.0;
 const R: f64 = 0.3;
-const SPIN: f64 = 100.0;
-const BEARINGS: (f64, f64) = (-0.1, 0.15);
 
-/// A thin disk (symmetry axis body z) spinning at `SPIN` about its axis, which points along space x at t = 0,
-/// with bearings, in the carrier `carrier` (a TOML inline table).
+/// The disk of [`disk_on_bearings`] (radius `R`) in the carrier `carrier`.
 fn disk_in_carrier(carrier: &str, form: Form) -> String {
-    format!(
-        r#"name = "disk-in-carrier"
-[body]
-mass = {M}
-shape = {{ type = "thin_disk", radius = {R} }}
-[motion]
-type = "fixed_axis"
-axis = [0.0, 0.0, 1.0]
-axis_in_space = [1.0, 0.0, 0.0]
-rate = {SPIN}
-bearings = [{}, {}]
-carrier = {carrier}
-[solver]
-method = "dop853"
-frame = "{}"
-t_end = 4.0
-rtol = 1e-12
-atol = 1e-12
-[output]
-every = 0.05
-"#,
-        BEARINGS.0,
-        BEARINGS.1,
-        form.name()
-    )
-}
-
-fn rows(text: &str) -> Vec<Sample> {
-    let scene = scene_from(text, &Overrides::default());
-    simulate::samples(&scene)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .0
-}
-
-/// |a − b| ≤ 1e-9 |b| (plus 1e-9 · `scale` for components that pass through zero).
-fn close(a: &Vector3<f64>, b: &Vector3<f64>, scale: f64, what: &str, t: f64) {
-    assert!(
-        (a - b).norm() <= 1e-9 * (b.norm() + scale),
-        "{what} at t = {t}: {a} vs {b}"
-    );
+    disk_on_bearings("disk-in-carrier", R, carrier, ("", ""), form)
 }
 
 /// The disk's axis (body z) in space.

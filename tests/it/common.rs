@@ -222,3 +222,69 @@ pub fn assert_refused_writing_nothing(cases: &[(&str, String, &str)]) {
         );
     }
 }
+
+/// The mass (kg), spin (rad/s) and bearing positions along the axis (m) of [`disk_on_bearings`].
+pub const DISK_M: f64 = 2.0;
+/// See [`DISK_M`].
+pub const DISK_SPIN: f64 = 100.0;
+/// See [`DISK_M`].
+pub const DISK_BEARINGS: (f64, f64) = (-0.1, 0.15);
+
+/// A thin disk (mass [`DISK_M`], radius `radius`, symmetry axis body z along space x at t = 0) spinning at
+/// [`DISK_SPIN`] on bearings at [`DISK_BEARINGS`] along its axis, in the carrier `carrier` (a TOML inline table), solved by dop853
+/// at rtol = atol = 1e-12 for 4 s in `form`; `motion` and `effects` are further lines of `[motion]` and after it.
+pub fn disk_on_bearings(
+    name: &str,
+    radius: f64,
+    carrier: &str,
+    (motion, effects): (&str, &str),
+    form: eulerdyn::Form,
+) -> String {
+    format!(
+        r#"name = "{name}"
+[body]
+mass = {DISK_M}
+shape = {{ type = "thin_disk", radius = {radius} }}
+[motion]
+type = "fixed_axis"
+axis = [0.0, 0.0, 1.0]
+axis_in_space = [1.0, 0.0, 0.0]
+{motion}rate = {DISK_SPIN}
+bearings = [{}, {}]
+carrier = {carrier}
+{effects}[solver]
+method = "dop853"
+frame = "{}"
+t_end = 4.0
+rtol = 1e-12
+atol = 1e-12
+[output]
+every = 0.05
+"#,
+        DISK_BEARINGS.0,
+        DISK_BEARINGS.1,
+        form.name()
+    )
+}
+
+/// The rows of the scene `text`, simulated in memory.
+pub fn rows_of(text: &str) -> Vec<Sample> {
+    let scene = scene_from(text, &Overrides::default());
+    eulerdyn::simulate::samples(&scene)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .0
+}
+
+/// |a − b| ≤ 1e-9 (|b| + `scale`): relative to b, plus 1e-9 · `scale` for components that pass through zero.
+pub fn assert_close_1e9(
+    a: &nalgebra::Vector3<f64>,
+    b: &nalgebra::Vector3<f64>,
+    scale: f64,
+    what: &str,
+    t: f64,
+) {
+    assert!(
+        (a - b).norm() <= 1e-9 * (b.norm() + scale),
+        "{what} at t = {t}: {a} vs {b}"
+    );
+}

@@ -27,6 +27,7 @@ mod plot;
 mod properties;
 mod readme;
 mod rotors;
+mod scenario_csv;
 mod scene_errors;
 mod scene_fuzz;
 mod score;

@@ -22,62 +22,23 @@ use eulerdyn::scene::Overrides;
 use eulerdyn::simulate;
 use nalgebra::Vector3;
 
-use crate::common::{assert_refused_writing_nothing, eulerdyn, repo_path, scene_from};
+use crate::common::{
+    DISK_BEARINGS as BEARINGS, DISK_M as M, assert_close_1e9 as close,
+    assert_refused_writing_nothing, disk_on_bearings, eulerdyn, repo_path, rows_of as rows,
+    scene_from,
+};
 use crate::invariant_axis::assert_equilibrium;
 
-const M: f64 = 2.0;
 const G: f64 = 9.81;
-const SPIN: f64 = 100.0;
-const BEARINGS: (f64, f64) = (-0.1, 0.15);
 /// The axis point A from C along the axis (body z): C sits at s = −0.05 m on the axis from A.
 const POINT_Z: f64 = 0.05;
 
-/// A thin disk (radius 0.3 m, symmetry axis body z along space x at t = 0) spinning at `SPIN` on bearings, its axis
-/// point 0.05 m from C along the axis, with gravity, in the carrier `carrier` (a TOML inline table).
+/// The disk of [`disk_on_bearings`] (radius 0.3 m), its axis point 0.05 m from C along the axis, with gravity, in
+/// the carrier `carrier` (a TOML inline table).
 fn disk_in_vehicle(carrier: &str, form: Form) -> String {
-    format!(
-        r#"name = "disk-in-vehicle"
-[body]
-mass = {M}
-shape = {{ type = "thin_disk", radius = 0.3 }}
-[motion]
-type = "fixed_axis"
-axis = [0.0, 0.0, 1.0]
-axis_in_space = [1.0, 0.0, 0.0]
-point = [0.0, 0.0, {POINT_Z}]
-rate = {SPIN}
-bearings = [{}, {}]
-carrier = {carrier}
-[[effect]]
-type = "gravity"
-[solver]
-method = "dop853"
-frame = "{}"
-t_end = 4.0
-rtol = 1e-12
-atol = 1e-12
-[output]
-every = 0.05
-"#,
-        BEARINGS.0,
-        BEARINGS.1,
-        form.name()
-    )
-}
-
-fn rows(text: &str) -> Vec<Sample> {
-    let scene = scene_from(text, &Overrides::default());
-    simulate::samples(&scene)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .0
-}
-
-/// |a − b| ≤ 1e-9 (|b| + `scale`).
-fn close(a: &Vector3<f64>, b: &Vector3<f64>, scale: f64, what: &str, t: f64) {
-    assert!(
-        (a - b).norm() <= 1e-9 * (b.norm() + scale),
-        "{what} at t = {t}: {a} vs {b}"
-    );
+    let point = format!("point = [0.0, 0.0, {POINT_Z}]\n");
+    let gravity = "[[effect]]\ntype = \"gravity\"\n";
+    disk_on_bearings("disk-in-vehicle", 0.3, carrier, (&point, gravity), form)
 }
 
 /// The gravity moment about A, ρ × m g (ρ = C from A), the effects' whole moment in these scenes.

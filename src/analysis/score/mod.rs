@@ -4,8 +4,11 @@
 //! [`reader`] reads their CSV, [`reference`](mod@reference) computes the referee at their times (the closed form where one
 //! applies, else dop853 at rtol 1e-13 with its error estimated), [`metrics`] compares row by row — attitude
 //! angle, ω, energy, |H|, H's direction in space, event times — [`report`] prints, [`suite`] is the conformance
-//! suite (`eulerdyn suite`, `eulerdyn score --suite`), `figure` (feature `plot`) draws the errors against time.
+//! suite (`eulerdyn suite`, `eulerdyn score --suite`), `figure` (feature `plot`) draws the errors against time, `command` (feature `cli`) is
+//! `eulerdyn score` and `eulerdyn suite`.
 
+#[cfg(feature = "cli")]
+pub mod command;
 #[cfg(feature = "plot")]
 pub mod figure;
 pub mod metrics;

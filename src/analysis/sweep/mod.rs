@@ -263,7 +263,7 @@ impl Sweep {
             Err(message) => return outcome(Status::Invalid, message, None, (0, 0)),
         };
         let columns = simulate::columns(&scene);
-        let mut summarizer = Summarizer::new(columns, &self.layout.summary);
+        let mut summarizer = Summarizer::new(&columns, &self.layout.summary);
         let mut rows: Vec<Sample> = Vec::new();
         let result = simulate::run_with_events(&scene, |s: &Sample| {
             summarizer.add(s);
@@ -389,7 +389,8 @@ fn layout(
         .ok()
         .and_then(|spec| spec.build().ok())
         .map_or(ColumnSet::ALL, |scene| simulate::columns(&scene));
-    let names: Vec<&str> = columns.columns().iter().map(|c| c.name).collect();
+    let columns = columns.columns();
+    let names: Vec<&str> = columns.iter().map(|c| c.name.as_ref()).collect();
     if let Some(unknown) = summary.iter().find(|c| !names.contains(&c.as_str())) {
         return Err(format!(
             "`{unknown}` is not a column of this scene's CSV; its columns are: {}",

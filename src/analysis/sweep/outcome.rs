@@ -103,14 +103,14 @@ fn relative(x: f64, x0: f64) -> Option<f64> {
 
 impl Summarizer {
     /// A summarizer for a run with these columns, reporting the named `[summary]` columns.
-    pub fn new(columns: ColumnSet, summary_columns: &[String]) -> Self {
+    pub fn new(columns: &ColumnSet, summary_columns: &[String]) -> Self {
         let names = columns.columns();
         let wanted = summary_columns
             .iter()
-            .map(|want| names.iter().position(|c| c.name == want))
+            .map(|want| names.iter().position(|c| c.name == want.as_str()))
             .collect();
         Self {
-            columns,
+            columns: columns.clone(),
             wanted,
             row: Vec::new(),
             first: None,

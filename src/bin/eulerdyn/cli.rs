@@ -9,11 +9,10 @@ use clap::{Args, Parser, Subcommand};
 
 use crate::balance::{BalanceArgs, balance_command};
 use crate::progress::{self, Progress};
-use crate::score::{ScoreArgs, SuiteArgs, score_command, suite_command};
 use crate::sweep::{SweepArgs, SweepFailure, sweep_command};
 use crate::view::{ViewArgs, view_command};
 use eulerdyn::analysis::describe;
-use eulerdyn::analysis::score::ScoreError;
+use eulerdyn::command::{Capabilities, Command as _, CommandError};
 use eulerdyn::events::Occurrence;
 use eulerdyn::output::events_file::{events_path, events_table};
 use eulerdyn::output::plot::{self, Panel, PlotError};
@@ -101,17 +100,9 @@ pub enum Command {
         after_help = "Example:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn view disk.csv -o disk.html     then open disk.html in a browser\n\nThe body's shape comes from the sidecar disk.csv.meta.json; without it the body is drawn as a cube.\nRuns of more than 10000 rows are decimated for the page (the page and the README say which rows are kept)."
     )]
     View(ViewArgs),
-    /// Score another program's trajectory of a scene against eulerdyn's exact solution (or dop853 at rtol 1e-13):
-    /// attitude, omega, energy, |H|, H's direction and event times, each against a stated threshold; exit 1 when
-    /// one fails. With --suite DIR --engine NAME: an engine's report card on the conformance suite.
-    #[command(
-        after_help = "Examples:\n  eulerdyn score theirs.csv --scene scenarios/tennis_racket.toml\n  eulerdyn score rapier.csv --scene s.toml --quaternion xyzw --omega space --map q_0=qx --map q_1=qy --map q_2=qz --map q_3=qw\n  eulerdyn suite --out suite && eulerdyn score --suite suite --engine mujoco_rk4"
-    )]
-    Score(ScoreArgs),
-    /// Write the conformance suite: six scenes, each with its reference trajectory at 60 Hz, its adapter setup
-    /// (JSON) and a note of what it tests.
-    #[command(after_help = "Example:\n  eulerdyn suite --out suite")]
-    Suite(SuiteArgs),
+    /// The commands that live in a capability's folder ([`Capabilities`]).
+    #[command(flatten)]
+    Capability(Capabilities),
 }
 
 #[derive(Debug, Args)]
@@ -199,11 +190,11 @@ enum Failure {
     Run(String),
 }
 
-impl From<ScoreError> for Failure {
-    fn from(e: ScoreError) -> Self {
+impl From<CommandError> for Failure {
+    fn from(e: CommandError) -> Self {
         match e {
-            ScoreError::Input(m) => Failure::Input(m),
-            ScoreError::Run(m) => Failure::Run(m),
+            CommandError::Input(m) => Failure::Input(m),
+            CommandError::Run(m) => Failure::Run(m),
         }
     }
 }
@@ -234,8 +225,7 @@ pub fn main() -> ExitCode {
             .and_then(|text| print_stdout(&text)),
         Command::Sweep(args) => sweep(&args, quiet),
         Command::View(args) => view(&args, quiet),
-        Command::Score(args) => score_command(&args, quiet).map_err(Failure::from),
-        Command::Suite(args) => suite_command(&args, quiet).map_err(Failure::from),
+        Command::Capability(c) => c.run(quiet).map_err(Failure::from),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -6,7 +6,6 @@ mod balance;
 mod cli;
 mod interrupt;
 mod progress;
-mod score;
 mod sweep;
 mod view;
 

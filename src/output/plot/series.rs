@@ -59,7 +59,7 @@ pub struct RunSeries {
     /// Smallest and largest t.
     pub(super) t_range: (f64, f64),
     /// Curves by column name.
-    columns: Vec<(&'static str, Decimator)>,
+    columns: Vec<(String, Decimator)>,
     pub(super) drifts: Vec<Drift>,
     /// |R_A|, |R_B| (bearings panel) and |F_sup| (support panel).
     pub(super) norms: Vec<Norm>,
@@ -90,7 +90,7 @@ fn norm_prefixes(panel: Panel) -> &'static [&'static str] {
 
 impl RunSeries {
     /// No rows yet: a curve for each wanted column after t, and the derived curves of `panels`.
-    fn new(file: &Path, wanted: &[&'static str], panels: &[Panel]) -> Self {
+    fn new(file: &Path, wanted: &[&str], panels: &[Panel]) -> Self {
         let drifts = if panels.contains(&Panel::Drift) {
             ["H_norm", "energy", "energy_total", "H_s_z"]
                 .into_iter()
@@ -129,7 +129,10 @@ impl RunSeries {
             file: file.to_path_buf(),
             rows: 0,
             t_range: (f64::INFINITY, f64::NEG_INFINITY),
-            columns: wanted[1..].iter().map(|&c| (c, Decimator::new())).collect(),
+            columns: wanted[1..]
+                .iter()
+                .map(|&c| (c.to_string(), Decimator::new()))
+                .collect(),
             drifts,
             norms,
             scene: None,
@@ -266,14 +269,16 @@ fn read_rows(
              the wheel_spin and wheel_torque panels draw)",
         ));
     }
-    let mut wanted = wanted_columns(&panels, |c| csv.index_of(c).is_some());
-    if wheel_panels {
-        let controlled =
-            (wheels.iter()).all(|n| csv.index_of(&format!("{n}_torque_cmd")).is_some());
-        (rotor_columns(&wheels, controlled).iter())
-            .filter(|c| !c.name.ends_with("_h") && !c.name.ends_with("_friction"))
-            .for_each(|c| wanted.push(c.name));
-    }
+    let controlled = (wheels.iter()).all(|n| csv.index_of(&format!("{n}_torque_cmd")).is_some());
+    let wheel_columns = if wheel_panels {
+        rotor_columns(&wheels, controlled)
+    } else {
+        Vec::new()
+    };
+    let mut wanted: Vec<&str> = wanted_columns(&panels, |c| csv.index_of(c).is_some());
+    (wheel_columns.iter())
+        .filter(|c| !c.name.ends_with("_h") && !c.name.ends_with("_friction"))
+        .for_each(|c| wanted.push(&c.name));
     let index = column_indices(&csv, &wanted, &panels)?;
     let mut series = RunSeries::new(&file, &wanted, &panels);
     series.wheels = wheels;
@@ -313,7 +318,7 @@ fn wanted_columns(panels: &[Panel], present: impl Fn(&str) -> bool) -> Vec<&'sta
 /// The index in the header of each wanted column; a missing column is refused with the panels that need it.
 fn column_indices(
     csv: &RunCsvReader<impl Read>,
-    wanted: &[&'static str],
+    wanted: &[&str],
     panels: &[Panel],
 ) -> Result<Vec<usize>, PlotError> {
     let mut missing: Vec<(&str, Vec<&str>)> = Vec::new();

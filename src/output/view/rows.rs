@@ -44,11 +44,11 @@ pub const OPTIONAL: [[&str; 3]; 2] = [
 
 /// The wheels' axial momentum columns `<name>_h`, in the header's order, of the rotors whose three columns
 /// (`<name>_spin`, `<name>_h`, `<name>_torque`, [`rotor_columns`]) the CSV has.
-fn rotor_momentum_columns(csv: &RunCsvReader<impl Read>) -> Vec<&'static str> {
+fn rotor_momentum_columns(csv: &RunCsvReader<impl Read>) -> Vec<String> {
     let names = csv.rotor_names();
-    (rotor_columns(&names, false).iter())
+    (rotor_columns(&names, false).into_iter())
         .filter(|c| c.name.ends_with("_h"))
-        .map(|c| c.name)
+        .map(|c| c.name.into_owned())
         .collect()
 }
 
@@ -56,7 +56,7 @@ fn rotor_momentum_columns(csv: &RunCsvReader<impl Read>) -> Vec<&'static str> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rows {
     /// The columns of each kept row, in order.
-    pub columns: Vec<&'static str>,
+    pub columns: Vec<String>,
     /// The kept rows, one after another (`columns.len()` values each).
     pub values: Vec<f64>,
     /// Data rows in the CSV.
@@ -172,13 +172,14 @@ pub fn read_rows(mut csv: RunCsvReader<impl Read>, max: usize) -> Result<Rows, C
             ),
         ));
     }
-    let mut columns: Vec<&'static str> = REQUIRED.to_vec();
+    let momentum_columns = rotor_momentum_columns(&csv);
+    let mut columns: Vec<&str> = REQUIRED.to_vec();
     for group in OPTIONAL {
         if group.iter().all(|c| csv.index_of(c).is_some()) {
             columns.extend(group);
         }
     }
-    columns.extend(rotor_momentum_columns(&csv));
+    columns.extend(momentum_columns.iter().map(String::as_str));
     let index: Vec<usize> = columns.iter().filter_map(|c| csv.index_of(c)).collect();
     let mut keeper = RowKeeper::new(columns.len(), max);
     let mut values = vec![0.0; columns.len()];
@@ -193,7 +194,7 @@ pub fn read_rows(mut csv: RunCsvReader<impl Read>, max: usize) -> Result<Rows, C
         ));
     }
     Ok(Rows {
-        columns,
+        columns: columns.into_iter().map(str::to_string).collect(),
         values,
         rows_in_run,
         stride,

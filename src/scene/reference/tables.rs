@@ -22,6 +22,26 @@ const fn key(
     }
 }
 
+/// A table's keys: `key(…)` expressions, and `@sine` (`freq_hz`, `phase_deg`) or `@step` (`t_on`, `t_off`), the
+/// keys of a time profile that the torque effect, the rotor's motor and the carrier share.
+macro_rules! keys {
+    (@list [$($done:expr,)*]) => { &[$($done,)*] };
+    (@list [$($done:expr,)*] @sine, $($rest:tt)*) => {
+        keys!(@list [$($done,)*
+            key("freq_hz", "number", "Hz", "required for `sine`", "", "≥ 0"),
+            key("phase_deg", "number", "deg", "0", "", "`sine` only"),
+        ] $($rest)*)
+    };
+    (@list [$($done:expr,)*] @step, $($rest:tt)*) => {
+        keys!(@list [$($done,)*
+            key("t_on", "number", "s", "0", "", "`step` only"),
+            key("t_off", "number", "s", "never", "", "`step` only; > t_on"),
+        ] $($rest)*)
+    };
+    (@list [$($done:expr,)*] $next:expr, $($rest:tt)*) => { keys!(@list [$($done,)* $next,] $($rest)*) };
+    ($($items:tt)*) => { keys!(@list [] $($items)*) };
+}
+
 /// Where a position in body axes is measured from.
 const FROM_REFERENCE: &str =
     "the reference origin (the shape's center, or the point `inertia` is about), body axes";
@@ -211,7 +231,7 @@ pub(super) const TABLES: [Table; 13] = [
     Table {
         header: "[[body.rotor]]",
         about: "a wheel spinning inside the body about an axis fixed in it (free motion or a pivot only)",
-        keys: &[
+        keys: keys![
             key(
                 "name",
                 "string",
@@ -268,10 +288,8 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "the motor torque's profile, as a torque effect's",
             ),
-            key("freq_hz", "number", "Hz", "required for `sine`", "", "≥ 0"),
-            key("phase_deg", "number", "deg", "0", "", "`sine` only"),
-            key("t_on", "number", "s", "0", "", "`step` only"),
-            key("t_off", "number", "s", "never", "", "`step` only; > t_on"),
+            @sine,
+            @step,
             key(
                 "torque_table",
                 "path",
@@ -428,7 +446,7 @@ pub(super) const TABLES: [Table; 13] = [
     Table {
         header: "[motion.carrier]",
         about: "a carrier turning the axis, its point and bearings at Ω_c = rate·p(t), space axes, about the axis point",
-        keys: &[
+        keys: keys![
             key("rate", "[x, y, z]", "rad/s", "required", "", "space axes"),
             key(
                 "profile",
@@ -438,8 +456,7 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "p = 1, or sin(2π freq_hz t + phase_deg)",
             ),
-            key("freq_hz", "number", "Hz", "required for `sine`", "", "≥ 0"),
-            key("phase_deg", "number", "deg", "0", "", "`sine` only"),
+            @sine,
             key(
                 "center",
                 "[x, y, z]",
@@ -499,7 +516,7 @@ pub(super) const TABLES: [Table; 13] = [
     Table {
         header: "[[effect]]",
         about: "a moment on the body; any number, at most one gravity",
-        keys: &[
+        keys: keys![
             key(
                 "type",
                 "\"torque\" | \"gravity\" | \"damping\" | \"torque_table\"",
@@ -532,10 +549,8 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off",
             ),
-            key("freq_hz", "number", "Hz", "required for `sine`", "", "≥ 0"),
-            key("phase_deg", "number", "deg", "0", "", "`sine` only"),
-            key("t_on", "number", "s", "0", "", "`step` only"),
-            key("t_off", "number", "s", "never", "", "`step` only; > t_on"),
+            @sine,
+            @step,
             key(
                 "g",
                 "[x, y, z]",

@@ -62,49 +62,49 @@ pub(super) fn column_table() -> String {
             "`theta`",
             only(ColumnSet {
                 theta: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (
             "`force`",
             only(ColumnSet {
                 force: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (
             "`h_s_integrated`",
             only(ColumnSet {
                 h_s_integrated: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (
             "`support`",
             only(ColumnSet {
                 support: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (
             "`bearings`",
             only(ColumnSet {
                 bearings: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (
             "`potential`",
             only(ColumnSet {
                 potential: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (
             "`carrier`",
             only(ColumnSet {
                 carrier: true,
-                ..none
+                ..none.clone()
             }),
         ),
         (

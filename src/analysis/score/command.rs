@@ -1,29 +1,64 @@
 //! `eulerdyn score` (another program's trajectory against the referee) and `eulerdyn suite` (the conformance
-//! suite): arguments and printing over [`eulerdyn::analysis::score`].
+//! suite): their arguments and printing, registered in [`crate::command::Capabilities`].
 
 use std::path::{Path, PathBuf};
 
-use clap::{Args, ValueEnum};
+use clap::{Args, Subcommand, ValueEnum};
 
-use eulerdyn::analysis::score::{
-    self, QuaternionOrder, ReadOptions, Score, ScoreError, Series, figure, report, suite,
-};
-use eulerdyn::frames::Axes;
-use eulerdyn::output::AtomicFile;
-use eulerdyn::scene::{self, Overrides};
+use super::{QuaternionOrder, ReadOptions, Score, ScoreError, Series, figure, report, suite};
+use crate::command::{Command, CommandError};
+use crate::frames::Axes;
+use crate::output::AtomicFile;
+use crate::scene::{self, Overrides};
 
+/// The commands of scoring.
+#[derive(Debug, Subcommand)]
+pub enum Commands {
+    /// Score another program's trajectory of a scene against eulerdyn's exact solution (or dop853 at rtol 1e-13):
+    /// attitude, omega, energy, |H|, H's direction and event times, each against a stated threshold; exit 1 when
+    /// one fails. With --suite DIR --engine NAME: an engine's report card on the conformance suite.
+    #[command(
+        after_help = "Examples:\n  eulerdyn score theirs.csv --scene scenarios/tennis_racket.toml\n  eulerdyn score rapier.csv --scene s.toml --quaternion xyzw --omega space --map q_0=qx --map q_1=qy --map q_2=qz --map q_3=qw\n  eulerdyn suite --out suite && eulerdyn score --suite suite --engine mujoco_rk4"
+    )]
+    Score(ScoreArgs),
+    /// Write the conformance suite: six scenes, each with its reference trajectory at 60 Hz, its adapter setup
+    /// (JSON) and a note of what it tests.
+    #[command(after_help = "Example:\n  eulerdyn suite --out suite")]
+    Suite(SuiteArgs),
+}
+
+impl Command for Commands {
+    fn run(&self, quiet: bool) -> Result<(), CommandError> {
+        match self {
+            Commands::Score(args) => score_command(args, quiet),
+            Commands::Suite(args) => suite_command(args, quiet),
+        }
+        .map_err(|e| match e {
+            ScoreError::Input(m) => CommandError::Input(m),
+            ScoreError::Run(m) => CommandError::Run(m),
+        })
+    }
+}
+
+/// The order of the generic quaternion columns q_0..q_3.
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum OrderArg {
+    /// Scalar first.
     Wxyz,
+    /// Scalar last.
     Xyzw,
 }
 
+/// The axes of their ω columns.
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum OmegaArg {
+    /// Body axes.
     Body,
+    /// Space axes.
     Space,
 }
 
+/// `eulerdyn score`'s arguments.
 #[derive(Debug, Args)]
 pub struct ScoreArgs {
     /// Their trajectory: a CSV with t, the attitude (q_w..q_z, q_0..q_3 or R_11..R_33) and optionally omega_x..z.
@@ -65,6 +100,7 @@ pub struct ScoreArgs {
     pub plot: Option<PathBuf>,
 }
 
+/// `eulerdyn suite`'s arguments.
 #[derive(Debug, Args)]
 pub struct SuiteArgs {
     /// The folder to write the suite into (created if needed).
@@ -104,7 +140,7 @@ fn write_plot(path: &Path, title: &str, series: &[Series]) -> Result<(), ScoreEr
 }
 
 /// `eulerdyn score`: prints the score (or the suite's report card); `Err(Run)` when a verdict fails (exit 1).
-pub fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
+fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
     let options = options(args)?;
     let (text, json, passes, figure) = match (&args.suite, &args.theirs, &args.scene) {
         (Some(dir), _, _) => {
@@ -127,7 +163,7 @@ pub fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
         (None, Some(theirs), Some(scene_path)) => {
             let scene = scene::load(scene_path, &Overrides::default())
                 .map_err(|e| ScoreError::Input(e.to_string()))?;
-            let s = score::score(theirs, &scene, &options)?;
+            let s = super::score(theirs, &scene, &options)?;
             let title = format!("{}: errors against the referee", theirs.display());
             (
                 report::text(&s),
@@ -163,7 +199,7 @@ pub fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
 }
 
 /// `eulerdyn suite`: writes the suite, says what on stderr.
-pub fn suite_command(args: &SuiteArgs, quiet: bool) -> Result<(), ScoreError> {
+fn suite_command(args: &SuiteArgs, quiet: bool) -> Result<(), ScoreError> {
     let written = suite::write_suite(&args.out)?;
     if !quiet {
         eprintln!("wrote {} files into {}", written.len(), args.out.display());
