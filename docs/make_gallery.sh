@@ -38,6 +38,12 @@ $eulerdyn plot "$work/turbine.csv" -o "$out/turbine_bearings.svg" --panels omega
 $eulerdyn run scenarios/turbine_turn_3g.toml -o "$work/turbine_turn.csv"
 $eulerdyn plot "$work/turbine_turn.csv" -o "$out/turbine_turn_bearings.svg" --panels omega,bearings_space
 
+# A slew through three wheels that saturate at 0.05 N·m (examples/wheel_slew.rs, a PD law): the body's rate, the
+# wheels' speeds and their commanded and applied torques. SLEW_CSV: a run of it made already (the gallery test's).
+slew_csv=${SLEW_CSV:-"$work/slew.csv"}
+[ -n "${SLEW_CSV:-}" ] || cargo run --quiet --release --example wheel_slew -- "$slew_csv" > /dev/null
+$eulerdyn plot "$slew_csv" -o "$out/slew_wheels.svg" --panels omega,wheel_spin,wheel_torque
+
 # What accuracy costs: the work-precision study of the benchmark body (about 10 s; its times differ run to run).
 [ -n "${GALLERY_FIGURES_ONLY:-}" ] && exit 0
 $eulerdyn accuracy scenarios/asymmetric_free.toml -o docs/work_precision.csv --plot docs/work_precision.svg

@@ -3,14 +3,15 @@
 //! run is written to OUT.csv (default `slew_three_wheels.csv`) with its sidecar, so that `eulerdyn plot OUT.csv`
 //! draws it, and the wheels' speeds are printed every 10 s.
 //!
-//! The law asks the body for the control moment u_b = k_p e_b − k_d ω_b (e_b the rotation vector that remains to
-//! the target, body axes; Wie, *Space Vehicle Dynamics and Control*, 2nd ed., §7.3, the quaternion-feedback
+//! The law (`eulerdyn::wheels::AttitudePd`) asks the body for the control moment u_b = k_p e_b − k_d ω_b (e_b
+//! the rotation vector that remains to the target, body axes; Wie, *Space Vehicle Dynamics and Control*, 2nd ed., §7.3, the quaternion-feedback
 //! regulator in its small-angle form) and commands each wheel τ_k = −u_b·a_k, since the body feels −τ_k a_k
 //! (Rigid-body dynamics, lecture notes, the gyrostat). The 0.05 N·m limit caps the body's acceleration, so the
 //! slew starts at a constant rate of turn set by saturation, then settles as the PD law's second-order response.
 
 use eulerdyn::output::write_run;
 use eulerdyn::scene::{Overrides, load};
+use eulerdyn::wheels::AttitudePd;
 use nalgebra::{UnitQuaternion, Vector3};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -18,13 +19,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .nth(1)
         .unwrap_or("slew_three_wheels.csv".into());
     let target = UnitQuaternion::from_euler_angles(0.6, -0.4, 0.9);
-    let (k_p, k_d) = (0.6, 3.0);
-    let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
-    let pd = move |_t: f64, q: &UnitQuaternion<f64>, omega_b: &Vector3<f64>, _spins: &[f64]| {
-        let error_b = q.inverse_transform_vector(&q.rotation_to(&target).scaled_axis());
-        let u_b = error_b * k_p - omega_b * k_d;
-        axes.iter().map(|a| -u_b.dot(a)).collect()
-    };
+    let pd = AttitudePd::new(
+        target,
+        0.6,
+        3.0,
+        vec![Vector3::x(), Vector3::y(), Vector3::z()],
+    );
     let scene = load(
         std::path::Path::new("scenarios/slew_three_wheels.toml"),
         &Overrides::default(),

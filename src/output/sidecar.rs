@@ -80,6 +80,10 @@ pub struct SidecarScene {
     pub motion: MotionKind,
     /// The effects' types, in order (a user's law as `user:NAME`, [`Effect::label`]).
     pub effects: Vec<String>,
+    /// The name of the wheel law that commanded the wheels (Rust's `Scene::with_wheel_law`, Python's
+    /// `wheel_torque=`), absent when none did: the scene's text alone does not then reproduce the run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wheel_law: Option<String>,
     /// The scene file's text as written (absent for a scene built in code).
     pub text: Option<String>,
     /// The scene as simulated: overrides applied, defaults written in ([`Scene::spec`]).
@@ -152,6 +156,7 @@ impl Sidecar {
                 description: scene.description.clone(),
                 motion: scene.motion.kind(),
                 effects: scene.effects.iter().map(Effect::label).collect(),
+                wheel_law: scene.motion.wheel_law().map(str::to_string),
                 text: source.map(|s| s.text.clone()),
                 spec: scene.spec.clone(),
             },

@@ -64,6 +64,16 @@ impl Motion {
         }
     }
 
+    /// The name of the wheel law that commands the wheels ([`Scene::with_wheel_law`]), if one does.
+    pub fn wheel_law(&self) -> Option<&str> {
+        match self {
+            Motion::Free {
+                gyrostat: Some(g), ..
+            } => g.law().map(|law| law.name.as_str()),
+            _ => None,
+        }
+    }
+
     /// The optional columns the motion writes: θ, the support's force, moment and bearing loads on an axis (the
     /// force only when C is off the axis, the loads only with bearings), H_s integrated for a prescribed motion.
     pub fn columns(&self) -> ColumnSet {

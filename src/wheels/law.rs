@@ -86,3 +86,59 @@ impl PartialEq for WheelTorqueLaw {
         self.name == other.name && Arc::ptr_eq(&self.law, &other.law)
     }
 }
+
+/// A quaternion-feedback regulator flown through the wheels (Wie, *Space Vehicle Dynamics and Control*, 2nd ed.,
+/// §7.3, in its small-angle form): the body is asked for the control moment
+///
+/// ```text
+///   u_b = k_p e_b − k_d ω_b,   e_b = R⁻¹ · (the rotation vector from q to the target, space axes)
+///   τ_k = −u_b · a_k           (wheel k along a_k; the body feels −τ_k a_k)
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct AttitudePd {
+    /// The attitude to reach (body → space).
+    pub target: UnitQuaternion<f64>,
+    /// The proportional gain k_p (N·m/rad).
+    pub k_p: f64,
+    /// The rate gain k_d (N·m·s/rad).
+    pub k_d: f64,
+    /// The wheels' unit axes a_k in body axes, in the scene's order.
+    pub axes_b: Vec<Vector3<f64>>,
+}
+
+impl AttitudePd {
+    /// The regulator to `target` with gains `k_p`, `k_d` through wheels along `axes_b`.
+    ///
+    /// ```
+    /// use eulerdyn::wheels::{AttitudePd, WheelLaw};
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    ///
+    /// let target = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.5);
+    /// let pd = AttitudePd::new(target, 0.6, 3.0, vec![Vector3::x(), Vector3::y(), Vector3::z()]);
+    /// // At rest and 0.5 rad short about z: u_b = (0, 0, 0.3), so the z wheel is told −0.3 N·m.
+    /// let tau = pd.torques(0.0, &UnitQuaternion::identity(), &Vector3::zeros(), &[0.0; 3]);
+    /// assert!((tau[2] + 0.3).abs() < 1e-15 && tau[0] == 0.0 && tau[1] == 0.0);
+    /// ```
+    pub fn new(target: UnitQuaternion<f64>, k_p: f64, k_d: f64, axes_b: Vec<Vector3<f64>>) -> Self {
+        Self {
+            target,
+            k_p,
+            k_d,
+            axes_b,
+        }
+    }
+}
+
+impl WheelLaw for AttitudePd {
+    fn torques(
+        &self,
+        _t: f64,
+        q: &UnitQuaternion<f64>,
+        omega_b: &Vector3<f64>,
+        _spins: &[f64],
+    ) -> Vec<f64> {
+        let error_b = q.inverse_transform_vector(&q.rotation_to(&self.target).scaled_axis());
+        let u_b = error_b * self.k_p - omega_b * self.k_d;
+        self.axes_b.iter().map(|a| -u_b.dot(a)).collect()
+    }
+}

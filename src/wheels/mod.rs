@@ -21,7 +21,7 @@ mod solve;
 mod table;
 
 pub use keys::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
-pub use law::{WheelLaw, WheelTorqueLaw};
+pub use law::{AttitudePd, WheelLaw, WheelTorqueLaw};
 pub use solve::{STICK_SPEED, Wheel, WheelSolve, solve};
 pub use table::{WHEEL_TABLE_HEADER, read_wheel_table};
 

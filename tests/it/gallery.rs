@@ -2,19 +2,48 @@
 //! binary into a temporary directory, remakes every committed figure of the README's gallery byte for byte (the
 //! timed work-precision figure aside), and the same binary and input give the same bytes twice.
 
+use std::path::Path;
 use std::process::Command;
 
+use eulerdyn::scene::{Overrides, load};
+use eulerdyn::wheels::AttitudePd;
+use nalgebra::{UnitQuaternion, Vector3};
+
 use crate::common::{eulerdyn, repo_path};
+
+/// The run of examples/wheel_slew.rs (the same scene and law, made here with this build's library rather than by
+/// the example's own binary, which `cargo test --test it` does not rebuild) written to `out`.
+fn write_slew(out: &Path) {
+    let target = UnitQuaternion::from_euler_angles(0.6, -0.4, 0.9);
+    let pd = AttitudePd::new(
+        target,
+        0.6,
+        3.0,
+        vec![Vector3::x(), Vector3::y(), Vector3::z()],
+    );
+    let scene = load(
+        &repo_path("scenarios/slew_three_wheels.toml"),
+        &Overrides::default(),
+    )
+    .unwrap()
+    .with_wheel_law("pd_slew", pd)
+    .unwrap();
+    eulerdyn::output::write_run(&scene, out).unwrap();
+}
 
 #[test]
 fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
     let dir = tempfile::tempdir().unwrap();
+    let slew = tempfile::tempdir().unwrap();
+    let slew_csv = slew.path().join("slew.csv");
+    write_slew(&slew_csv);
     let status = Command::new("sh")
         .arg(repo_path("docs/make_gallery.sh"))
         .current_dir(repo_path(""))
         .env("EULERDYN", env!("CARGO_BIN_EXE_eulerdyn"))
         .env("GALLERY_DIR", dir.path())
         .env("GALLERY_FIGURES_ONLY", "1")
+        .env("SLEW_CSV", &slew_csv)
         .status()
         .expect("sh runs");
     assert!(status.success(), "docs/make_gallery.sh failed");
@@ -28,6 +57,7 @@ fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
         [
             "heavy_top.svg",
             "motor_runup_bearings.svg",
+            "slew_wheels.svg",
             "tennis_racket.svg",
             "tilted_disk_h.svg",
             "turbine_bearings.svg",

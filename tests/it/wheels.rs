@@ -471,3 +471,33 @@ fn wheel_keys_are_sweepable_and_the_plot_has_wheel_panels() {
         );
     }
 }
+
+#[test]
+fn the_sidecar_names_the_wheel_law_that_commanded_the_wheels() {
+    let dir = tempfile::tempdir().unwrap();
+    let body = || {
+        BodySpec::principal(10.0, [3.0, 3.5, 4.0]).with_rotor(RotorSpec::new(
+            [0.0, 0.0, 1.0],
+            0.1,
+            0.0,
+        ))
+    };
+    let law = |_t: f64, _q: &UnitQuaternion<f64>, _w: &Vector3<f64>, _s: &[f64]| vec![0.01];
+    let with_law = SceneSpec::new(body(), 1.0, 0.5)
+        .build()
+        .unwrap()
+        .with_wheel_law("hold_then_turn", law)
+        .unwrap();
+    let without = SceneSpec::new(body(), 1.0, 0.5).build().unwrap();
+    for (scene, name, expected) in [
+        (&with_law, "law.csv", Some("hold_then_turn")),
+        (&without, "plain.csv", None),
+    ] {
+        let out = dir.path().join(name);
+        eulerdyn::output::write_run(scene, &out).unwrap();
+        let sidecar =
+            std::fs::read_to_string(eulerdyn::output::sidecar::sidecar_path(&out)).unwrap();
+        let json: serde_json::Value = serde_json::from_str(&sidecar).unwrap();
+        assert_eq!(json["scene"]["wheel_law"].as_str(), expected, "{name}");
+    }
+}
