@@ -313,6 +313,19 @@ where
     settings
         .validate()
         .map_err(|reason| IntegrateError::InvalidSettings { reason })?;
+    // An own adaptive pair with its number of stages (a const generic: the stage arrays' length).
+    macro_rules! adaptive {
+        ($pair:ty, $stages:literal) => {
+            adaptive::run::<$pair, $stages, N, S, E, F, W>(
+                sys,
+                y0,
+                schedule,
+                settings,
+                &mut on_row,
+                watch,
+            )
+        };
+    }
     match (settings.backend, settings.method) {
         (Backend::Own, Method::Rk4) => {
             let mut y0 = y0;
@@ -322,22 +335,8 @@ where
             let rk4 = &mut fixed::Rk4 { sys };
             run_fixed_step_watched(rk4, y0, schedule, limits, on_row, &mut hermite)
         }
-        (Backend::Own, Method::Dopri5) => adaptive::run::<dopri5::Dopri5, 7, N, S, E, F, W>(
-            sys,
-            y0,
-            schedule,
-            settings,
-            &mut on_row,
-            watch,
-        ),
-        (Backend::Own, Method::Dop853) => adaptive::run::<dop853::Dop853, 12, N, S, E, F, W>(
-            sys,
-            y0,
-            schedule,
-            settings,
-            &mut on_row,
-            watch,
-        ),
+        (Backend::Own, Method::Dopri5) => adaptive!(dopri5::Dopri5, 7),
+        (Backend::Own, Method::Dop853) => adaptive!(dop853::Dop853, 12),
         (Backend::OdeSolvers, _) if W::ACTIVE => Err(IntegrateError::InvalidSettings {
             reason:
                 "events are located on the own methods' steps; the ode_solvers backend has no hook \

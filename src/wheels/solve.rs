@@ -87,8 +87,10 @@ pub fn solve(
         holds[k] = hold_of(w);
         held[k] = holds[k] != Hold::No;
     }
-    // Each pass releases the held wheels that would not stay held; at most one pass per wheel.
-    for _ in 0..=wheels.len() {
+    // Each pass releases the held wheels that would not stay held; at most one pass per wheel, then one more to
+    // find ω̇_b with the wheels still held.
+    let mut pass = 0;
+    loop {
         let omega_dot_b = accelerations(
             inertia_b,
             driven_inv_b,
@@ -98,41 +100,53 @@ pub fn solve(
             &motor,
             &friction,
         );
-        let mut released = false;
-        for (k, w) in wheels.iter().enumerate() {
-            if !held[k] {
-                continue;
-            }
-            let hold = w.inertia * w.axis_b.dot(&omega_dot_b);
-            match holds[k] {
-                Hold::SpeedLimit if w.spin.signum() * (w.motor + friction[k] - hold) > 0.0 => {
-                    motor[k] = hold - friction[k];
-                }
-                Hold::Stuck if (hold - w.motor).abs() <= w.control.friction.breakaway() => {
-                    friction[k] = hold - w.motor;
-                }
-                Hold::Stuck => {
-                    let breakaway = w.control.friction.breakaway();
-                    friction[k] = -breakaway * (w.motor - hold).signum();
-                    (held[k], released) = (false, true);
-                }
-                _ => (held[k], released) = (false, true),
-            }
-        }
-        if !released {
+        let hold = Holding {
+            holds: &holds,
+            held: &mut held,
+            motor: &mut motor,
+            friction: &mut friction,
+        };
+        if pass > wheels.len() || !release(wheels, &omega_dot_b, hold) {
             return finish(wheels, omega_dot_b, &held, motor, friction);
         }
+        pass += 1;
     }
-    let omega_dot_b = accelerations(
-        inertia_b,
-        driven_inv_b,
-        rhs0_b,
-        wheels,
-        &held,
-        &motor,
-        &friction,
-    );
-    finish(wheels, omega_dot_b, &held, motor, friction)
+}
+
+/// The wheels held and the torques that hold them, as one pass of [`solve`] changes them.
+struct Holding<'a> {
+    holds: &'a [Hold; MAX_ROTORS],
+    held: &'a mut [bool; MAX_ROTORS],
+    motor: &'a mut [f64; MAX_ROTORS],
+    friction: &'a mut [f64; MAX_ROTORS],
+}
+
+/// One pass at ω̇_b: a wheel at its speed limit stays held with the motor torque that holds it, while the command
+/// pushes further; a stuck wheel stays held while the friction that holds it is within breakaway, else it slips
+/// with the breakaway friction. Whether a wheel was released.
+fn release(wheels: &[Wheel], omega_dot_b: &Vector3<f64>, h: Holding<'_>) -> bool {
+    let mut released = false;
+    for (k, w) in wheels.iter().enumerate() {
+        if !h.held[k] {
+            continue;
+        }
+        let hold = w.inertia * w.axis_b.dot(omega_dot_b);
+        match h.holds[k] {
+            Hold::SpeedLimit if w.spin.signum() * (w.motor + h.friction[k] - hold) > 0.0 => {
+                h.motor[k] = hold - h.friction[k];
+            }
+            Hold::Stuck if (hold - w.motor).abs() <= w.control.friction.breakaway() => {
+                h.friction[k] = hold - w.motor;
+            }
+            Hold::Stuck => {
+                let breakaway = w.control.friction.breakaway();
+                h.friction[k] = -breakaway * (w.motor - hold).signum();
+                (h.held[k], released) = (false, true);
+            }
+            _ => (h.held[k], released) = (false, true),
+        }
+    }
+    released
 }
 
 /// ω̇_b = I_D⁻¹ (M − ω × H − Σ_P J α a − Σ_D (τ_m + τ_f) a), the held wheels among P with α = 0.

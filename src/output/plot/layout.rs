@@ -163,34 +163,13 @@ mod tests {
 
     #[test]
     fn grids_have_two_columns_from_three_panels_and_small_sizes_are_refused() {
-        assert_eq!(
-            Grid::for_panels(1),
-            Grid {
-                columns: 1,
-                rows: 1
-            }
-        );
-        assert_eq!(
-            Grid::for_panels(2),
-            Grid {
-                columns: 1,
-                rows: 2
-            }
-        );
-        assert_eq!(
-            Grid::for_panels(3),
-            Grid {
-                columns: 2,
-                rows: 2
-            }
-        );
-        assert_eq!(
-            Grid::for_panels(6),
-            Grid {
-                columns: 2,
-                rows: 3
-            }
-        );
+        for (panels, columns, rows) in [(1, 1, 1), (2, 1, 2), (3, 2, 2), (6, 2, 3)] {
+            assert_eq!(
+                Grid::for_panels(panels),
+                Grid { columns, rows },
+                "{panels} panels"
+            );
+        }
         let six = Grid::for_panels(6).figure_size(None, true).unwrap();
         assert_eq!((six.width_cm, six.height_cm), (16.0, 21.9));
         let small = FigureSize {

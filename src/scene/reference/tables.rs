@@ -46,6 +46,23 @@ macro_rules! keys {
 const FROM_REFERENCE: &str =
     "the reference origin (the shape's center, or the point `inertia` is about), body axes";
 
+/// The `profile` of a time profile (`constant`, `sine` or `step`), and what it means where it stands.
+const fn profile(doc: &'static str) -> Key {
+    key(
+        "profile",
+        "\"constant\" | \"sine\" | \"step\"",
+        "–",
+        "\"constant\"",
+        "",
+        doc,
+    )
+}
+
+/// A position in body axes (m), measured from [`FROM_REFERENCE`]: name, default, meaning.
+const fn position(name: &'static str, default: &'static str, doc: &'static str) -> Key {
+    key(name, "[x, y, z]", "m", default, FROM_REFERENCE, doc)
+}
+
 /// The tables, in the file form's order.
 pub(super) const TABLES: [Table; 13] = [
     Table {
@@ -218,14 +235,7 @@ pub(super) const TABLES: [Table; 13] = [
         about: "a point mass rigidly attached; mass, C and the inertia are then the whole body's (parallel axes)",
         keys: &[
             key("mass", "number", "kg", "required", "", "> 0"),
-            key(
-                "at",
-                "[x, y, z]",
-                "m",
-                "[0, 0, 0]",
-                FROM_REFERENCE,
-                "where the mass sits",
-            ),
+            position("at", "[0, 0, 0]", "where the mass sits"),
         ],
     },
     Table {
@@ -280,14 +290,7 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "instead of `spin_accel`: the motor torque on the wheel (the body feels its opposite); neither: Ω stays constant",
             ),
-            key(
-                "profile",
-                "\"constant\" | \"sine\" | \"step\"",
-                "–",
-                "\"constant\"",
-                "",
-                "the motor torque's profile, as a torque effect's",
-            ),
+            profile("the motor torque's profile, as a torque effect's"),
             @sine,
             @step,
             key(
@@ -330,14 +333,7 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω",
             ),
-            key(
-                "at",
-                "[x, y, z]",
-                "m",
-                "[0, 0, 0]",
-                FROM_REFERENCE,
-                "the wheel's centre",
-            ),
+            position("at", "[0, 0, 0]", "the wheel's centre"),
             key(
                 "imbalance_static_gmm",
                 "number",
@@ -401,12 +397,9 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "constant θ̈; fixed axis only",
             ),
-            key(
+            position(
                 "point",
-                "[x, y, z]",
-                "m",
                 "[0, 0, 0]",
-                FROM_REFERENCE,
                 "a point of the axis: the moment center",
             ),
             key(
@@ -541,14 +534,7 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "the torque (amplitude for `sine`)",
             ),
-            key(
-                "profile",
-                "\"constant\" | \"sine\" | \"step\"",
-                "–",
-                "\"constant\"",
-                "",
-                "torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off",
-            ),
+            profile("torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off"),
             @sine,
             @step,
             key(
@@ -559,14 +545,7 @@ pub(super) const TABLES: [Table; 13] = [
                 "",
                 "gravity: uniform, space axes, acting at C",
             ),
-            key(
-                "pivot",
-                "[x, y, z]",
-                "m",
-                "required for free motion",
-                FROM_REFERENCE,
-                "gravity: the fixed point, which becomes the moment center (an error with a fixed axis or hinge)",
-            ),
+            position("pivot", "required for free motion", "gravity: the fixed point, which becomes the moment center (an error with a fixed axis or hinge)"),
             key(
                 "c",
                 "number",
