@@ -40,21 +40,21 @@ impl Command for Commands {
     }
 }
 
-/// The order of the generic quaternion columns q_0..q_3.
+// The variants' names say what they are; doc comments on them would turn clap's one-line list of possible values
+// into a paragraph per value.
+/// The order of the generic quaternion columns q_0..q_3: scalar first (`wxyz`) or last (`xyzw`).
 #[derive(Debug, Clone, Copy, ValueEnum)]
+#[allow(missing_docs)]
 pub enum OrderArg {
-    /// Scalar first.
     Wxyz,
-    /// Scalar last.
     Xyzw,
 }
 
 /// The axes of their ω columns.
 #[derive(Debug, Clone, Copy, ValueEnum)]
+#[allow(missing_docs)]
 pub enum OmegaArg {
-    /// Body axes.
     Body,
-    /// Space axes.
     Space,
 }
 
