@@ -222,18 +222,38 @@ impl RotorSpec {
     }
 
     /// With `drive`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{RotorDrive, RotorSpec};
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 0.0).with_drive(RotorDrive::SpinAccel(2.0));
+    /// assert_eq!(wheel.drive, RotorDrive::SpinAccel(2.0));
+    /// ```
     pub fn with_drive(mut self, drive: RotorDrive) -> Self {
         self.drive = drive;
         self
     }
 
     /// With the limits and friction `wheel`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorSpec;
+    /// use eulerdyn::wheels::WheelKeys;
+    /// let limits = WheelKeys { max_torque: Some(0.05), ..WheelKeys::default() };
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 0.0).with_wheel(limits.clone());
+    /// assert_eq!(wheel.wheel, limits);
+    /// ```
     pub fn with_wheel(mut self, wheel: WheelKeys) -> Self {
         self.wheel = wheel;
         self
     }
 
     /// With `name`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorSpec;
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 0.0).with_name("wheel_z");
+    /// assert_eq!(wheel.name.as_deref(), Some("wheel_z"));
+    /// ```
     pub fn with_name(mut self, name: &str) -> Self {
         self.name = Some(name.to_string());
         self

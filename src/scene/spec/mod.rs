@@ -160,24 +160,50 @@ impl SceneSpec {
     }
 
     /// With `name`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_name("box");
+    /// assert_eq!(spec.build().unwrap().name, "box");
+    /// ```
     pub fn with_name(mut self, name: &str) -> Self {
         self.name = Some(name.to_string());
         self
     }
 
     /// With the `[motion]` table: a [`FixedAxisSpec`], a [`HingeSpec`] or [`MotionSpec::Free`].
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, FixedAxisSpec, MotionKind, SceneSpec, ShapeSpec};
+    /// let body = BodySpec::shape(2.0, ShapeSpec::thin_disk(0.3));
+    /// let scene = SceneSpec::new(body, 1.0, 0.1).with_motion(FixedAxisSpec::tilted(30.0, 10.0)).build().unwrap();
+    /// assert_eq!(scene.motion.kind(), MotionKind::FixedAxis);
+    /// ```
     pub fn with_motion(mut self, motion: impl Into<MotionSpec>) -> Self {
         self.motion = Some(motion.into());
         self
     }
 
     /// With `initial.omega` (rad/s, body axes).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_omega([0.0, 0.0, 5.0]);
+    /// assert_eq!(spec.initial.unwrap().omega, Some([0.0, 0.0, 5.0]));
+    /// ```
     pub fn with_omega(mut self, omega_b: [f64; 3]) -> Self {
         self.initial.get_or_insert_with(InitialSpec::default).omega = Some(omega_b);
         self
     }
 
     /// With `initial.attitude` ([w, x, y, z], body → space).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{AttitudeSpec, BodySpec, SceneSpec};
+    /// let q = [0.0, 0.0, 0.0, 1.0]; // half a turn about z
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_attitude(q);
+    /// assert_eq!(spec.initial.unwrap().attitude, Some(AttitudeSpec::Quaternion(q)));
+    /// ```
     pub fn with_attitude(mut self, q_sb: [f64; 4]) -> Self {
         self.initial
             .get_or_insert_with(InitialSpec::default)
@@ -186,30 +212,65 @@ impl SceneSpec {
     }
 
     /// With one more `[[effect]]`: a [`TorqueSpec`], a [`TorqueTableSpec`] or an [`EffectSpec`].
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, EffectSpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1)
+    ///     .with_effect(EffectSpec::damping(0.01));
+    /// assert_eq!(spec.effect, [EffectSpec::damping(0.01)]);
+    /// ```
     pub fn with_effect(mut self, effect: impl Into<EffectSpec>) -> Self {
         self.effect.push(effect.into());
         self
     }
 
     /// With one more `[[event]]`.
+    ///
+    /// ```
+    /// use eulerdyn::events::Direction;
+    /// use eulerdyn::scene::{BodySpec, EventSpec, SceneSpec};
+    /// let flip = EventSpec::crossing("flip", "omega_b_y", 0.0, Direction::Down);
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_event(flip.clone());
+    /// assert_eq!(spec.event, [flip]);
+    /// ```
     pub fn with_event(mut self, event: EventSpec) -> Self {
         self.event.push(event);
         self
     }
 
     /// With `solver.method`.
+    ///
+    /// ```
+    /// use eulerdyn::Method;
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_method(Method::Rk4);
+    /// assert_eq!(spec.solver.method, Some(Method::Rk4));
+    /// ```
     pub fn with_method(mut self, method: Method) -> Self {
         self.solver.method = Some(method);
         self
     }
 
     /// With `solver.frame`: the form of Euler's equation.
+    ///
+    /// ```
+    /// use eulerdyn::Form;
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_form(Form::Space);
+    /// assert_eq!(spec.solver.frame, Some(Form::Space));
+    /// ```
     pub fn with_form(mut self, form: Form) -> Self {
         self.solver.frame = Some(form);
         self
     }
 
     /// With `solver.rtol` and `solver.atol`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_tolerances(1e-12, 1e-14);
+    /// assert_eq!((spec.solver.rtol, spec.solver.atol), (Some(1e-12), Some(1e-14)));
+    /// ```
     pub fn with_tolerances(mut self, rtol: f64, atol: f64) -> Self {
         self.solver.rtol = Some(rtol);
         self.solver.atol = Some(atol);
@@ -217,6 +278,12 @@ impl SceneSpec {
     }
 
     /// With `solver.dt` (s).
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_dt(1e-3);
+    /// assert_eq!(spec.solver.dt, Some(1e-3));
+    /// ```
     pub fn with_dt(mut self, dt: f64) -> Self {
         self.solver.dt = Some(dt);
         self
