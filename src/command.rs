@@ -1,5 +1,7 @@
 //! The commands that live in a capability's folder (feature `cli`): each declares its clap arguments and what it
-//! does next to the rest of the capability, and joins the `eulerdyn` program by one line in [`Capabilities`].
+//! does next to the rest of the capability, implements [`Command`], and joins the `eulerdyn` program by one line in
+//! the binary's `capabilities!` list (`src/bin/eulerdyn/capabilities.rs`), so that the library never points up
+//! to the capabilities that use it.
 
 /// Why a command failed, with the exit code it maps to.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -26,31 +28,4 @@ impl CommandError {
 pub trait Command {
     /// Runs it: data to stdout, messages to stderr unless `quiet`.
     fn run(&self, quiet: bool) -> Result<(), CommandError>;
-}
-
-/// The registry: one line per capability, `Variant(its clap Subcommand enum)`.
-macro_rules! capabilities {
-    ($($variant:ident($commands:ty),)*) => {
-        /// The commands of the capabilities (flattened into the program's subcommands, in this order).
-        #[derive(Debug, clap::Subcommand)]
-        pub enum Capabilities {
-            $(
-                #[command(flatten)]
-                #[allow(missing_docs)]
-                $variant($commands),
-            )*
-        }
-
-        impl Command for Capabilities {
-            fn run(&self, quiet: bool) -> Result<(), CommandError> {
-                match self {
-                    $(Capabilities::$variant(c) => c.run(quiet),)*
-                }
-            }
-        }
-    };
-}
-
-capabilities! {
-    Score(crate::analysis::score::command::Commands),
 }

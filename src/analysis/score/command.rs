@@ -1,5 +1,5 @@
 //! `eulerdyn score` (another program's trajectory against the referee) and `eulerdyn suite` (the conformance
-//! suite): their arguments and printing, registered in [`crate::command::Capabilities`].
+//! suite): their arguments and printing, registered in the binary's `capabilities!` list.
 
 use std::path::{Path, PathBuf};
 

@@ -8,11 +8,12 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand};
 
 use crate::balance::{BalanceArgs, balance_command};
+use crate::capabilities::Capabilities;
 use crate::progress::{self, Progress};
 use crate::sweep::{SweepArgs, SweepFailure, sweep_command};
 use crate::view::{ViewArgs, view_command};
 use eulerdyn::analysis::describe;
-use eulerdyn::command::{Capabilities, Command as _, CommandError};
+use eulerdyn::command::{Command as _, CommandError};
 use eulerdyn::events::Occurrence;
 use eulerdyn::output::events_file::{events_path, events_table};
 use eulerdyn::output::plot::{self, Panel, PlotError};

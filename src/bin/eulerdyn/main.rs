@@ -3,6 +3,7 @@
 //! ctrlc, which a crate using the library with `default-features = false` never compiles.
 
 mod balance;
+mod capabilities;
 mod cli;
 mod interrupt;
 mod progress;
