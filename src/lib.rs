@@ -68,6 +68,7 @@ pub mod events;
 pub mod exact;
 pub mod frames;
 pub mod integrate;
+pub mod keys;
 pub mod kinetics;
 pub mod method;
 pub mod motion;

@@ -2,7 +2,6 @@
 //! its validation ([`SceneSpec::build`]) and the validated [`Scene`] a run needs.
 
 pub mod advice;
-mod checks;
 mod facts;
 mod file;
 mod model;

@@ -1,11 +1,11 @@
 //! A built scene with one more effect: the user's own moment law ([`MomentLaw`]), which a scene file cannot hold.
 
-use super::checks::{Checked, invalid};
 use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
 use super::validate::InvalidScene;
 use crate::effects::{Effect, MomentLaw, UserMoment};
 use crate::frames::Axes;
+use crate::keys::{Checked, invalid};
 
 impl Scene {
     /// The scene with the user's law `law` acting too: its moment M(t, q, ω_b) (N·m) given in `axes`, named

@@ -1,10 +1,10 @@
 //! A built scene whose wheels are driven by the user's wheel law ([`WheelLaw`]), which a scene file cannot hold.
 
-use super::checks::{Checked, invalid};
 use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
 use super::spec::RotorDrive;
 use super::validate::InvalidScene;
+use crate::keys::{Checked, invalid};
 use crate::wheels::{WheelLaw, WheelTorqueLaw};
 
 impl Scene {

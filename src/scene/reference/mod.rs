@@ -1,44 +1,39 @@
-//! The scene file's keys, declared once for the reader: each table's keys with their type, unit, default, the
-//! origin a position is measured from, and meaning. The book's key reference is generated from [`keys`] (the
-//! test `tests/it/book.rs`), and the unit test below checks that the declaration lists exactly the keys serde
-//! accepts in each table (`deny_unknown_fields`), so that neither can drift from the code.
+//! The scene file's keys for the reader: each table's keys with their type, unit, default, the origin a position
+//! is measured from, and meaning — the `TABLE` of each table's one declaration (`keys::file_table!`), which also
+//! makes the serde form, so the two cannot drift. The book's key reference is generated from [`keys`] (the test
+//! `tests/it/book.rs`); the unit test below checks each table against the keys serde names in its message for an
+//! unknown key.
 //!
 //! Every position in body axes is measured from the *reference origin*: the shape's center, or the point the given
 //! `inertia` is about (C when there are no point masses).
 
-mod tables;
+pub use crate::keys::{Key, Table};
+use crate::scene::spec::file_form::{
+    BodyFile, CarrierFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile,
+    RotorFile, SceneFile, ShapeFile,
+};
+use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
 
-/// One key of a table.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Key {
-    /// The key as written in the file.
-    pub name: &'static str,
-    /// What the value is: `number`, `[x, y, z]`, a string from a list, a table…
-    pub kind: &'static str,
-    /// SI unit (`1` dimensionless, `–` none).
-    pub unit: &'static str,
-    /// The value when the key is absent (`required` when it may not be).
-    pub default: &'static str,
-    /// For a position: the point it is measured from and its axes; else empty.
-    pub origin: &'static str,
-    /// What it means, its bounds.
-    pub doc: &'static str,
-}
-
-/// One table of a scene file and its keys.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Table {
-    /// As written in the file (`[body]`, `[[effect]]`; the top level is empty).
-    pub header: &'static str,
-    /// What the table is.
-    pub about: &'static str,
-    /// Its keys, in the order of the file form.
-    pub keys: &'static [Key],
-}
+/// The tables, in the file form's order: each one's declaration ([`crate::keys::file_table!`]).
+const TABLES: [Table; 13] = [
+    SceneFile::TABLE,
+    BodyFile::TABLE,
+    ShapeFile::TABLE,
+    PointMassFile::TABLE,
+    RotorFile::TABLE,
+    MotionFile::TABLE,
+    CarrierFile::TABLE,
+    InitialFile::TABLE,
+    EffectFile::TABLE,
+    EventFile::TABLE,
+    SolverSpec::TABLE,
+    OutputSpec::TABLE,
+    CompareSpec::TABLE,
+];
 
 /// Every table of a scene file, in the order of the file form, with every key each accepts.
 pub fn keys() -> &'static [Table] {
-    &tables::TABLES
+    &TABLES
 }
 
 #[cfg(test)]

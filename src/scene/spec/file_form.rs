@@ -3,143 +3,74 @@
 //! column) would be lost inside serde's internally tagged enums. The typed [`super::SceneFile`] is read and
 //! written through this form.
 
-use serde::de::Error as _;
-use serde::{Deserialize, Deserializer, Serialize};
+use serde::{Deserialize, Serialize};
 
 use super::{CompareSpec, Direction, Extremum, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
 use crate::effects::Interpolation;
 use crate::frames::Axes;
+use crate::keys::{file_table, key, position, profile};
 
-/// A whole scene, as a scene file writes it.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(in crate::scene) struct SceneFile {
-    /// `name`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) name: Option<String>,
-    /// `description`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) description: Option<String>,
-    /// `[body]`.
-    pub(super) body: BodyFile,
-    /// `[motion]`; absent: free rotation.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) motion: Option<MotionFile>,
-    /// `[initial]`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) initial: Option<InitialFile>,
-    /// `[[effect]]`, in order; none: torque-free.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub(super) effect: Vec<EffectFile>,
-    /// `[[event]]`, in order.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub(super) event: Vec<EventFile>,
-    /// `[solver]`.
-    pub(super) solver: SolverSpec,
-    /// `[output]`.
-    pub(super) output: OutputSpec,
-    /// `[compare]`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) compare: Option<CompareSpec>,
+file_table! {
+    /// A whole scene, as a scene file writes it.
+    pub(in crate::scene) struct SceneFile(pub(super)) "",
+        "the top level of the file" {
+        opt name: String = key("string", "–", "\"\"", "", "shown by `check` and in plot titles");
+        opt description: String = key("string", "–", "\"\"", "", "one line, shown by `check`");
+        req body: BodyFile = key("table", "–", "required", "", "the body: `[body]`");
+        opt motion: MotionFile = key("table", "–", "free rotation", "", "the motion: `[motion]`");
+        opt initial: InitialFile = key("table", "–", "at rest, identity attitude", "", "the state at t = 0: `[initial]`");
+        list effect: EffectFile = key("array of tables", "–", "none: torque-free", "", "the moments applied: `[[effect]]`");
+        list event: EventFile = key("array of tables", "–", "none", "", "moments to locate between rows: `[[event]]`");
+        req solver: SolverSpec = key("table", "–", "required", "", "the integration: `[solver]`");
+        req output: OutputSpec = key("table", "–", "required", "", "the rows written: `[output]`");
+        opt compare: CompareSpec = key("table", "–", "tolerance 1e-8", "", "what `eulerdyn compare` accepts: `[compare]`");
+    }
 }
 
-/// `[body]`: the mass and either a shape or an inertia tensor about C.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct BodyFile {
-    /// kg, > 0.
-    pub(super) mass: f64,
-    /// A shape of uniform density.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) shape: Option<ShapeFile>,
-    /// The inertia about C in body axes (kg·m²), instead of a shape.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) inertia: Option<InertiaSpec>,
-    /// `[[body.point_mass]]`: point masses rigidly attached.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub(super) point_mass: Vec<PointMassFile>,
-    /// `[[body.rotor]]`: wheels spinning inside the body.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub(super) rotor: Vec<RotorFile>,
+file_table! {
+    /// `[body]`: the mass and either a shape or an inertia tensor about C.
+    pub(in crate::scene) struct BodyFile(pub(super)) "[body]",
+        "the rigid body: its mass and either a shape or an inertia tensor" {
+        req mass: f64 = key("number", "kg", "required", "", "> 0");
+        opt shape: ShapeFile = key("inline table", "–", "one of `shape` / `inertia`", "", "a homogeneous shape: `[body.shape]`");
+        opt inertia: InertiaSpec = key("[I1, I2, I3] or 3×3 array", "kg·m²", "one of `shape` / `inertia`", "", "about C in body axes: principal moments, or the symmetric tensor with I_xy = −∫xy dm; positive semi-definite, triangle inequality");
+        list point_mass: PointMassFile = key("array of tables", "–", "none", "", "point masses rigidly attached: `[[body.point_mass]]`");
+        list rotor: RotorFile = key("array of tables", "–", "none", "", "wheels spinning inside the body (at most 4): `[[body.rotor]]`");
+    }
 }
 
-/// One `[[body.rotor]]`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RotorFile {
-    /// Column prefix.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) name: Option<String>,
-    /// Spin axis, body axes.
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) axis: Option<[f64; 3]>,
-    /// kg·m² about the spin axis.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) inertia: Option<f64>,
-    /// rad/s relative to the body at t = 0.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) spin: Option<f64>,
-    /// rad/s², prescribed.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) spin_accel: Option<f64>,
-    /// N·m, the motor torque on the wheel.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) torque: Option<f64>,
-    /// The motor torque's profile and its keys, as a torque effect's.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) profile: Option<ProfileKind>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) freq_hz: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) phase_deg: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) t_on: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) t_off: Option<f64>,
-    /// Wheel centre from the reference origin (m).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) at: Option<[f64; 3]>,
-    /// g·mm.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) imbalance_static_gmm: Option<f64>,
-    /// g·mm².
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) imbalance_dynamic_gmm2: Option<f64>,
-    /// The wheel's keys (`crate::wheels`): N·m, rpm, its friction, `mode = "free"`, its command table.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) max_torque: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) max_speed_rpm: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) friction: Option<crate::wheels::FrictionKeys>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) mode: Option<crate::wheels::WheelMode>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) torque_table: Option<std::path::PathBuf>,
+file_table! {
+    /// One `[[body.rotor]]`.
+    pub(in crate::scene) struct RotorFile(pub(super)) "[[body.rotor]]",
+        "a wheel spinning inside the body about an axis fixed in it (free motion or a pivot only)" {
+        opt name: String = key("string", "–", "rotor0, rotor1, …", "", "the prefix of its columns: letters, digits, `_`; unique");
+        arr axis: [f64; 3] = key("[x, y, z]", "–", "required", "", "spin axis in body axes (normalised, not zero)");
+        opt inertia: f64 = key("number", "kg·m²", "required", "", "J about the spin axis, > 0; `[body]` already holds J a aᵀ (wheels locked)");
+        opt spin: f64 = key("number", "rad/s", "0", "", "Ω at t = 0, relative to the body");
+        opt spin_accel: f64 = key("number", "rad/s²", "none", "", "Ω(t) = spin + spin_accel·t prescribed; the motor torque is an output");
+        opt torque: f64 = key("number", "N·m", "none", "", "instead of `spin_accel`: the motor torque on the wheel (the body feels its opposite); neither: Ω stays constant");
+        opt profile: ProfileKind = profile("the motor torque's profile, as a torque effect's");
+        @sine;
+        @step;
+        opt torque_table: std::path::PathBuf = key("path", "–", "none", "", "instead of `torque`: the motor torque commanded by a table (header `t,torque`; linear between rows), relative to the scene file");
+        opt mode: crate::wheels::WheelMode = key("\"free\"", "–", "held", "", "`\"free\"`: no motor, the wheel spins freely (friction only); without a driver a wheel holds its relative spin");
+        opt max_torque: f64 = key("number", "N·m", "none", "", "> 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)");
+        opt max_speed_rpm: f64 = key("number", "rpm", "none", "", "> 0: the relative spin's limit; at it the motor can only slow the wheel");
+        opt friction: crate::wheels::FrictionKeys = key("{ coulomb, viscous, stribeck = { torque, speed } }", "N·m, N·m·s, (N·m, rad/s)", "none", "", "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω");
+        arr at: [f64; 3] = position("[0, 0, 0]", "the wheel's centre");
+        opt imbalance_static_gmm: f64 = key("number", "g·mm", "0", "", "≥ 0: U_s = m·e, a force U_s Ω² at `at` turning with the wheel");
+        opt imbalance_dynamic_gmm2: f64 = key("number", "g·mm²", "0", "", "≥ 0: U_d, a couple U_d Ω² turning with the wheel");
+    }
 }
 
-/// One `[[body.point_mass]]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct PointMassFile {
-    /// kg, > 0.
-    pub(super) mass: f64,
-    /// Position from the reference origin (the shape's center, or the point the given inertia is about), body
-    /// axes (m).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) at: Option<[f64; 3]>,
+file_table! {
+    /// One `[[body.point_mass]]`.
+    #[derive(Copy)]
+    pub(in crate::scene) struct PointMassFile(pub(super)) "[[body.point_mass]]",
+        "a point mass rigidly attached; mass, C and the inertia are then the whole body's (parallel axes)" {
+        req mass: f64 = key("number", "kg", "required", "", "> 0");
+        arr at: [f64; 3] = position("[0, 0, 0]", "where the mass sits");
+    }
 }
 
 /// The `type` of a shape.
@@ -154,127 +85,51 @@ pub(super) enum ShapeKind {
     Cylinder,
 }
 
-/// `body.shape`. Disks and cylinders have their symmetry axis along body z; the thin rod lies along body x.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct ShapeFile {
-    /// `type`.
-    #[serde(rename = "type", skip_serializing_if = "Option::is_none")]
-    pub(super) kind: Option<ShapeKind>,
-    /// m.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) radius: Option<f64>,
-    /// m.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) thickness: Option<f64>,
-    /// m.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) length: Option<f64>,
-    /// [x, y, z], m.
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) size: Option<[f64; 3]>,
-    /// m.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) height: Option<f64>,
+file_table! {
+    /// `body.shape`. Disks and cylinders have their symmetry axis along body z; the thin rod lies along body x.
+    #[derive(Copy)]
+    pub(in crate::scene) struct ShapeFile(pub(super)) "[body.shape]",
+        "a shape of uniform density (disks and cylinders: symmetry axis along body z; the thin rod along body x)" {
+        opt kind as "type": ShapeKind = key("\"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"", "–", "required", "", "the shape");
+        opt radius: f64 = key("number", "m", "required for disks, cylinder, sphere", "", "> 0");
+        opt thickness: f64 = key("number", "m", "required for `disk`", "", "≥ 0");
+        opt length: f64 = key("number", "m", "required for `thin_rod`", "", "> 0");
+        arr size: [f64; 3] = key("[a, b, c]", "m", "required for `box`", "", "edges along body x, y, z");
+        opt height: f64 = key("number", "m", "required for `cylinder`", "", "> 0");
+    }
 }
 
-/// `[motion]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct MotionFile {
-    /// `type`.
-    #[serde(rename = "type", skip_serializing_if = "Option::is_none")]
-    pub(super) kind: Option<MotionKind>,
-    /// The axis in body axes (normalised by validation).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) axis: Option<[f64; 3]>,
-    /// Shorthand for the axis (0, −sin, cos) of the tilt, degrees.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) tilt_deg: Option<f64>,
-    /// rad/s at t = 0.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) rate: Option<f64>,
-    /// The same in revolutions per minute, instead of `rate` (rate = rate_rpm · 2π/60).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) rate_rpm: Option<f64>,
-    /// rad/s², constant.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) accel: Option<f64>,
-    /// A point on the axis, body axes, relative to C (m).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) point: Option<[f64; 3]>,
-    /// θ at t = 0 (degrees), hinge only.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) angle_deg: Option<f64>,
-    /// Axial positions [a, b] of bearings A and B from `point` along the axis (m), a ≠ b.
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) bearings: Option<[f64; 2]>,
-    /// The axis's direction in space axes: the attitude at t = 0 is then the smallest rotation that puts the body
-    /// axis on it (instead of `initial.attitude`).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) axis_in_space: Option<[f64; 3]>,
-    /// The carrier that holds the axis: `{ rate, profile, freq_hz, phase_deg, center, accel, accel_profile }`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) carrier: Option<CarrierFile>,
+file_table! {
+    /// `[motion]`.
+    #[derive(Copy)]
+    pub(in crate::scene) struct MotionFile(pub(super)) "[motion]",
+        "absent: free rotation" {
+        opt kind as "type": MotionKind = key("\"free\" | \"fixed_axis\" | \"hinge\"", "–", "required in the table", "", "free (no other keys), a prescribed rotation about a fixed axis, or a hinge (θ from the effects)");
+        arr axis: [f64; 3] = key("[x, y, z]", "–", "`axis` or `tilt_deg` required", "", "the fixed axis's direction in body axes, normalised; not zero");
+        opt tilt_deg: f64 = key("number", "deg", "none", "", "instead of `axis`: axis = (0, −sin tilt, cos tilt)");
+        opt rate: f64 = key("number", "rad/s", "0", "", "θ̇ at t = 0");
+        opt rate_rpm: f64 = key("number", "rpm", "none", "", "instead of `rate`: rate = rate_rpm · 2π/60");
+        opt accel: f64 = key("number", "rad/s²", "0", "", "constant θ̈; fixed axis only");
+        arr point: [f64; 3] = position("[0, 0, 0]", "a point of the axis: the moment center");
+        opt angle_deg: f64 = key("number", "deg", "0", "", "hinge only: θ at t = 0");
+        arr bearings: [f64; 2] = key("[a, b]", "m", "none", "from `point`, along the axis", "positions of bearings A and B, a ≠ b; adds the `R_*` columns");
+        arr axis_in_space: [f64; 3] = key("[x, y, z]", "–", "none", "", "the axis's direction in space axes: the attitude at t = 0 puts the body axis on it (instead of `initial.attitude`)");
+        opt carrier: CarrierFile = key("inline table", "–", "none", "", "the axis turns with a carrier: `[motion.carrier]`");
+    }
 }
 
-/// `carrier = { … }` in `[motion]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct CarrierFile {
-    /// rad/s, space axes.
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) rate: Option<[f64; 3]>,
-    /// Default constant.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) profile: Option<CarrierProfileKind>,
-    /// Hz (sine).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) freq_hz: Option<f64>,
-    /// Degrees (sine).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) phase_deg: Option<f64>,
-    /// m, from the axis point at t = 0, space axes (a vehicle's centre of rotation).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) center: Option<[f64; 3]>,
-    /// m/s², space axes (a vehicle's own acceleration).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) accel: Option<[f64; 3]>,
-    /// Default constant.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) accel_profile: Option<CarrierProfileKind>,
+file_table! {
+    /// `carrier = { … }` in `[motion]`.
+    #[derive(Copy)]
+    pub(in crate::scene) struct CarrierFile(pub(super)) "[motion.carrier]",
+        "a carrier turning the axis, its point and bearings at Ω_c = rate·p(t), space axes, about the axis point" {
+        arr rate: [f64; 3] = key("[x, y, z]", "rad/s", "required", "", "space axes");
+        opt profile: CarrierProfileKind = key("\"constant\" | \"sine\"", "–", "\"constant\"", "", "p = 1, or sin(2π freq_hz t + phase_deg)");
+        @sine;
+        arr center: [f64; 3] = key("[x, y, z]", "m", "the axis point", "from the axis point, space axes at t = 0; a point of the vehicle, turning with it", "the point the carrier turns about: the axis point then moves on a circle about it");
+        arr accel: [f64; 3] = key("[x, y, z]", "m/s²", "[0, 0, 0]", "", "the vehicle's own linear acceleration, space axes (29.43 upward = a 3 g load factor)");
+        opt accel_profile: CarrierProfileKind = key("\"constant\" | \"sine\"", "–", "\"constant\"", "", "`accel` times 1, or times sin(2π freq_hz t + phase_deg) with the carrier's freq_hz and phase_deg");
+    }
 }
 
 /// A carrier's `profile`.
@@ -285,31 +140,15 @@ pub(super) enum CarrierProfileKind {
     Sine,
 }
 
-/// `[initial]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct InitialFile {
-    /// rad/s, body axes.
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) omega: Option<[f64; 3]>,
-    /// [w, x, y, z], body → space (normalised by validation).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) attitude: Option<[f64; 4]>,
-    /// The attitude as intrinsic z-y'-x'' angles [z, y, x] in degrees (instead of `attitude`).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) attitude_euler_deg: Option<[f64; 3]>,
+file_table! {
+    /// `[initial]`.
+    #[derive(Copy)]
+    pub(in crate::scene) struct InitialFile(pub(super)) "[initial]",
+        "the state at t = 0" {
+        arr omega: [f64; 3] = key("[x, y, z]", "rad/s", "[0, 0, 0]", "", "ω(0) in body axes; free motion only");
+        arr attitude: [f64; 4] = key("[w, x, y, z]", "1", "[1, 0, 0, 0]", "", "body → space quaternion, normalised; not zero");
+        arr attitude_euler_deg: [f64; 3] = key("[z, y, x]", "deg", "none", "", "instead of `attitude`: intrinsic z-y′-x″ angles, R = R_z R_y′ R_x″");
+    }
 }
 
 /// The `type` of an effect.
@@ -331,95 +170,33 @@ pub(super) enum ProfileKind {
     Step,
 }
 
-/// One `[[effect]]`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct EffectFile {
-    /// `type`.
-    #[serde(rename = "type", skip_serializing_if = "Option::is_none")]
-    pub(super) kind: Option<EffectKind>,
-    /// The axes a torque's value is given in (default body).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) frame: Option<Axes>,
-    /// N·m.
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) value: Option<[f64; 3]>,
-    /// Default constant.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) profile: Option<ProfileKind>,
-    /// Hz (sine).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) freq_hz: Option<f64>,
-    /// Degrees (sine).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) phase_deg: Option<f64>,
-    /// s (step).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) t_on: Option<f64>,
-    /// s (step).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) t_off: Option<f64>,
-    /// m/s², space axes (gravity; default (0, 0, −9.81)).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) g: Option<[f64; 3]>,
-    /// The fixed point, body axes, relative to C (m) (gravity).
-    #[serde(
-        default,
-        deserialize_with = "exactly_n",
-        skip_serializing_if = "Option::is_none"
-    )]
-    pub(super) pivot: Option<[f64; 3]>,
-    /// N·m·s (damping).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) c: Option<f64>,
-    /// The CSV file of a torque table, relative to the scene file.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) file: Option<std::path::PathBuf>,
-    /// A torque table's interpolation (default linear).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) interpolation: Option<Interpolation>,
+file_table! {
+    /// One `[[effect]]`.
+    pub(in crate::scene) struct EffectFile(pub(super)) "[[effect]]",
+        "a moment on the body; any number, at most one gravity" {
+        opt kind as "type": EffectKind = key("\"torque\" | \"gravity\" | \"damping\" | \"torque_table\"", "–", "required", "", "the effect");
+        opt frame: Axes = key("\"body\" | \"space\"", "–", "\"body\"", "", "torque and torque_table: the axes of the moment");
+        arr value: [f64; 3] = key("[x, y, z]", "N·m", "required for `torque`", "", "the torque (amplitude for `sine`)");
+        opt profile: ProfileKind = profile("torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off");
+        @sine;
+        @step;
+        arr g: [f64; 3] = key("[x, y, z]", "m/s²", "[0, 0, -9.81]", "", "gravity: uniform, space axes, acting at C");
+        arr pivot: [f64; 3] = position("required for free motion", "gravity: the fixed point, which becomes the moment center (an error with a fixed axis or hinge)");
+        opt c: f64 = key("number", "N·m·s", "required for `damping`", "", "viscous M = −c·ω, ≥ 0");
+        opt file: std::path::PathBuf = key("path", "–", "required for `torque_table`", "", "CSV with header t,M_x,M_y,M_z (s, N·m), relative to the scene file; zero outside its rows");
+        opt interpolation: Interpolation = key("\"linear\" | \"cubic\"", "–", "\"linear\"", "", "torque_table: between rows (cubic: the natural spline)");
+    }
 }
 
-/// One `[[event]]`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct EventFile {
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) name: Option<String>,
-    /// A column, or `|X|`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) when: Option<String>,
-    /// The value crossed.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) crosses: Option<f64>,
-    /// `up`, `down` or `both` (crossings; default both).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) direction: Option<Direction>,
-    /// `max` or `min`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) extremum: Option<Extremum>,
-    /// Default false.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub(super) stop: Option<bool>,
-}
-
-/// An array of exactly `N` numbers. (serde's `[f64; N]` ignores extra elements when TOML drives it, so
-/// `omega = [1, 2, 3, 4]` would pass silently.)
-fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
-    deserializer: D,
-) -> Result<Option<[f64; N]>, D::Error> {
-    let items = Vec::<f64>::deserialize(deserializer)?;
-    <[f64; N]>::try_from(items.as_slice())
-        .map(Some)
-        .map_err(|_| {
-            D::Error::invalid_length(items.len(), &format!("an array of {N} numbers").as_str())
-        })
+file_table! {
+    /// One `[[event]]`.
+    pub(in crate::scene) struct EventFile(pub(super)) "[[event]]",
+        "a moment located between the rows on the continuous solution" {
+        opt name: String = key("string", "–", "required", "", "letters, digits, `_`; unique");
+        opt when: String = key("string", "–", "required", "", "a CSV column of this run, or `|X|` for the norm of X_s_x..z");
+        opt crosses: f64 = key("number", "the column's", "one of `crosses` / `extremum`", "", "a crossing of this value");
+        opt direction: Direction = key("\"up\" | \"down\" | \"both\"", "–", "\"both\"", "", "with `crosses`");
+        opt extremum: Extremum = key("\"max\" | \"min\"", "–", "one of `crosses` / `extremum`", "", "every local extremum");
+        opt stop: bool = key("bool", "–", "false", "", "true: the run ends at the first occurrence");
+    }
 }

@@ -15,7 +15,7 @@ use super::{
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
-use crate::scene::checks::{Checked, invalid, only_keys, required};
+use crate::keys::{Checked, invalid, only_keys, required};
 use crate::scene::source_map::KeyPath;
 use crate::wheels::{WheelKeys, WheelMode};
 

@@ -9,13 +9,14 @@
 mod body;
 mod effect;
 mod event;
-mod file_form;
+pub(in crate::scene) mod file_form;
 mod from_file;
 mod motion;
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::frames::Form;
+use crate::keys::{file_table, key};
 use crate::method::{Backend, Method};
 
 pub use body::{
@@ -72,46 +73,46 @@ pub enum AttitudeSpec {
     EulerDeg([f64; 3]),
 }
 
-/// `[solver]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SolverSpec {
-    /// Default [`Method::DEFAULT`].
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub method: Option<Method>,
-    /// The form of Euler's equation (default body).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub frame: Option<Form>,
-    /// Default own.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub backend: Option<Backend>,
-    /// Default [`crate::method::defaults::RTOL`].
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rtol: Option<f64>,
-    /// Default [`crate::method::defaults::ATOL`].
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub atol: Option<f64>,
-    /// Default [`crate::method::defaults::DT`] (s).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dt: Option<f64>,
-    /// s, ≥ 0, required.
-    pub t_end: f64,
+file_table! {
+    /// `[solver]`.
+    #[derive(Copy)]
+    pub struct SolverSpec(pub) "[solver]",
+        "the integration; `run --method --frame --backend --rtol --atol --dt --t-end` override it" {
+        /// Default [`Method::DEFAULT`].
+        opt method: Method = key("\"rk4\" | \"split2\" | \"split4\" | \"dopri5\" | \"dop853\" | \"exact\"", "–", "\"dop853\"", "", "fixed step (`dt`), adaptive, or the torque-free closed form");
+        /// The form of Euler's equation (default body).
+        opt frame: Form = key("\"body\" | \"space\"", "–", "\"body\"", "", "which form of Euler's equation is integrated");
+        /// Default own.
+        opt backend: Backend = key("\"own\" | \"ode_solvers\"", "–", "\"own\"", "", "the Runge–Kutta implementation");
+        /// Default [`crate::method::defaults::RTOL`].
+        opt rtol: f64 = key("number", "1", "1e-10", "", "adaptive methods, in [1e-14, 1)");
+        /// Default [`crate::method::defaults::ATOL`].
+        opt atol: f64 = key("number", "as the state", "1e-12", "", "adaptive methods, > 0");
+        /// Default [`crate::method::defaults::DT`] (s).
+        opt dt: f64 = key("number", "s", "1e-3", "", "fixed-step methods, > 0");
+        /// s, ≥ 0, required.
+        req t_end: f64 = key("number", "s", "required", "", "≥ 0");
+    }
 }
 
-/// `[output]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct OutputSpec {
-    /// s between rows, > 0, required.
-    pub every: f64,
+file_table! {
+    /// `[output]`.
+    #[derive(Copy)]
+    pub struct OutputSpec(pub) "[output]",
+        "the rows; `run --every` overrides it" {
+        /// s between rows, > 0, required.
+        req every: f64 = key("number", "s", "required", "", "> 0: rows at t = k·every and at t_end");
+    }
 }
 
-/// `[compare]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CompareSpec {
-    /// Largest allowed difference for `eulerdyn compare`.
-    pub tolerance: f64,
+file_table! {
+    /// `[compare]`.
+    #[derive(Copy)]
+    pub struct CompareSpec(pub) "[compare]",
+        "`eulerdyn compare`'s tolerance" {
+        /// Largest allowed difference for `eulerdyn compare`.
+        req tolerance: f64 = key("number", "as the quantity", "1e-8", "", "largest accepted difference, > 0");
+    }
 }
 
 impl Serialize for SceneSpec {

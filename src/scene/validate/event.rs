@@ -3,9 +3,9 @@
 
 use super::key_of;
 use crate::events::{Condition, Event, Quantity};
+use crate::keys::{Checked, finite, invalid};
 use crate::method::{Backend, Method};
 use crate::sample::ColumnSet;
-use crate::scene::checks::{Checked, finite, invalid};
 use crate::scene::model::{Motion, SolverConfig};
 use crate::scene::source_map::KeyPath;
 use crate::scene::spec::{ConditionSpec, SceneSpec};

@@ -12,14 +12,14 @@ mod solver;
 
 use nalgebra::{Quaternion, UnitQuaternion};
 
-use super::checks::{Checked, Invalid, finite, invalid, positive, vector};
 use super::model::Scene;
 use super::source_map::KeyPath;
 use super::spec::{AttitudeSpec, MotionSpec, SceneSpec};
 use crate::frames::Form;
+use crate::keys::{Checked, Invalid, finite, invalid, positive, vector};
 use crate::method::{Backend, Method, defaults};
 
-pub use super::checks::InvalidScene;
+pub use crate::keys::InvalidScene;
 pub use solver::{MAX_FIXED_STEPS, MAX_ROWS};
 
 /// Values that replace the scene's `[solver]` and `[output]` values (the command line's `--method`, `--dt`, …).

@@ -1,11 +1,11 @@
-//! The checks that both the scene file's reading ([`super::spec`]) and validation share: the error that names the key
+//! The checks that both the scene file's reading (`scene::spec`) and validation share: the error that names the key
 //! at fault, and the tests of a key's presence and of a number's range that produce it.
 
 use std::fmt;
 
 use nalgebra::Vector3;
 
-use super::source_map::KeyPath;
+use super::KeyPath;
 
 /// A scene that is not valid: the key at fault (e.g. `body.mass`, `effect[1].c`) and what is wrong.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,10 +24,10 @@ impl fmt::Display for InvalidScene {
 
 impl std::error::Error for InvalidScene {}
 
-pub(in crate::scene) type Invalid = InvalidScene;
-pub(in crate::scene) type Checked<T> = Result<T, Invalid>;
+pub(crate) type Invalid = InvalidScene;
+pub(crate) type Checked<T> = Result<T, Invalid>;
 
-pub(in crate::scene) fn invalid<T>(key: KeyPath, problem: impl Into<String>) -> Checked<T> {
+pub(crate) fn invalid<T>(key: KeyPath, problem: impl Into<String>) -> Checked<T> {
     Err(Invalid {
         key,
         problem: problem.into(),
@@ -35,7 +35,7 @@ pub(in crate::scene) fn invalid<T>(key: KeyPath, problem: impl Into<String>) -> 
 }
 
 /// The value of a key that `kind` requires.
-pub(in crate::scene) fn required<T>(key: KeyPath, value: Option<T>, kind: &str) -> Checked<T> {
+pub(crate) fn required<T>(key: KeyPath, value: Option<T>, kind: &str) -> Checked<T> {
     value.ok_or_else(|| Invalid {
         problem: format!("missing: {kind} needs `{}`", key.last_key()),
         key,
@@ -44,7 +44,7 @@ pub(in crate::scene) fn required<T>(key: KeyPath, value: Option<T>, kind: &str) 
 
 /// Refuses the keys of `table` that are given (`given`: every optional key and whether it is present) but that
 /// `kind` does not take (`takes`).
-pub(in crate::scene) fn only_keys(
+pub(crate) fn only_keys(
     table: &KeyPath,
     kind: &str,
     takes: &[&str],
@@ -69,7 +69,7 @@ pub(in crate::scene) fn only_keys(
     }
 }
 
-pub(in crate::scene) fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
+pub(crate) fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
@@ -77,7 +77,7 @@ pub(in crate::scene) fn finite(key: KeyPath, v: f64, unit: &str) -> Checked<f64>
     }
 }
 
-pub(in crate::scene) fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
+pub(crate) fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f64> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
@@ -88,7 +88,7 @@ pub(in crate::scene) fn positive(key: KeyPath, v: f64, unit: &str) -> Checked<f6
     }
 }
 
-pub(in crate::scene) fn vector(key: KeyPath, v: [f64; 3], unit: &str) -> Checked<Vector3<f64>> {
+pub(crate) fn vector(key: KeyPath, v: [f64; 3], unit: &str) -> Checked<Vector3<f64>> {
     if v.iter().all(|x| x.is_finite()) {
         Ok(Vector3::from(v))
     } else {

@@ -1,0 +1,181 @@
+//! A table of the scene file, declared once ([`file_table!`]): each key's field, its storage and what the reference
+//! says of it. From that one declaration come the flat serde struct (every optional key an `Option`, unknown keys
+//! refused), its [`Table`] for the book's key reference, and `given()`, the keys a file gives — which the "takes no
+//! `X`" and "either X or Y" checks read instead of listing the keys again.
+
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer};
+
+/// One key of a table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Key {
+    /// The key as written in the file.
+    pub name: &'static str,
+    /// What the value is: `number`, `[x, y, z]`, a string from a list, a table…
+    pub kind: &'static str,
+    /// SI unit (`1` dimensionless, `–` none).
+    pub unit: &'static str,
+    /// The value when the key is absent (`required` when it may not be).
+    pub default: &'static str,
+    /// For a position: the point it is measured from and its axes; else empty.
+    pub origin: &'static str,
+    /// What it means, its bounds.
+    pub doc: &'static str,
+}
+
+/// One table of a scene file and its keys.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Table {
+    /// As written in the file (`[body]`, `[[effect]]`; the top level is empty).
+    pub header: &'static str,
+    /// What the table is.
+    pub about: &'static str,
+    /// Its keys, in the order of the file form.
+    pub keys: &'static [Key],
+}
+
+/// A key's description without its name (the declaration names it): kind, unit, default, origin, meaning.
+pub(crate) const fn key(
+    kind: &'static str,
+    unit: &'static str,
+    default: &'static str,
+    origin: &'static str,
+    doc: &'static str,
+) -> Key {
+    Key {
+        name: "",
+        kind,
+        unit,
+        default,
+        origin,
+        doc,
+    }
+}
+
+impl Key {
+    /// The same key, named.
+    pub(crate) const fn named(self, name: &'static str) -> Key {
+        Key { name, ..self }
+    }
+}
+
+/// Where a position in body axes is measured from.
+const FROM_REFERENCE: &str =
+    "the reference origin (the shape's center, or the point `inertia` is about), body axes";
+
+/// A position in body axes (m), measured from the reference origin: default, meaning.
+pub(crate) const fn position(default: &'static str, doc: &'static str) -> Key {
+    key("[x, y, z]", "m", default, FROM_REFERENCE, doc)
+}
+
+/// The `profile` of a time profile (`constant`, `sine` or `step`), and what it means where it stands.
+pub(crate) const fn profile(doc: &'static str) -> Key {
+    key(
+        "\"constant\" | \"sine\" | \"step\"",
+        "–",
+        "\"constant\"",
+        "",
+        doc,
+    )
+}
+
+/// An array of exactly `N` numbers. (serde's `[f64; N]` ignores extra elements when TOML drives it, so
+/// `omega = [1, 2, 3, 4]` would pass silently.)
+pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
+    deserializer: D,
+) -> Result<Option<[f64; N]>, D::Error> {
+    let items = Vec::<f64>::deserialize(deserializer)?;
+    <[f64; N]>::try_from(items.as_slice())
+        .map(Some)
+        .map_err(|_| {
+            D::Error::invalid_length(items.len(), &format!("an array of {N} numbers").as_str())
+        })
+}
+
+/// Declares a table of the scene file once:
+///
+/// ```text
+/// file_table! {
+///     /// The struct's doc.
+///     pub(super) struct CarrierFile(pub(super)) "[motion.carrier]", "what the table is" {
+///         arr rate: [f64; 3] = key("[x, y, z]", "rad/s", "required", "", "space axes");
+///         opt profile: ProfileKind = profile("…");
+///         @sine;
+///     }
+/// }
+/// ```
+///
+/// Each key is `STORAGE FIELD [as "NAME"]: TYPE = KEY;` — `opt` (an `Option<TYPE>`, left out when absent), `arr`
+/// (an `Option` of an array of exactly N numbers), `req` (a plain `TYPE` serde requires), `list` (a `Vec<TYPE>`,
+/// an array of tables) — or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
+/// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`]),
+/// and `given()`: the names of the keys the file gives, in order.
+macro_rules! file_table {
+    (@munch $head:tt [$($done:tt)*]) => { file_table!(@emit $head $($done)*); };
+    (@munch $head:tt [$($done:tt)*] @sine; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)*]
+            opt freq_hz: f64 = $crate::keys::key("number", "Hz", "required for `sine`", "", "≥ 0");
+            opt phase_deg: f64 = $crate::keys::key("number", "deg", "0", "", "`sine` only");
+            $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] @step; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)*]
+            opt t_on: f64 = $crate::keys::key("number", "s", "0", "", "`step` only");
+            opt t_off: f64 = $crate::keys::key("number", "s", "never", "", "`step` only; > t_on");
+            $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [$(rename = $rename,)? skip_serializing_if = "Option::is_none"]
+            $field [$($rename)?] Option<$ty>; $key)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* arr $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (arr [$(#[$m])*] [$(rename = $rename,)? default, deserialize_with = "crate::keys::exactly_n",
+            skip_serializing_if = "Option::is_none"] $field [$($rename)?] Option<$ty>; $key)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* req $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (req [$(#[$m])*] [$(rename = $rename)?] $field [$($rename)?] $ty; $key)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* list $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (list [$(#[$m])*] [$(rename = $rename,)? default, skip_serializing_if = "Vec::is_empty"]
+            $field [$($rename)?] Vec<$ty>; $key)] $($rest)*);
+    };
+    (@name $field:ident) => { stringify!($field) };
+    (@given $value:expr, req) => { true };
+    (@given $value:expr, list) => { !$value.is_empty() };
+    (@given $value:expr, $optional:ident) => { $value.is_some() };
+    (@name $field:ident $rename:literal) => { $rename };
+    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal}
+        $(($store:ident [$($m:tt)*] [$($serde:tt)*] $field:ident [$($rename:literal)?] $ty:ty; $key:expr))*) => {
+        $($meta)*
+        #[derive(Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+        #[serde(deny_unknown_fields)]
+        $vis struct $name {
+            $($($m)* #[serde($($serde)*)] $fvis $field: $ty,)*
+        }
+
+        impl $name {
+            /// The table's keys, as the book's reference lists them.
+            #[allow(dead_code)]
+            pub(crate) const TABLE: $crate::keys::Table = $crate::keys::Table {
+                header: $header,
+                about: $about,
+                keys: &[$($key.named(file_table!(@name $field $($rename)?)),)*],
+            };
+
+            /// The keys this table gives, in the declaration's order.
+            #[allow(dead_code)]
+            pub(crate) fn given(&self) -> Vec<&'static str> {
+                let mut given = Vec::new();
+                $(if file_table!(@given self.$field, $store) {
+                    given.push(file_table!(@name $field $($rename)?));
+                })*
+                given
+            }
+        }
+    };
+    ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }) => {
+        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about} [] $($body)*);
+    };
+}
+
+pub(crate) use file_table;
