@@ -42,20 +42,20 @@ pub(crate) fn required<T>(key: KeyPath, value: Option<T>, kind: &str) -> Checked
     })
 }
 
-/// Refuses the keys of `table` that are given (`given`: every optional key and whether it is present) but that
-/// `kind` does not take (`takes`).
+/// Refuses the keys of `table` that are given (`given`, as the table's `given()` lists them) but that `kind` does
+/// not take (`takes`); `type`, which names the kind, is always taken.
 pub(crate) fn only_keys(
     table: &KeyPath,
     kind: &str,
     takes: &[&str],
-    given: &[(&str, bool)],
+    given: &[&str],
 ) -> Checked<()> {
     match given
         .iter()
-        .find(|(name, present)| *present && !takes.contains(name))
+        .find(|name| **name != "type" && !takes.contains(name))
     {
         None => Ok(()),
-        Some((name, _)) => invalid(
+        Some(name) => invalid(
             table.clone().key(name),
             if takes.is_empty() {
                 format!("{kind} takes no `{name}`")

@@ -102,6 +102,7 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 ///         opt profile: ProfileKind = profile("…");
 ///         @sine;
 ///     }
+///     either { center, accel: "…"; }
 /// }
 /// ```
 ///
@@ -109,7 +110,8 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// (an `Option` of an array of exactly N numbers), `req` (a plain `TYPE` serde requires), `list` (a `Vec<TYPE>`,
 /// an array of tables) — or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
 /// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`]),
-/// and `given()`: the names of the keys the file gives, in order.
+/// and `given()`: the names of the keys the file gives, in order. An optional `either { A, B: "message"; … }` after
+/// the keys declares keys that exclude each other: `exclusive()` refuses both, naming `B`.
 macro_rules! file_table {
     (@munch $head:tt [$($done:tt)*]) => { file_table!(@emit $head $($done)*); };
     (@munch $head:tt [$($done:tt)*] @sine; $($rest:tt)*) => {
@@ -144,7 +146,19 @@ macro_rules! file_table {
     (@given $value:expr, list) => { !$value.is_empty() };
     (@given $value:expr, $optional:ident) => { $value.is_some() };
     (@name $field:ident $rename:literal) => { $rename };
-    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal}
+    (@either $name:ident []) => {};
+    (@either $name:ident [$(($a:ident $b:ident $message:literal))+]) => {
+        impl $name {
+            /// Refuses keys given together that exclude each other (the declaration's `either`), naming the second.
+            pub(crate) fn exclusive(&self, table: &$crate::keys::KeyPath) -> $crate::keys::Checked<()> {
+                $(if self.$a.is_some() && self.$b.is_some() {
+                    return $crate::keys::invalid(table.clone().key(stringify!($b)), $message);
+                })+
+                Ok(())
+            }
+        }
+    };
+    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt}
         $(($store:ident [$($m:tt)*] [$($serde:tt)*] $field:ident [$($rename:literal)?] $ty:ty; $key:expr))*) => {
         $($meta)*
         #[derive(Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -172,9 +186,13 @@ macro_rules! file_table {
                 given
             }
         }
+
+        file_table!(@either $name $either);
     };
-    ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }) => {
-        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about} [] $($body)*);
+    ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }
+        $(either { $($a:ident, $b:ident: $message:literal;)+ })?) => {
+        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b $message))+)?]}
+            [] $($body)*);
     };
 }
 

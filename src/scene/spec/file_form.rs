@@ -37,6 +37,9 @@ file_table! {
         list point_mass: PointMassFile = key("array of tables", "–", "none", "", "point masses rigidly attached: `[[body.point_mass]]`");
         list rotor: RotorFile = key("array of tables", "–", "none", "", "wheels spinning inside the body (at most 4): `[[body.rotor]]`");
     }
+    either {
+        shape, inertia: "give either `shape` or `inertia`, not both";
+    }
 }
 
 file_table! {
@@ -116,6 +119,10 @@ file_table! {
         arr axis_in_space: [f64; 3] = key("[x, y, z]", "–", "none", "", "the axis's direction in space axes: the attitude at t = 0 puts the body axis on it (instead of `initial.attitude`)");
         opt carrier: CarrierFile = key("inline table", "–", "none", "", "the axis turns with a carrier: `[motion.carrier]`");
     }
+    either {
+        axis, tilt_deg: "give either `axis` or `tilt_deg`, not both";
+        rate, rate_rpm: "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both";
+    }
 }
 
 file_table! {
@@ -148,6 +155,9 @@ file_table! {
         arr omega: [f64; 3] = key("[x, y, z]", "rad/s", "[0, 0, 0]", "", "ω(0) in body axes; free motion only");
         arr attitude: [f64; 4] = key("[w, x, y, z]", "1", "[1, 0, 0, 0]", "", "body → space quaternion, normalised; not zero");
         arr attitude_euler_deg: [f64; 3] = key("[z, y, x]", "deg", "none", "", "instead of `attitude`: intrinsic z-y′-x″ angles, R = R_z R_y′ R_x″");
+    }
+    either {
+        attitude, attitude_euler_deg: "give either `attitude` or `attitude_euler_deg`, not both";
     }
 }
 
@@ -198,5 +208,8 @@ file_table! {
         opt direction: Direction = key("\"up\" | \"down\" | \"both\"", "–", "\"both\"", "", "with `crosses`");
         opt extremum: Extremum = key("\"max\" | \"min\"", "–", "one of `crosses` / `extremum`", "", "every local extremum");
         opt stop: bool = key("bool", "–", "false", "", "true: the run ends at the first occurrence");
+    }
+    either {
+        crosses, extremum: "give either `crosses` (a value) or `extremum` (\"max\" or \"min\"), not both";
     }
 }

@@ -43,20 +43,15 @@ impl SceneFile {
 
 fn body(doc: BodyFile) -> Checked<BodySpec> {
     let key = || KeyPath::root().key("body");
+    doc.exclusive(&key())?;
     let distribution = match (doc.shape, doc.inertia) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                key().key("inertia"),
-                "give either `shape` or `inertia`, not both",
-            );
-        }
         (None, None) => {
             return invalid(
                 key(),
                 "the body needs `shape` (e.g. { type = \"thin_disk\", radius = 0.3 }) or `inertia` ([I1, I2, I3] or a 3x3 tensor)",
             );
         }
-        (Some(s), None) => Distribution::Shape(shape(&s)?),
+        (Some(s), _) => Distribution::Shape(shape(&s)?),
         (None, Some(inertia)) => Distribution::Inertia(inertia),
     };
     let point_mass = (doc.point_mass.iter().enumerate())
@@ -93,14 +88,8 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
     };
     let drive = rotor_drive(&table, doc, &keys)?;
     if !matches!(drive, RotorDrive::Torque { .. }) {
-        let given = [
-            ("profile", keys.profile.is_some()),
-            ("freq_hz", keys.freq_hz.is_some()),
-            ("phase_deg", keys.phase_deg.is_some()),
-            ("t_on", keys.t_on.is_some()),
-            ("t_off", keys.t_off.is_some()),
-        ];
-        if let Some((name, _)) = given.iter().find(|(_, present)| *present) {
+        const PROFILE: [&str; 5] = ["profile", "freq_hz", "phase_deg", "t_on", "t_off"];
+        if let Some(name) = doc.given().into_iter().find(|k| PROFILE.contains(k)) {
             return invalid(
                 key(name),
                 format!("`{name}` is the motor torque's profile: it applies with `torque` only"),
@@ -126,13 +115,9 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
 
 /// A rotor's drive: at most one of `spin_accel`, `torque`, `torque_table` and `mode = "free"`.
 fn rotor_drive(table: &KeyPath, doc: &RotorFile, keys: &ProfileKeys) -> Checked<RotorDrive> {
-    let given = [
-        ("spin_accel", doc.spin_accel.is_some()),
-        ("torque", doc.torque.is_some()),
-        ("torque_table", doc.torque_table.is_some()),
-        ("mode", doc.mode.is_some()),
-    ];
-    let mut present = given.iter().filter(|(_, p)| *p).map(|(name, _)| *name);
+    const DRIVES: [&str; 4] = ["spin_accel", "torque", "torque_table", "mode"];
+    let given = doc.given();
+    let mut present = given.into_iter().filter(|k| DRIVES.contains(k));
     if let (Some(first), Some(second)) = (present.next(), present.next()) {
         let message = match (first, second) {
             ("spin_accel", "torque") => {
@@ -177,13 +162,7 @@ fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
         ShapeKind::Cylinder => ("cylinder", &["radius", "height"]),
     };
     let kind_text = format!("shape type = \"{name}\"");
-    let given = [
-        ("radius", doc.radius.is_some()),
-        ("thickness", doc.thickness.is_some()),
-        ("length", doc.length.is_some()),
-        ("size", doc.size.is_some()),
-        ("height", doc.height.is_some()),
-    ];
+    let given = doc.given();
     only_keys(&table, &kind_text, takes, &given)?;
     let need = |name: &str, v: Option<f64>| required(table.clone().key(name), v, &kind_text);
     Ok(match kind {
@@ -206,18 +185,7 @@ fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
 /// `[motion]`: its `type` and the keys that type takes.
 fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
     let table = || KeyPath::root().key("motion");
-    let given = [
-        ("rate_rpm", doc.rate_rpm.is_some()),
-        ("axis", doc.axis.is_some()),
-        ("tilt_deg", doc.tilt_deg.is_some()),
-        ("rate", doc.rate.is_some()),
-        ("accel", doc.accel.is_some()),
-        ("point", doc.point.is_some()),
-        ("angle_deg", doc.angle_deg.is_some()),
-        ("bearings", doc.bearings.is_some()),
-        ("axis_in_space", doc.axis_in_space.is_some()),
-        ("carrier", doc.carrier.is_some()),
-    ];
+    let given = doc.given();
     const AXIS_KEYS: [&str; 8] = [
         "axis",
         "tilt_deg",
@@ -235,11 +203,9 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
             "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
         ),
         Some(MotionKind::Free) => {
-            if let Some(name) = (doc.carrier.as_ref()).and_then(|c| {
-                [("center", c.center.is_some()), ("accel", c.accel.is_some())]
-                    .into_iter()
-                    .find_map(|(name, given)| given.then_some(name))
-            }) {
+            let vehicle_key =
+                |c: &CarrierFile| (c.given().into_iter()).find(|k| ["center", "accel"].contains(k));
+            if let Some(name) = doc.carrier.as_ref().and_then(vehicle_key) {
                 return invalid(
                     table().key("carrier").key(name),
                     format!(
@@ -272,31 +238,20 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
 /// The keys of a fixed-axis or hinge motion's axis: `axis` or `tilt_deg`, `rate` or `rate_rpm`.
 fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
     let motion = || KeyPath::root().key("motion");
+    doc.exclusive(&motion())?;
     let direction = match (doc.axis, doc.tilt_deg) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                motion().key("tilt_deg"),
-                "give either `axis` or `tilt_deg`, not both",
-            );
-        }
         (None, None) => {
             return invalid(
                 motion(),
                 "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
             );
         }
-        (Some(a), None) => AxisDirection::Body(a),
+        (Some(a), _) => AxisDirection::Body(a),
         (None, Some(tilt)) => AxisDirection::TiltDeg(tilt),
     };
     let rate = match (doc.rate, doc.rate_rpm) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                motion().key("rate_rpm"),
-                "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both",
-            );
-        }
         (None, Some(rpm)) => RateSpec::Rpm(rpm),
-        (rate, None) => RateSpec::RadPerSecond(rate.unwrap_or(0.0)),
+        (rate, _) => RateSpec::RadPerSecond(rate.unwrap_or(0.0)),
     };
     Ok(AxisSpec {
         direction,
@@ -331,9 +286,7 @@ fn carrier(doc: &CarrierFile) -> Checked<CarrierSpec> {
             phase_deg: doc.phase_deg.unwrap_or(0.0),
         }
     } else {
-        if let Some(name) = [("freq_hz", doc.freq_hz), ("phase_deg", doc.phase_deg)]
-            .iter()
-            .find_map(|(name, v)| v.map(|_| *name))
+        if let Some(name) = (doc.given().into_iter()).find(|k| ["freq_hz", "phase_deg"].contains(k))
         {
             return invalid(
                 key(name),
@@ -383,14 +336,9 @@ fn carrier_file(carrier: &CarrierSpec) -> CarrierFile {
 
 /// `[initial]`: `attitude` or `attitude_euler_deg`.
 fn initial(doc: InitialFile) -> Checked<InitialSpec> {
+    doc.exclusive(&KeyPath::root().key("initial"))?;
     let attitude = match (doc.attitude, doc.attitude_euler_deg) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                KeyPath::root().key("initial").key("attitude_euler_deg"),
-                "give either `attitude` or `attitude_euler_deg`, not both",
-            );
-        }
-        (Some(q), None) => Some(AttitudeSpec::Quaternion(q)),
+        (Some(q), _) => Some(AttitudeSpec::Quaternion(q)),
         (None, Some(angles)) => Some(AttitudeSpec::EulerDeg(angles)),
         (None, None) => None,
     };
@@ -428,20 +376,7 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
         EffectKind::TorqueTable => ("torque_table", &["file", "frame", "interpolation"]),
     };
     let kind_text = format!("effect type = \"{name}\"");
-    let given = [
-        ("frame", doc.frame.is_some()),
-        ("value", doc.value.is_some()),
-        ("profile", doc.profile.is_some()),
-        ("freq_hz", doc.freq_hz.is_some()),
-        ("phase_deg", doc.phase_deg.is_some()),
-        ("t_on", doc.t_on.is_some()),
-        ("t_off", doc.t_off.is_some()),
-        ("g", doc.g.is_some()),
-        ("pivot", doc.pivot.is_some()),
-        ("c", doc.c.is_some()),
-        ("file", doc.file.is_some()),
-        ("interpolation", doc.interpolation.is_some()),
-    ];
+    let given = doc.given();
     only_keys(&table, &kind_text, takes, &given)?;
     Ok(match kind {
         EffectKind::Torque => EffectSpec::Torque(TorqueSpec {
@@ -538,20 +473,15 @@ fn event(index: usize, doc: &EventFile) -> Checked<EventSpec> {
     let table = KeyPath::root().key("event").index(index);
     let key = |name: &str| table.clone().key(name);
     let kind = "an event";
+    doc.exclusive(&table)?;
     let condition = match (doc.crosses, doc.extremum) {
-        (Some(_), Some(_)) => {
-            return invalid(
-                key("extremum"),
-                "give either `crosses` (a value) or `extremum` (\"max\" or \"min\"), not both",
-            );
-        }
         (None, None) => {
             return invalid(
                 table,
                 "an event needs `crosses = VALUE` (with `direction` = \"up\" | \"down\" | \"both\") or `extremum` = \"max\" | \"min\"",
             );
         }
-        (Some(value), None) => ConditionSpec::Crosses {
+        (Some(value), _) => ConditionSpec::Crosses {
             value,
             direction: doc.direction.unwrap_or(Direction::Both),
         },
