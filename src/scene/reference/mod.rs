@@ -8,9 +8,10 @@
 //! `inertia` is about (C when there are no point masses).
 
 pub use crate::keys::{Key, Table};
+use crate::motion::carrier::keys::CarrierFile;
 use crate::scene::spec::file_form::{
-    BodyFile, CarrierFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile,
-    RotorFile, SceneFile, ShapeFile,
+    BodyFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile, RotorFile, SceneFile,
+    ShapeFile,
 };
 use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
 

@@ -9,6 +9,7 @@ use super::{CompareSpec, Direction, Extremum, InertiaSpec, MotionKind, OutputSpe
 use crate::effects::Interpolation;
 use crate::frames::Axes;
 use crate::keys::{file_table, key, position, profile};
+use crate::motion::carrier::keys::CarrierFile;
 
 file_table! {
     /// A whole scene, as a scene file writes it.
@@ -123,28 +124,6 @@ file_table! {
         axis, tilt_deg: "give either `axis` or `tilt_deg`, not both";
         rate, rate_rpm: "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both";
     }
-}
-
-file_table! {
-    /// `carrier = { … }` in `[motion]`.
-    #[derive(Copy)]
-    pub(in crate::scene) struct CarrierFile(pub(super)) "[motion.carrier]",
-        "a carrier turning the axis, its point and bearings at Ω_c = rate·p(t), space axes, about the axis point" {
-        arr rate: [f64; 3] = key("[x, y, z]", "rad/s", "required", "", "space axes");
-        opt profile: CarrierProfileKind = key("\"constant\" | \"sine\"", "–", "\"constant\"", "", "p = 1, or sin(2π freq_hz t + phase_deg)");
-        @sine;
-        arr center: [f64; 3] = key("[x, y, z]", "m", "the axis point", "from the axis point, space axes at t = 0; a point of the vehicle, turning with it", "the point the carrier turns about: the axis point then moves on a circle about it");
-        arr accel: [f64; 3] = key("[x, y, z]", "m/s²", "[0, 0, 0]", "", "the vehicle's own linear acceleration, space axes (29.43 upward = a 3 g load factor)");
-        opt accel_profile: CarrierProfileKind = key("\"constant\" | \"sine\"", "–", "\"constant\"", "", "`accel` times 1, or times sin(2π freq_hz t + phase_deg) with the carrier's freq_hz and phase_deg");
-    }
-}
-
-/// A carrier's `profile`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub(super) enum CarrierProfileKind {
-    Constant,
-    Sine,
 }
 
 file_table! {

@@ -4,18 +4,19 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, CarrierFile, CarrierProfileKind, EffectFile, EffectKind, EventFile, InitialFile,
-    MotionFile, PointMassFile, ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
+    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
+    ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec,
-    ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec,
-    InitialSpec, MotionKind, MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive,
-    RotorSpec, SceneSpec, ShapeSpec, TorqueSpec, TorqueTableSpec, VehicleSpec,
+    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, ConditionSpec, Direction, Distribution,
+    EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec,
+    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
+    TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
 use crate::keys::{Checked, invalid, only_keys, required};
+use crate::motion::carrier::{self, keys::CarrierFile};
 use crate::scene::source_map::KeyPath;
 use crate::wheels::{WheelKeys, WheelMode};
 
@@ -259,79 +260,8 @@ fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
         point: doc.point.unwrap_or([0.0; 3]),
         bearings: doc.bearings,
         axis_in_space: doc.axis_in_space,
-        carrier: doc.carrier.as_ref().map(carrier).transpose()?,
+        carrier: doc.carrier.as_ref().map(carrier::keys::read).transpose()?,
     })
-}
-
-/// `carrier = { rate, profile, freq_hz, phase_deg, center, accel, accel_profile }`: `rate` required, `freq_hz`
-/// when `profile` or `accel_profile` is a sine and only then; `accel_profile` with `accel` only.
-fn carrier(doc: &CarrierFile) -> Checked<CarrierSpec> {
-    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
-    let Some(rate) = doc.rate else {
-        return invalid(
-            key("rate"),
-            "a carrier needs `rate = [x, y, z]`: its angular velocity (rad/s, space axes)",
-        );
-    };
-    if doc.accel_profile.is_some() && doc.accel.is_none() {
-        return invalid(
-            key("accel_profile"),
-            "`accel_profile` applies to a carrier with `accel = [x, y, z]` only",
-        );
-    }
-    let kinds = [doc.profile, doc.accel_profile].map(|k| k.unwrap_or(CarrierProfileKind::Constant));
-    let sine = if kinds.contains(&CarrierProfileKind::Sine) {
-        CarrierProfileSpec::Sine {
-            freq_hz: required(key("freq_hz"), doc.freq_hz, "a sine carrier")?,
-            phase_deg: doc.phase_deg.unwrap_or(0.0),
-        }
-    } else {
-        if let Some(name) = (doc.given().into_iter()).find(|k| ["freq_hz", "phase_deg"].contains(k))
-        {
-            return invalid(
-                key(name),
-                format!("`{name}` applies to a carrier with profile = \"sine\" only"),
-            );
-        }
-        CarrierProfileSpec::Constant
-    };
-    let profile_of = |kind| match kind {
-        CarrierProfileKind::Constant => CarrierProfileSpec::Constant,
-        CarrierProfileKind::Sine => sine,
-    };
-    let vehicle = (doc.center.is_some() || doc.accel.is_some()).then(|| VehicleSpec {
-        center: doc.center.unwrap_or([0.0; 3]),
-        accel: doc.accel.unwrap_or([0.0; 3]),
-        accel_profile: profile_of(kinds[1]),
-    });
-    Ok(CarrierSpec {
-        rate,
-        profile: profile_of(kinds[0]),
-        vehicle,
-    })
-}
-
-/// The file form of a carrier; a sine's `freq_hz` and `phase_deg` are the carrier's or, with a constant rate
-/// profile, the vehicle's `accel_profile`'s (validation refuses two different sines).
-fn carrier_file(carrier: &CarrierSpec) -> CarrierFile {
-    let kind_of = |profile: &CarrierProfileSpec| match profile {
-        CarrierProfileSpec::Constant => (CarrierProfileKind::Constant, None),
-        CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
-            (CarrierProfileKind::Sine, Some((*freq_hz, *phase_deg)))
-        }
-    };
-    let (profile, rate_sine) = kind_of(&carrier.profile);
-    let accel_kind = carrier.vehicle.map(|v| kind_of(&v.accel_profile));
-    let sine = rate_sine.or(accel_kind.and_then(|(_, sine)| sine));
-    CarrierFile {
-        rate: Some(carrier.rate),
-        profile: Some(profile),
-        freq_hz: sine.map(|(freq_hz, _)| freq_hz),
-        phase_deg: sine.map(|(_, phase_deg)| phase_deg),
-        center: carrier.vehicle.map(|v| v.center),
-        accel: carrier.vehicle.map(|v| v.accel),
-        accel_profile: accel_kind.map(|(kind, _)| kind),
-    }
 }
 
 /// `[initial]`: `attitude` or `attitude_euler_deg`.
@@ -679,7 +609,7 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
             point: Some(axis.point),
             bearings: axis.bearings,
             axis_in_space: axis.axis_in_space,
-            carrier: axis.carrier.as_ref().map(carrier_file),
+            carrier: axis.carrier.as_ref().map(carrier::keys::write),
             ..MotionFile::default()
         }
     };
@@ -741,7 +671,7 @@ mod tests {
     use std::path::Path;
 
     use super::*;
-    use crate::scene::{InertiaSpec, parse_spec};
+    use crate::scene::{CarrierSpec, InertiaSpec, parse_spec};
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,
     /// is the same value.

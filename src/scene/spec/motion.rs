@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use crate::motion::carrier::spec::{CarrierProfileSpec, CarrierSpec, VehicleSpec};
+
 /// A motion's `type`, as the scene file and the sidecar write it: `free`, `fixed_axis`, `hinge`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -41,93 +43,6 @@ pub struct AxisSpec {
     pub axis_in_space: Option<[f64; 3]>,
     /// `carrier`: the axis, its point and its bearings are fixed in a carrier turning in space.
     pub carrier: Option<CarrierSpec>,
-}
-
-/// `carrier = { rate = [x, y, z], profile = "constant" | "sine", freq_hz, phase_deg }`: a carrier turning about a
-/// space axis through the axis point at the angular velocity `rate`·p(t) (rad/s, space axes), aligned with space
-/// at t = 0.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CarrierSpec {
-    /// `rate`: r (rad/s, space axes).
-    pub rate: [f64; 3],
-    /// `profile` and its keys (absent: constant).
-    pub profile: CarrierProfileSpec,
-    /// `center`, `accel`, `accel_profile`: the carrier is a vehicle (absent: it turns about the axis point, which
-    /// stays fixed).
-    pub vehicle: Option<VehicleSpec>,
-}
-
-/// A carrier's `center`, `accel` and `accel_profile` ([`crate::motion::carrier::vehicle`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct VehicleSpec {
-    /// `center`: the point the carrier turns about, from the axis point at t = 0, space axes (m; absent: 0).
-    pub center: [f64; 3],
-    /// `accel`: the vehicle's linear acceleration, space axes (m/s²; absent: 0).
-    pub accel: [f64; 3],
-    /// `accel_profile` (absent: constant); a sine shares the carrier's `freq_hz` and `phase_deg`.
-    pub accel_profile: CarrierProfileSpec,
-}
-
-/// A carrier's `profile`: p(t).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum CarrierProfileSpec {
-    /// `profile = "constant"`: p = 1.
-    Constant,
-    /// `profile = "sine"`: p = sin(2π f t + φ) (a rolling ship).
-    Sine {
-        /// `freq_hz`: f, Hz, ≥ 0.
-        freq_hz: f64,
-        /// `phase_deg`: φ in degrees (absent: 0).
-        phase_deg: f64,
-    },
-}
-
-impl CarrierSpec {
-    /// A carrier turning at the constant `rate` (rad/s, space axes).
-    ///
-    /// ```
-    /// use eulerdyn::scene::{CarrierProfileSpec, CarrierSpec};
-    /// let yaw = CarrierSpec::constant([0.0, 0.0, 0.5]);
-    /// assert_eq!(yaw.profile, CarrierProfileSpec::Constant);
-    /// ```
-    pub fn constant(rate: [f64; 3]) -> Self {
-        Self {
-            rate,
-            profile: CarrierProfileSpec::Constant,
-            vehicle: None,
-        }
-    }
-
-    /// A carrier rolling at `rate`·sin(2π `freq_hz` t + `phase_deg`).
-    ///
-    /// ```
-    /// use eulerdyn::scene::{CarrierProfileSpec, CarrierSpec};
-    /// let roll = CarrierSpec::sine([0.2, 0.0, 0.0], 0.1, 0.0);
-    /// assert_eq!(roll.profile, CarrierProfileSpec::Sine { freq_hz: 0.1, phase_deg: 0.0 });
-    /// ```
-    pub fn sine(rate: [f64; 3], freq_hz: f64, phase_deg: f64) -> Self {
-        Self {
-            rate,
-            profile: CarrierProfileSpec::Sine { freq_hz, phase_deg },
-            vehicle: None,
-        }
-    }
-
-    /// The same carrier as a vehicle ([`VehicleSpec`]).
-    ///
-    /// ```
-    /// use eulerdyn::scene::{CarrierProfileSpec, CarrierSpec, VehicleSpec};
-    /// let turn = CarrierSpec::constant([0.0, 0.0, 0.3]).with_vehicle(VehicleSpec {
-    ///     center: [0.0, 12.0, 0.0],
-    ///     accel: [0.0; 3],
-    ///     accel_profile: CarrierProfileSpec::Constant,
-    /// });
-    /// assert_eq!(turn.vehicle.unwrap().center, [0.0, 12.0, 0.0]);
-    /// ```
-    pub fn with_vehicle(mut self, vehicle: VehicleSpec) -> Self {
-        self.vehicle = Some(vehicle);
-        self
-    }
 }
 
 /// The axis's direction in body axes.

@@ -3,16 +3,12 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::super::model::Motion;
-use super::super::spec::{
-    AxisDirection, AxisSpec, CarrierProfileSpec, CarrierSpec, Distribution, MotionSpec, RateSpec,
-    SceneSpec,
-};
+use super::super::spec::{AxisDirection, AxisSpec, Distribution, MotionSpec, RateSpec, SceneSpec};
 use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
-use crate::motion::carrier::vehicle::Vehicle;
-use crate::motion::carrier::{Carrier, CarrierProfile};
+use crate::motion::carrier;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
@@ -149,56 +145,9 @@ fn axis_geometry(
         axis = axis.with_bearings(Bearings { a, b });
     }
     if let Some(carrier) = &m.carrier {
-        axis = axis.with_carrier(validate_carrier(carrier)?);
+        axis = axis.with_carrier(carrier::keys::validate(carrier)?);
     }
     Ok(axis)
-}
-
-/// `carrier`: a finite rate (rad/s, space axes); a sine's frequency finite and ≥ 0, its phase finite; a vehicle's
-/// finite `center` (m) and `accel` (m/s²), and its sine the carrier's when both profiles are sines.
-fn validate_carrier(carrier: &CarrierSpec) -> Checked<Carrier> {
-    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
-    let rate_s = vector(key("rate"), carrier.rate, "rad/s")?;
-    let validated = Carrier::new(rate_s, carrier_profile(&carrier.profile)?);
-    let Some(vehicle) = &carrier.vehicle else {
-        return Ok(validated);
-    };
-    let both_sines = matches!(
-        (carrier.profile, vehicle.accel_profile),
-        (
-            CarrierProfileSpec::Sine { .. },
-            CarrierProfileSpec::Sine { .. }
-        )
-    );
-    if both_sines && carrier.profile != vehicle.accel_profile {
-        return invalid(
-            key("accel_profile"),
-            "a sine `accel_profile` shares the carrier's `freq_hz` and `phase_deg`: give one sine",
-        );
-    }
-    Ok(validated.with_vehicle(Vehicle::new(
-        vector(key("center"), vehicle.center, "m")?,
-        vector(key("accel"), vehicle.accel, "m/s²")?,
-        carrier_profile(&vehicle.accel_profile)?,
-    )))
-}
-
-/// A carrier's (or its vehicle's) profile: a sine's frequency finite and ≥ 0, its phase finite.
-fn carrier_profile(profile: &CarrierProfileSpec) -> Checked<CarrierProfile> {
-    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
-    Ok(match *profile {
-        CarrierProfileSpec::Constant => CarrierProfile::Constant,
-        CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
-            let freq_hz = finite(key("freq_hz"), freq_hz, "Hz")?;
-            if freq_hz < 0.0 {
-                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {freq_hz}"));
-            }
-            CarrierProfile::Sine {
-                omega_f: std::f64::consts::TAU * freq_hz,
-                phase: finite(key("phase_deg"), phase_deg, "degrees")?.to_radians(),
-            }
-        }
-    })
 }
 
 /// θ̇ at t = 0 (rad/s): `rate`, or `rate_rpm` · 2π/60 (revolutions per minute, as rotor engineers give it).
