@@ -91,6 +91,21 @@ impl TorqueFreeBody {
 impl EqualGrid<'_> {
     /// The same grid restarted from a direct evaluation every `rows` rows instead of [`ANCHOR_ROWS`] (at least 1;
     /// 1 is the direct evaluation at every row). For measuring the recurrences' round-off growth.
+    ///
+    /// ```
+    /// use eulerdyn::exact::TorqueFreeBody;
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let body = TorqueFreeBody::new(
+    ///     Vector3::new(1.0, 2.0, 3.0),
+    ///     Vector3::new(0.3, 0.0, 2.0),
+    ///     UnitQuaternion::identity(),
+    /// )?;
+    /// // Anchored at every row, each row's ω is the direct evaluation's.
+    /// for (t, omega_p, _) in body.equal_grid(0.1).with_anchor_rows(1).take(1000) {
+    ///     assert_eq!(omega_p, body.omega_p(t));
+    /// }
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_anchor_rows(mut self, rows: u64) -> Self {
         self.anchor_rows = rows.max(1);
         self

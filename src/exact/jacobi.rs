@@ -124,6 +124,14 @@ impl JacobiElliptic {
     /// the caller, who can often form it without the cancellation of `1 − m` (this matters
     /// for `m → 1`, where `K(m) ≈ ½ ln(16/mc)`). Requires `m, mc ≥ 0` and
     /// `|m + mc − 1| ≤ 1e-12`.
+    ///
+    /// ```
+    /// use eulerdyn::exact::JacobiElliptic;
+    /// // 1 − 1e-20 rounds to 1 (K = ∞); with m′ given, K = ½ ln(16/m′) + O(m′ ln m′) (DLMF 19.12.1).
+    /// assert_eq!(JacobiElliptic::new(1.0 - 1e-20).unwrap().quarter_period(), f64::INFINITY);
+    /// let jac = JacobiElliptic::with_complement(1.0 - 1e-20, 1e-20).unwrap();
+    /// assert!((jac.quarter_period() - 0.5 * (16.0f64 / 1e-20).ln()).abs() < 1e-13);
+    /// ```
     pub fn with_complement(m: f64, mc: f64) -> Option<Self> {
         if !(m.is_finite() && mc.is_finite() && m >= 0.0 && mc >= 0.0) {
             return None;

@@ -98,6 +98,23 @@ impl FixedAxis {
 
     /// With the axis, its point and its bearings fixed in a turning `carrier` (the motion's other methods then
     /// describe the rotation relative to the carrier; [`Self::sample`] the motion in space).
+    ///
+    /// ```
+    /// use eulerdyn::Form;
+    /// use eulerdyn::body::RigidBody;
+    /// use eulerdyn::motion::carrier::{Carrier, CarrierProfile};
+    /// use eulerdyn::motion::fixed_axis::FixedAxis;
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// // A rotor (I_x = 2 kg·m²) spinning at 10 rad/s about x in a carrier yawing at 0.5 rad/s about z.
+    /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
+    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
+    ///     .with_carrier(Carrier::new(Vector3::new(0.0, 0.0, 0.5), CarrierProfile::Constant));
+    /// assert!(rotor.carrier().is_some());
+    /// // The gyroscopic couple Ω_c × H = I_x θ̇ Ω_c = 10 N·m about y.
+    /// let m_s = rotor.required_moment_s(0.0, Form::Body);
+    /// assert!((m_s - Vector3::new(0.0, 10.0, 0.0)).norm() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_carrier(mut self, carrier: Carrier) -> Self {
         self.carrier = Some(Box::new(carrier));
         self
@@ -109,12 +126,43 @@ impl FixedAxis {
     }
 
     /// With uniform gravity `g_s` (m/s², space axes) acting at C: the support then carries the weight.
+    ///
+    /// ```
+    /// use eulerdyn::Form;
+    /// use eulerdyn::body::RigidBody;
+    /// use eulerdyn::motion::fixed_axis::FixedAxis;
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// // 2 kg spinning about an axis through C: C does not accelerate, so the support force is −m g.
+    /// let body = RigidBody::from_principal(2.0, [2.0, 1.0, 1.0])?;
+    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
+    ///     .with_gravity(Vector3::new(0.0, 0.0, -9.81));
+    /// let support = rotor.sample(0.3, Form::Body).support.unwrap();
+    /// assert!((support.f_sup_s - Vector3::new(0.0, 0.0, 19.62)).norm() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_gravity(mut self, g_s: Vector3<f64>) -> Self {
         self.g_s = g_s;
         self
     }
 
     /// With two bearings on the axis.
+    ///
+    /// ```
+    /// use eulerdyn::Form;
+    /// use eulerdyn::body::RigidBody;
+    /// use eulerdyn::motion::fixed_axis::FixedAxis;
+    /// use eulerdyn::motion::support::Bearings;
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// // A balanced rotor of 10 N weight between bearings at −1 m and +3 m: the lever rule, 7.5 N and 2.5 N.
+    /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
+    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
+    ///     .with_gravity(Vector3::new(0.0, 0.0, -10.0))
+    ///     .with_bearings(Bearings { a: -1.0, b: 3.0 });
+    /// let loads = rotor.sample(0.3, Form::Body).support.unwrap().bearings.unwrap();
+    /// assert!((loads.r_a_s - Vector3::new(0.0, 0.0, 7.5)).norm() < 1e-12);
+    /// assert!((loads.r_b_s - Vector3::new(0.0, 0.0, 2.5)).norm() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_bearings(mut self, bearings: Bearings) -> Self {
         self.bearings = Some(bearings);
         self

@@ -195,6 +195,35 @@ impl Gyrostat {
     }
 
     /// The gyrostat with the wheel law `law` driving every wheel (each drive becomes [`Drive::Law`]).
+    ///
+    /// ```
+    /// use eulerdyn::Form;
+    /// use eulerdyn::body::RigidBody;
+    /// use eulerdyn::effects::TorqueFree;
+    /// use eulerdyn::integrate::OdeSystem;
+    /// use eulerdyn::motion::free::FreeBody;
+    /// use eulerdyn::motion::gyrostat::{Drive, Gyrostat, GyrostatForm, Rotor};
+    /// use eulerdyn::wheels::{WheelControl, WheelTorqueLaw};
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let body = FreeBody::new(&RigidBody::from_principal(1.0, [1.0, 2.0, 3.0])?, &Vector3::zeros())?;
+    /// let wheel = Rotor {
+    ///     name: "w".into(),
+    ///     axis_b: Vector3::z_axis(),
+    ///     inertia: 0.1,
+    ///     spin0: 0.0,
+    ///     drive: Drive::Accel(0.0),
+    ///     imbalance: None,
+    ///     control: WheelControl::default(),
+    /// };
+    /// let law = |_: f64, _: &UnitQuaternion<f64>, _: &Vector3<f64>, _: &[f64]| vec![0.1];
+    /// let g = Gyrostat::new(body, vec![wheel])?.with_law(WheelTorqueLaw::new("spin-up", law))?;
+    /// assert_eq!((g.law().unwrap().name.as_str(), &g.rotors()[0].drive), ("spin-up", &Drive::Law));
+    /// // At rest the wheel's 0.1 N·m turns the body back through I_z − J = 2.9 kg·m²: ω̇_z = −0.1/2.9.
+    /// let y = g.initial_state(Form::Body, &Vector3::zeros(), &UnitQuaternion::identity());
+    /// let dy = GyrostatForm { gyrostat: &g, moment: TorqueFree, form: Form::Body }.rhs(0.0, &y);
+    /// assert!((dy[2] + 0.1 / 2.9).abs() < 1e-15);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_law(self, law: WheelTorqueLaw) -> Result<Self, WheelsOutsideBody> {
         let mut rotors = self.rotors;
         for r in &mut rotors {

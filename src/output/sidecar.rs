@@ -195,6 +195,24 @@ impl Sidecar {
     }
 
     /// The sidecar listing the events file `file` (absent: a scene without events) and its `occurrences`.
+    ///
+    /// ```
+    /// use std::path::Path;
+    /// use eulerdyn::events::{Kind, Occurrence};
+    /// use eulerdyn::output::Sidecar;
+    /// use eulerdyn::scene::{BodySpec, SceneSpec};
+    /// use eulerdyn::simulate::RunReport;
+    /// let scene = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.5).build()?;
+    /// let top = Occurrence { event: 0, name: "top".into(), t: 0.25, value: 1.5, kind: Kind::Max };
+    /// let sidecar = Sidecar::of_run(&scene, &RunReport::default(), &[])
+    ///     .with_events(Some(Path::new("runs/disk.csv.events.csv")), &[top]);
+    /// let events = sidecar.events.unwrap();
+    /// assert_eq!(events.file, "disk.csv.events.csv");
+    /// assert_eq!((events.occurrences[0].t, events.occurrences[0].direction.as_str()), (0.25, "max"));
+    /// // No events file: no `events`.
+    /// assert!(Sidecar::of_run(&scene, &RunReport::default(), &[]).with_events(None, &[]).events.is_none());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_events(mut self, file: Option<&Path>, occurrences: &[Occurrence]) -> Self {
         self.events = file.map(|file| SidecarEvents {
             file: (file.file_name()).map_or_else(String::new, |n| n.to_string_lossy().into_owned()),

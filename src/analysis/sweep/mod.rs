@@ -235,6 +235,27 @@ impl Sweep {
 
     /// The sweep with `prepare` applied to each run's built scene, e.g. `|s| s.with_wheel_law(…)` (its error makes
     /// the run invalid).
+    ///
+    /// ```
+    /// use eulerdyn::analysis::sweep::{Status, Sweep};
+    /// let dir = tempfile::tempdir()?;
+    /// let scene = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n[initial]\nomega = [0.0, 0.0, 2.0]\n\
+    ///              [solver]\nt_end = 1.0\n[output]\nevery = 0.5\n";
+    /// std::fs::write(dir.path().join("box.toml"), scene)?;
+    /// let sweep = "scene = \"box.toml\"\n[[vary]]\nkey = \"initial.omega.2\"\nvalues = [1.0, 2.0]\n";
+    /// std::fs::write(dir.path().join("sweep.toml"), sweep)?;
+    /// let sweep = Sweep::load(&dir.path().join("sweep.toml"))?;
+    /// let named = sweep.clone().with_prepare(|mut scene| {
+    ///     scene.name = "prepared".into();
+    ///     Ok(scene)
+    /// });
+    /// assert_eq!(named.scene(&named.values(1))?.name, "prepared");
+    /// // Its error makes the run invalid.
+    /// let refused = sweep.with_prepare(|_| Err("no wheel law".into()));
+    /// let outcome = refused.run_one(0, None);
+    /// assert_eq!((outcome.status, outcome.message.as_str()), (Status::Invalid, "no wheel law"));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_prepare(
         mut self,
         prepare: impl Fn(Scene) -> Result<Scene, String> + Send + Sync + 'static,

@@ -78,6 +78,18 @@ impl Carrier {
     }
 
     /// The same carrier as a `vehicle` that turns about its own centre and accelerates.
+    ///
+    /// ```
+    /// use eulerdyn::motion::carrier::{Carrier, CarrierProfile, vehicle::Vehicle};
+    /// use nalgebra::Vector3;
+    /// // Yawing at 2 rad/s: about A itself, A stays put; about a centre 3 m along y, A feels Ω² r = 12 m/s².
+    /// let yaw = Carrier::new(Vector3::new(0.0, 0.0, 2.0), CarrierProfile::Constant);
+    /// assert!(yaw.vehicle().is_none() && yaw.at(0.0).accel_a_s.is_none());
+    /// let centre = Vector3::new(0.0, 3.0, 0.0);
+    /// let car = yaw.with_vehicle(Vehicle::new(centre, Vector3::zeros(), CarrierProfile::Constant));
+    /// assert_eq!(car.vehicle().map(Vehicle::center_s), Some(&centre));
+    /// assert!((car.at(0.0).accel_a_s.unwrap() - Vector3::new(0.0, 12.0, 0.0)).norm() < 1e-14);
+    /// ```
     pub fn with_vehicle(mut self, vehicle: Vehicle) -> Self {
         self.vehicle = Some(vehicle);
         self

@@ -194,6 +194,12 @@ macro_rules! axis_motion {
             }
 
             /// With the axis through `point_b` (body axes, from the reference origin, m), the moment center.
+            ///
+            /// ```
+            #[doc = concat!("use eulerdyn::scene::", stringify!($motion), ";")]
+            #[doc = concat!("let m = ", stringify!($motion), "::tilted(30.0, 10.0).with_point([0.02, 0.0, 0.0]);")]
+            /// assert_eq!(m.axis.point, [0.02, 0.0, 0.0]);
+            /// ```
             pub fn with_point(mut self, point_b: [f64; 3]) -> Self {
                 self.axis.point = point_b;
                 self
