@@ -169,7 +169,6 @@ macro_rules! file_table {
 
         impl $name {
             /// The table's keys, as the book's reference lists them.
-            #[allow(dead_code)]
             pub(crate) const TABLE: $crate::keys::Table = $crate::keys::Table {
                 header: $header,
                 about: $about,

@@ -12,8 +12,8 @@ pub(crate) enum Segment {
 /// The path of a key in a scene, e.g. `body.mass` or `effect[1].c`; optionally set from a command-line flag.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct KeyPath {
-    pub(crate) segments: Vec<Segment>,
-    pub(crate) flag: Option<String>,
+    segments: Vec<Segment>,
+    flag: Option<String>,
 }
 
 impl KeyPath {
@@ -75,6 +75,11 @@ impl KeyPath {
     /// The steps of the path, from the root.
     pub(crate) fn segments(&self) -> &[Segment] {
         &self.segments
+    }
+
+    /// Whether the value was given by a command-line flag instead of the file.
+    pub(crate) fn is_from_flag(&self) -> bool {
+        self.flag.is_some()
     }
 
     /// Marks the value as given by a command-line flag instead of the file.

@@ -63,7 +63,7 @@ impl<'a> SourceMap<'a> {
         self.entries()
             .into_iter()
             .filter(|e| e.value_span == *span)
-            .max_by_key(|e| e.path.segments.len())
+            .max_by_key(|e| e.path.segments().len())
             .map_or_else(KeyPath::root, |e| e.path)
     }
 
@@ -117,16 +117,16 @@ impl<'a> SourceMap<'a> {
     /// Line and column of a key (of its value where the key is written, else of the key), or of the nearest
     /// enclosing key that is written in the file. `None` for values from the command line.
     pub fn locate(&self, path: &KeyPath) -> Option<(usize, usize)> {
-        if path.flag.is_some() {
+        if path.is_from_flag() {
             return None;
         }
         let entries = self.entries();
-        let mut prefix = path.segments.clone();
+        let mut prefix = path.segments();
         while !prefix.is_empty() {
-            if let Some(e) = entries.iter().find(|e| e.path.segments == prefix) {
+            if let Some(e) = entries.iter().find(|e| e.path.segments() == prefix) {
                 return Some(self.line_col(e.key_span.start));
             }
-            prefix.pop();
+            prefix = &prefix[..prefix.len() - 1];
         }
         None
     }
