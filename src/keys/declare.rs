@@ -32,6 +32,8 @@ pub struct Table {
     pub about: &'static str,
     /// Its keys, in the order of the file form.
     pub keys: &'static [Key],
+    /// The tables of its parts (`part` keys, [`Part`](super::Part)), each listed after it in the reference.
+    pub parts: &'static [Table],
 }
 
 /// A key's description without its name (the declaration names it): kind, unit, default, origin, meaning.
@@ -97,49 +99,61 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// ```text
 /// file_table! {
 ///     /// The struct's doc.
-///     pub(super) struct CarrierFile(pub(super)) "[motion.carrier]", "what the table is" {
-///         arr rate: [f64; 3] = key("[x, y, z]", "rad/s", "required", "", "space axes");
+///     pub(super) struct MotionFile(pub(super)) "[motion]", "what the table is" {
+///         arr axis: [f64; 3] = key("[x, y, z]", "–", "required", "", "body axes");
 ///         opt profile: ProfileKind = profile("…");
 ///         @sine;
+///         /// `carrier`: …
+///         part carrier: CarrierSpec = key("inline table", "–", "none", "", "…");
 ///     }
-///     either { center, accel: "…"; }
+///     either { axis, tilt_deg: "…"; }
+///     parts { #[derive(Debug, Clone, Copy, Default, PartialEq)] pub struct AxisParts; }
 /// }
 /// ```
 ///
 /// Each key is `STORAGE FIELD [as "NAME"]: TYPE = KEY;` — `opt` (an `Option<TYPE>`, left out when absent), `arr`
 /// (an `Option` of an array of exactly N numbers), `req` (a plain `TYPE` serde requires), `list` (a `Vec<TYPE>`,
-/// an array of tables) — or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
-/// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`]),
-/// and `given()`: the names of the keys the file gives, in order. An optional `either { A, B: "message"; … }` after
-/// the keys declares keys that exclude each other: `exclusive()` refuses both, naming `B`.
+/// an array of tables), `part` (a capability's inline table: `TYPE` is its typed spec, a [`Part`](super::Part)) —
+/// or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
+/// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`],
+/// with its parts' tables), and `given()`: the names of the keys the file gives, in order. An optional
+/// `either { A, B: "message"; … }` after the keys declares keys that exclude each other: `exclusive()` refuses
+/// both, naming `B`. An optional `parts { … struct NAME; }` makes the typed struct of the `part` keys (a field
+/// `Option<SPEC>` each) with `NAMES`, `read` and `write` (the file form and back), `refuse_unattached` and
+/// `attach` (each part [`Attach`](super::Attach)ed to the validated value, in order): a capability with its own
+/// table is registered by its one `part` line.
 macro_rules! file_table {
-    (@munch $head:tt [$($done:tt)*]) => { file_table!(@emit $head $($done)*); };
-    (@munch $head:tt [$($done:tt)*] @sine; $($rest:tt)*) => {
-        file_table!(@munch $head [$($done)*]
+    (@munch $head:tt [$($done:tt)*] [$($parts:tt)*]) => { file_table!(@emit $head [$($parts)*] $($done)*); };
+    (@munch $head:tt [$($done:tt)*] $parts:tt @sine; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)*] $parts
             opt freq_hz: f64 = $crate::keys::key("number", "Hz", "required for `sine`", "", "≥ 0");
             opt phase_deg: f64 = $crate::keys::key("number", "deg", "0", "", "`sine` only");
             $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] @step; $($rest:tt)*) => {
-        file_table!(@munch $head [$($done)*]
+    (@munch $head:tt [$($done:tt)*] $parts:tt @step; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)*] $parts
             opt t_on: f64 = $crate::keys::key("number", "s", "0", "", "`step` only");
             opt t_off: f64 = $crate::keys::key("number", "s", "never", "", "`step` only; > t_on");
             $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [$(rename = $rename,)? skip_serializing_if = "Option::is_none"]
-            $field [$($rename)?] Option<$ty>; $key)] $($rest)*);
+            $field [$($rename)?] Option<$ty>; $key)] $parts $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* arr $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* arr $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (arr [$(#[$m])*] [$(rename = $rename,)? default, deserialize_with = "crate::keys::exactly_n",
-            skip_serializing_if = "Option::is_none"] $field [$($rename)?] Option<$ty>; $key)] $($rest)*);
+            skip_serializing_if = "Option::is_none"] $field [$($rename)?] Option<$ty>; $key)] $parts $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* req $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
-        file_table!(@munch $head [$($done)* (req [$(#[$m])*] [$(rename = $rename)?] $field [$($rename)?] $ty; $key)] $($rest)*);
+    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* req $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (req [$(#[$m])*] [$(rename = $rename)?] $field [$($rename)?] $ty; $key)] $parts $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $(#[$m:meta])* list $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* list $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (list [$(#[$m])*] [$(rename = $rename,)? default, skip_serializing_if = "Vec::is_empty"]
-            $field [$($rename)?] Vec<$ty>; $key)] $($rest)*);
+            $field [$($rename)?] Vec<$ty>; $key)] $parts $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] [$($parts:tt)*] $(#[$m:meta])* part $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (part [$(#[$m])*] [default, skip_serializing_if = "Option::is_none"]
+            $field [] Option<<$spec as $crate::keys::Part>::File>; $key)] [$($parts)* ([$(#[$m])*] $field $spec)] $($rest)*);
     };
     (@name $field:ident) => { stringify!($field) };
     (@given $value:expr, req) => { true };
@@ -158,7 +172,54 @@ macro_rules! file_table {
             }
         }
     };
-    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt}
+    (@parts $vis:vis $name:ident [] $parts:tt) => {};
+    (@parts $vis:vis $name:ident [$(#[$pm:meta])* $pvis:vis $pname:ident] [$(([$(#[$m:meta])*] $field:ident $spec:ty))*]) => {
+        $(#[$pm])*
+        $pvis struct $pname {
+            $($(#[$m])* pub $field: Option<$spec>,)*
+        }
+
+        impl $pname {
+            /// The parts' names: the keys of the enclosing table that hold them.
+            $vis const NAMES: &[&str] = &[$(stringify!($field)),*];
+
+            /// The parts the file gives, read (each one's table at `at`.NAME).
+            $vis fn read(file: &$name, at: &$crate::keys::KeyPath) -> $crate::keys::Checked<Self> {
+                Ok(Self {
+                    $($field: (file.$field.as_ref())
+                        .map(|f| <$spec as $crate::keys::Part>::read(f, &at.clone().key(stringify!($field))))
+                        .transpose()?,)*
+                })
+            }
+
+            /// The parts written into `file`.
+            $vis fn write(&self, file: &mut $name) {
+                $(file.$field = self.$field.as_ref().map($crate::keys::Part::write);)*
+            }
+
+            /// Parts the file gives where the enclosing table takes none: each part's own message, if it has one.
+            $vis fn refuse_unattached(file: &$name, at: &$crate::keys::KeyPath) -> $crate::keys::Checked<()> {
+                $(if let Some(f) = &file.$field {
+                    <$spec as $crate::keys::Part>::refuse_unattached(f, &at.clone().key(stringify!($field)))?;
+                })*
+                Ok(())
+            }
+
+            /// `to` with every part given attached, in the declaration's order.
+            $vis fn attach<T>(&self, to: T, at: &$crate::keys::KeyPath) -> $crate::keys::Checked<T>
+            where
+                $($spec: $crate::keys::Attach<T>,)*
+            {
+                let mut to = to;
+                $(if let Some(p) = &self.$field {
+                    to = $crate::keys::Attach::attach(p, to, &at.clone().key(stringify!($field)))?;
+                })*
+                Ok(to)
+            }
+        }
+    };
+    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt $partsdecl:tt}
+        [$(($pm:tt $pfield:ident $pspec:ty))*]
         $(($store:ident [$($m:tt)*] [$($serde:tt)*] $field:ident [$($rename:literal)?] $ty:ty; $key:expr))*) => {
         $($meta)*
         #[derive(Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -173,6 +234,7 @@ macro_rules! file_table {
                 header: $header,
                 about: $about,
                 keys: &[$($key.named(file_table!(@name $field $($rename)?)),)*],
+                parts: &[$(<$pspec as $crate::keys::Part>::TABLE,)*],
             };
 
             /// The keys this table gives, in the declaration's order.
@@ -187,11 +249,13 @@ macro_rules! file_table {
         }
 
         file_table!(@either $name $either);
+        file_table!(@parts $vis $name $partsdecl [$(($pm $pfield $pspec))*]);
     };
     ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }
-        $(either { $($a:ident, $b:ident: $message:literal;)+ })?) => {
-        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b $message))+)?]}
-            [] $($body)*);
+        $(either { $($a:ident, $b:ident: $message:literal;)+ })?
+        $(parts { $(#[$pmeta:meta])* $pvis:vis struct $pname:ident; })?) => {
+        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b $message))+)?]
+            [$($(#[$pmeta])* $pvis $pname)?]} [] [] $($body)*);
     };
 }
 

@@ -91,7 +91,7 @@ impl Facts {
         let torque_free = scene.effects.is_empty();
         let carried = (scene.spec.motion.as_ref())
             .and_then(MotionSpec::axis)
-            .is_some_and(|a| a.carrier.is_some());
+            .is_some_and(|a| a.parts.carrier.is_some());
         use Invariant::*;
         let invariants = match &scene.motion {
             Motion::Free { gyrostat, .. } => {

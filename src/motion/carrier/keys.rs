@@ -1,12 +1,16 @@
 //! A carrier's keys, declared once (`carrier = { … }` in `[motion]`): the file form and the reference's table
-//! ([`CarrierFile`]), its reading into [`CarrierSpec`] and back, and its validation into a [`Carrier`].
+//! ([`CarrierFile`]); [`CarrierSpec`] is a [`Part`] (read from it and written back) that [`Attach`]es to a fixed
+//! axis or hinge. `[motion]` registers it with one line, `part carrier: CarrierSpec`.
 
 use serde::{Deserialize, Serialize};
 
 use super::spec::{CarrierProfileSpec, CarrierSpec, VehicleSpec};
 use super::vehicle::Vehicle;
 use super::{Carrier, CarrierProfile};
-use crate::keys::{Checked, KeyPath, file_table, finite, invalid, key, required, vector};
+use crate::keys::{
+    Attach, Checked, KeyPath, Part, Table, file_table, finite, invalid, key, required, vector,
+};
+use crate::motion::fixed_axis::FixedAxis;
 
 file_table! {
     /// `carrier = { … }` in `[motion]`.
@@ -30,10 +34,42 @@ pub(crate) enum CarrierProfileKind {
     Sine,
 }
 
+impl Part for CarrierSpec {
+    type File = CarrierFile;
+    const TABLE: Table = CarrierFile::TABLE;
+
+    fn read(file: &CarrierFile, at: &KeyPath) -> Checked<Self> {
+        read(file, at)
+    }
+
+    fn write(&self) -> CarrierFile {
+        write(self)
+    }
+
+    /// `center` and `accel` name the vehicle's point of the axis: a free body has none.
+    fn refuse_unattached(file: &CarrierFile, at: &KeyPath) -> Checked<()> {
+        match (file.given().into_iter()).find(|k| ["center", "accel"].contains(k)) {
+            Some(name) => invalid(
+                at.clone().key(name),
+                format!(
+                    "`{name}` applies to the carrier of a fixed-axis or hinge motion; a free body has no axis point"
+                ),
+            ),
+            None => Ok(()),
+        }
+    }
+}
+
+impl Attach<FixedAxis> for CarrierSpec {
+    fn attach(&self, axis: FixedAxis, at: &KeyPath) -> Checked<FixedAxis> {
+        Ok(axis.with_carrier(validate(self, at)?))
+    }
+}
+
 /// `carrier = { rate, profile, freq_hz, phase_deg, center, accel, accel_profile }`: `rate` required, `freq_hz`
 /// when `profile` or `accel_profile` is a sine and only then; `accel_profile` with `accel` only.
-pub(crate) fn read(doc: &CarrierFile) -> Checked<CarrierSpec> {
-    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
+fn read(doc: &CarrierFile, at: &KeyPath) -> Checked<CarrierSpec> {
+    let key = |name: &str| at.clone().key(name);
     let Some(rate) = doc.rate else {
         return invalid(
             key("rate"),
@@ -80,7 +116,7 @@ pub(crate) fn read(doc: &CarrierFile) -> Checked<CarrierSpec> {
 
 /// The file form of a carrier; a sine's `freq_hz` and `phase_deg` are the carrier's or, with a constant rate
 /// profile, the vehicle's `accel_profile`'s (validation refuses two different sines).
-pub(crate) fn write(carrier: &CarrierSpec) -> CarrierFile {
+fn write(carrier: &CarrierSpec) -> CarrierFile {
     let kind_of = |profile: &CarrierProfileSpec| match profile {
         CarrierProfileSpec::Constant => (CarrierProfileKind::Constant, None),
         CarrierProfileSpec::Sine { freq_hz, phase_deg } => {
@@ -103,10 +139,10 @@ pub(crate) fn write(carrier: &CarrierSpec) -> CarrierFile {
 
 /// `carrier`: a finite rate (rad/s, space axes); a sine's frequency finite and ≥ 0, its phase finite; a vehicle's
 /// finite `center` (m) and `accel` (m/s²), and its sine the carrier's when both profiles are sines.
-pub(crate) fn validate(carrier: &CarrierSpec) -> Checked<Carrier> {
-    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
+fn validate(carrier: &CarrierSpec, at: &KeyPath) -> Checked<Carrier> {
+    let key = |name: &str| at.clone().key(name);
     let rate_s = vector(key("rate"), carrier.rate, "rad/s")?;
-    let validated = Carrier::new(rate_s, carrier_profile(&carrier.profile)?);
+    let validated = Carrier::new(rate_s, carrier_profile(&carrier.profile, at)?);
     let Some(vehicle) = &carrier.vehicle else {
         return Ok(validated);
     };
@@ -126,13 +162,13 @@ pub(crate) fn validate(carrier: &CarrierSpec) -> Checked<Carrier> {
     Ok(validated.with_vehicle(Vehicle::new(
         vector(key("center"), vehicle.center, "m")?,
         vector(key("accel"), vehicle.accel, "m/s²")?,
-        carrier_profile(&vehicle.accel_profile)?,
+        carrier_profile(&vehicle.accel_profile, at)?,
     )))
 }
 
 /// A carrier's (or its vehicle's) profile: a sine's frequency finite and ≥ 0, its phase finite.
-fn carrier_profile(profile: &CarrierProfileSpec) -> Checked<CarrierProfile> {
-    let key = |name: &str| KeyPath::root().key("motion").key("carrier").key(name);
+fn carrier_profile(profile: &CarrierProfileSpec, at: &KeyPath) -> Checked<CarrierProfile> {
+    let key = |name: &str| at.clone().key(name);
     Ok(match *profile {
         CarrierProfileSpec::Constant => CarrierProfile::Constant,
         CarrierProfileSpec::Sine { freq_hz, phase_deg } => {

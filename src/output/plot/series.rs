@@ -450,6 +450,6 @@ fn scene_facts(sidecar: &Sidecar) -> SceneFacts {
         facts: sidecar.facts.clone(),
         carried: (sidecar.scene.spec.motion.as_ref())
             .and_then(MotionSpec::axis)
-            .is_some_and(|a| a.carrier.is_some()),
+            .is_some_and(|a| a.parts.carrier.is_some()),
     }
 }

@@ -8,22 +8,21 @@
 //! `inertia` is about (C when there are no point masses).
 
 pub use crate::keys::{Key, Table};
-use crate::motion::carrier::keys::CarrierFile;
 use crate::scene::spec::file_form::{
     BodyFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile, RotorFile, SceneFile,
     ShapeFile,
 };
 use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
 
-/// The tables, in the file form's order: each one's declaration ([`crate::keys::file_table!`]).
-const TABLES: [Table; 13] = [
+/// The tables, in the file form's order: each one's declaration ([`crate::keys::file_table!`]); each lists its
+/// parts' tables, which [`keys`] puts after it.
+const TABLES: [Table; 12] = [
     SceneFile::TABLE,
     BodyFile::TABLE,
     ShapeFile::TABLE,
     PointMassFile::TABLE,
     RotorFile::TABLE,
     MotionFile::TABLE,
-    CarrierFile::TABLE,
     InitialFile::TABLE,
     EffectFile::TABLE,
     EventFile::TABLE,
@@ -32,9 +31,23 @@ const TABLES: [Table; 13] = [
     CompareSpec::TABLE,
 ];
 
-/// Every table of a scene file, in the order of the file form, with every key each accepts.
+/// Every table of a scene file, in the order of the file form (a table's parts after it), with every key each
+/// accepts.
 pub fn keys() -> &'static [Table] {
-    &TABLES
+    fn with_parts(table: &Table, all: &mut Vec<Table>) {
+        all.push(*table);
+        for part in table.parts {
+            with_parts(part, all);
+        }
+    }
+    static ALL: std::sync::OnceLock<Vec<Table>> = std::sync::OnceLock::new();
+    ALL.get_or_init(|| {
+        let mut all = Vec::new();
+        for table in &TABLES {
+            with_parts(table, &mut all);
+        }
+        all
+    })
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@ use super::{CompareSpec, Direction, Extremum, InertiaSpec, MotionKind, OutputSpe
 use crate::effects::Interpolation;
 use crate::frames::Axes;
 use crate::keys::{file_table, key, position, profile};
-use crate::motion::carrier::keys::CarrierFile;
+use crate::motion::carrier::spec::CarrierSpec;
 
 file_table! {
     /// A whole scene, as a scene file writes it.
@@ -118,11 +118,18 @@ file_table! {
         opt angle_deg: f64 = key("number", "deg", "0", "", "hinge only: θ at t = 0");
         arr bearings: [f64; 2] = key("[a, b]", "m", "none", "from `point`, along the axis", "positions of bearings A and B, a ≠ b; adds the `R_*` columns");
         arr axis_in_space: [f64; 3] = key("[x, y, z]", "–", "none", "", "the axis's direction in space axes: the attitude at t = 0 puts the body axis on it (instead of `initial.attitude`)");
-        opt carrier: CarrierFile = key("inline table", "–", "none", "", "the axis turns with a carrier: `[motion.carrier]`");
+        /// `carrier`: the axis, its point and its bearings are fixed in a carrier turning in space.
+        part carrier: CarrierSpec = key("inline table", "–", "none", "", "the axis turns with a carrier: `[motion.carrier]`");
     }
     either {
         axis, tilt_deg: "give either `axis` or `tilt_deg`, not both";
         rate, rate_rpm: "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both";
+    }
+    parts {
+        /// The capabilities with a table of their own in `[motion]` that modify a fixed axis or hinge (each a
+        /// [`Part`](crate::keys::Part), registered by its `part` line in `[motion]`'s declaration).
+        #[derive(Debug, Clone, Copy, Default, PartialEq)]
+        pub struct AxisParts;
     }
 }
 

@@ -8,15 +8,14 @@ use super::file_form::{
     ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisSpec, BodySpec, ConditionSpec, Direction, Distribution,
-    EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec,
-    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
-    TorqueTableSpec,
+    AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, ConditionSpec, Direction,
+    Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind,
+    MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec,
+    TorqueSpec, TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
 use crate::keys::{Checked, invalid, only_keys, required};
-use crate::motion::carrier::{self, keys::CarrierFile};
 use crate::scene::source_map::KeyPath;
 use crate::wheels::{WheelKeys, WheelMode};
 
@@ -187,7 +186,7 @@ fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
 fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
     let table = || KeyPath::root().key("motion");
     let given = doc.given();
-    const AXIS_KEYS: [&str; 8] = [
+    const AXIS_KEYS: [&str; 7] = [
         "axis",
         "tilt_deg",
         "rate",
@@ -195,25 +194,15 @@ fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
         "point",
         "bearings",
         "axis_in_space",
-        "carrier",
     ];
-    let takes = |extra: &'static str| [&AXIS_KEYS[..], &[extra]].concat();
+    let takes = |extra: &'static str| [&AXIS_KEYS[..], AxisParts::NAMES, &[extra]].concat();
     match doc.kind {
         None => invalid(
             table().key("type"),
             "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
         ),
         Some(MotionKind::Free) => {
-            let vehicle_key =
-                |c: &CarrierFile| (c.given().into_iter()).find(|k| ["center", "accel"].contains(k));
-            if let Some(name) = doc.carrier.as_ref().and_then(vehicle_key) {
-                return invalid(
-                    table().key("carrier").key(name),
-                    format!(
-                        "`{name}` applies to the carrier of a fixed-axis or hinge motion; a free body has no axis point"
-                    ),
-                );
-            }
+            AxisParts::refuse_unattached(doc, &table())?;
             only_keys(&table(), "motion type = \"free\"", &[], &given)?;
             Ok(MotionSpec::Free)
         }
@@ -260,7 +249,7 @@ fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
         point: doc.point.unwrap_or([0.0; 3]),
         bearings: doc.bearings,
         axis_in_space: doc.axis_in_space,
-        carrier: doc.carrier.as_ref().map(carrier::keys::read).transpose()?,
+        parts: AxisParts::read(doc, &motion())?,
     })
 }
 
@@ -600,7 +589,7 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
             AxisDirection::Body(a) => (Some(a), None),
             AxisDirection::TiltDeg(tilt) => (None, Some(tilt)),
         };
-        MotionFile {
+        let mut file = MotionFile {
             kind: Some(kind),
             axis: axis_b,
             tilt_deg,
@@ -609,9 +598,10 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
             point: Some(axis.point),
             bearings: axis.bearings,
             axis_in_space: axis.axis_in_space,
-            carrier: axis.carrier.as_ref().map(carrier::keys::write),
             ..MotionFile::default()
-        }
+        };
+        axis.parts.write(&mut file);
+        file
     };
     match motion {
         MotionSpec::Free => MotionFile {

@@ -26,8 +26,8 @@ pub use effect::{EffectSpec, ProfileSpec, TorqueSpec, TorqueTableSpec};
 pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
-    AxisDirection, AxisSpec, CarrierProfileSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
-    MotionSpec, RateSpec, VehicleSpec,
+    AxisDirection, AxisParts, AxisSpec, CarrierProfileSpec, CarrierSpec, FixedAxisSpec, HingeSpec,
+    MotionKind, MotionSpec, RateSpec, VehicleSpec,
 };
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).

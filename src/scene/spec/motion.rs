@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use super::file_form::AxisParts;
 pub use crate::motion::carrier::spec::{CarrierProfileSpec, CarrierSpec, VehicleSpec};
 
 /// A motion's `type`, as the scene file and the sidecar write it: `free`, `fixed_axis`, `hinge`.
@@ -41,8 +42,9 @@ pub struct AxisSpec {
     /// `axis_in_space`: the axis's direction in space axes; the attitude at t = 0 is then the smallest rotation
     /// that puts the body axis on it (instead of `initial.attitude`).
     pub axis_in_space: Option<[f64; 3]>,
-    /// `carrier`: the axis, its point and its bearings are fixed in a carrier turning in space.
-    pub carrier: Option<CarrierSpec>,
+    /// The capabilities with a table of their own in `[motion]` (a `carrier`), each registered by its `part` line
+    /// in `[motion]`'s declaration.
+    pub parts: AxisParts,
 }
 
 /// The axis's direction in body axes.
@@ -106,7 +108,7 @@ impl AxisSpec {
             point: [0.0; 3],
             bearings: None,
             axis_in_space: None,
-            carrier: None,
+            parts: AxisParts::default(),
         }
     }
 }
@@ -210,10 +212,10 @@ macro_rules! axis_motion {
             /// ```
             #[doc = concat!("use eulerdyn::scene::{CarrierSpec, ", stringify!($motion), "};")]
             #[doc = concat!("let m = ", stringify!($motion), "::new([1.0, 0.0, 0.0], 100.0).with_carrier(CarrierSpec::constant([0.0, 0.0, 0.5]));")]
-            /// assert_eq!(m.axis.carrier, Some(CarrierSpec::constant([0.0, 0.0, 0.5])));
+            /// assert_eq!(m.axis.parts.carrier, Some(CarrierSpec::constant([0.0, 0.0, 0.5])));
             /// ```
             pub fn with_carrier(mut self, carrier: CarrierSpec) -> Self {
-                self.axis.carrier = Some(carrier);
+                self.axis.parts.carrier = Some(carrier);
                 self
             }
         }

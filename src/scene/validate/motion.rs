@@ -8,7 +8,6 @@ use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
-use crate::motion::carrier;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
@@ -144,10 +143,7 @@ fn axis_geometry(
         }
         axis = axis.with_bearings(Bearings { a, b });
     }
-    if let Some(carrier) = &m.carrier {
-        axis = axis.with_carrier(carrier::keys::validate(carrier)?);
-    }
-    Ok(axis)
+    m.parts.attach(axis, &motion())
 }
 
 /// θ̇ at t = 0 (rad/s): `rate`, or `rate_rpm` · 2π/60 (revolutions per minute, as rotor engineers give it).

@@ -1,0 +1,29 @@
+//! A capability's own inline table inside a table of the scene (`carrier = { … }` in `[motion]`), declared in the
+//! capability's folder. The enclosing table registers it with one line, `part NAME: SPEC = KEY;` in its
+//! [`file_table!`](super::file_table): the file field, the reference's table, the typed parts struct, reading,
+//! writing and attaching come from that line and these two traits.
+
+use super::{Checked, KeyPath, Table};
+
+/// A part's keys: its declared file form, read into its typed spec and written back.
+pub(crate) trait Part: Sized {
+    /// The declared file form (a `file_table!` struct).
+    type File;
+    /// Its keys, for the book's reference (the file form's `TABLE`).
+    const TABLE: Table;
+    /// The file form (the table at `at`) read into the typed spec: the checks that need no other key.
+    fn read(file: &Self::File, at: &KeyPath) -> Checked<Self>;
+    /// The typed spec written back into the file form (the sidecar's scene, `read` gives it back).
+    fn write(&self) -> Self::File;
+    /// The part given where the enclosing table takes none (a carrier's vehicle keys on a free motion): a
+    /// message naming its own key, else `Ok` and the enclosing table refuses the part by its name.
+    fn refuse_unattached(_file: &Self::File, _at: &KeyPath) -> Checked<()> {
+        Ok(())
+    }
+}
+
+/// A part attached to the validated value it modifies (a carrier to a fixed axis or hinge): its values checked.
+pub(crate) trait Attach<T>: Part {
+    /// `to` with this part (its table at `at`).
+    fn attach(&self, to: T, at: &KeyPath) -> Checked<T>;
+}
