@@ -74,6 +74,7 @@ pub mod method;
 pub mod motion;
 pub mod named;
 pub mod output;
+pub mod profile;
 pub mod sample;
 pub mod scene;
 pub mod simulate;

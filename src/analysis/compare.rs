@@ -8,12 +8,13 @@ use std::thread;
 
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
-use crate::effects::{Effect, TorqueProfile};
+use crate::effects::Effect;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, Form};
 use crate::integrate::IntegrateError;
 use crate::method::Method;
 use crate::motion::gyrostat::{Drive, Gyrostat};
+use crate::profile::Profile;
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
@@ -73,7 +74,7 @@ impl Oracle {
                 Effect::Torque {
                     frame: Axes::Body,
                     value,
-                    profile: TorqueProfile::Constant,
+                    profile: Profile::Constant,
                 },
             ] => {
                 let m = principal.moments;

@@ -9,14 +9,14 @@ use std::fmt::Write;
 use nalgebra::{Matrix3, Vector3};
 
 use crate::body::Principal;
-use crate::effects::{Effect, TorqueProfile};
+use crate::effects::Effect;
 use crate::frames::Form;
 use crate::method::Method;
-use crate::motion::carrier::CarrierProfile;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::motion::hinge::Hinge;
+use crate::profile::Profile;
 use crate::sample::{BASE_COLUMNS, Sample};
 use crate::scene::{Motion, Scene};
 use crate::simulate;
@@ -225,7 +225,7 @@ fn characteristic_rate(scene: &Scene) -> f64 {
         .iter()
         .filter_map(|e| match e {
             Effect::Torque {
-                profile: TorqueProfile::Sine { freq_hz, .. },
+                profile: Profile::Sine { freq_hz, .. },
                 ..
             } => Some(2.0 * std::f64::consts::PI * freq_hz),
             _ => None,
@@ -273,15 +273,15 @@ fn effect_text(e: &Effect) -> String {
             profile,
         } => {
             let profile = match profile {
-                TorqueProfile::Constant => "constant".to_string(),
-                TorqueProfile::Sine { freq_hz, phase_rad } => {
+                Profile::Constant => "constant".to_string(),
+                Profile::Sine { freq_hz, phase_deg } => {
                     format!(
                         "sine at {} Hz, phase {} deg",
                         plain(*freq_hz),
-                        plain(phase_rad.to_degrees())
+                        plain(*phase_deg)
                     )
                 }
-                TorqueProfile::Step { t_on, t_off } => {
+                Profile::Step { t_on, t_off } => {
                     format!("step, on for {} <= t < {} s", plain(*t_on), plain(*t_off))
                 }
             };
@@ -528,14 +528,17 @@ fn carrier_lines(w: &mut Description, axis: &FixedAxis) {
 }
 
 /// A carrier's profile in words.
-fn profile_text(profile: CarrierProfile) -> String {
+fn profile_text(profile: Profile) -> String {
     match profile {
-        CarrierProfile::Constant => "constant".to_string(),
-        CarrierProfile::Sine { omega_f, phase } => format!(
+        Profile::Constant => "constant".to_string(),
+        Profile::Sine { freq_hz, phase_deg } => format!(
             "times sin(2 pi {} Hz t + {} deg)",
-            plain(omega_f / std::f64::consts::TAU),
-            plain(phase.to_degrees())
+            plain(freq_hz),
+            plain(phase_deg)
         ),
+        Profile::Step { t_on, t_off } => {
+            format!("times 1 for {} <= t < {} s", plain(t_on), plain(t_off))
+        }
     }
 }
 

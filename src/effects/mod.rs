@@ -13,31 +13,11 @@ pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
 pub use user::{MomentLaw, UserMoment};
 
 use crate::frames::Axes;
+use crate::profile::Profile;
 use crate::trig;
 
 /// Gravity when a gravity effect leaves out `g`: (0, 0, −9.81) m/s², space axes (standard gravity along −z).
 pub const DEFAULT_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
-
-/// Time profile of an applied torque.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum TorqueProfile {
-    /// M(t) = value.
-    Constant,
-    /// M(t) = value · sin(2π f t + φ).
-    Sine {
-        /// f (Hz).
-        freq_hz: f64,
-        /// φ (rad).
-        phase_rad: f64,
-    },
-    /// M(t) = value for t_on ≤ t < t_off, else 0.
-    Step {
-        /// t_on (s).
-        t_on: f64,
-        /// t_off (s).
-        t_off: f64,
-    },
-}
 
 /// One effect of the scene's `[[effect]]` list, validated.
 #[derive(Debug, Clone, PartialEq)]
@@ -49,7 +29,7 @@ pub enum Effect {
         /// The torque (N·m).
         value: Vector3<f64>,
         /// Its time profile.
-        profile: TorqueProfile,
+        profile: Profile,
     },
     /// Uniform gravity g (space axes, m/s²) acting at C while the body turns about a fixed pivot
     /// (body axes, relative to C); the pivot becomes the moment center.
@@ -113,7 +93,7 @@ impl Effect {
 }
 
 /// The torques of one frame summed, compiled once so that every evaluation does only the time-dependent
-/// arithmetic: M(t) = Σ value_k · f_k(t) with the profiles of [`TorqueProfile`]. The constant torques are summed
+/// arithmetic: M(t) = Σ value_k · f_k(t) with the profiles of [`Profile`]. The constant torques are summed
 /// into one vector, each sine keeps its angular frequency ω = 2π f (computed once, rounded as 2π·f·t would round
 /// it), each step keeps its interval, each table is interpolated ([`TorqueTable::at`]).
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -143,15 +123,15 @@ struct StepTorque {
 
 impl TorqueSum {
     /// Adds the torque `value · f(t)`.
-    pub fn add(&mut self, value: &Vector3<f64>, profile: &TorqueProfile) {
+    pub fn add(&mut self, value: &Vector3<f64>, profile: &Profile) {
         match *profile {
-            TorqueProfile::Constant => self.constant += value,
-            TorqueProfile::Sine { freq_hz, phase_rad } => self.sines.push(SineTorque {
+            Profile::Constant => self.constant += value,
+            Profile::Sine { freq_hz, phase_deg } => self.sines.push(SineTorque {
                 value: *value,
                 omega_rad_s: 2.0 * std::f64::consts::PI * freq_hz,
-                phase_rad,
+                phase_rad: phase_deg.to_radians(),
             }),
-            TorqueProfile::Step { t_on, t_off } => self.steps.push(StepTorque {
+            Profile::Step { t_on, t_off } => self.steps.push(StepTorque {
                 value: *value,
                 t_on,
                 t_off,
@@ -213,18 +193,18 @@ mod tests {
         );
         let mut sum = TorqueSum::default();
         assert!(sum.is_zero());
-        sum.add(&a, &TorqueProfile::Constant);
-        sum.add(&a, &TorqueProfile::Constant);
+        sum.add(&a, &Profile::Constant);
+        sum.add(&a, &Profile::Constant);
         sum.add(
             &b,
-            &TorqueProfile::Sine {
+            &Profile::Sine {
                 freq_hz: 0.5,
-                phase_rad: 0.3,
+                phase_deg: 30.0,
             },
         );
         sum.add(
             &c,
-            &TorqueProfile::Step {
+            &Profile::Step {
                 t_on: 1.0,
                 t_off: 2.0,
             },
@@ -233,7 +213,7 @@ mod tests {
         for t in [0.0, 0.9, 1.0, 1.5, 2.0, 7.3] {
             // The sine as the profile defines it, by the crate's inline sine (tested against the library's in
             // `trig`).
-            let sine = trig::sin(2.0 * std::f64::consts::PI * 0.5 * t + 0.3);
+            let sine = trig::sin(2.0 * std::f64::consts::PI * 0.5 * t + 30f64.to_radians());
             let step = if (1.0..2.0).contains(&t) { 1.0 } else { 0.0 };
             // Each term is computed as the profile defines it; only the order of the sum differs (exact here:
             // the constant part 2a is exact and the other terms are added one by one as before).
@@ -245,8 +225,8 @@ mod tests {
     fn constant_torques_that_cancel_sum_to_zero() {
         let mut sum = TorqueSum::default();
         let a = Vector3::new(0.5, -1.0, 2.0);
-        sum.add(&a, &TorqueProfile::Constant);
-        sum.add(&-a, &TorqueProfile::Constant);
+        sum.add(&a, &Profile::Constant);
+        sum.add(&-a, &Profile::Constant);
         assert!(sum.is_zero());
         assert_eq!(sum.at(3.0), Vector3::zeros());
     }

@@ -102,13 +102,14 @@ impl FixedAxis {
     /// ```
     /// use eulerdyn::Form;
     /// use eulerdyn::body::RigidBody;
-    /// use eulerdyn::motion::carrier::{Carrier, CarrierProfile};
+    /// use eulerdyn::motion::carrier::Carrier;
+    /// use eulerdyn::profile::Profile;
     /// use eulerdyn::motion::fixed_axis::FixedAxis;
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // A rotor (I_x = 2 kg·m²) spinning at 10 rad/s about x in a carrier yawing at 0.5 rad/s about z.
     /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
     /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
-    ///     .with_carrier(Carrier::new(Vector3::new(0.0, 0.0, 0.5), CarrierProfile::Constant));
+    ///     .with_carrier(Carrier::new(Vector3::new(0.0, 0.0, 0.5), Profile::Constant));
     /// assert!(rotor.carrier().is_some());
     /// // The gyroscopic couple Ω_c × H = I_x θ̇ Ω_c = 10 N·m about y.
     /// let m_s = rotor.required_moment_s(0.0, Form::Body);

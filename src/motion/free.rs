@@ -346,8 +346,9 @@ pub fn free_sample(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::effects::{Effect, EffectMoments, TorqueProfile};
+    use crate::effects::{Effect, EffectMoments};
     use crate::frames::Axes;
+    use crate::profile::Profile;
     use proptest::prelude::*;
 
     const U: f64 = f64::EPSILON / 2.0;
@@ -437,9 +438,9 @@ mod tests {
         let effects = [Effect::Torque {
             frame: Axes::Body,
             value: v(0.5, 0.0, 0.0),
-            profile: TorqueProfile::Sine {
+            profile: Profile::Sine {
                 freq_hz: 0.5,
-                phase_rad: 0.0,
+                phase_deg: 0.0,
             },
         }];
         let moments = EffectMoments::new(&effects, 2.0);
@@ -485,12 +486,12 @@ mod tests {
                     profile,
                 } => {
                     let factor = match profile {
-                        TorqueProfile::Constant => 1.0,
+                        Profile::Constant => 1.0,
                         // The crate's inline sine (within an ulp of the library's, tested in `trig`).
-                        TorqueProfile::Sine { freq_hz, phase_rad } => {
-                            crate::trig::sin(2.0 * std::f64::consts::PI * freq_hz * t + phase_rad)
-                        }
-                        TorqueProfile::Step { t_on, t_off } => {
+                        Profile::Sine { freq_hz, phase_deg } => crate::trig::sin(
+                            2.0 * std::f64::consts::PI * freq_hz * t + phase_deg.to_radians(),
+                        ),
+                        Profile::Step { t_on, t_off } => {
                             if t_on <= t && t < t_off {
                                 1.0
                             } else {
@@ -518,18 +519,18 @@ mod tests {
     }
 
     fn every_kind() -> Vec<Effect> {
-        let sine = TorqueProfile::Sine {
+        let sine = Profile::Sine {
             freq_hz: 0.7,
-            phase_rad: 0.4,
+            phase_deg: 23.0,
         };
-        let step = TorqueProfile::Step {
+        let step = Profile::Step {
             t_on: 1.0,
             t_off: 2.5,
         };
         let mut effects = Vec::new();
         for frame in [Axes::Body, Axes::Space] {
             for (value, profile) in [
-                (v(0.2, -0.1, 0.3), TorqueProfile::Constant),
+                (v(0.2, -0.1, 0.3), Profile::Constant),
                 (v(0.5, 0.25, -0.4), sine),
                 (v(-0.3, 0.6, 0.1), step),
             ] {

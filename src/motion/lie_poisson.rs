@@ -916,7 +916,7 @@ mod tests {
         let torque = crate::effects::Effect::Torque {
             frame: crate::frames::Axes::Space,
             value: m_s,
-            profile: crate::effects::TorqueProfile::Constant,
+            profile: crate::profile::Profile::Constant,
         };
         let mut lp = LiePoisson::new(
             &b,

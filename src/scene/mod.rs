@@ -19,11 +19,11 @@ pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SceneSource, SolverConfig};
 pub use spec::{
-    AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, CarrierProfileSpec, CarrierSpec,
-    CompareSpec, ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, Extremum,
-    FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec,
-    PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec,
-    TorqueSpec, TorqueTableSpec, VehicleSpec,
+    AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, CarrierSpec, CompareSpec,
+    ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, Extremum, FixedAxisSpec,
+    HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec, PointMassSpec,
+    RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec, TorqueTableSpec,
+    VehicleSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

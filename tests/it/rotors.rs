@@ -5,8 +5,9 @@
 //! slow motions; the criterion 1e-9 is asserted.
 
 use crate::common::{assert_refused_writing_nothing, eulerdyn, write_file};
+use eulerdyn::profile::Profile;
 use eulerdyn::sample::Sample;
-use eulerdyn::scene::{BodySpec, EffectSpec, ProfileSpec, RotorDrive, RotorSpec, SceneSpec};
+use eulerdyn::scene::{BodySpec, EffectSpec, RotorDrive, RotorSpec, SceneSpec};
 use eulerdyn::{Form, Method, simulate};
 
 fn rows(spec: &SceneSpec) -> Vec<Sample> {
@@ -33,7 +34,7 @@ fn close(a: f64, b: f64, tol: f64, what: &str) {
 fn motor(tau: f64) -> RotorDrive {
     RotorDrive::Torque {
         value: tau,
-        profile: ProfileSpec::Constant,
+        profile: Profile::Constant,
     }
 }
 

@@ -312,6 +312,11 @@ every = 0.1
             "accel_profile",
         ),
         (
+            "a step rate profile",
+            disk(r#"{ rate = [0.0, 0.0, 1.0], profile = "step" }"#),
+            "carrier.profile",
+        ),
+        (
             "accel_profile without accel",
             disk(r#"{ rate = [0.0, 0.0, 1.0], accel_profile = "constant" }"#),
             "accel_profile",

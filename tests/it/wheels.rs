@@ -7,8 +7,9 @@
 //! is crossed inside a step, whose tolerance is stated beside it.
 
 use crate::common::{assert_refused_writing_nothing, eulerdyn, write_file};
+use eulerdyn::profile::Profile;
 use eulerdyn::sample::Sample;
-use eulerdyn::scene::{BodySpec, ProfileSpec, RotorDrive, RotorSpec, SceneSpec};
+use eulerdyn::scene::{BodySpec, RotorDrive, RotorSpec, SceneSpec};
 use eulerdyn::wheels::{FrictionKeys, STICK_SPEED, WheelKeys};
 use eulerdyn::{Form, Method, simulate};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -42,7 +43,7 @@ fn close(a: f64, b: f64, tol: f64, what: &str) {
 fn motor(tau: f64) -> RotorDrive {
     RotorDrive::Torque {
         value: tau,
-        profile: ProfileSpec::Constant,
+        profile: Profile::Constant,
     }
 }
 

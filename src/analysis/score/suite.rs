@@ -8,9 +8,10 @@ use std::path::{Path, PathBuf};
 use serde_json::json;
 
 use super::{ReadOptions, Score, ScoreError, reference};
-use crate::effects::{Effect, TorqueProfile};
+use crate::effects::Effect;
 use crate::frames::Axes;
 use crate::output::AtomicFile;
+use crate::profile::Profile;
 use crate::scene::{self, Overrides, Scene};
 
 /// The rate of the reference rows and of the engines' runs (Hz).
@@ -97,7 +98,7 @@ pub fn setup(name: &str, scene: &Scene) -> serde_json::Value {
                 profile,
             } => {
                 let (t_on, t_off) = match profile {
-                    TorqueProfile::Step { t_on, t_off } => (*t_on, *t_off),
+                    Profile::Step { t_on, t_off } => (*t_on, *t_off),
                     _ => (0.0, f64::INFINITY),
                 };
                 let frame = if *frame == Axes::Space {

@@ -19,27 +19,14 @@ pub mod vehicle;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use crate::profile::Profile;
 use vehicle::Vehicle;
-
-/// How the carrier's rate varies in time.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum CarrierProfile {
-    /// p = 1.
-    Constant,
-    /// p = sin(ω_f t + φ).
-    Sine {
-        /// ω_f = 2π f (rad/s).
-        omega_f: f64,
-        /// φ (rad).
-        phase: f64,
-    },
-}
 
 /// A carrier turning about the space axis of `rate_s` at the rate `rate_s`·p(t).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Carrier {
     rate_s: Vector3<f64>,
-    profile: CarrierProfile,
+    profile: Profile,
     /// The vehicle's centre and acceleration; `None`: the carrier turns about A, which stays fixed.
     vehicle: Option<Vehicle>,
 }
@@ -62,14 +49,15 @@ impl Carrier {
     /// A carrier turning at `rate_s` (rad/s, space axes) times the `profile`.
     ///
     /// ```
-    /// use eulerdyn::motion::carrier::{Carrier, CarrierProfile};
+    /// use eulerdyn::motion::carrier::Carrier;
+    /// use eulerdyn::profile::Profile;
     /// use nalgebra::Vector3;
     /// // A quarter turn about z in one second.
-    /// let yaw = Carrier::new(Vector3::new(0.0, 0.0, std::f64::consts::FRAC_PI_2), CarrierProfile::Constant);
+    /// let yaw = Carrier::new(Vector3::new(0.0, 0.0, std::f64::consts::FRAC_PI_2), Profile::Constant);
     /// let x_s = yaw.at(1.0).q_c * Vector3::x();
     /// assert!((x_s - Vector3::y()).norm() < 1e-15);
     /// ```
-    pub fn new(rate_s: Vector3<f64>, profile: CarrierProfile) -> Self {
+    pub fn new(rate_s: Vector3<f64>, profile: Profile) -> Self {
         Self {
             rate_s,
             profile,
@@ -80,13 +68,14 @@ impl Carrier {
     /// The same carrier as a `vehicle` that turns about its own centre and accelerates.
     ///
     /// ```
-    /// use eulerdyn::motion::carrier::{Carrier, CarrierProfile, vehicle::Vehicle};
+    /// use eulerdyn::motion::carrier::{Carrier, vehicle::Vehicle};
+    /// use eulerdyn::profile::Profile;
     /// use nalgebra::Vector3;
     /// // Yawing at 2 rad/s: about A itself, A stays put; about a centre 3 m along y, A feels Ω² r = 12 m/s².
-    /// let yaw = Carrier::new(Vector3::new(0.0, 0.0, 2.0), CarrierProfile::Constant);
+    /// let yaw = Carrier::new(Vector3::new(0.0, 0.0, 2.0), Profile::Constant);
     /// assert!(yaw.vehicle().is_none() && yaw.at(0.0).accel_a_s.is_none());
     /// let centre = Vector3::new(0.0, 3.0, 0.0);
-    /// let car = yaw.with_vehicle(Vehicle::new(centre, Vector3::zeros(), CarrierProfile::Constant));
+    /// let car = yaw.with_vehicle(Vehicle::new(centre, Vector3::zeros(), Profile::Constant));
     /// assert_eq!(car.vehicle().map(Vehicle::center_s), Some(&centre));
     /// assert!((car.at(0.0).accel_a_s.unwrap() - Vector3::new(0.0, 12.0, 0.0)).norm() < 1e-14);
     /// ```
@@ -106,7 +95,7 @@ impl Carrier {
     }
 
     /// The profile.
-    pub fn profile(&self) -> CarrierProfile {
+    pub fn profile(&self) -> Profile {
         self.profile
     }
 
@@ -115,11 +104,11 @@ impl Carrier {
         self.rate_s.norm()
     }
 
-    /// R_c(t), Ω_c(t) = r p(t), Ω̇_c(t) = r p'(t) and, in a vehicle, a_A(t).
+    /// R_c(t) = exp(ψ(t) r̂) with ψ = ∫₀ᵗ p, Ω_c(t) = r p(t), Ω̇_c(t) = r p'(t) (a step's jumps left out) and, in a
+    /// vehicle, a_A(t).
     pub fn at(&self, t: f64) -> CarrierMotion {
-        let (p, p_dot, psi) = match self.profile {
-            CarrierProfile::Constant => (1.0, 0.0, t),
-            CarrierProfile::Sine { omega_f, phase } => {
+        let (p, p_dot, psi) = match (self.profile, self.profile.sine_rad()) {
+            (_, Some((omega_f, phase))) => {
                 let (s, c) = (omega_f * t + phase).sin_cos();
                 let psi = if omega_f == 0.0 {
                     t * phase.sin()
@@ -129,6 +118,10 @@ impl Carrier {
                 };
                 (s, omega_f * c, psi)
             }
+            (Profile::Step { t_on, t_off }, None) => {
+                (self.profile.at(t), 0.0, (t.min(t_off) - t_on).max(0.0))
+            }
+            _ => (1.0, 0.0, t),
         };
         let (q_c, omega_c_s, omega_c_dot_s) = (
             UnitQuaternion::from_scaled_axis(self.rate_s * psi),
@@ -156,9 +149,9 @@ mod tests {
     fn sine_carrier_attitude_and_rate_agree() {
         let carrier = Carrier::new(
             Vector3::new(0.1, -0.2, 0.3),
-            CarrierProfile::Sine {
-                omega_f: 1.7,
-                phase: 0.4,
+            Profile::Sine {
+                freq_hz: 1.7 / std::f64::consts::TAU,
+                phase_deg: 0.4f64.to_degrees(),
             },
         );
         let (t, h) = (2.3, 1e-5);
@@ -168,5 +161,23 @@ mod tests {
         assert_relative_eq!(r_dot, now.omega_c_s.cross_matrix() * r(t), epsilon = 1e-9);
         let rate_dot = (carrier.at(t + h).omega_c_s - carrier.at(t - h).omega_c_s) / (2.0 * h);
         assert_relative_eq!(rate_dot, now.omega_c_dot_s, epsilon = 1e-9);
+    }
+
+    /// A step profile turns the carrier by ψ = ∫₀ᵗ p = clamp(t, t_on, t_off) − t_on about r̂, at r while on.
+    #[test]
+    fn a_step_carrier_turns_while_it_is_on() {
+        let rate_s = Vector3::new(0.0, 0.0, 0.5);
+        let carrier = Carrier::new(
+            rate_s,
+            Profile::Step {
+                t_on: 1.0,
+                t_off: 2.0,
+            },
+        );
+        for (t, psi, on) in [(0.5, 0.0, 0.0), (1.5, 0.5, 1.0), (3.0, 1.0, 0.0)] {
+            let now = carrier.at(t);
+            assert_relative_eq!(now.q_c.angle(), 0.5 * psi, epsilon = 1e-15);
+            assert_eq!(now.omega_c_s, rate_s * on);
+        }
     }
 }

@@ -13,7 +13,7 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use super::CarrierProfile;
+use crate::profile::Profile;
 
 /// The vehicle: its centre of rotation (from the axis point at t = 0, space axes) and its own acceleration.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,7 +23,7 @@ pub struct Vehicle {
     /// a: the vehicle's linear acceleration, space axes (m/s²), times `profile`.
     accel_s: Vector3<f64>,
     /// p_a(t).
-    profile: CarrierProfile,
+    profile: Profile,
 }
 
 impl Vehicle {
@@ -31,14 +31,15 @@ impl Vehicle {
     /// `accel_s` (m/s², space axes) times `profile`.
     ///
     /// ```
-    /// use eulerdyn::motion::carrier::{CarrierProfile, vehicle::Vehicle};
+    /// use eulerdyn::motion::carrier::vehicle::Vehicle;
+    /// use eulerdyn::profile::Profile;
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // Turning at 2 rad/s about a centre 3 m along y: A feels Ω² r = 12 m/s² toward the centre.
-    /// let v = Vehicle::new(Vector3::new(0.0, 3.0, 0.0), Vector3::zeros(), CarrierProfile::Constant);
+    /// let v = Vehicle::new(Vector3::new(0.0, 3.0, 0.0), Vector3::zeros(), Profile::Constant);
     /// let a_a = v.accel_a_s(0.0, &UnitQuaternion::identity(), &Vector3::new(0.0, 0.0, 2.0), &Vector3::zeros());
     /// assert!((a_a - Vector3::new(0.0, 12.0, 0.0)).norm() < 1e-14);
     /// ```
-    pub fn new(center_s: Vector3<f64>, accel_s: Vector3<f64>, profile: CarrierProfile) -> Self {
+    pub fn new(center_s: Vector3<f64>, accel_s: Vector3<f64>, profile: Profile) -> Self {
         Self {
             center_s,
             accel_s,
@@ -57,15 +58,15 @@ impl Vehicle {
     }
 
     /// p_a.
-    pub fn profile(&self) -> CarrierProfile {
+    pub fn profile(&self) -> Profile {
         self.profile
     }
 
     /// a_v(t) = a p_a(t), space axes.
     pub fn accel_v_s(&self, t: f64) -> Vector3<f64> {
         match self.profile {
-            CarrierProfile::Constant => self.accel_s,
-            CarrierProfile::Sine { omega_f, phase } => self.accel_s * (omega_f * t + phase).sin(),
+            Profile::Constant => self.accel_s,
+            _ => self.accel_s * self.profile.at(t),
         }
     }
 
@@ -96,12 +97,12 @@ mod tests {
         let (center_s, accel_s) = (Vector3::new(1.0, -2.0, 0.5), Vector3::new(0.3, 0.0, -0.7));
         let carrier = Carrier::new(
             Vector3::new(0.1, -0.2, 0.3),
-            CarrierProfile::Sine {
-                omega_f: 1.7,
-                phase: 0.4,
+            Profile::Sine {
+                freq_hz: 1.7 / std::f64::consts::TAU,
+                phase_deg: 0.4f64.to_degrees(),
             },
         )
-        .with_vehicle(Vehicle::new(center_s, accel_s, CarrierProfile::Constant));
+        .with_vehicle(Vehicle::new(center_s, accel_s, Profile::Constant));
         let p_a = |t: f64| center_s + carrier.at(t).q_c * (-center_s) + accel_s * (0.5 * t * t);
         let (t, h) = (2.3, 1e-4);
         let second = (p_a(t + h) - p_a(t) * 2.0 + p_a(t - h)) / (h * h);

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::ProfileSpec;
+use crate::profile::Profile;
 use crate::wheels::WheelKeys;
 
 /// `body.shape`: a homogeneous shape, `type` and its dimensions (the vocabulary type [`crate::body::Shape`]).
@@ -59,7 +59,7 @@ pub enum RotorDrive {
         /// τ (N·m).
         value: f64,
         /// Its time profile.
-        profile: ProfileSpec,
+        profile: Profile,
     },
     /// `torque_table`: the motor torque commanded by a table (header `t,torque`), relative to the scene file.
     Table(std::path::PathBuf),

@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 
 use crate::effects::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
+use crate::profile::Profile;
 
 /// One `[[effect]]`, by its `type`.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,28 +85,7 @@ pub struct TorqueSpec {
     /// `value`: N·m.
     pub value: [f64; 3],
     /// `profile` and its keys (absent: constant).
-    pub profile: ProfileSpec,
-}
-
-/// A torque's `profile`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ProfileSpec {
-    /// `profile = "constant"`.
-    Constant,
-    /// `profile = "sine"`: the value times sin(2π f t + φ).
-    Sine {
-        /// `freq_hz`: f, Hz, ≥ 0.
-        freq_hz: f64,
-        /// `phase_deg`: φ in degrees (absent: 0).
-        phase_deg: f64,
-    },
-    /// `profile = "step"`: the value for t_on ≤ t < t_off, zero otherwise.
-    Step {
-        /// `t_on`: s (absent: 0).
-        t_on: f64,
-        /// `t_off`: s, later than t_on (absent: never, +∞).
-        t_off: f64,
-    },
+    pub profile: Profile,
 }
 
 impl EffectSpec {
@@ -181,15 +161,15 @@ impl TorqueSpec {
     ///
     /// ```
     /// use eulerdyn::frames::Axes;
-    /// use eulerdyn::scene::{ProfileSpec, TorqueSpec};
+    /// use eulerdyn::{profile::Profile, scene::TorqueSpec};
     /// let t = TorqueSpec::new(Axes::Space, [0.0, 0.0, 0.2]);
-    /// assert_eq!(t.profile, ProfileSpec::Constant);
+    /// assert_eq!(t.profile, Profile::Constant);
     /// ```
     pub fn new(axes: Axes, value: [f64; 3]) -> Self {
         Self {
             frame: axes,
             value,
-            profile: ProfileSpec::Constant,
+            profile: Profile::Constant,
         }
     }
 
@@ -197,12 +177,12 @@ impl TorqueSpec {
     ///
     /// ```
     /// use eulerdyn::frames::Axes;
-    /// use eulerdyn::scene::{ProfileSpec, TorqueSpec};
+    /// use eulerdyn::{profile::Profile, scene::TorqueSpec};
     /// let t = TorqueSpec::new(Axes::Body, [0.0, 0.0, 1.0]).sine(2.0, 90.0);
-    /// assert_eq!(t.profile, ProfileSpec::Sine { freq_hz: 2.0, phase_deg: 90.0 });
+    /// assert_eq!(t.profile, Profile::Sine { freq_hz: 2.0, phase_deg: 90.0 });
     /// ```
     pub fn sine(mut self, freq_hz: f64, phase_deg: f64) -> Self {
-        self.profile = ProfileSpec::Sine { freq_hz, phase_deg };
+        self.profile = Profile::Sine { freq_hz, phase_deg };
         self
     }
 
@@ -210,12 +190,12 @@ impl TorqueSpec {
     ///
     /// ```
     /// use eulerdyn::frames::Axes;
-    /// use eulerdyn::scene::{ProfileSpec, TorqueSpec};
+    /// use eulerdyn::{profile::Profile, scene::TorqueSpec};
     /// let t = TorqueSpec::new(Axes::Body, [0.0, 0.0, 1.0]).step(0.5, 1.5);
-    /// assert_eq!(t.profile, ProfileSpec::Step { t_on: 0.5, t_off: 1.5 });
+    /// assert_eq!(t.profile, Profile::Step { t_on: 0.5, t_off: 1.5 });
     /// ```
     pub fn step(mut self, t_on: f64, t_off: f64) -> Self {
-        self.profile = ProfileSpec::Step { t_on, t_off };
+        self.profile = Profile::Step { t_on, t_off };
         self
     }
 }

@@ -10,6 +10,7 @@ use crate::effects::Interpolation;
 use crate::frames::Axes;
 use crate::keys::{file_table, key, position, profile};
 use crate::motion::carrier::spec::CarrierSpec;
+use crate::profile::{ProfileKeys, ProfileKind};
 
 file_table! {
     /// A whole scene, as a scene file writes it.
@@ -157,14 +158,30 @@ pub(super) enum EffectKind {
     TorqueTable,
 }
 
-/// The `profile` of a torque.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub(super) enum ProfileKind {
-    Constant,
-    Sine,
-    Step,
+/// A time profile's five keys of a table that has them (`@sine; @step;` and `profile`), read and set as one
+/// [`ProfileKeys`].
+macro_rules! profile_keys {
+    ($($file:ty),*) => {$(
+        impl $file {
+            pub(super) fn profile_keys(&self) -> ProfileKeys {
+                ProfileKeys {
+                    profile: self.profile,
+                    freq_hz: self.freq_hz,
+                    phase_deg: self.phase_deg,
+                    t_on: self.t_on,
+                    t_off: self.t_off,
+                }
+            }
+
+            pub(super) fn set_profile_keys(&mut self, keys: ProfileKeys) {
+                (self.profile, self.freq_hz, self.phase_deg) = (keys.profile, keys.freq_hz, keys.phase_deg);
+                (self.t_on, self.t_off) = (keys.t_on, keys.t_off);
+            }
+        }
+    )*};
 }
+
+profile_keys!(RotorFile, EffectFile);
 
 file_table! {
     /// One `[[effect]]`.

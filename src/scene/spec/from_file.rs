@@ -4,18 +4,19 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile,
-    ProfileKind, RotorFile, SceneFile, ShapeFile, ShapeKind,
+    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile, RotorFile,
+    SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
     AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, ConditionSpec, Direction,
     Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind,
-    MotionSpec, PointMassSpec, ProfileSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec,
-    TorqueSpec, TorqueTableSpec,
+    MotionSpec, PointMassSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
+    TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
 use crate::keys::{Checked, invalid, only_keys, required};
+use crate::profile::Profile;
 use crate::scene::source_map::KeyPath;
 use crate::wheels::{WheelKeys, WheelMode};
 
@@ -79,14 +80,7 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
     let table = KeyPath::root().key("body").key("rotor").index(index);
     let key = |name: &str| table.clone().key(name);
     let kind = "a rotor";
-    let keys = ProfileKeys {
-        profile: doc.profile,
-        freq_hz: doc.freq_hz,
-        phase_deg: doc.phase_deg,
-        t_on: doc.t_on,
-        t_off: doc.t_off,
-    };
-    let drive = rotor_drive(&table, doc, &keys)?;
+    let drive = rotor_drive(&table, doc)?;
     if !matches!(drive, RotorDrive::Torque { .. }) {
         const PROFILE: [&str; 5] = ["profile", "freq_hz", "phase_deg", "t_on", "t_off"];
         if let Some(name) = doc.given().into_iter().find(|k| PROFILE.contains(k)) {
@@ -114,7 +108,7 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
 }
 
 /// A rotor's drive: at most one of `spin_accel`, `torque`, `torque_table` and `mode = "free"`.
-fn rotor_drive(table: &KeyPath, doc: &RotorFile, keys: &ProfileKeys) -> Checked<RotorDrive> {
+fn rotor_drive(table: &KeyPath, doc: &RotorFile) -> Checked<RotorDrive> {
     const DRIVES: [&str; 4] = ["spin_accel", "torque", "torque_table", "mode"];
     let given = doc.given();
     let mut present = given.into_iter().filter(|k| DRIVES.contains(k));
@@ -135,7 +129,7 @@ fn rotor_drive(table: &KeyPath, doc: &RotorFile, keys: &ProfileKeys) -> Checked<
             (Some(accel), ..) => RotorDrive::SpinAccel(accel),
             (_, Some(value), ..) => RotorDrive::Torque {
                 value,
-                profile: profile(table, keys)?,
+                profile: Profile::read(table, &doc.profile_keys(), "a sine torque")?,
             },
             (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
             (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,
@@ -301,16 +295,7 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
         EffectKind::Torque => EffectSpec::Torque(TorqueSpec {
             frame: doc.frame.unwrap_or(Axes::Body),
             value: required(key("value"), doc.value, &kind_text)?,
-            profile: profile(
-                &table,
-                &ProfileKeys {
-                    profile: doc.profile,
-                    freq_hz: doc.freq_hz,
-                    phase_deg: doc.phase_deg,
-                    t_on: doc.t_on,
-                    t_off: doc.t_off,
-                },
-            )?,
+            profile: Profile::read(&table, &doc.profile_keys(), "a sine torque")?,
         }),
         EffectKind::Gravity => EffectSpec::Gravity {
             g: doc.g.unwrap_or(DEFAULT_GRAVITY),
@@ -324,65 +309,6 @@ fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
             frame: doc.frame.unwrap_or(Axes::Body),
             interpolation: doc.interpolation.unwrap_or_default(),
         }),
-    })
-}
-
-/// The keys of a torque's time profile, as an effect and a rotor's motor write them.
-struct ProfileKeys {
-    profile: Option<ProfileKind>,
-    freq_hz: Option<f64>,
-    phase_deg: Option<f64>,
-    t_on: Option<f64>,
-    t_off: Option<f64>,
-}
-
-/// A torque's `profile` and the keys that profile takes.
-fn profile(table: &KeyPath, doc: &ProfileKeys) -> Checked<ProfileSpec> {
-    let key = |name: &str| table.clone().key(name);
-    let misplaced = |name: &str, present: bool, kind: &str| -> Checked<()> {
-        if present {
-            invalid(
-                key(name),
-                format!("`{name}` applies to profile = \"{kind}\" only"),
-            )
-        } else {
-            Ok(())
-        }
-    };
-    let sine_keys = |kind| {
-        misplaced("freq_hz", doc.freq_hz.is_some(), kind)?;
-        misplaced("phase_deg", doc.phase_deg.is_some(), kind)
-    };
-    let step_keys = |kind| {
-        misplaced("t_on", doc.t_on.is_some(), kind)?;
-        misplaced("t_off", doc.t_off.is_some(), kind)
-    };
-    Ok(match doc.profile.unwrap_or(ProfileKind::Constant) {
-        ProfileKind::Constant => {
-            sine_keys("sine")?;
-            step_keys("step")?;
-            ProfileSpec::Constant
-        }
-        ProfileKind::Sine => {
-            step_keys("step")?;
-            let Some(freq_hz) = doc.freq_hz else {
-                return invalid(
-                    key("freq_hz"),
-                    "a sine torque needs `freq_hz` (Hz, finite, >= 0)",
-                );
-            };
-            ProfileSpec::Sine {
-                freq_hz,
-                phase_deg: doc.phase_deg.unwrap_or(0.0),
-            }
-        }
-        ProfileKind::Step => {
-            sine_keys("sine")?;
-            ProfileSpec::Step {
-                t_on: doc.t_on.unwrap_or(0.0),
-                t_off: doc.t_off.unwrap_or(f64::INFINITY),
-            }
-        }
     })
 }
 
@@ -506,42 +432,10 @@ fn rotor_file(rotor: &RotorSpec) -> RotorFile {
         RotorDrive::SpinAccel(accel) => file.spin_accel = Some(accel),
         RotorDrive::Torque { value, ref profile } => {
             file.torque = Some(value);
-            let (kind, freq_hz, phase_deg, t_on, t_off) = profile_keys(profile);
-            (file.profile, file.freq_hz, file.phase_deg) = (Some(kind), freq_hz, phase_deg);
-            (file.t_on, file.t_off) = (t_on, t_off);
+            file.set_profile_keys(profile.keys());
         }
     }
     file
-}
-
-/// A profile's `profile`, `freq_hz`, `phase_deg`, `t_on` and `t_off` keys (an absent `t_off`, +∞, left out).
-#[allow(clippy::type_complexity)]
-fn profile_keys(
-    profile: &ProfileSpec,
-) -> (
-    ProfileKind,
-    Option<f64>,
-    Option<f64>,
-    Option<f64>,
-    Option<f64>,
-) {
-    match *profile {
-        ProfileSpec::Constant => (ProfileKind::Constant, None, None, None, None),
-        ProfileSpec::Sine { freq_hz, phase_deg } => (
-            ProfileKind::Sine,
-            Some(freq_hz),
-            Some(phase_deg),
-            None,
-            None,
-        ),
-        ProfileSpec::Step { t_on, t_off } => (
-            ProfileKind::Step,
-            None,
-            None,
-            Some(t_on),
-            Some(t_off).filter(|t| *t != f64::INFINITY),
-        ),
-    }
 }
 
 fn shape_file(shape: &ShapeSpec) -> ShapeFile {
@@ -622,18 +516,14 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
 fn effect_file(effect: &EffectSpec) -> EffectFile {
     match effect {
         EffectSpec::Torque(torque) => {
-            let (profile, freq_hz, phase_deg, t_on, t_off) = profile_keys(&torque.profile);
-            EffectFile {
+            let mut file = EffectFile {
                 kind: Some(EffectKind::Torque),
                 frame: Some(torque.frame),
                 value: Some(torque.value),
-                profile: Some(profile),
-                freq_hz,
-                phase_deg,
-                t_on,
-                t_off,
                 ..EffectFile::default()
-            }
+            };
+            file.set_profile_keys(torque.profile.keys());
+            file
         }
         EffectSpec::Gravity { g, pivot } => EffectFile {
             kind: Some(EffectKind::Gravity),
@@ -711,7 +601,7 @@ mod tests {
                 .with_drive(RotorDrive::SpinAccel(2.0)),
             wheel.with_drive(RotorDrive::Torque {
                 value: 0.1,
-                profile: ProfileSpec::Sine {
+                profile: Profile::Sine {
                     freq_hz: 1.0,
                     phase_deg: 10.0,
                 },

@@ -22,12 +22,12 @@ use crate::method::{Backend, Method};
 pub use body::{
     BodySpec, Distribution, InertiaSpec, PointMassSpec, RotorDrive, RotorSpec, ShapeSpec,
 };
-pub use effect::{EffectSpec, ProfileSpec, TorqueSpec, TorqueTableSpec};
+pub use effect::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
-    AxisDirection, AxisParts, AxisSpec, CarrierProfileSpec, CarrierSpec, FixedAxisSpec, HingeSpec,
-    MotionKind, MotionSpec, RateSpec, VehicleSpec,
+    AxisDirection, AxisParts, AxisSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
+    MotionSpec, RateSpec, VehicleSpec,
 };
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).

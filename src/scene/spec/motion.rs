@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::file_form::AxisParts;
-pub use crate::motion::carrier::spec::{CarrierProfileSpec, CarrierSpec, VehicleSpec};
+pub use crate::motion::carrier::spec::{CarrierSpec, VehicleSpec};
 
 /// A motion's `type`, as the scene file and the sidecar write it: `free`, `fixed_axis`, `hinge`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]

@@ -2,10 +2,10 @@
 
 use std::sync::Arc;
 
-use super::super::spec::{EffectSpec, MotionSpec, ProfileSpec, SceneSpec, TorqueSpec};
+use super::super::spec::{EffectSpec, MotionSpec, SceneSpec, TorqueSpec};
 use super::{Checked, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
-use crate::effects::{Effect, TorqueProfile, TorqueTable};
+use crate::effects::{Effect, TorqueTable};
 use nalgebra::Vector3;
 
 /// Every `[[effect]]`, in order; a fixed-axis motion takes gravity only, and at most one gravity (its pivot is the
@@ -139,38 +139,10 @@ fn validate_effect(
 /// A torque: its axes, value and time profile.
 fn validate_torque(table: &KeyPath, doc: &TorqueSpec) -> Checked<Effect> {
     let key = |name: &str| table.clone().key(name);
-    let profile = validate_profile(table, &doc.profile)?;
+    let profile = doc.profile.checked(table)?;
     Ok(Effect::Torque {
         frame: doc.frame,
         value: vector(key("value"), doc.value, "N*m")?,
         profile,
-    })
-}
-
-/// A torque's time profile (an effect's, or a rotor motor's), its keys under `table`.
-pub(super) fn validate_profile(table: &KeyPath, profile: &ProfileSpec) -> Checked<TorqueProfile> {
-    let key = |name: &str| table.clone().key(name);
-    Ok(match *profile {
-        ProfileSpec::Constant => TorqueProfile::Constant,
-        ProfileSpec::Sine { freq_hz, phase_deg } => {
-            let f = finite(key("freq_hz"), freq_hz, "Hz")?;
-            if f < 0.0 {
-                return invalid(key("freq_hz"), format!("must be >= 0 (Hz), got {f:?}"));
-            }
-            TorqueProfile::Sine {
-                freq_hz: f,
-                phase_rad: finite(key("phase_deg"), phase_deg, "degrees")?.to_radians(),
-            }
-        }
-        ProfileSpec::Step { t_on, t_off } => {
-            let t_on = finite(key("t_on"), t_on, "s")?;
-            if t_off.is_nan() || t_off <= t_on {
-                return invalid(
-                    key("t_off"),
-                    format!("must be later than t_on = {t_on:?} s, got {t_off:?}"),
-                );
-            }
-            TorqueProfile::Step { t_on, t_off }
-        }
     })
 }

@@ -5,7 +5,6 @@ use std::sync::Arc;
 use nalgebra::{Unit, Vector3};
 
 use super::super::spec::{BodySpec, RotorDrive, RotorSpec};
-use super::effect::validate_profile;
 use super::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
 use crate::effects::TorqueSum;
 use crate::motion::free::FreeBody;
@@ -122,10 +121,7 @@ fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Ch
             RotorDrive::Torque { value, ref profile } => {
                 let value = finite(key("torque"), value, "N*m")?;
                 let mut tau = TorqueSum::default();
-                tau.add(
-                    &Vector3::new(value, 0.0, 0.0),
-                    &validate_profile(&table, profile)?,
-                );
+                tau.add(&Vector3::new(value, 0.0, 0.0), &profile.checked(&table)?);
                 Drive::Torque(tau)
             }
         },
