@@ -620,7 +620,7 @@ fn per_step_costs() {
             for frame in [Form::Body, Form::Space] {
                 let overrides = Overrides {
                     method: Some(method),
-                    frame: Some(frame),
+                    form: Some(frame),
                     backend: Some(backend),
                     // `exact` takes no steps: time it per row, a row every 1 ms.
                     every: (!method.is_fixed_step() && !method.is_adaptive()).then_some(1e-3),
@@ -867,15 +867,15 @@ fn fastest_to_1e10(scene_file: &str) {
     reaching.sort_by(|a, b| a.wall_s.total_cmp(&b.wall_s));
     let mut shown = Vec::new();
     for r in reaching {
-        if shown.iter().any(|(m, f)| *m == r.method && *f == r.frame) {
+        if shown.iter().any(|(m, f)| *m == r.method && *f == r.form) {
             continue;
         }
-        shown.push((r.method.clone(), r.frame));
+        shown.push((r.method.clone(), r.form));
         let integrates = r.method_name.is_fixed_step() || r.method_name.is_adaptive();
         println!(
             "    {:<8} {:<5} {:<22} err_omega {:.2e}  {:>10}  ({} steps, {} evals){}",
             r.method,
-            r.frame.name(),
+            r.form.name(),
             r.setting(),
             r.err_omega,
             format_seconds(r.wall_s),
@@ -925,7 +925,7 @@ fn fastest_to_1e10(scene_file: &str) {
         Some(r) => println!(
             "    fastest integration to err_omega <= 1e-10: {} ({} form, {}) in {}  (target <= 0.25 ms: {})",
             r.method,
-            r.frame.name(),
+            r.form.name(),
             r.setting(),
             format_seconds(r.wall_s),
             if r.wall_s <= 0.25e-3 { "ok" } else { "MISSED" }
@@ -950,7 +950,7 @@ fn constant_torque_cost(
         .join("\n");
     let overrides = Overrides {
         method: Some(row.method_name),
-        frame: Some(row.frame),
+        form: Some(row.form),
         backend: Some(row.backend),
         rtol: row.rtol,
         atol: row.atol,

@@ -59,14 +59,14 @@ impl ExactFlow {
     }
 
     /// The row at time t in the form `frame` (module docs), evaluated directly. M = 0: the flow is torque-free.
-    pub fn sample(&self, t: f64, frame: Form) -> Sample {
+    pub fn sample(&self, t: f64, form: Form) -> Sample {
         let q = self.exact.attitude(t) * self.axes_q.inverse();
         let omega_h_b = || {
             let omega_p = self.exact.omega_p(t);
             let h_p = omega_p.component_mul(self.body.principal_moments());
             (self.axes_q * omega_p, self.axes_q * h_p)
         };
-        self.row(t, q, omega_h_b, frame)
+        self.row(t, q, omega_h_b, form)
     }
 
     /// The row at t from the attitude q (body → space) and (ω_b, H_b) (asked for in the body form only).
@@ -75,9 +75,9 @@ impl ExactFlow {
         t: f64,
         q: UnitQuaternion<f64>,
         omega_h_b: impl FnOnce() -> (Vector3<f64>, Vector3<f64>),
-        frame: Form,
+        form: Form,
     ) -> Sample {
-        let (omega_b, h_b, h_s) = match frame {
+        let (omega_b, h_b, h_s) = match form {
             Form::Body => {
                 let (omega_b, h_b) = omega_h_b();
                 (omega_b, h_b, q * h_b)
@@ -97,7 +97,7 @@ impl ExactFlow {
     pub fn run<E>(
         &self,
         schedule: &Schedule,
-        frame: Form,
+        form: Form,
         mut on_row: impl FnMut(&Sample) -> Result<(), E>,
     ) -> Result<Stats, IntegrateError<E>> {
         let mut stats = Stats::default();
@@ -112,9 +112,9 @@ impl ExactFlow {
                 // Rows before the last are on the grid: t = k·every, as the walk forms it.
                 Some((t_grid, omega_b, q)) if k < last => {
                     debug_assert_eq!(t_grid, t);
-                    self.row(t, q, || (omega_b, self.body.inertia_b() * omega_b), frame)
+                    self.row(t, q, || (omega_b, self.body.inertia_b() * omega_b), form)
                 }
-                _ => self.sample(t, frame),
+                _ => self.sample(t, form),
             };
             stats.evals += 1;
             if t > 0.0 {

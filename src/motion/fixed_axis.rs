@@ -418,11 +418,11 @@ impl FixedAxis {
         &self,
         rotation: &AxisRotation,
         theta_ddot: f64,
-        frame: Form,
+        form: Form,
     ) -> (Vector3<f64>, Vector3<f64>) {
         let q = rotation.q;
         let alpha_s = rotation.alpha_s(theta_ddot);
-        match frame {
+        match form {
             Form::Body => {
                 let (omega_b, alpha_b) = (rotation.omega_b, q.inverse_transform_vector(&alpha_s));
                 let m_b = self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b));
@@ -455,14 +455,14 @@ impl FixedAxis {
     /// The moment about A the prescribed motion requires at time t, space axes, computed in the form `frame`
     /// selects: R(θ)·(I_A α + ω × I_A ω) (body form) or d/dt[I_s ω_s] (space form, eq. 8.10), in a carrier with
     /// ω = Ω_c + θ̇ u.
-    pub fn required_moment_s(&self, t: f64, frame: Form) -> Vector3<f64> {
+    pub fn required_moment_s(&self, t: f64, form: Form) -> Vector3<f64> {
         let angle = self.angle(t);
-        match (self.carrier(), frame) {
+        match (self.carrier(), form) {
             (None, Form::Space) => self.moment_s(&angle),
             (None, Form::Body) => self.attitude(angle.theta) * self.moment_b(&angle),
             (Some(_), _) => {
                 let rotation = self.rotation(t, angle.theta, angle.theta_dot);
-                self.moment_in_carrier(&rotation, angle.theta_ddot, frame).1
+                self.moment_in_carrier(&rotation, angle.theta_ddot, form).1
             }
         }
     }
@@ -471,11 +471,11 @@ impl FixedAxis {
     /// frame's components by rotation): body form [`FixedAxis::moment_b`], space form [`FixedAxis::moment_s`] (in
     /// a carrier, their generalisations with ω = Ω_c + θ̇ u). Energy is ½ ω·H_A, the body's whole kinetic energy
     /// since A is fixed (in a vehicle, where A accelerates, the kinetic energy of the motion relative to A).
-    pub fn sample(&self, t: f64, frame: Form) -> Sample {
+    pub fn sample(&self, t: f64, form: Form) -> Sample {
         let angle = self.angle(t);
         let rotation = self.rotation(t, angle.theta, angle.theta_dot);
         let weight_moment_s = (rotation.q * self.rho_c_b).cross(&(self.g_s * self.mass));
-        self.sample_at(t, &angle, &rotation, frame, &weight_moment_s)
+        self.sample_at(t, &angle, &rotation, form, &weight_moment_s)
     }
 
     /// The kinetic state and the support's loads at time t and the angle `angle` (see [`Self::sample`] and
@@ -486,14 +486,14 @@ impl FixedAxis {
         t: f64,
         angle: &AxisAngle,
         rotation: &AxisRotation,
-        frame: Form,
+        form: Form,
         m_eff_s: &Vector3<f64>,
     ) -> Sample {
         let (angle, q) = (*angle, rotation.q);
         let omega_b = rotation.omega_b;
         let h_b = self.inertia_a_b * omega_b;
-        let (m_b, m_s) = match (rotation.carrier, frame) {
-            (Some(_), _) => self.moment_in_carrier(rotation, angle.theta_ddot, frame),
+        let (m_b, m_s) = match (rotation.carrier, form) {
+            (Some(_), _) => self.moment_in_carrier(rotation, angle.theta_ddot, form),
             (None, Form::Body) => {
                 let m_b = self.moment_b(&angle);
                 (m_b, q * m_b)

@@ -294,11 +294,11 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
 /// The initial state of the form `frame` from ω_b(0) and q(0).
 pub fn initial_state(
     body: &FreeBody,
-    frame: Form,
+    form: Form,
     omega0_b: &Vector3<f64>,
     q0: &UnitQuaternion<f64>,
 ) -> State {
-    let first = match frame {
+    let first = match form {
         Form::Body => *omega0_b,
         Form::Space => q0 * (body.inertia_b * omega0_b),
     };
@@ -309,20 +309,20 @@ pub fn initial_state(
 pub fn sample<M: AppliedMoment>(
     body: &FreeBody,
     moment: &M,
-    frame: Form,
+    form: Form,
     t: f64,
     y: &State,
 ) -> Sample {
     let q = attitude(y);
     let first = Vector3::new(y[0], y[1], y[2]);
-    let (omega_b, h_b) = match frame {
+    let (omega_b, h_b) = match form {
         Form::Body => (first, body.inertia_b * first),
         Form::Space => {
             let h_b = q.inverse_transform_vector(&first);
             (body.omega_b_of(&h_b), h_b)
         }
     };
-    let h_s = match frame {
+    let h_s = match form {
         Form::Body => q * h_b,
         Form::Space => first,
     };

@@ -173,7 +173,7 @@ fn unit(q: &[f64; 4]) -> UnitQuaternion<f64> {
 pub struct LiePoisson<K: KickMoment> {
     scheme: Scheme,
     weights: Vec<f64>,
-    frame: Form,
+    form: Form,
     moments_p: [f64; 3],
     /// Principal axes P (v_b = P v_p) and as a quaternion; `identity` when the body axes are principal.
     axes_b: Rotation3<f64>,
@@ -271,7 +271,7 @@ pub enum Splitting {
 impl<K: KickMoment> LiePoisson<K> {
     /// The splitting of `body` (about its moment center) in the form `frame`, composed by `scheme`, with the
     /// applied moment `kick`.
-    pub fn new(body: &FreeBody, frame: Form, scheme: Scheme, kick: K) -> Self {
+    pub fn new(body: &FreeBody, form: Form, scheme: Scheme, kick: K) -> Self {
         let moments = *body.principal_moments();
         let axes_b = *body.principal_axes_b();
         let identity = axes_b == Rotation3::identity();
@@ -279,7 +279,7 @@ impl<K: KickMoment> LiePoisson<K> {
         Self {
             scheme,
             weights: scheme.weights(),
-            frame,
+            form,
             moments_p,
             axes_b,
             axes_q: if identity {
@@ -381,7 +381,7 @@ impl<K: KickMoment> LiePoisson<K> {
         } else {
             q0_b * self.axes_q
         };
-        let h = match self.frame {
+        let h = match self.form {
             Form::Body => {
                 let omega_p = self.axes_b.inverse_transform_vector(omega0_b);
                 Vector3::from_fn(|i, _| self.moments_p[i] * omega_p[i])
@@ -409,7 +409,7 @@ impl<K: KickMoment> LiePoisson<K> {
 
     /// H in principal axes: the state (body form) or q_p⁻¹ H_s (space form).
     pub fn h_p(&self, y: &SplitState) -> Vector3<f64> {
-        match self.frame {
+        match self.form {
             Form::Body => y.h,
             Form::Space => unit(&y.q_p).inverse_transform_vector(&y.h),
         }
@@ -426,7 +426,7 @@ impl<K: KickMoment> LiePoisson<K> {
         } else {
             (self.axes_b * omega_p, self.axes_b * h_p)
         };
-        let h_s = match self.frame {
+        let h_s = match self.form {
             Form::Body => q * h_b,
             Form::Space => y.h,
         };
@@ -450,7 +450,7 @@ impl<K: KickMoment> LiePoisson<K> {
     /// [`Self::turn_axis`] about eᵢ in the method's form.
     #[inline(always)]
     fn turn(&self, i: usize, tau: f64, y: &mut SplitState) -> u64 {
-        match self.frame {
+        match self.form {
             Form::Body => self.turn_in::<true>(i, tau, y),
             Form::Space => self.turn_in::<false>(i, tau, y),
         }
@@ -501,7 +501,7 @@ impl<K: KickMoment> LiePoisson<K> {
     /// axes, q_p ← Rot(H_s/|H|, |H|τ/I_r) ⊗ q_p, in the space form. Returns the sub-flows done (0 or 1).
     #[inline(always)]
     fn turn_about_h(&self, tau: f64, y: &mut SplitState) -> u64 {
-        match self.frame {
+        match self.form {
             Form::Body => self.turn_about_h_in::<true>(tau, y),
             Form::Space => self.turn_about_h_in::<false>(tau, y),
         }
@@ -548,7 +548,7 @@ impl<K: KickMoment> LiePoisson<K> {
         let rest_b = self.kick.rest_moment_b(t, &q_b);
         let c = self.kick.damping_c();
         if c == 0.0 {
-            match self.frame {
+            match self.form {
                 Form::Body => {
                     let rest_p = if self.identity {
                         rest_b
@@ -567,7 +567,7 @@ impl<K: KickMoment> LiePoisson<K> {
         } else {
             self.axes_b.inverse_transform_vector(&rest_b)
         };
-        let h_p = match self.frame {
+        let h_p = match self.form {
             Form::Body => y.h,
             Form::Space => q_p.inverse_transform_vector(&y.h),
         };
@@ -575,7 +575,7 @@ impl<K: KickMoment> LiePoisson<K> {
             let k = c / self.moments_p[i];
             (rest_p[i] - k * h_p[i]) * tau * phi1(-k * tau)
         });
-        match self.frame {
+        match self.form {
             Form::Body => y.h += increment_p,
             Form::Space => compensated_add(&mut y.h, &mut y.h_lo, &(q_p * increment_p)),
         }
@@ -607,7 +607,7 @@ impl<K: KickMoment> LiePoisson<K> {
     /// step's open rotation added, the last left open; then q_p renormalised and, in the body form, H_p rescaled.
     #[inline(always)]
     fn step_fused(&self, h: f64, y: &mut SplitState) {
-        match self.frame {
+        match self.form {
             Form::Body => self.step_fused_in::<true>(h, y),
             Form::Space => self.step_fused_in::<false>(h, y),
         }
@@ -666,7 +666,7 @@ impl<K: KickMoment> LiePoisson<K> {
             }
         }
         Self::normalise(y);
-        if K::ZERO && self.frame == Form::Body {
+        if K::ZERO && self.form == Form::Body {
             Self::rescale(y);
         }
         evals
@@ -810,8 +810,8 @@ mod tests {
         let b = body([1.0, 2.0, 3.0]);
         let q0 = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
         let omega0 = Vector3::new(0.7, -0.4, 0.2);
-        for frame in [Form::Body, Form::Space] {
-            let lp = LiePoisson::new(&b, frame, Scheme::Strang, TorqueFree);
+        for form in [Form::Body, Form::Space] {
+            let lp = LiePoisson::new(&b, form, Scheme::Strang, TorqueFree);
             assert_eq!(lp.splitting(), Splitting::Casimir);
             let mut y = lp.initial_state(&b, &omega0, &q0);
             let h_p = lp.h_p(&y);
@@ -822,8 +822,8 @@ mod tests {
                     &nalgebra::Unit::new_normalize(h_p),
                     h_p.norm() * tau / 2.0,
                 );
-            assert!(unit(&y.q_p).angle_to(&expected) <= 1e-15, "{frame:?}");
-            assert!((lp.h_p(&y) - h_p).norm() <= 1e-15 * h_p.norm(), "{frame:?}");
+            assert!(unit(&y.q_p).angle_to(&expected) <= 1e-15, "{form:?}");
+            assert!((lp.h_p(&y) - h_p).norm() <= 1e-15 * h_p.norm(), "{form:?}");
         }
     }
 
@@ -878,11 +878,11 @@ mod tests {
         let omega0 = Vector3::new(0.3, 0.1, 2.0);
         let h = 0.01;
         for b in [body([1.0, 2.0, 3.0]), tilted] {
-            for frame in [Form::Body, Form::Space] {
+            for form in [Form::Body, Form::Space] {
                 for splitting in [Splitting::Casimir, Splitting::Planar] {
                     for scheme in [Scheme::Strang, Scheme::Suzuki4] {
-                        let mut lp = LiePoisson::new(&b, frame, scheme, TorqueFree)
-                            .with_splitting(splitting);
+                        let mut lp =
+                            LiePoisson::new(&b, form, scheme, TorqueFree).with_splitting(splitting);
                         let y0 = lp.initial_state(&b, &omega0, &q0);
                         let (mut fused, mut unfused) = (y0, y0);
                         for n in 0..1001 {
@@ -892,7 +892,7 @@ mod tests {
                         }
                         assert_eq!(unfused.open_tau, 0.0);
                         let (a, e) = (lp.sample(10.0, &fused), lp.sample(10.0, &unfused));
-                        let label = format!("{frame:?} {splitting:?} {scheme:?}");
+                        let label = format!("{form:?} {splitting:?} {scheme:?}");
                         assert!(
                             (a.omega_b - e.omega_b).norm() <= 1e-12 * e.omega_b.norm(),
                             "{label}"

@@ -41,14 +41,14 @@ fn curves(study: &Study) -> Vec<Curve> {
                 methods.len() - 1
             }
         };
-        let label = format!("{} ({})", row.method, row.frame.name());
+        let label = format!("{} ({})", row.method, row.form.name());
         let point = (row.wall_s.log10(), err.max(ERROR_FLOOR).log10());
         match curves.iter_mut().find(|c| c.label == label) {
             Some(c) => c.points.push(point),
             None => curves.push(Curve {
                 label,
                 color: PALETTE[method_index % PALETTE.len()],
-                dashed: row.frame == Form::Space,
+                dashed: row.form == Form::Space,
                 marker: None,
                 points: vec![point],
             }),

@@ -288,7 +288,7 @@ impl Flags<'_> {
     pub fn overrides(&self, file: &Path) -> Result<Overrides, SceneError> {
         Ok(Overrides {
             method: flag_value(file, "solver", "method", self.method)?,
-            frame: flag_value(file, "solver", "frame", self.frame)?,
+            form: flag_value(file, "solver", "frame", self.frame)?,
             backend: flag_value(file, "solver", "backend", self.backend)?,
             rtol: self.rtol,
             atol: self.atol,
@@ -314,7 +314,7 @@ mod tests {
         };
         let o = flags.overrides(file).unwrap();
         assert_eq!(
-            (o.method, o.dt, o.frame),
+            (o.method, o.dt, o.form),
             (Some(Method::Rk4), Some(0.5), None)
         );
         let bad = Flags {

@@ -280,10 +280,10 @@ fn run_free<M: KickMoment + Clone, E>(
     mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
     locator: Option<&mut Locator>,
 ) -> Result<Stats, IntegrateError<Stop<E>>> {
-    let frame = scene.solver.form;
+    let form = scene.solver.form;
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
-            let mut split = LiePoisson::new(body, frame, scheme, moment);
+            let mut split = LiePoisson::new(body, form, scheme, moment);
             let sampler = split.clone();
             let y0 = split.initial_state(body, omega0_b, &scene.attitude0);
             return run_fixed_step(
@@ -310,26 +310,26 @@ fn run_free<M: KickMoment + Clone, E>(
                 }
             })?;
             return match locator {
-                None => flow.run(&scene.schedule, frame, sink),
+                None => flow.run(&scene.schedule, form, sink),
                 Some(locator) => {
-                    let closed = |t: f64| events::with_potential(scene, flow.sample(t, frame));
+                    let closed = |t: f64| events::with_potential(scene, flow.sample(t, form));
                     events::closed_form(locator, closed, sink, |sink| {
-                        flow.run(&scene.schedule, frame, sink)
+                        flow.run(&scene.schedule, form, sink)
                     })
                 }
             };
         }
         Runner::RungeKutta(settings) => settings,
     };
-    let y0 = free::initial_state(body, frame, omega0_b, &scene.attitude0);
-    let row = |t: f64, y: &free::State| free::sample(body, &moment, frame, t, y);
+    let y0 = free::initial_state(body, form, omega0_b, &scene.attitude0);
+    let row = |t: f64, y: &free::State| free::sample(body, &moment, form, t, y);
     let on_row = |t: f64, y: &free::State| sink(&row(t, y));
     let run = events::Integration {
         scene,
         settings: &settings,
         locator,
     };
-    match frame {
+    match form {
         Form::Body => {
             let mut system = BodyForm {
                 body: *body,
@@ -386,13 +386,13 @@ fn run_gyrostat<E>(
 /// scene's frame selects.
 struct RequiredMomentRate<'a> {
     motion: &'a FixedAxis,
-    frame: Form,
+    form: Form,
 }
 
 impl RequiredMomentRate<'_> {
     /// M_s(t): (dI_s/dθ) θ̇ ω_s + I_s ω̇_s (space form, eq. 8.10) or R(θ)·(I α + ω × I ω) (body form).
     fn moment_s(&self, t: f64) -> Vector3<f64> {
-        self.motion.required_moment_s(t, self.frame)
+        self.motion.required_moment_s(t, self.form)
     }
 }
 
@@ -412,12 +412,12 @@ fn run_fixed_axis<E>(
     mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
     locator: Option<&mut Locator>,
 ) -> Result<Stats, IntegrateError<Stop<E>>> {
-    let frame = scene.solver.form;
-    let h_s0: Vector3<f64> = motion.sample(0.0, frame).h_s;
-    let mut system = RequiredMomentRate { motion, frame };
+    let form = scene.solver.form;
+    let h_s0: Vector3<f64> = motion.sample(0.0, form).h_s;
+    let mut system = RequiredMomentRate { motion, form };
     let row = |t: f64, h_s_int: &Vector3<f64>| Sample {
         h_s_integrated: Some(*h_s_int),
-        ..motion.sample(t, frame)
+        ..motion.sample(t, form)
     };
     let on_row = |t: f64, h_s_int: &Vector3<f64>| sink(&row(t, h_s_int));
     let settings = match runner(scene) {
@@ -434,7 +434,7 @@ fn run_fixed_axis<E>(
         }
         Runner::Exact => {
             // The exact integral of Ḣ_s = M_s is H_s itself.
-            let exact_row = |t: f64| row(t, &motion.sample(t, frame).h_s);
+            let exact_row = |t: f64| row(t, &motion.sample(t, form).h_s);
             let rows = |sink: &mut dyn FnMut(&Sample) -> Result<(), Stop<E>>| {
                 let mut stats = Stats::default();
                 for t in scene.schedule.iter() {

@@ -71,7 +71,7 @@ fn equal_grid_matches_the_mpmath_oracle_over_1e5_rows() {
     );
     for frame in ["body", "space"] {
         let overrides = Overrides {
-            frame: Some(Named::parse(frame).unwrap()),
+            form: Some(Named::parse(frame).unwrap()),
             ..Overrides::default()
         };
         let scene = scene_from(&benchmark_text(100.0, 1e-3), &overrides);
@@ -295,7 +295,7 @@ fn a_full_inertia_tensor_gets_the_rows_of_the_direct_evaluation() {
         [solver]\nmethod = \"exact\"\nt_end = 20.0\n[output]\nevery = 0.01\n";
     for frame in ["body", "space"] {
         let overrides = Overrides {
-            frame: Some(Named::parse(frame).unwrap()),
+            form: Some(Named::parse(frame).unwrap()),
             ..Overrides::default()
         };
         let scene = scene_from(text, &overrides);

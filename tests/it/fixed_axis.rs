@@ -288,7 +288,7 @@ fn integrating_h_s_dot_equals_m_s_tracks_i_s_omega_s() {
                     let overrides = Overrides {
                         method: Some(Named::parse(method).unwrap()),
                         backend: Some(Named::parse(backend).unwrap()),
-                        frame: Some(Named::parse(frame).unwrap()),
+                        form: Some(Named::parse(frame).unwrap()),
                         ..Overrides::default()
                     };
                     let rows = run_scene(path, &overrides);

@@ -50,7 +50,7 @@ fn configurations() -> Vec<Overrides> {
                 out.push(Overrides {
                     method: Some(Named::parse(method).unwrap()),
                     backend: Some(Named::parse(backend).unwrap()),
-                    frame: Some(Named::parse(frame).unwrap()),
+                    form: Some(Named::parse(frame).unwrap()),
                     rtol,
                     atol: rtol.map(|r| r * 1e-2),
                     dt,
@@ -76,7 +76,7 @@ fn label(o: &Overrides) -> String {
         "{} {} {}",
         o.method.map_or("", |m| m.name()),
         o.backend.map_or("", |b| b.name()),
-        o.frame.map_or("", |f| f.name())
+        o.form.map_or("", |f| f.name())
     )
 }
 
@@ -170,7 +170,7 @@ fn torque_free_invariants_and_body_space_agreement() {
                 label(&o)
             );
             assert!((row.q.into_inner().norm() - 1.0).abs() <= 4.0 * f64::EPSILON);
-            if o.frame == Some(eulerdyn::Form::Space) {
+            if o.form == Some(eulerdyn::Form::Space) {
                 assert_eq!(
                     row.h_s,
                     h0,
@@ -184,14 +184,14 @@ fn torque_free_invariants_and_body_space_agreement() {
     let body = rows(&scene_from(
         text,
         &Overrides {
-            frame: Some(Named::parse("body").unwrap()),
+            form: Some(Named::parse("body").unwrap()),
             ..Overrides::default()
         },
     ));
     let space = rows(&scene_from(
         text,
         &Overrides {
-            frame: Some(Named::parse("space").unwrap()),
+            form: Some(Named::parse("space").unwrap()),
             ..Overrides::default()
         },
     ));

@@ -60,7 +60,7 @@ fn largest_error(rows: &[Sample], reference: &[Sample]) -> f64 {
 fn with(method: &str, frame: &str, dt: Option<f64>, rtol: Option<f64>) -> Overrides {
     Overrides {
         method: Some(Named::parse(method).unwrap()),
-        frame: Some(Named::parse(frame).unwrap()),
+        form: Some(Named::parse(frame).unwrap()),
         dt,
         rtol,
         atol: rtol.map(|r| r * 1e-2),

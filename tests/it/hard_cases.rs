@@ -67,7 +67,7 @@ impl Setting {
     fn overrides(&self) -> Overrides {
         Overrides {
             method: Some(Named::parse(self.method).unwrap()),
-            frame: Some(Named::parse(self.frame).unwrap()),
+            form: Some(Named::parse(self.frame).unwrap()),
             rtol: self.rtol,
             atol: self.rtol.map(|r| r * 1e-2),
             dt: self.dt,
@@ -140,7 +140,7 @@ fn long_horizon_split_methods_keep_h_exact_and_energy_bounded() {
             &text,
             &Overrides {
                 method: Some(Named::parse(method).unwrap()),
-                frame: Some(Named::parse(frame).unwrap()),
+                form: Some(Named::parse(frame).unwrap()),
                 dt: Some(0.1),
                 ..Overrides::default()
             },
@@ -203,7 +203,7 @@ fn exact_is_accurate_to_round_off_at_a_million_seconds() {
             &text,
             &Overrides {
                 method: Some(Named::parse("exact").unwrap()),
-                frame: Some(Named::parse(frame).unwrap()),
+                form: Some(Named::parse(frame).unwrap()),
                 ..Overrides::default()
             },
         );
@@ -429,7 +429,7 @@ fn a_thin_rod_is_refused_with_a_clear_error_for_every_method() {
                 text,
                 &Overrides {
                     method: Some(method),
-                    frame: Some(Named::parse(frame).unwrap()),
+                    form: Some(Named::parse(frame).unwrap()),
                     ..Overrides::default()
                 },
             )
@@ -640,7 +640,7 @@ fn fast_spin_adaptive_methods_finish_and_a_too_large_fixed_step_is_caught() {
             &text,
             &Overrides {
                 method: Some(Named::parse("rk4").unwrap()),
-                frame: Some(Named::parse(frame).unwrap()),
+                form: Some(Named::parse(frame).unwrap()),
                 dt: Some(5e-4),
                 ..Overrides::default()
             },

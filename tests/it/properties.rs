@@ -122,7 +122,7 @@ fn case() -> impl Strategy<Value = Case> {
 fn scene(text: &str, method: &str, frame: &str, omega: f64) -> Scene {
     let o = Overrides {
         method: Some(Named::parse(method).unwrap()),
-        frame: Some(Named::parse(frame).unwrap()),
+        form: Some(Named::parse(frame).unwrap()),
         rtol: Some(RTOL),
         atol: Some(RTOL * 1e-2),
         dt: Some(SPLIT_OMEGA_DT / omega),

@@ -104,7 +104,7 @@ fn the_table_starts_with_the_contract_columns_and_has_a_row_per_run() {
     assert_eq!(records.len(), s.rows.len());
     for (record, row) in records.iter().zip(&s.rows) {
         assert_eq!(&record[0], row.method);
-        assert_eq!(&record[1], row.frame.name());
+        assert_eq!(&record[1], row.form.name());
         // Adaptive rows have rtol and no dt, fixed-step rows dt and no rtol.
         assert_eq!(record[2].is_empty(), row.rtol.is_none());
         assert_eq!(record[3].is_empty(), row.dt.is_none());
@@ -139,7 +139,7 @@ fn errors_fall_with_the_tolerance_and_the_step() {
             .rows
             .iter()
             .filter(|r| r.method_name == method && r.backend == Backend::Own)
-            .filter(|r| r.frame == Form::Body)
+            .filter(|r| r.form == Form::Body)
             .map(|r| r.err_omega)
             .collect();
         if method.is_adaptive() {
@@ -190,7 +190,7 @@ fn the_summary_names_the_cheapest_run_of_the_table() {
                     .find(|l| l.starts_with(&format!("cheapest for err_omega <= {:e}:", c.target)))
                     .expect("a line per target");
                 assert!(line.contains(&best.method), "{line}");
-                assert!(line.contains(best.frame.name()), "{line}");
+                assert!(line.contains(best.form.name()), "{line}");
             }
         }
         if let Some(i) = c.integrator {
@@ -208,13 +208,13 @@ fn the_summary_names_the_cheapest_run_of_the_table() {
             let curve = s
                 .rows
                 .iter()
-                .filter(|r| r.method == c.method && r.frame == c.frame);
+                .filter(|r| r.method == c.method && r.form == c.form);
             let reaching: Vec<_> = curve.filter(|r| r.err_omega <= target).collect();
             match slot {
                 None => assert!(reaching.is_empty()),
                 Some(i) => {
                     let r = &s.rows[*i];
-                    assert!(r.method == c.method && r.frame == c.frame && r.err_omega <= target);
+                    assert!(r.method == c.method && r.form == c.form && r.err_omega <= target);
                     assert!(reaching.iter().all(|o| o.wall_s >= r.wall_s));
                 }
             }
@@ -480,7 +480,7 @@ fn near_a_separatrix_a_run_that_reaches_a_target_by_chance_is_not_named() {
     let curve = |r: &study::StudyRow| -> Vec<&study::StudyRow> {
         s.rows
             .iter()
-            .filter(|o| o.method == r.method && o.frame == r.frame && o.failure.is_none())
+            .filter(|o| o.method == r.method && o.form == r.form && o.failure.is_none())
             .collect()
     };
     // The case of the issue: dop853 reaches 1e-9 at some tolerance, and misses it again at a tighter one.

@@ -37,7 +37,7 @@ fn curve_of(rows: &[StudyRow], measure: Measure, row: &StudyRow) -> Vec<(f64, f6
     let mut points: Vec<(f64, f64, usize)> = rows
         .iter()
         .enumerate()
-        .filter(|(_, r)| r.method == row.method && r.frame == row.frame)
+        .filter(|(_, r)| r.method == row.method && r.form == row.form)
         .filter_map(|(i, r)| Some((r.rtol.or(r.dt)?, r.error(measure)?, i)))
         .collect();
     points.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -98,7 +98,7 @@ mod tests {
                 method: "dop853".into(),
                 method_name: Method::Dop853,
                 backend: Backend::Own,
-                frame: Form::Body,
+                form: Form::Body,
                 rtol: Some(rtol),
                 atol: Some(rtol * 1e-2),
                 dt: None,

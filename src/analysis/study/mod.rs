@@ -101,7 +101,7 @@ pub struct StudyRow {
     /// Its implementation.
     pub backend: Backend,
     /// The form of Euler's equation integrated.
-    pub frame: Form,
+    pub form: Form,
     /// Relative tolerance (adaptive methods whose result depends on it).
     pub rtol: Option<f64>,
     /// Absolute tolerance used with `rtol`.
@@ -265,7 +265,7 @@ impl StudyError {
 struct Curve {
     backend: Backend,
     method: Method,
-    frame: Form,
+    form: Form,
     planned: usize,
 }
 
@@ -278,7 +278,7 @@ fn plan(options: &StudyOptions) -> Vec<Curve> {
             if backend != Backend::Own && !method.is_runge_kutta() {
                 continue;
             }
-            for &frame in &options.frames {
+            for &form in &options.frames {
                 let planned = if method.is_fixed_step() {
                     options.halvings as usize + 1
                 } else if method.is_adaptive() {
@@ -289,7 +289,7 @@ fn plan(options: &StudyOptions) -> Vec<Curve> {
                 curves.push(Curve {
                     backend,
                     method,
-                    frame,
+                    form,
                     planned,
                 });
             }

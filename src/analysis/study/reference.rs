@@ -165,13 +165,13 @@ fn oracle_rows(scene: &Scene, oracle: &Oracle) -> Vec<RefRow> {
 fn reference_run(
     path: &Path,
     spec: &SceneSpec,
-    frame: Form,
+    form: Form,
 ) -> Result<(Vec<RefRow>, f64, u64), StudyError> {
     let mut last_refusal = None;
     for rtol in REFERENCE_RTOL {
         let overrides = Overrides {
             method: Some(Method::Dop853),
-            frame: Some(frame),
+            form: Some(form),
             backend: Some(Backend::Own),
             rtol: Some(rtol),
             atol: Some(REFERENCE_ATOL),

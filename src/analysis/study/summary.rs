@@ -35,7 +35,7 @@ pub struct CurveCost {
     /// The curve's label (`dop853`, `dop853/ode_solvers`).
     pub method: String,
     /// The form integrated.
-    pub frame: Form,
+    pub form: Form,
     /// Index into [`Study::rows`] of the fastest run of the curve reaching each target and counting for it (the
     /// curve converges there: [`convergence`]).
     pub rows: [Option<usize>; 3],
@@ -90,7 +90,7 @@ impl Study {
         format!(
             "{} ({} form, {}): {:.2e} in {} ({} steps, {} rejected, {} evaluations)",
             r.method,
-            r.frame.name(),
+            r.form.name(),
             r.setting(),
             r.error(self.measure).unwrap_or(f64::NAN),
             format_seconds(r.wall_s),
@@ -117,7 +117,7 @@ impl Study {
                     out,
                     "{head} no run reaches it (smallest: {e:.2e}, {} {} form {})",
                     r.method,
-                    r.frame.name(),
+                    r.form.name(),
                     r.setting()
                 ),
                 None => writeln!(out, "{head} no run completed"),
@@ -185,7 +185,7 @@ impl Study {
 
     /// `dop853 (body form, rtol 1e-8)`.
     fn describe_setting(&self, r: &StudyRow) -> String {
-        format!("{} ({} form, {})", r.method, r.frame.name(), r.setting())
+        format!("{} ({} form, {})", r.method, r.form.name(), r.setting())
     }
 
     /// The table of the wall time each curve takes to reach each of [`TARGETS`].
@@ -207,7 +207,7 @@ impl Study {
         }
         let _ = writeln!(out);
         for c in &curves {
-            let _ = write!(out, "{:<20} {:<6}", c.method, c.frame.name());
+            let _ = write!(out, "{:<20} {:<6}", c.method, c.form.name());
             for (i, unconverged) in c.rows.into_iter().zip(c.unconverged) {
                 let cell = match i {
                     Some(i) => format_seconds(self.rows[i].wall_s),
@@ -227,13 +227,13 @@ impl Study {
         for (i, r) in self.rows.iter().enumerate() {
             let k = match curves
                 .iter()
-                .position(|c| c.method == r.method && c.frame == r.frame)
+                .position(|c| c.method == r.method && c.form == r.form)
             {
                 Some(k) => k,
                 None => {
                     curves.push(CurveCost {
                         method: r.method.clone(),
-                        frame: r.frame,
+                        form: r.form,
                         rows: [None; 3],
                         unconverged: [false; 3],
                     });

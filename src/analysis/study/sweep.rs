@@ -35,7 +35,7 @@ pub(super) struct Sweep<'a> {
 struct Setting {
     method: Method,
     backend: Backend,
-    frame: Form,
+    form: Form,
     tolerances: Option<(f64, f64)>,
     dt: Option<f64>,
 }
@@ -46,7 +46,7 @@ impl Setting {
         Self {
             method: curve.method,
             backend: curve.backend,
-            frame: curve.frame,
+            form: curve.form,
             tolerances,
             dt,
         }
@@ -89,7 +89,7 @@ impl<'a> Sweep<'a> {
         mut progress: impl FnMut(usize, &str) -> ControlFlow<()>,
     ) {
         let name = label(curve.method, curve.backend);
-        let what = |setting: &str| format!("{name} ({} form) {setting}", curve.frame.name());
+        let what = |setting: &str| format!("{name} ({} form) {setting}", curve.form.name());
         if curve.method.is_fixed_step() {
             self.fixed_step_curve(curve, &name, runs, |ran, setting| {
                 progress(ran, &what(setting))
@@ -196,7 +196,7 @@ impl<'a> Sweep<'a> {
     fn scene_for(&self, setting: &Setting) -> Result<Scene, String> {
         let overrides = Overrides {
             method: Some(setting.method),
-            frame: Some(setting.frame),
+            form: Some(setting.form),
             backend: Some(setting.backend),
             rtol: setting.tolerances.map(|t| t.0),
             atol: setting.tolerances.map(|t| t.1),
@@ -270,7 +270,7 @@ fn empty_row(setting: &Setting) -> StudyRow {
         method: label(setting.method, setting.backend),
         method_name: setting.method,
         backend: setting.backend,
-        frame: setting.frame,
+        form: setting.form,
         rtol: setting.tolerances.map(|t| t.0),
         atol: setting.tolerances.map(|t| t.1),
         dt: setting.dt,

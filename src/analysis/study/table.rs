@@ -45,7 +45,7 @@ impl Study {
             let when_ok = |v: f64| cell(ok.then_some(v));
             w.write_record([
                 r.method.clone(),
-                r.frame.name().to_string(),
+                r.form.name().to_string(),
                 cell(r.rtol),
                 cell(r.dt),
                 when_ok(r.err_omega),

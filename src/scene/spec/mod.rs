@@ -81,7 +81,7 @@ file_table! {
         /// Default [`Method::DEFAULT`].
         opt method: Method = key("\"rk4\" | \"split2\" | \"split4\" | \"dopri5\" | \"dop853\" | \"exact\"", "–", "\"dop853\"", "", "fixed step (`dt`), adaptive, or the torque-free closed form");
         /// The form of Euler's equation (default body).
-        opt frame: Form = key("\"body\" | \"space\"", "–", "\"body\"", "", "which form of Euler's equation is integrated");
+        opt form as "frame": Form = key("\"body\" | \"space\"", "–", "\"body\"", "", "which form of Euler's equation is integrated");
         /// Default own.
         opt backend: Backend = key("\"own\" | \"ode_solvers\"", "–", "\"own\"", "", "the Runge–Kutta implementation");
         /// Default [`crate::method::defaults::RTOL`].
@@ -261,7 +261,7 @@ impl SceneSpec {
     /// assert_eq!(spec.solver.frame, Some(Form::Space));
     /// ```
     pub fn with_form(mut self, form: Form) -> Self {
-        self.solver.frame = Some(form);
+        self.solver.form = Some(form);
         self
     }
 

@@ -29,7 +29,7 @@ pub struct Overrides {
     /// `--method`.
     pub method: Option<Method>,
     /// `--frame` (the form integrated).
-    pub frame: Option<Form>,
+    pub form: Option<Form>,
     /// `--backend`.
     pub backend: Option<Backend>,
     /// `--rtol`.

@@ -24,7 +24,7 @@ impl SceneSpec {
         spec.description.get_or_insert_with(String::new);
         spec.solver = SolverSpec {
             method: Some(solver.method),
-            frame: Some(solver.form),
+            form: Some(solver.form),
             backend: Some(solver.backend),
             rtol: Some(solver.rtol),
             atol: Some(solver.atol),

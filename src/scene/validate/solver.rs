@@ -19,7 +19,7 @@ pub const MAX_FIXED_STEPS: f64 = 1e10;
 
 pub(super) fn validate_solver(doc: &SolverSpec, o: &Overrides) -> Checked<SolverConfig> {
     let method = o.method.or(doc.method).unwrap_or(Method::DEFAULT);
-    let frame = o.frame.or(doc.frame).unwrap_or(Form::Body);
+    let form = o.form.or(doc.form).unwrap_or(Form::Body);
     let backend = o.backend.or(doc.backend).unwrap_or_default();
     let rtol = o.rtol.or(doc.rtol).unwrap_or(defaults::RTOL);
     let rtol_key = key_of("solver", "rtol", o.rtol.is_some());
@@ -50,7 +50,7 @@ pub(super) fn validate_solver(doc: &SolverSpec, o: &Overrides) -> Checked<Solver
     }
     Ok(SolverConfig {
         method,
-        form: frame,
+        form,
         backend,
         rtol,
         atol,
