@@ -258,7 +258,7 @@ impl SceneSpec {
     /// use eulerdyn::Form;
     /// use eulerdyn::scene::{BodySpec, SceneSpec};
     /// let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.1).with_form(Form::Space);
-    /// assert_eq!(spec.solver.frame, Some(Form::Space));
+    /// assert_eq!(spec.solver.form, Some(Form::Space));
     /// ```
     pub fn with_form(mut self, form: Form) -> Self {
         self.solver.form = Some(form);
