@@ -11,8 +11,7 @@
 //!     fn rhs(&mut self, t: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
 //!     fn project(&self, _y: &mut SVector<f64, N>) {}
 //! }
-//! pub enum Method { Rk4, Dopri5, Dop853 }
-//! pub enum Backend { Own, OdeSolvers }
+//! pub use crate::method::{Method, Backend};   // the Runge–Kutta methods run; the others are refused
 //! pub struct Settings { method, backend, rtol, atol, dt, max_steps }   // + Default, validate() -> Result<(), String>
 //! pub struct Stats { steps, rejected, evals }
 //! pub enum IntegrateError<E = Infallible> {

@@ -14,7 +14,7 @@ use crate::effects::{EffectMoments, TorqueFree};
 use crate::events::{Locator, Occurrence};
 use crate::frames::Form;
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
-use crate::method::{Backend, Method};
+use crate::method::Method;
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
@@ -113,25 +113,21 @@ enum Runner {
 /// The runner of the scene's method.
 fn runner(scene: &Scene) -> Runner {
     let s = &scene.solver;
-    let method = match s.method {
-        Method::Split2 => return Runner::Splitting(Scheme::Strang),
-        Method::Split4 => return Runner::Splitting(Scheme::Suzuki4),
-        Method::Exact => return Runner::Exact,
-        Method::Rk4 => integrate::Method::Rk4,
-        Method::Dopri5 => integrate::Method::Dopri5,
-        Method::Dop853 => integrate::Method::Dop853,
-    };
-    Runner::RungeKutta(integrate::Settings {
-        method,
-        backend: match s.backend {
-            Backend::Own => integrate::Backend::Own,
-            Backend::OdeSolvers => integrate::Backend::OdeSolvers,
-        },
-        rtol: s.rtol,
-        atol: s.atol,
-        dt: s.dt,
-        ..integrate::Settings::default()
-    })
+    match s.method {
+        Method::Split2 => Runner::Splitting(Scheme::Strang),
+        Method::Split4 => Runner::Splitting(Scheme::Suzuki4),
+        Method::Exact => Runner::Exact,
+        method @ (Method::Rk4 | Method::Dopri5 | Method::Dop853) => {
+            Runner::RungeKutta(integrate::Settings {
+                method,
+                backend: s.backend,
+                rtol: s.rtol,
+                atol: s.atol,
+                dt: s.dt,
+                ..integrate::Settings::default()
+            })
+        }
+    }
 }
 
 /// The most steps a fixed-step run of the project's own methods may take (as for the Runge–Kutta methods).
