@@ -52,6 +52,26 @@ impl Form {
     /// Both forms, body first.
     pub const ALL: [Form; 2] = [Form::Body, Form::Space];
 
+    /// The first three states of this form: ω_b, or H_s = `h_s()` (computed only for the space form).
+    ///
+    /// ```
+    /// use eulerdyn::Form;
+    /// use nalgebra::Vector3;
+    /// let omega_b = Vector3::new(1.0, 0.0, 0.0);
+    /// assert_eq!(Form::Body.first_states(&omega_b, || unreachable!()), omega_b);
+    /// assert_eq!(Form::Space.first_states(&omega_b, || omega_b * 2.0), omega_b * 2.0);
+    /// ```
+    pub fn first_states(
+        self,
+        omega_b: &Vector3<f64>,
+        h_s: impl FnOnce() -> Vector3<f64>,
+    ) -> Vector3<f64> {
+        match self {
+            Form::Body => *omega_b,
+            Form::Space => h_s(),
+        }
+    }
+
     /// The name used in scene files and on the command line (`solver.frame`, `--frame`).
     ///
     /// ```

@@ -407,8 +407,8 @@ pub struct SteadyPrecession {
     theta: f64,
     omega3: f64,
     rate: f64,
-    phi0: f64,
-    psi0: f64,
+    /// φ₀ and ψ₀.
+    angles0: (f64, f64),
 }
 
 impl SteadyPrecession {
@@ -448,8 +448,7 @@ impl SteadyPrecession {
             theta,
             omega3,
             rate,
-            phi0,
-            psi0,
+            angles0: (phi0, psi0),
         })
     }
 
@@ -466,9 +465,9 @@ impl SteadyPrecession {
     /// The Euler angles `(φ, θ, ψ)` at time `t` (unwrapped).
     pub fn euler_angles(&self, t: f64) -> (f64, f64, f64) {
         (
-            self.phi0 + self.rate * t,
+            self.angles0.0 + self.rate * t,
             self.theta,
-            self.psi0 + self.spin_rate() * t,
+            self.angles0.1 + self.spin_rate() * t,
         )
     }
 

@@ -291,17 +291,14 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
     }
 }
 
-/// The initial state of the form `frame` from ω_b(0) and q(0).
+/// The initial state of the form `form` from ω_b(0) and q(0).
 pub fn initial_state(
     body: &FreeBody,
     form: Form,
     omega0_b: &Vector3<f64>,
     q0: &UnitQuaternion<f64>,
 ) -> State {
-    let first = match form {
-        Form::Body => *omega0_b,
-        Form::Space => q0 * (body.inertia_b * omega0_b),
-    };
+    let first = form.first_states(omega0_b, || q0 * (body.inertia_b * omega0_b));
     State::from([first[0], first[1], first[2], q0.w, q0.i, q0.j, q0.k])
 }
 

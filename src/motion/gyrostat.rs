@@ -373,12 +373,9 @@ impl Gyrostat {
         omega0_b: &Vector3<f64>,
         q0: &UnitQuaternion<f64>,
     ) -> State {
-        let first = match form {
-            Form::Body => *omega0_b,
-            Form::Space => {
-                q0 * (self.body.inertia_b() * omega0_b + self.initial_rotor_momentum_b())
-            }
-        };
+        let first = form.first_states(omega0_b, || {
+            q0 * (self.body.inertia_b() * omega0_b + self.initial_rotor_momentum_b())
+        });
         let mut y = State::zeros();
         y.fixed_rows_mut::<3>(0).copy_from(&first);
         y.fixed_rows_mut::<4>(3)
