@@ -78,6 +78,7 @@ pub mod profile;
 pub mod sample;
 pub mod scene;
 pub mod simulate;
+pub mod text;
 pub mod trig;
 pub mod wheels;
 

@@ -11,6 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::keys::{Checked, KeyPath, finite, invalid};
+use crate::text::plain;
 
 /// A time profile p(t) ([module doc](self)).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -50,6 +51,31 @@ pub(crate) struct ProfileKeys {
     pub(crate) phase_deg: Option<f64>,
     pub(crate) t_on: Option<f64>,
     pub(crate) t_off: Option<f64>,
+}
+
+/// The profile in words, as `eulerdyn check` prints it after the value it multiplies.
+///
+/// ```
+/// use eulerdyn::profile::Profile;
+/// let sine = Profile::Sine { freq_hz: 0.5, phase_deg: 90.0 };
+/// assert_eq!(sine.to_string(), "times sin(2 pi 0.5 Hz t + 90 deg)");
+/// assert_eq!(Profile::Constant.to_string(), "constant");
+/// ```
+impl std::fmt::Display for Profile {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            Profile::Constant => write!(f, "constant"),
+            Profile::Sine { freq_hz, phase_deg } => write!(
+                f,
+                "times sin(2 pi {} Hz t + {} deg)",
+                plain(freq_hz),
+                plain(phase_deg)
+            ),
+            Profile::Step { t_on, t_off } => {
+                write!(f, "times 1 for {} <= t < {} s", plain(t_on), plain(t_off))
+            }
+        }
+    }
 }
 
 impl Profile {

@@ -4,8 +4,6 @@
 //! tolerances, the rows and an estimate of the steps. [`describe`] gives it as labelled items ([`Description`]),
 //! [`Description::text`] as the command line prints it.
 
-use std::fmt::Write;
-
 use nalgebra::{Matrix3, Vector3};
 
 use crate::body::Principal;
@@ -20,100 +18,9 @@ use crate::profile::Profile;
 use crate::sample::{BASE_COLUMNS, Sample};
 use crate::scene::{Motion, Scene};
 use crate::simulate;
+use crate::text::{fixed, line, plain, turns, vec3};
+pub use crate::text::{Description, for_people};
 
-/// Width of the label column.
-const LABEL: usize = 15;
-
-/// A component: six decimals, or scientific notation for very large or small magnitudes.
-fn fixed(v: f64) -> String {
-    if v == 0.0 || (1e-4..1e6).contains(&v.abs()) || !v.is_finite() {
-        format!("{v:.6}")
-    } else {
-        format!("{v:.6e}")
-    }
-}
-
-/// A number of turns: three decimals, scientific notation when huge.
-fn turns(v: f64) -> String {
-    if v.abs() < 1e6 || !v.is_finite() {
-        format!("{v:.3}")
-    } else {
-        format!("{v:.3e}")
-    }
-}
-
-/// A value as given: shortest form, scientific notation for very large or small magnitudes.
-fn plain(v: f64) -> String {
-    if v == 0.0 || (1e-4..1e15).contains(&v.abs()) || !v.is_finite() {
-        format!("{v}")
-    } else {
-        format!("{v:e}")
-    }
-}
-
-/// A value rounded for people: six significant digits, trailing zeros dropped, scientific notation below 1e-4
-/// or from 1e6 (as C's `%g`): 1.9999999999999998e-5 → `2e-05`, 0.05 → `0.05`, 1234.5678 → `1234.57`.
-pub fn for_people(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let scientific = format!("{v:.5e}");
-    let (mantissa, exponent) = scientific.split_once('e').unwrap_or((&scientific, "0"));
-    let exponent: i32 = exponent.parse().unwrap_or(0);
-    let trim = |text: &str| {
-        if text.contains('.') {
-            text.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            text.to_string()
-        }
-    };
-    if (-4..6).contains(&exponent) {
-        let decimals = (5 - exponent) as usize;
-        trim(&format!("{v:.decimals$}"))
-    } else {
-        let sign = if exponent < 0 { '-' } else { '+' };
-        format!("{}e{sign}{:02}", trim(mantissa), exponent.abs())
-    }
-}
-
-fn vec3(v: &Vector3<f64>) -> String {
-    format!("({}, {}, {})", fixed(v[0]), fixed(v[1]), fixed(v[2]))
-}
-
-/// What a scene will simulate: labelled lines in the order `eulerdyn check` prints them.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Description {
-    /// (label, text) per line; a blank label continues the item above it (e.g. a tensor's rows).
-    pub lines: Vec<(String, String)>,
-}
-
-impl Description {
-    /// The items: each label with its lines (the continuation lines gathered under the label above them).
-    pub fn items(&self) -> Vec<(&str, Vec<&str>)> {
-        let mut items: Vec<(&str, Vec<&str>)> = Vec::new();
-        for (label, text) in &self.lines {
-            match items.last_mut() {
-                Some((_, texts)) if label.is_empty() => texts.push(text),
-                _ => items.push((label, vec![text])),
-            }
-        }
-        items
-    }
-
-    /// The text `eulerdyn check` prints: the labels in a column, then the text.
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        for (label, text) in &self.lines {
-            let _ = writeln!(out, "{label:<LABEL$}{text}");
-        }
-        out
-    }
-}
-
-/// Appends `text` under `label` (a blank label continues the previous item).
-fn line(out: &mut Description, label: &str, text: &str) {
-    out.lines.push((label.to_string(), text.to_string()));
-}
 
 /// The rotors: each wheel's axis, J, initial relative spin and drive; the body's inertia is with them locked.
 fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
@@ -153,7 +60,7 @@ fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
                 for_people(r.spin0)
             ),
         );
-        wheel_control(w, &r.control);
+        r.control.describe(w);
         if let Some(u) = &r.imbalance {
             line(
                 w,
@@ -484,62 +391,10 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         ),
     );
     axis_point_lines(w, &motion.point_b());
-    carrier_lines(w, motion);
-    fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
-}
-
-/// The carrier that holds the axis: its rate and profile.
-fn carrier_lines(w: &mut Description, axis: &FixedAxis) {
-    let Some(carrier) = axis.carrier() else {
-        return;
-    };
-    let profile = profile_text(carrier.profile());
-    line(
-        w,
-        "carrier",
-        &format!(
-            "the axis and its bearings turn with a carrier at {} rad/s (space axes), {profile}: omega = Omega_c + theta' u",
-            vec3(carrier.rate_s())
-        ),
-    );
-    let Some(vehicle) = carrier.vehicle() else {
-        return;
-    };
-    line(
-        w,
-        "vehicle",
-        &format!(
-            "turns about {} m from the axis point (space axes at t = 0), accelerates at {} m/s^2 (space axes), {}",
-            vec3(vehicle.center_s()),
-            vec3(vehicle.accel_s()),
-            profile_text(vehicle.profile())
-        ),
-    );
-    let a_a_s = carrier.at(0.0).accel_a_s.unwrap_or_default();
-    line(
-        w,
-        "",
-        &format!(
-            "the axis point accelerates at a_A = {} m/s^2 at t = 0: the support carries m a_A = {} N besides the weight",
-            vec3(&a_a_s),
-            vec3(&(a_a_s * axis.mass()))
-        ),
-    );
-}
-
-/// A carrier's profile in words.
-fn profile_text(profile: Profile) -> String {
-    match profile {
-        Profile::Constant => "constant".to_string(),
-        Profile::Sine { freq_hz, phase_deg } => format!(
-            "times sin(2 pi {} Hz t + {} deg)",
-            plain(freq_hz),
-            plain(phase_deg)
-        ),
-        Profile::Step { t_on, t_off } => {
-            format!("times 1 for {} <= t < {} s", plain(t_on), plain(t_off))
-        }
+    if let Some(carrier) = motion.carrier() {
+        carrier.describe(motion.mass(), w);
     }
+    fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
 }
 
 /// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
@@ -642,7 +497,9 @@ fn hinge_lines(w: &mut Description, hinge: &Hinge) {
         ),
     );
     axis_point_lines(w, &axis.point_b());
-    carrier_lines(w, axis);
+    if let Some(carrier) = axis.carrier() {
+        carrier.describe(axis.mass(), w);
+    }
 }
 
 /// Where C is (with point masses), and for an axis motion its bearings and its imbalance: static m·e (e the
@@ -836,28 +693,6 @@ fn output_lines(w: &mut Description, scene: &Scene) {
     );
 }
 
-/// A wheel's limits and friction, when it has any (`crate::wheels`).
-fn wheel_control(w: &mut Description, c: &crate::wheels::WheelControl) {
-    let mut parts = Vec::new();
-    if c.max_torque.is_finite() {
-        parts.push(format!("motor torque within +-{} N*m", c.max_torque));
-    }
-    if c.max_speed.is_finite() {
-        let rpm = c.max_speed / crate::wheels::RPM;
-        parts.push(format!("relative speed within +-{rpm} rpm"));
-    }
-    let f = &c.friction;
-    if f.is_some() {
-        parts.push(format!(
-            "friction: Coulomb {} N*m, viscous {} N*m*s, Stribeck {} N*m over {} rad/s (dissipates energy, keeps H)",
-            f.coulomb, f.viscous, f.stribeck_torque, f.stribeck_speed
-        ));
-    }
-    if !parts.is_empty() {
-        line(w, "", &parts.join("; "));
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -891,27 +726,6 @@ mod tests {
         assert!(angle < 1e-6 && k == 2, "{angle} {k}");
     }
 
-    #[test]
-    fn the_items_gather_the_lines_under_their_labels() {
-        let mut d = Description::default();
-        line(&mut d, "body", "mass 1 kg");
-        line(&mut d, "", "row 1");
-        line(&mut d, "method", "rk4");
-        assert_eq!(
-            d.items(),
-            vec![
-                ("body", vec!["mass 1 kg", "row 1"]),
-                ("method", vec!["rk4"])
-            ]
-        );
-        assert_eq!(
-            d.text(),
-            format!(
-                "{:<LABEL$}mass 1 kg\n{:<LABEL$}row 1\n{:<LABEL$}rk4\n",
-                "body", "", "method"
-            )
-        );
-    }
 
     #[test]
     fn every_axis_of_a_sphere_is_principal() {
@@ -920,17 +734,4 @@ mod tests {
         assert!(angle < 1e-6, "{angle}");
     }
 
-    #[test]
-    fn numbers_for_people_have_six_significant_digits() {
-        // 20 g*mm in kg*m as the scene's conversion computes it (20 × 1e-6 = 1.9999999999999998e-5).
-        let twenty_gmm = 20.0 * 1e-6;
-        assert_ne!(twenty_gmm, 2e-5);
-        assert_eq!(for_people(twenty_gmm), "2e-05");
-        assert_eq!(for_people(0.05), "0.05");
-        assert_eq!(for_people(1234.5678), "1234.57");
-        assert_eq!(for_people(-3.0), "-3");
-        assert_eq!(for_people(2.5e7), "2.5e+07");
-        assert_eq!(for_people(0.0), "0");
-        assert_eq!(for_people(0.000123456789), "0.000123457");
-    }
 }

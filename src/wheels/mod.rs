@@ -15,6 +15,7 @@
 //! whose relative spin has reached zero under Coulomb friction sticks while the torque that holds it is within
 //! the breakaway level c + s (no chatter: [`solve`]).
 
+mod describe;
 mod keys;
 mod law;
 mod solve;

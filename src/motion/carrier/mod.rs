@@ -13,6 +13,7 @@
 //! A carrier that is a vehicle ([`vehicle`]) turns about a point of its own and accelerates; its axis point A then
 //! accelerates at a_A (its attitude, rate and angular acceleration are the same).
 
+mod describe;
 pub(crate) mod keys;
 pub mod spec;
 pub mod vehicle;

@@ -7,7 +7,7 @@ use plotters::style::RGBColor;
 
 use super::Panel;
 use super::series::{RunSeries, SceneFacts};
-use crate::analysis::describe::for_people;
+use crate::text::for_people;
 use crate::scene::Invariant;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
