@@ -18,9 +18,8 @@ use crate::profile::Profile;
 use crate::sample::{BASE_COLUMNS, Sample};
 use crate::scene::{Motion, Scene};
 use crate::simulate;
-use crate::text::{fixed, line, plain, turns, vec3};
 pub use crate::text::{Description, for_people};
-
+use crate::text::{fixed, line, plain, turns, vec3};
 
 /// The rotors: each wheel's axis, J, initial relative spin and drive; the body's inertia is with them locked.
 fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
@@ -726,12 +725,10 @@ mod tests {
         assert!(angle < 1e-6 && k == 2, "{angle} {k}");
     }
 
-
     #[test]
     fn every_axis_of_a_sphere_is_principal() {
         let sphere = principal([2.0, 2.0, 2.0]);
         let (angle, _) = tilt_from_principal(&sphere, &Vector3::new(1.0, 2.0, 3.0));
         assert!(angle < 1e-6, "{angle}");
     }
-
 }

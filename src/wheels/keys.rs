@@ -1,7 +1,47 @@
-//! A wheel's keys in `[[body.rotor]]`: `max_torque`, `max_speed_rpm`, `friction = { coulomb, viscous, stribeck =
-//! { torque, speed } }` and `mode = "free"` (the scene file's form and the typed spec are the same types).
+//! A wheel's keys in `[[body.rotor]]`, declared here once and spliced into the rotor's table
+//! (`@crate::wheels::wheel_keys;`): `torque_table`, `mode = "free"`, `max_torque`, `max_speed_rpm` and
+//! `friction = { coulomb, viscous, stribeck = { torque, speed } }` (the scene file's form and the typed spec are
+//! the same types), and their validation into a [`WheelControl`].
 
 use serde::{Deserialize, Serialize};
+
+use super::{Friction, RPM, WheelControl};
+use crate::keys::{Checked, KeyPath, finite, invalid, positive};
+
+/// Splices a wheel's keys into a table that `file_table!` declares (at `@crate::wheels::wheel_keys;`), and gives
+/// that table `wheel_keys()` and `set_wheel_keys()`: its limits and friction as [`WheelKeys`] and back. The drive
+/// keys (`torque_table`, `mode`) are read with the rotor's other drives.
+macro_rules! wheel_keys {
+    ($name:ident $head:tt $done:tt $parts:tt $($rest:tt)*) => {
+        $crate::keys::file_table!(@munch $head $done $parts
+            opt torque_table: std::path::PathBuf = $crate::keys::key("path", "–", "none", "", "instead of `torque`: the motor torque commanded by a table (header `t,torque`; linear between rows), relative to the scene file");
+            opt mode: $crate::wheels::WheelMode = $crate::keys::key("\"free\"", "–", "held", "", "`\"free\"`: no motor, the wheel spins freely (friction only); without a driver a wheel holds its relative spin");
+            opt max_torque: f64 = $crate::keys::key("number", "N·m", "none", "", "> 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)");
+            opt max_speed_rpm: f64 = $crate::keys::key("number", "rpm", "none", "", "> 0: the relative spin's limit; at it the motor can only slow the wheel");
+            opt friction: $crate::wheels::FrictionKeys = $crate::keys::key("{ coulomb, viscous, stribeck = { torque, speed } }", "N·m, N·m·s, (N·m, rad/s)", "none", "", "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω");
+            $($rest)*);
+
+        impl $name {
+            /// The wheel's limits and friction as the table gives them.
+            pub(crate) fn wheel_keys(&self) -> $crate::wheels::WheelKeys {
+                $crate::wheels::WheelKeys {
+                    max_torque: self.max_torque,
+                    max_speed_rpm: self.max_speed_rpm,
+                    friction: self.friction,
+                }
+            }
+
+            /// The table with the wheel's limits and friction `keys`.
+            pub(crate) fn set_wheel_keys(&mut self, keys: &$crate::wheels::WheelKeys) {
+                self.max_torque = keys.max_torque;
+                self.max_speed_rpm = keys.max_speed_rpm;
+                self.friction = keys.friction;
+            }
+        }
+    };
+}
+
+pub(crate) use wheel_keys;
 
 /// `friction.stribeck`: the extra breakaway torque (N·m) and the speed over which it fades (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -45,4 +85,64 @@ pub struct WheelKeys {
     pub max_speed_rpm: Option<f64>,
     /// `friction`.
     pub friction: Option<FrictionKeys>,
+}
+
+impl WheelKeys {
+    /// The wheel's limits and friction, validated at `table` (its `[[body.rotor]]`): `max_torque` (N·m) and
+    /// `max_speed_rpm` > 0, each friction level ≥ 0 and the Stribeck speed > 0. A limit needs a motor that a law or
+    /// a table may command: `motorless` says why the wheel has none (`spin_accel`, `mode = "free"`).
+    pub(crate) fn validate(
+        &self,
+        table: &KeyPath,
+        motorless: Option<&str>,
+    ) -> Checked<WheelControl> {
+        let key = |name: &str| table.clone().key(name);
+        let limits = [
+            ("max_torque", self.max_torque, "N*m"),
+            ("max_speed_rpm", self.max_speed_rpm, "rpm"),
+        ];
+        for (name, value, unit) in limits {
+            let Some(value) = value else { continue };
+            positive(key(name), value, unit)?;
+            if let Some(why) = motorless {
+                return invalid(
+                    key(name),
+                    format!("`{name}` limits a wheel's motor, but {why}"),
+                );
+            }
+        }
+        Ok(WheelControl {
+            max_torque: self.max_torque.unwrap_or(f64::INFINITY),
+            max_speed: self.max_speed_rpm.map_or(f64::INFINITY, |rpm| rpm * RPM),
+            friction: self
+                .friction
+                .unwrap_or_default()
+                .validate(&key("friction"))?,
+        })
+    }
+}
+
+impl FrictionKeys {
+    /// The friction, validated at `at` (the `friction` key): each level ≥ 0 (absent: 0), the Stribeck speed > 0.
+    fn validate(&self, at: &KeyPath) -> Checked<Friction> {
+        let at_least_zero = |name: KeyPath, v: Option<f64>, unit: &str| -> Checked<f64> {
+            let v = finite(name.clone(), v.unwrap_or(0.0), unit)?;
+            if v < 0.0 {
+                return invalid(name, format!("must be >= 0 ({unit}), got {v}"));
+            }
+            Ok(v)
+        };
+        let mut friction = Friction {
+            coulomb: at_least_zero(at.clone().key("coulomb"), self.coulomb, "N*m")?,
+            viscous: at_least_zero(at.clone().key("viscous"), self.viscous, "N*m*s")?,
+            ..Friction::default()
+        };
+        if let Some(stribeck) = self.stribeck {
+            let at = at.clone().key("stribeck");
+            friction.stribeck_torque =
+                at_least_zero(at.clone().key("torque"), Some(stribeck.torque), "N*m")?;
+            friction.stribeck_speed = positive(at.key("speed"), stribeck.speed, "rad/s")?;
+        }
+        Ok(friction)
+    }
 }

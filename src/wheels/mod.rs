@@ -21,6 +21,7 @@ mod law;
 mod solve;
 mod table;
 
+pub(crate) use keys::wheel_keys;
 pub use keys::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
 pub use law::{AttitudePd, WheelLaw, WheelTorqueLaw};
 pub use solve::{STICK_SPEED, Wheel, WheelSolve, solve};

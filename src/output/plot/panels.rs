@@ -7,8 +7,8 @@ use plotters::style::RGBColor;
 
 use super::Panel;
 use super::series::{RunSeries, SceneFacts};
-use crate::text::for_people;
 use crate::scene::Invariant;
+use crate::text::for_people;
 
 /// The smallest drift drawn on the log scale; smaller values (an exact zero, typically) are drawn at it, and the
 /// legend says so.

@@ -57,11 +57,7 @@ file_table! {
         opt profile: ProfileKind = profile("the motor torque's profile, as a torque effect's");
         @sine;
         @step;
-        opt torque_table: std::path::PathBuf = key("path", "–", "none", "", "instead of `torque`: the motor torque commanded by a table (header `t,torque`; linear between rows), relative to the scene file");
-        opt mode: crate::wheels::WheelMode = key("\"free\"", "–", "held", "", "`\"free\"`: no motor, the wheel spins freely (friction only); without a driver a wheel holds its relative spin");
-        opt max_torque: f64 = key("number", "N·m", "none", "", "> 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)");
-        opt max_speed_rpm: f64 = key("number", "rpm", "none", "", "> 0: the relative spin's limit; at it the motor can only slow the wheel");
-        opt friction: crate::wheels::FrictionKeys = key("{ coulomb, viscous, stribeck = { torque, speed } }", "N·m, N·m·s, (N·m, rad/s)", "none", "", "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω");
+        @crate::wheels::wheel_keys;
         arr at: [f64; 3] = position("[0, 0, 0]", "the wheel's centre");
         opt imbalance_static_gmm: f64 = key("number", "g·mm", "0", "", "≥ 0: U_s = m·e, a force U_s Ω² at `at` turning with the wheel");
         opt imbalance_dynamic_gmm2: f64 = key("number", "g·mm²", "0", "", "≥ 0: U_d, a couple U_d Ω² turning with the wheel");

@@ -18,7 +18,7 @@ use crate::frames::Axes;
 use crate::keys::{Checked, invalid, only_keys, required};
 use crate::profile::Profile;
 use crate::scene::source_map::KeyPath;
-use crate::wheels::{WheelKeys, WheelMode};
+use crate::wheels::WheelMode;
 
 impl SceneFile {
     /// The typed scene, or the first key at fault.
@@ -99,11 +99,7 @@ fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
         at: doc.at.unwrap_or([0.0; 3]),
         imbalance_static_gmm: doc.imbalance_static_gmm.unwrap_or(0.0),
         imbalance_dynamic_gmm2: doc.imbalance_dynamic_gmm2.unwrap_or(0.0),
-        wheel: WheelKeys {
-            max_torque: doc.max_torque,
-            max_speed_rpm: doc.max_speed_rpm,
-            friction: doc.friction,
-        },
+        wheel: doc.wheel_keys(),
     })
 }
 
@@ -420,11 +416,9 @@ fn rotor_file(rotor: &RotorSpec) -> RotorFile {
         at: Some(rotor.at),
         imbalance_static_gmm: Some(rotor.imbalance_static_gmm),
         imbalance_dynamic_gmm2: Some(rotor.imbalance_dynamic_gmm2),
-        max_torque: rotor.wheel.max_torque,
-        max_speed_rpm: rotor.wheel.max_speed_rpm,
-        friction: rotor.wheel.friction,
         ..RotorFile::default()
     };
+    file.set_wheel_keys(&rotor.wheel);
     match rotor.drive {
         RotorDrive::ConstantSpin => {}
         RotorDrive::Table(ref path) => file.torque_table = Some(path.clone()),

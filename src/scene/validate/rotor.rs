@@ -10,7 +10,7 @@ use crate::effects::TorqueSum;
 use crate::motion::free::FreeBody;
 use crate::motion::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use crate::sample::MAX_ROTORS;
-use crate::wheels::{Friction, RPM, WheelControl, read_wheel_table};
+use crate::wheels::read_wheel_table;
 
 /// The gyrostat of a free `body` about its moment center (at `center_b` from the reference origin, body axes)
 /// with the scene's rotors; `None` without rotors.
@@ -102,7 +102,7 @@ fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Ch
         imbalance,
         inertia: positive(key("inertia"), spec.inertia, "kg*m^2")?,
         spin0: finite(key("spin"), spec.spin, "rad/s")?,
-        control: validate_control(&table, spec)?,
+        control: spec.wheel.validate(&table, motorless(&spec.drive))?,
         drive: match spec.drive {
             RotorDrive::ConstantSpin => Drive::Accel(0.0),
             RotorDrive::Free => Drive::Free,
@@ -128,52 +128,11 @@ fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Ch
     })
 }
 
-/// A wheel's `max_torque` (N·m, > 0), `max_speed_rpm` (> 0) and `friction` (each ≥ 0, the Stribeck speed > 0);
-/// the limits need a motor that a law or a table may command (not `spin_accel`, not `mode = "free"`).
-fn validate_control(table: &KeyPath, spec: &RotorSpec) -> Checked<WheelControl> {
-    let key = |name: &str| table.clone().key(name);
-    let keys = &spec.wheel;
-    let limits = [
-        ("max_torque", keys.max_torque, "N*m"),
-        ("max_speed_rpm", keys.max_speed_rpm, "rpm"),
-    ];
-    for (name, value, unit) in limits {
-        let Some(value) = value else { continue };
-        positive(key(name), value, unit)?;
-        let motorless = match spec.drive {
-            RotorDrive::SpinAccel(_) => Some("its spin is prescribed by `spin_accel`"),
-            RotorDrive::Free => Some("`mode = \"free\"` has no motor"),
-            _ => None,
-        };
-        if let Some(why) = motorless {
-            return invalid(
-                key(name),
-                format!("`{name}` limits a wheel's motor, but {why}"),
-            );
-        }
+/// Why a wheel with this drive has no motor that a limit could act on, if it has none.
+fn motorless(drive: &RotorDrive) -> Option<&'static str> {
+    match drive {
+        RotorDrive::SpinAccel(_) => Some("its spin is prescribed by `spin_accel`"),
+        RotorDrive::Free => Some("`mode = \"free\"` has no motor"),
+        _ => None,
     }
-    let friction_key = || table.clone().key("friction");
-    let at_least_zero = |name: KeyPath, v: Option<f64>, unit: &str| -> Checked<f64> {
-        let v = finite(name.clone(), v.unwrap_or(0.0), unit)?;
-        if v < 0.0 {
-            return invalid(name, format!("must be >= 0 ({unit}), got {v}"));
-        }
-        Ok(v)
-    };
-    let f = keys.friction.unwrap_or_default();
-    let mut friction = Friction {
-        coulomb: at_least_zero(friction_key().key("coulomb"), f.coulomb, "N*m")?,
-        viscous: at_least_zero(friction_key().key("viscous"), f.viscous, "N*m*s")?,
-        ..Friction::default()
-    };
-    if let Some(stribeck) = f.stribeck {
-        let at = || friction_key().key("stribeck");
-        friction.stribeck_torque = at_least_zero(at().key("torque"), Some(stribeck.torque), "N*m")?;
-        friction.stribeck_speed = positive(at().key("speed"), stribeck.speed, "rad/s")?;
-    }
-    Ok(WheelControl {
-        max_torque: keys.max_torque.unwrap_or(f64::INFINITY),
-        max_speed: keys.max_speed_rpm.map_or(f64::INFINITY, |rpm| rpm * RPM),
-        friction,
-    })
 }
