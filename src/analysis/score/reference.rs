@@ -6,7 +6,8 @@
 //! step), to within [`GRID_SLACK`]·Δt: the reference rows are computed exactly there, not interpolated.
 
 use super::ScoreError;
-use crate::analysis::compare::{Oracle, attitude_angle};
+use crate::analysis::compare::attitude_angle;
+use crate::analysis::oracle::Oracle;
 use crate::events::Occurrence;
 use crate::method::Method;
 use crate::sample::Sample;

@@ -7,7 +7,7 @@ use std::path::Path;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use crate::analysis::compare::Oracle;
+use crate::analysis::oracle::Oracle;
 use crate::frames::Form;
 use crate::method::{Backend, Method};
 use crate::sample::Sample;
@@ -106,58 +106,24 @@ impl StudyReference {
     }
 }
 
-/// The closed form at every row time, from an oracle that gives ω (and perhaps the attitude and H_s); empty for
+/// The closed form at every row time ([`Oracle::at`]; T and |H| from ω where it gives only ω); empty for
 /// fixed-axis motion, whose rows carry their own closed form.
 fn oracle_rows(scene: &Scene, oracle: &Oracle) -> Vec<RefRow> {
     let inertia = *scene.body.inertia_c();
-    let from_omega = |t: f64, omega_b: Vector3<f64>| {
+    let row = |t: f64| {
+        let exact = oracle.at(t);
+        let omega_b = exact.omega_b?;
         let h_b = inertia * omega_b;
-        RefRow {
+        Some(RefRow {
             t,
             omega_b,
-            q: None,
-            energy: 0.5 * omega_b.dot(&h_b),
-            h_norm: h_b.norm(),
-            h_s: None,
-        }
+            q: exact.q,
+            energy: exact.energy.unwrap_or(0.5 * omega_b.dot(&h_b)),
+            h_norm: exact.h_norm.unwrap_or(h_b.norm()),
+            h_s: exact.h_s,
+        })
     };
-    let times = scene.schedule.iter();
-    match oracle {
-        Oracle::TorqueFree { exact, r_bp } => times
-            .map(|t| RefRow {
-                t,
-                omega_b: r_bp * exact.omega_p(t),
-                q: Some(exact.attitude(t) * r_bp.inverse()),
-                energy: exact.energy(),
-                h_norm: exact.h_s().norm(),
-                h_s: Some(exact.h_s()),
-            })
-            .collect(),
-        Oracle::AxialTorque(exact) => times.map(|t| from_omega(t, exact.omega_p(t))).collect(),
-        Oracle::DampedSpin(spin) => times
-            .map(|t| {
-                let s = spin.at(t);
-                RefRow {
-                    q: Some(s.q),
-                    h_s: Some(s.h_s),
-                    energy: s.energy,
-                    h_norm: s.h_norm,
-                    ..from_omega(t, s.omega_b)
-                }
-            })
-            .collect(),
-        Oracle::SymmetricGyrostat { exact, energy } => times
-            .map(|t| RefRow {
-                t,
-                omega_b: exact.omega_p(t),
-                q: Some(exact.attitude(t)),
-                energy: *energy,
-                h_norm: exact.h_s().norm(),
-                h_s: Some(exact.h_s()),
-            })
-            .collect(),
-        Oracle::FixedAxis => Vec::new(),
-    }
+    scene.schedule.iter().map_while(row).collect()
 }
 
 /// The reference run: DOP853 on the own backend at the tightest tolerance the scene accepts, in `frame`; its rows,
