@@ -32,7 +32,7 @@ pub struct Table {
     pub about: &'static str,
     /// Its keys, in the order of the file form.
     pub keys: &'static [Key],
-    /// The tables of its parts (`part` keys, [`Part`](super::Part)), each listed after it in the reference.
+    /// The tables of its parts (`part` keys, `keys::Part`), each listed after it in the reference.
     pub parts: &'static [Table],
 }
 

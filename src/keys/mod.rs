@@ -1,6 +1,6 @@
 //! The vocabulary of a scene file's keys, below every capability that declares some: the path that names a key
 //! ([`KeyPath`]), the error that names it ([`InvalidScene`]) and the checks that produce it, and a table's keys
-//! declared once ([`file_table!`]: the flat serde form, the reference's [`Table`], the keys a file gives).
+//! declared once (`file_table!`: the flat serde form, the reference's [`Table`], the keys a file gives).
 
 mod checks;
 mod declare;

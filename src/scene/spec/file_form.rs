@@ -124,7 +124,7 @@ file_table! {
     }
     parts {
         /// The capabilities with a table of their own in `[motion]` that modify a fixed axis or hinge (each a
-        /// [`Part`](crate::keys::Part), registered by its `part` line in `[motion]`'s declaration).
+        /// `keys::Part`, registered by its `part` line in `[motion]`'s declaration).
         #[derive(Debug, Clone, Copy, Default, PartialEq)]
         pub struct AxisParts;
     }
