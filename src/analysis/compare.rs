@@ -8,11 +8,11 @@ use std::thread;
 
 use nalgebra::UnitQuaternion;
 
-use super::oracle::{Exact, Oracle};
 use crate::frames::Form;
 use crate::integrate::IntegrateError;
 use crate::method::Method;
 use crate::sample::Sample;
+use crate::scene::{Exact, Oracle};
 use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
 

@@ -6,7 +6,6 @@ pub mod balance;
 pub mod compare;
 pub mod describe;
 pub mod facts;
-pub mod oracle;
 pub mod score;
 pub mod study;
 #[cfg(feature = "sweep")]

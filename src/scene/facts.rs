@@ -14,6 +14,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::model::{Motion, Scene};
+use super::oracle::{ClosedForm, Oracle};
 use super::spec::MotionSpec;
 use crate::effects::Effect;
 
@@ -65,6 +66,10 @@ pub struct Facts {
     /// The conserved quantities, by their columns (`energy`, `H_s_x`…`H_s_z`, `H_norm` for a torque-free body;
     /// `energy_total` and `H_s_z` for a heavy top).
     pub invariants: Vec<Invariant>,
+    /// The closed form that applies ([`Oracle::for_scene`]), if any: what `compare`, the accuracy study and
+    /// `score` measure runs against.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub closed_form: Option<ClosedForm>,
 }
 
 impl Facts {
@@ -126,7 +131,10 @@ impl Facts {
                 }
             }
         };
-        Facts { invariants }
+        Facts {
+            invariants,
+            closed_form: Oracle::for_scene(scene).map(|o| o.kind()),
+        }
     }
 
     /// Whether the scene conserves `invariant`.
@@ -186,9 +194,30 @@ mod tests {
         );
     }
 
+    /// The closed form each bundled scenario is measured against (`Oracle::for_scene`'s conditions): a torque-free
+    /// body (Landau & Lifshitz §37), a prescribed axis (H_s = I_s(θ) ω_s, eq. 8.10), a damped principal spin; none
+    /// for a heavy top or a hinge.
+    #[test]
+    fn the_facts_name_the_closed_form_that_applies() {
+        let closed_form = |name: &str| {
+            let path = std::path::PathBuf::from(format!("scenarios/{name}.toml"));
+            let text = std::fs::read_to_string(&path).expect("a bundled scenario");
+            let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
+            scene.facts().closed_form
+        };
+        assert_eq!(closed_form("tennis_racket"), Some(ClosedForm::TorqueFree));
+        assert_eq!(closed_form("tilted_disk"), Some(ClosedForm::FixedAxis));
+        assert_eq!(closed_form("damped_spin"), Some(ClosedForm::DampedSpin));
+        assert_eq!(closed_form("heavy_top"), None);
+        assert_eq!(closed_form("rod_pendulum"), None);
+    }
+
     #[test]
     fn the_conserved_energy_is_t_or_t_plus_v() {
-        let facts = |invariants| Facts { invariants };
+        let facts = |invariants| Facts {
+            invariants,
+            closed_form: None,
+        };
         assert_eq!(facts(vec![Energy, HNorm]).conserved_energy(), Some(Energy));
         assert_eq!(
             facts(vec![EnergyTotal, HSpaceZ]).conserved_energy(),
@@ -201,6 +230,7 @@ mod tests {
     fn the_sidecar_names_the_invariants_by_their_columns() {
         let json = serde_json::to_string(&Facts {
             invariants: vec![EnergyTotal, HSpaceZ],
+            closed_form: None,
         })
         .unwrap();
         assert_eq!(json, r#"{"invariants":["energy_total","H_s_z"]}"#);

@@ -5,6 +5,7 @@ pub mod advice;
 mod facts;
 mod file;
 mod model;
+mod oracle;
 pub mod reference;
 pub mod source_map;
 mod spec;
@@ -18,6 +19,7 @@ pub use facts::{Facts, Invariant};
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SceneSource, SolverConfig};
+pub use oracle::{ClosedForm, Exact, Oracle};
 pub use spec::{
     AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, CarrierSpec, CompareSpec,
     ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, Extremum, FixedAxisSpec,

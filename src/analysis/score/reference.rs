@@ -7,10 +7,10 @@
 
 use super::ScoreError;
 use crate::analysis::compare::attitude_angle;
-use crate::analysis::oracle::Oracle;
 use crate::events::Occurrence;
 use crate::method::Method;
 use crate::sample::Sample;
+use crate::scene::Oracle;
 use crate::scene::{Overrides, Scene};
 use crate::simulate::{self, RunError};
 

@@ -7,10 +7,10 @@ use std::path::Path;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use crate::analysis::oracle::Oracle;
 use crate::frames::Form;
 use crate::method::{Backend, Method};
 use crate::sample::Sample;
+use crate::scene::Oracle;
 use crate::scene::{Overrides, Scene, SceneSpec};
 use crate::simulate;
 

@@ -1,5 +1,6 @@
-//! The closed forms that apply to a scene, and their value at a time: `compare`, the study and `score` all take
-//! them from here (one evaluation of each closed form).
+//! The closed forms that apply to a scene ([`Oracle::for_scene`], named by [`ClosedForm`] in the scene's
+//! [`Facts`](super::Facts)) and their value at a time ([`Oracle::at`]): `compare`, the accuracy study and `score`
+//! all evaluate them here.
 
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
@@ -8,8 +9,26 @@ use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, Torque
 use crate::frames::Axes;
 use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::profile::Profile;
-use crate::scene::{Motion, Scene};
+use serde::{Deserialize, Serialize};
+
+use super::model::{Motion, Scene};
 use crate::wheels::WheelControl;
+
+/// Which closed form applies to a scene, by the name the sidecar's `facts` gives it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ClosedForm {
+    /// [`Oracle::TorqueFree`].
+    TorqueFree,
+    /// [`Oracle::AxialTorque`].
+    AxialTorque,
+    /// [`Oracle::DampedSpin`].
+    DampedSpin,
+    /// [`Oracle::FixedAxis`].
+    FixedAxis,
+    /// [`Oracle::SymmetricGyrostat`].
+    SymmetricGyrostat,
+}
 
 /// A closed-form solution that applies to a scene.
 pub enum Oracle {
@@ -102,6 +121,17 @@ impl Oracle {
             Oracle::SymmetricGyrostat { .. } => {
                 "torque-free symmetric gyrostat, transverse ω turning at ((C − A)ω₃ + h)/A (Hughes §3.5)"
             }
+        }
+    }
+
+    /// Which closed form it is.
+    pub fn kind(&self) -> ClosedForm {
+        match self {
+            Oracle::TorqueFree { .. } => ClosedForm::TorqueFree,
+            Oracle::AxialTorque(_) => ClosedForm::AxialTorque,
+            Oracle::DampedSpin(_) => ClosedForm::DampedSpin,
+            Oracle::FixedAxis => ClosedForm::FixedAxis,
+            Oracle::SymmetricGyrostat { .. } => ClosedForm::SymmetricGyrostat,
         }
     }
 
