@@ -163,12 +163,17 @@ mod tests {
     use super::*;
     use crate::scene::{Overrides, parse};
 
-    /// The invariants of the bundled scenario `name` (scenarios/NAME.toml).
-    fn of_scenario(name: &str) -> Vec<Invariant> {
+    /// The facts of the bundled scenario `name` (scenarios/NAME.toml).
+    fn facts_of(name: &str) -> Facts {
         let path = std::path::PathBuf::from(format!("scenarios/{name}.toml"));
         let text = std::fs::read_to_string(&path).expect("a bundled scenario");
         let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
-        scene.facts().invariants
+        scene.facts()
+    }
+
+    /// The invariants of the bundled scenario `name`.
+    fn of_scenario(name: &str) -> Vec<Invariant> {
+        facts_of(name).invariants
     }
 
     #[test]
@@ -199,12 +204,7 @@ mod tests {
     /// for a heavy top or a hinge.
     #[test]
     fn the_facts_name_the_closed_form_that_applies() {
-        let closed_form = |name: &str| {
-            let path = std::path::PathBuf::from(format!("scenarios/{name}.toml"));
-            let text = std::fs::read_to_string(&path).expect("a bundled scenario");
-            let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
-            scene.facts().closed_form
-        };
+        let closed_form = |name: &str| facts_of(name).closed_form;
         assert_eq!(closed_form("tennis_racket"), Some(ClosedForm::TorqueFree));
         assert_eq!(closed_form("tilted_disk"), Some(ClosedForm::FixedAxis));
         assert_eq!(closed_form("damped_spin"), Some(ClosedForm::DampedSpin));

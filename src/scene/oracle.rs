@@ -30,6 +30,28 @@ pub enum ClosedForm {
     SymmetricGyrostat,
 }
 
+impl ClosedForm {
+    /// What reports call it.
+    ///
+    /// ```
+    /// use eulerdyn::scene::ClosedForm;
+    /// assert!(ClosedForm::TorqueFree.name().contains("Landau & Lifshitz §37"));
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            ClosedForm::TorqueFree => {
+                "torque-free body, Jacobi elliptic functions (Landau & Lifshitz §37)"
+            }
+            ClosedForm::AxialTorque => "symmetric body under a constant axial torque (ω only)",
+            ClosedForm::DampedSpin => "damped principal-axis spin, ω(0)·exp(−c t / I)",
+            ClosedForm::FixedAxis => "prescribed fixed-axis motion, H_s = I_s(θ)·ω_s",
+            ClosedForm::SymmetricGyrostat => {
+                "torque-free symmetric gyrostat, transverse ω turning at ((C − A)ω₃ + h)/A (Hughes §3.5)"
+            }
+        }
+    }
+}
+
 /// A closed-form solution that applies to a scene.
 pub enum Oracle {
     /// Torque-free body: ω and attitude (Landau & Lifshitz §37).
@@ -111,17 +133,7 @@ impl Oracle {
 
     /// A short name for reports.
     pub fn name(&self) -> &'static str {
-        match self {
-            Oracle::TorqueFree { .. } => {
-                "torque-free body, Jacobi elliptic functions (Landau & Lifshitz §37)"
-            }
-            Oracle::AxialTorque(_) => "symmetric body under a constant axial torque (ω only)",
-            Oracle::DampedSpin { .. } => "damped principal-axis spin, ω(0)·exp(−c t / I)",
-            Oracle::FixedAxis => "prescribed fixed-axis motion, H_s = I_s(θ)·ω_s",
-            Oracle::SymmetricGyrostat { .. } => {
-                "torque-free symmetric gyrostat, transverse ω turning at ((C − A)ω₃ + h)/A (Hughes §3.5)"
-            }
-        }
+        self.kind().name()
     }
 
     /// Which closed form it is.

@@ -10,8 +10,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 use crate::frames::Form;
 use crate::method::{Backend, Method};
 use crate::sample::Sample;
-use crate::scene::Oracle;
-use crate::scene::{Overrides, Scene, SceneSpec};
+use crate::scene::{Oracle, Overrides, Scene, SceneSpec};
 use crate::simulate;
 
 use super::{Measure, StudyError};
@@ -118,8 +117,8 @@ fn oracle_rows(scene: &Scene, oracle: &Oracle) -> Vec<RefRow> {
             t,
             omega_b,
             q: exact.q,
-            energy: exact.energy.unwrap_or(0.5 * omega_b.dot(&h_b)),
-            h_norm: exact.h_norm.unwrap_or(h_b.norm()),
+            energy: exact.energy.unwrap_or_else(|| 0.5 * omega_b.dot(&h_b)),
+            h_norm: exact.h_norm.unwrap_or_else(|| h_b.norm()),
             h_s: exact.h_s,
         })
     };
