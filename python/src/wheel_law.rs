@@ -6,8 +6,7 @@
 
 use std::sync::Arc;
 
-use eulerdyn::wheels::WheelLaw;
-use nalgebra::{UnitQuaternion, Vector3};
+use eulerdyn::wheels::{WheelInputs, WheelLaw};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
@@ -17,13 +16,13 @@ use crate::moment::{PyLaw, describe};
 pub struct SharedWheelLaw(pub Arc<PyLaw>);
 
 impl WheelLaw for SharedWheelLaw {
-    fn torques(
-        &self,
-        t: f64,
-        q: &UnitQuaternion<f64>,
-        omega_b: &Vector3<f64>,
-        spins: &[f64],
-    ) -> Vec<f64> {
+    fn torques(&self, now: &WheelInputs<'_>) -> Vec<f64> {
+        let WheelInputs {
+            t,
+            q,
+            omega_b,
+            spins,
+        } = *now;
         let n = spins.len();
         self.0.guarded(t, vec![f64::NAN; n], || {
             Python::attach(|py| {

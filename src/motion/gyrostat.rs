@@ -34,7 +34,7 @@ use crate::effects::{AppliedMoment, TorqueSum, TorqueTable};
 use crate::frames::{Form, StateRotation};
 use crate::integrate::OdeSystem;
 use crate::sample::{MAX_ROTORS, RotorRows, Sample};
-use crate::wheels::{Wheel, WheelControl, WheelSolve, WheelTorqueLaw};
+use crate::wheels::{Wheel, WheelControl, WheelInputs, WheelSolve, WheelTorqueLaw};
 
 /// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4, φ_1, …, φ_4).
 pub type State = SVector<f64, 15>;
@@ -327,12 +327,15 @@ impl Gyrostat {
     ) -> (WheelSolve, [f64; MAX_ROTORS]) {
         let law = (self.law.as_ref()).map(|law| {
             let q = UnitQuaternion::new_normalize(*q);
+            let spins = &spins[..self.rotors.len()];
             law.commands(
-                self.rotors.len(),
-                t,
-                &q,
-                omega_b,
-                &spins[..self.rotors.len()],
+                spins.len(),
+                &WheelInputs {
+                    t,
+                    q: &q,
+                    omega_b,
+                    spins,
+                },
             )
         });
         let mut commands = [0.0; MAX_ROTORS];

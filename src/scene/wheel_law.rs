@@ -5,7 +5,7 @@ use super::source_map::KeyPath;
 use super::spec::RotorDrive;
 use super::validate::InvalidScene;
 use crate::keys::{Checked, invalid};
-use crate::wheels::{WheelLaw, WheelTorqueLaw};
+use crate::wheels::{WheelInputs, WheelLaw, WheelTorqueLaw};
 
 impl Scene {
     /// The scene with the wheel law `law` commanding the motor torque of every wheel (`[[body.rotor]]`), named
@@ -48,7 +48,13 @@ impl Scene {
             );
         };
         let spins0: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-        let given = law.torques(0.0, &self.attitude0, omega0_b, &spins0).len();
+        let now = WheelInputs {
+            t: 0.0,
+            q: &self.attitude0,
+            omega_b: omega0_b,
+            spins: &spins0,
+        };
+        let given = law.torques(&now).len();
         if given != spins0.len() {
             return invalid(
                 rotors(),

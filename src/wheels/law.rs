@@ -6,35 +6,36 @@ use std::sync::Arc;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-/// τ_cmd,k(t, q, ω_b, Ω_1 … Ω_n) (N·m), one per wheel in the scene's order: t in s, q the attitude (body →
-/// space), ω_b in body axes (rad/s), Ω_k the wheels' spins relative to the body (rad/s). Called at every
+/// What a wheel law is told at one instant: t (s), the attitude q (body → space), ω_b in body axes (rad/s) and
+/// Ω_k, the wheels' spins relative to the body (rad/s), in the scene's order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelInputs<'a> {
+    /// Time (s).
+    pub t: f64,
+    /// Attitude, body → space.
+    pub q: &'a UnitQuaternion<f64>,
+    /// Angular velocity in body axes (rad/s).
+    pub omega_b: &'a Vector3<f64>,
+    /// The wheels' spins relative to the body (rad/s).
+    pub spins: &'a [f64],
+}
+
+/// τ_cmd,k(t, q, ω_b, Ω_1 … Ω_n) (N·m), one per wheel in the scene's order ([`WheelInputs`]). Called at every
 /// right-hand-side evaluation; a law that cannot give its torques returns non-finite ones (or a wrong number of
 /// them), and the run stops there.
 ///
 /// A closure `Fn(f64, &UnitQuaternion<f64>, &Vector3<f64>, &[f64]) -> Vec<f64>` that is `Send + Sync` is a law.
 pub trait WheelLaw: Send + Sync {
-    /// The commanded torques at time `t`, attitude `q`, angular velocity `omega_b` and relative spins `spins`.
-    fn torques(
-        &self,
-        t: f64,
-        q: &UnitQuaternion<f64>,
-        omega_b: &Vector3<f64>,
-        spins: &[f64],
-    ) -> Vec<f64>;
+    /// The commanded torques at the instant `now`.
+    fn torques(&self, now: &WheelInputs<'_>) -> Vec<f64>;
 }
 
 impl<F> WheelLaw for F
 where
     F: Fn(f64, &UnitQuaternion<f64>, &Vector3<f64>, &[f64]) -> Vec<f64> + Send + Sync,
 {
-    fn torques(
-        &self,
-        t: f64,
-        q: &UnitQuaternion<f64>,
-        omega_b: &Vector3<f64>,
-        spins: &[f64],
-    ) -> Vec<f64> {
-        self(t, q, omega_b, spins)
+    fn torques(&self, now: &WheelInputs<'_>) -> Vec<f64> {
+        self(now.t, now.q, now.omega_b, now.spins)
     }
 }
 
@@ -57,15 +58,8 @@ impl WheelTorqueLaw {
     }
 
     /// The commands of `n` wheels; NaN for every wheel when the law gives another number of torques.
-    pub fn commands(
-        &self,
-        n: usize,
-        t: f64,
-        q: &UnitQuaternion<f64>,
-        omega_b: &Vector3<f64>,
-        spins: &[f64],
-    ) -> Vec<f64> {
-        let torques = self.law.torques(t, q, omega_b, spins);
+    pub fn commands(&self, n: usize, now: &WheelInputs<'_>) -> Vec<f64> {
+        let torques = self.law.torques(now);
         match torques.len() == n {
             true => torques,
             false => vec![f64::NAN; n],
@@ -110,13 +104,14 @@ impl AttitudePd {
     /// The regulator to `target` with gains `k_p`, `k_d` through wheels along `axes_b`.
     ///
     /// ```
-    /// use eulerdyn::wheels::{AttitudePd, WheelLaw};
+    /// use eulerdyn::wheels::{AttitudePd, WheelInputs, WheelLaw};
     /// use nalgebra::{UnitQuaternion, Vector3};
     ///
     /// let target = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.5);
     /// let pd = AttitudePd::new(target, 0.6, 3.0, vec![Vector3::x(), Vector3::y(), Vector3::z()]);
     /// // At rest and 0.5 rad short about z: u_b = (0, 0, 0.3), so the z wheel is told −0.3 N·m.
-    /// let tau = pd.torques(0.0, &UnitQuaternion::identity(), &Vector3::zeros(), &[0.0; 3]);
+    /// let (q, omega_b) = (UnitQuaternion::identity(), Vector3::zeros());
+    /// let tau = pd.torques(&WheelInputs { t: 0.0, q: &q, omega_b: &omega_b, spins: &[0.0; 3] });
     /// assert!((tau[2] + 0.3).abs() < 1e-15 && tau[0] == 0.0 && tau[1] == 0.0);
     /// ```
     pub fn new(target: UnitQuaternion<f64>, k_p: f64, k_d: f64, axes_b: Vec<Vector3<f64>>) -> Self {
@@ -130,13 +125,8 @@ impl AttitudePd {
 }
 
 impl WheelLaw for AttitudePd {
-    fn torques(
-        &self,
-        _t: f64,
-        q: &UnitQuaternion<f64>,
-        omega_b: &Vector3<f64>,
-        _spins: &[f64],
-    ) -> Vec<f64> {
+    fn torques(&self, now: &WheelInputs<'_>) -> Vec<f64> {
+        let (q, omega_b) = (now.q, now.omega_b);
         let error_b = q.inverse_transform_vector(&q.rotation_to(&self.target).scaled_axis());
         let u_b = error_b * self.k_p - omega_b * self.k_d;
         self.axes_b.iter().map(|a| -u_b.dot(a)).collect()

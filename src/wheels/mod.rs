@@ -23,7 +23,7 @@ mod table;
 
 pub(crate) use keys::wheel_keys;
 pub use keys::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
-pub use law::{AttitudePd, WheelLaw, WheelTorqueLaw};
+pub use law::{AttitudePd, WheelInputs, WheelLaw, WheelTorqueLaw};
 pub use solve::{STICK_SPEED, Wheel, WheelSolve, solve};
 pub use table::{WHEEL_TABLE_HEADER, read_wheel_table};
 

@@ -65,20 +65,12 @@ pub struct ScoreArgs {
     #[arg(value_name = "THEIRS.csv", required_unless_present = "suite")]
     pub theirs: Option<PathBuf>,
     /// The scene their trajectory simulates (TOML).
-    #[arg(
-        long,
-        value_name = "SCENE",
-        required_unless_present = "suite",
-        conflicts_with = "suite"
-    )]
+    #[arg(long, value_name = "SCENE", conflicts_with = "suite")]
+    #[arg(required_unless_present = "suite")]
     pub scene: Option<PathBuf>,
     /// Score an engine's outputs DIR/ENGINE/SCENE.csv against the suite written by `eulerdyn suite --out DIR`.
-    #[arg(
-        long,
-        value_name = "DIR",
-        requires = "engine",
-        conflicts_with = "theirs"
-    )]
+    #[arg(long, value_name = "DIR", requires = "engine")]
+    #[arg(conflicts_with = "theirs")]
     pub suite: Option<PathBuf>,
     /// The engine's folder in the suite (with --suite).
     #[arg(long, value_name = "NAME")]
