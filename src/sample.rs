@@ -143,13 +143,29 @@ pub struct ColumnSet {
     pub bearings: bool,
     /// `potential,energy_total`.
     pub potential: bool,
-    /// `Omega_c_s_x,Omega_c_s_y,Omega_c_s_z`, after `M_sup_s_*` (a carrier's rate).
-    pub carrier: bool,
-    /// `<name>_spin,<name>_h,<name>_torque` per rotor, after all others ([`rotor_columns`]).
-    pub rotors: Vec<Column>,
-    /// Each rotor's columns go on with `<name>_torque_cmd,<name>_friction` (wheels under control).
-    pub wheels: bool,
+    /// The capabilities' columns, after all others, in the order of the groups: a carrier's rate
+    /// (`crate::motion::carrier::columns`), a body's wheels (`crate::wheels::columns`).
+    pub groups: Vec<ColumnGroup>,
 }
+
+/// Columns a capability adds to a run, after the scene's own ([`ColumnSet::groups`]), and how their values are
+/// read from a row: `values(sample, columns, out)` appends one value per column, NaN where the sample lacks one.
+/// Two groups are equal when they write the same columns.
+#[derive(Debug, Clone)]
+pub struct ColumnGroup {
+    /// The columns, in order.
+    pub columns: Vec<Column>,
+    /// Appends one row's values of `columns`.
+    pub values: fn(&Sample, &[Column], &mut Vec<f64>),
+}
+
+impl PartialEq for ColumnGroup {
+    fn eq(&self, other: &Self) -> bool {
+        self.columns == other.columns
+    }
+}
+
+impl Eq for ColumnGroup {}
 
 /// A column's name, unit and meaning.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -162,109 +178,118 @@ pub struct Column {
     pub meaning: &'static str,
 }
 
-const fn col(name: &'static str, unit: &'static str, meaning: &'static str) -> Column {
-    Column {
-        name: Cow::Borrowed(name),
-        unit,
-        meaning,
+impl Column {
+    /// A column whose name is fixed.
+    ///
+    /// ```
+    /// use eulerdyn::sample::Column;
+    /// const THETA: Column = Column::fixed("theta", "rad", "angle turned about the fixed axis");
+    /// assert_eq!(THETA.name, "theta");
+    /// ```
+    pub const fn fixed(name: &'static str, unit: &'static str, meaning: &'static str) -> Self {
+        Column {
+            name: Cow::Borrowed(name),
+            unit,
+            meaning,
+        }
     }
 }
 
 /// The columns every run writes, in the contract's order.
 pub const BASE_COLUMNS: [Column; 25] = [
-    col("t", "s", "time"),
-    col("q_w", "1", "attitude quaternion body->space, scalar part"),
-    col("q_x", "1", "attitude quaternion, x"),
-    col("q_y", "1", "attitude quaternion, y"),
-    col("q_z", "1", "attitude quaternion, z"),
-    col("omega_b_x", "rad/s", "angular velocity, body axes"),
-    col("omega_b_y", "rad/s", "angular velocity, body axes"),
-    col("omega_b_z", "rad/s", "angular velocity, body axes"),
-    col("omega_s_x", "rad/s", "angular velocity, space axes"),
-    col("omega_s_y", "rad/s", "angular velocity, space axes"),
-    col("omega_s_z", "rad/s", "angular velocity, space axes"),
-    col(
+    Column::fixed("t", "s", "time"),
+    Column::fixed("q_w", "1", "attitude quaternion body->space, scalar part"),
+    Column::fixed("q_x", "1", "attitude quaternion, x"),
+    Column::fixed("q_y", "1", "attitude quaternion, y"),
+    Column::fixed("q_z", "1", "attitude quaternion, z"),
+    Column::fixed("omega_b_x", "rad/s", "angular velocity, body axes"),
+    Column::fixed("omega_b_y", "rad/s", "angular velocity, body axes"),
+    Column::fixed("omega_b_z", "rad/s", "angular velocity, body axes"),
+    Column::fixed("omega_s_x", "rad/s", "angular velocity, space axes"),
+    Column::fixed("omega_s_y", "rad/s", "angular velocity, space axes"),
+    Column::fixed("omega_s_z", "rad/s", "angular velocity, space axes"),
+    Column::fixed(
         "H_b_x",
         "kg*m^2/s",
         "moment of momentum about the moment center, body axes",
     ),
-    col(
+    Column::fixed(
         "H_b_y",
         "kg*m^2/s",
         "moment of momentum about the moment center, body axes",
     ),
-    col(
+    Column::fixed(
         "H_b_z",
         "kg*m^2/s",
         "moment of momentum about the moment center, body axes",
     ),
-    col(
+    Column::fixed(
         "H_s_x",
         "kg*m^2/s",
         "moment of momentum about the moment center, space axes",
     ),
-    col(
+    Column::fixed(
         "H_s_y",
         "kg*m^2/s",
         "moment of momentum about the moment center, space axes",
     ),
-    col(
+    Column::fixed(
         "H_s_z",
         "kg*m^2/s",
         "moment of momentum about the moment center, space axes",
     ),
-    col(
+    Column::fixed(
         "M_b_x",
         "N*m",
         "external moment about the moment center, body axes",
     ),
-    col(
+    Column::fixed(
         "M_b_y",
         "N*m",
         "external moment about the moment center, body axes",
     ),
-    col(
+    Column::fixed(
         "M_b_z",
         "N*m",
         "external moment about the moment center, body axes",
     ),
-    col(
+    Column::fixed(
         "M_s_x",
         "N*m",
         "external moment about the moment center, space axes",
     ),
-    col(
+    Column::fixed(
         "M_s_y",
         "N*m",
         "external moment about the moment center, space axes",
     ),
-    col(
+    Column::fixed(
         "M_s_z",
         "N*m",
         "external moment about the moment center, space axes",
     ),
-    col("energy", "J", "kinetic energy 1/2 omega.H"),
-    col("H_norm", "kg*m^2/s", "|H|"),
+    Column::fixed("energy", "J", "kinetic energy 1/2 omega.H"),
+    Column::fixed("H_norm", "kg*m^2/s", "|H|"),
 ];
 
-const THETA_COLUMN: Column = col("theta", "rad", "angle turned about the fixed axis");
+const THETA_COLUMN: Column = Column::fixed("theta", "rad", "angle turned about the fixed axis");
 const FORCE_COLUMNS: [Column; 3] = [
-    col("F_s_x", "N", "required force m a_C, space axes"),
-    col("F_s_y", "N", "required force m a_C, space axes"),
-    col("F_s_z", "N", "required force m a_C, space axes"),
+    Column::fixed("F_s_x", "N", "required force m a_C, space axes"),
+    Column::fixed("F_s_y", "N", "required force m a_C, space axes"),
+    Column::fixed("F_s_z", "N", "required force m a_C, space axes"),
 ];
 const H_INT_COLUMNS: [Column; 3] = [
-    col(
+    Column::fixed(
         "H_s_int_x",
         "kg*m^2/s",
         "H_s integrated from dH_s/dt = M_s, space axes",
     ),
-    col(
+    Column::fixed(
         "H_s_int_y",
         "kg*m^2/s",
         "H_s integrated from dH_s/dt = M_s, space axes",
     ),
-    col(
+    Column::fixed(
         "H_s_int_z",
         "kg*m^2/s",
         "H_s integrated from dH_s/dt = M_s, space axes",
@@ -272,28 +297,28 @@ const H_INT_COLUMNS: [Column; 3] = [
 ];
 
 const SUPPORT_COLUMNS: [Column; 6] = [
-    col("theta_dot", "rad/s", "rate about the fixed axis"),
-    col(
+    Column::fixed("theta_dot", "rad/s", "rate about the fixed axis"),
+    Column::fixed(
         "theta_ddot",
         "rad/s^2",
         "angular acceleration about the fixed axis",
     ),
-    col(
+    Column::fixed(
         "F_sup_s_x",
         "N",
         "force of the support on the body, space axes",
     ),
-    col(
+    Column::fixed(
         "F_sup_s_y",
         "N",
         "force of the support on the body, space axes",
     ),
-    col(
+    Column::fixed(
         "F_sup_s_z",
         "N",
         "force of the support on the body, space axes",
     ),
-    col(
+    Column::fixed(
         "M_drive",
         "N*m",
         "moment about the axis that the drive supplies",
@@ -302,7 +327,7 @@ const SUPPORT_COLUMNS: [Column; 6] = [
 
 /// One bearing force column: `R_{bearing}_{axes}_{component}`.
 const fn bearing(name: &'static str, meaning: &'static str) -> Column {
-    col(name, "N", meaning)
+    Column::fixed(name, "N", meaning)
 }
 
 const BEARING_COLUMNS: [Column; 12] = [
@@ -321,52 +346,34 @@ const BEARING_COLUMNS: [Column; 12] = [
 ];
 
 const SUPPORT_MOMENT_COLUMNS: [Column; 3] = [
-    col(
+    Column::fixed(
         "M_sup_s_x",
         "N*m",
         "moment of the support (bearings and drive) about the axis point, space axes",
     ),
-    col(
+    Column::fixed(
         "M_sup_s_y",
         "N*m",
         "moment of the support (bearings and drive) about the axis point, space axes",
     ),
-    col(
+    Column::fixed(
         "M_sup_s_z",
         "N*m",
         "moment of the support (bearings and drive) about the axis point, space axes",
     ),
 ];
 
-const CARRIER_COLUMNS: [Column; 3] = [
-    col(
-        "Omega_c_s_x",
-        "rad/s",
-        "the carrier's angular velocity, space axes",
-    ),
-    col(
-        "Omega_c_s_y",
-        "rad/s",
-        "the carrier's angular velocity, space axes",
-    ),
-    col(
-        "Omega_c_s_z",
-        "rad/s",
-        "the carrier's angular velocity, space axes",
-    ),
-];
-
 const POTENTIAL_COLUMNS: [Column; 2] = [
-    col(
+    Column::fixed(
         "potential",
         "J",
         "potential energy of gravity -m g.r_C, r_C from the moment center",
     ),
-    col("energy_total", "J", "kinetic plus potential energy"),
+    Column::fixed("energy_total", "J", "kinetic plus potential energy"),
 ];
 
 impl ColumnSet {
-    /// Every optional column.
+    /// Every optional column of the scene's own (no capability's group).
     pub const ALL: ColumnSet = ColumnSet {
         theta: true,
         force: true,
@@ -374,14 +381,12 @@ impl ColumnSet {
         support: true,
         bearings: true,
         potential: true,
-        carrier: true,
-        rotors: Vec::new(),
-        wheels: false,
+        groups: Vec::new(),
     };
 
     /// All columns of a run, in order.
     pub fn columns(&self) -> Vec<Column> {
-        let groups: [(bool, &[Column]); 8] = [
+        let groups: [(bool, &[Column]); 7] = [
             (self.theta, &[THETA_COLUMN]),
             (self.force, &FORCE_COLUMNS),
             (self.h_s_integrated, &H_INT_COLUMNS),
@@ -389,13 +394,14 @@ impl ColumnSet {
             (self.bearings, &BEARING_COLUMNS),
             (self.potential, &POTENTIAL_COLUMNS),
             (self.support, &SUPPORT_MOMENT_COLUMNS),
-            (self.carrier, &CARRIER_COLUMNS),
         ];
         let mut cols = BASE_COLUMNS.to_vec();
         for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
             cols.extend_from_slice(group);
         }
-        cols.extend_from_slice(&self.rotors);
+        for group in &self.groups {
+            cols.extend_from_slice(&group.columns);
+        }
         cols
     }
 
@@ -446,20 +452,11 @@ impl ColumnSet {
         if self.support {
             out.extend(s.support.map_or(nan3, |l| l.m_sup_s).iter());
         }
-        if self.carrier {
-            let omega_c_s = s.support.and_then(|l| l.omega_c_s);
-            out.extend(omega_c_s.unwrap_or(nan3).iter());
-        }
-        let rotors = s.rotors.unwrap_or_default();
-        let width = if self.wheels { 5 } else { 3 };
-        for k in 0..self.rotors.len() / width {
-            let value = |v: &[f64; MAX_ROTORS]| if k < rotors.n { v[k] } else { f64::NAN };
-            out.extend([value(&rotors.spin), value(&rotors.h), value(&rotors.torque)]);
-            if self.wheels {
-                out.extend([value(&rotors.torque_cmd), value(&rotors.friction)]);
-            }
+        for group in &self.groups {
+            (group.values)(s, &group.columns, out);
         }
     }
+
     /// The values of one row, in column order, refusing a non-finite one (the CSV writer and the Python module
     /// write only finite rows: the simulation must stop before it produces another).
     pub fn finite_values(&self, s: &Sample, out: &mut Vec<f64>) -> Result<(), NonFinite> {
@@ -485,36 +482,4 @@ pub struct NonFinite {
     pub value: f64,
     /// The row's time (s).
     pub t: f64,
-}
-
-/// The columns of rotors named `names`, in order: `<name>_spin` (rad/s), `<name>_h` (N·m·s), `<name>_torque`
-/// (N·m), and with `wheels` `<name>_torque_cmd` and `<name>_friction` (N·m).
-pub fn rotor_columns(names: &[String], wheels: bool) -> Vec<Column> {
-    const SUFFIXES: [(&str, &str, &str); 5] = [
-        ("spin", "rad/s", "rotor spin relative to the body"),
-        (
-            "h",
-            "N*m*s",
-            "rotor's axial moment of momentum J (a.omega + spin)",
-        ),
-        ("torque", "N*m", "motor torque on the rotor"),
-        (
-            "torque_cmd",
-            "N*m",
-            "motor torque commanded (before the limits)",
-        ),
-        ("friction", "N*m", "friction torque on the rotor"),
-    ];
-    let per_rotor = if wheels { 5 } else { 3 };
-    (names.iter())
-        .flat_map(|name| {
-            SUFFIXES[..per_rotor]
-                .iter()
-                .map(move |&(suffix, unit, meaning)| Column {
-                    name: Cow::Owned(format!("{name}_{suffix}")),
-                    unit,
-                    meaning,
-                })
-        })
-        .collect()
 }

@@ -370,7 +370,10 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         &format!(
             "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
             vec3(&axis_b),
-            if tilt < 1e-6 && motion.point_b() == Vector3::zeros() && motion.carrier().is_none() {
+            if tilt < 1e-6
+                && motion.point_b() == Vector3::zeros()
+                && motion.moving_support().is_none()
+            {
                 ": a principal axis, no moment is needed at a constant rate"
             } else {
                 ""
@@ -390,8 +393,8 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
         ),
     );
     axis_point_lines(w, &motion.point_b());
-    if let Some(carrier) = motion.carrier() {
-        carrier.describe(motion.mass(), w);
+    if let Some(support) = motion.moving_support() {
+        support.describe(motion.mass(), w);
     }
     fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
 }
@@ -496,8 +499,8 @@ fn hinge_lines(w: &mut Description, hinge: &Hinge) {
         ),
     );
     axis_point_lines(w, &axis.point_b());
-    if let Some(carrier) = axis.carrier() {
-        carrier.describe(axis.mass(), w);
+    if let Some(support) = axis.moving_support() {
+        support.describe(axis.mass(), w);
     }
 }
 

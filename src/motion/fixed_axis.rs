@@ -12,7 +12,9 @@ use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 use crate::body::RigidBody;
 use crate::frames::Form;
 use crate::kinetics::kinetic_energy;
-use crate::motion::carrier::{Carrier, CarrierMotion};
+use std::sync::Arc;
+
+use crate::motion::moving_support::{MovingSupport, SupportMotion};
 use crate::motion::support::Bearings;
 use crate::sample::{BearingLoads, Sample, SupportLoads};
 
@@ -39,9 +41,8 @@ pub struct FixedAxis {
     g_s: Vector3<f64>,
     /// The two bearings, where the scene places them.
     bearings: Option<Bearings>,
-    /// The carrier that holds the axis and turns in space; `None`: the axis is fixed in space (boxed: a rare
-    /// option that should not grow every axis motion).
-    carrier: Option<Box<Carrier>>,
+    /// What moves the axis's support in space (a carrier); `None`: the axis is fixed in space.
+    support: Option<Arc<dyn MovingSupport>>,
 }
 
 /// The angle turned about the axis and its derivatives at one time.
@@ -79,7 +80,7 @@ impl FixedAxis {
             inertia_a_b: body.inertia_about(&rho_c_b),
             g_s: Vector3::zeros(),
             bearings: None,
-            carrier: None,
+            support: None,
         }
     }
 
@@ -91,13 +92,14 @@ impl FixedAxis {
             accel: 0.0,
             g_s: Vector3::zeros(),
             bearings: None,
-            carrier: None,
+            support: None,
             ..other.clone()
         }
     }
 
-    /// With the axis, its point and its bearings fixed in a turning `carrier` (the motion's other methods then
-    /// describe the rotation relative to the carrier; [`Self::sample`] the motion in space).
+    /// With the axis, its point and its bearings fixed in a `support` that moves in space, such as a turning
+    /// carrier (the motion's other methods then describe the rotation relative to the support; [`Self::sample`]
+    /// the motion in space).
     ///
     /// ```
     /// use eulerdyn::Form;
@@ -109,21 +111,21 @@ impl FixedAxis {
     /// // A rotor (I_x = 2 kg·m²) spinning at 10 rad/s about x in a carrier yawing at 0.5 rad/s about z.
     /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
     /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
-    ///     .with_carrier(Carrier::new(Vector3::new(0.0, 0.0, 0.5), Profile::Constant));
-    /// assert!(rotor.carrier().is_some());
+    ///     .with_support(Carrier::new(Vector3::new(0.0, 0.0, 0.5), Profile::Constant));
+    /// assert!(rotor.moving_support().is_some());
     /// // The gyroscopic couple Ω_c × H = I_x θ̇ Ω_c = 10 N·m about y.
     /// let m_s = rotor.required_moment_s(0.0, Form::Body);
     /// assert!((m_s - Vector3::new(0.0, 10.0, 0.0)).norm() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn with_carrier(mut self, carrier: Carrier) -> Self {
-        self.carrier = Some(Box::new(carrier));
+    pub fn with_support(mut self, support: impl MovingSupport) -> Self {
+        self.support = Some(Arc::new(support));
         self
     }
 
-    /// The carrier, if the axis is in one.
-    pub fn carrier(&self) -> Option<&Carrier> {
-        self.carrier.as_deref()
+    /// What moves the support, if anything does.
+    pub fn moving_support(&self) -> Option<&dyn MovingSupport> {
+        self.support.as_deref()
     }
 
     /// With uniform gravity `g_s` (m/s², space axes) acting at C: the support then carries the weight.
@@ -320,19 +322,19 @@ pub struct AxisRotation {
     pub omega_s: Vector3<f64>,
     /// ω̇_s − θ̈ u = Ω̇_c + θ̇ Ω_c × u (space axes; zero without a carrier).
     pub bias_s: Vector3<f64>,
-    /// The carrier at this time, if there is one.
-    pub carrier: Option<CarrierMotion>,
+    /// The support's motion at this time, if it moves.
+    pub support: Option<SupportMotion>,
 }
 
 impl AxisRotation {
     /// The axis point's acceleration a_A in a vehicle (space axes); `None` when A is fixed in space.
     pub fn accel_a_s(&self) -> Option<Vector3<f64>> {
-        self.carrier.and_then(|c| c.accel_a_s)
+        self.support.and_then(|c| c.accel_a_s)
     }
 
     /// ω̇_s = θ̈ u + (Ω̇_c + θ̇ Ω_c × u).
     pub fn alpha_s(&self, theta_ddot: f64) -> Vector3<f64> {
-        match self.carrier {
+        match self.support {
             None => self.u_s * theta_ddot,
             Some(_) => self.bias_s + self.u_s * theta_ddot,
         }
@@ -343,7 +345,7 @@ impl AxisRotation {
     pub fn turning(mut self, axis_b: &Vector3<f64>, theta_dot: f64) -> Self {
         self.omega_b += axis_b * theta_dot;
         self.omega_s += self.u_s * theta_dot;
-        if let Some(c) = self.carrier {
+        if let Some(c) = self.support {
             self.bias_s += c.omega_c_s.cross(&self.u_s) * theta_dot;
         }
         self
@@ -359,16 +361,16 @@ impl FixedAxis {
             omega_b: Vector3::zeros(),
             omega_s: Vector3::zeros(),
             bias_s: Vector3::zeros(),
-            carrier: None,
+            support: None,
         }
     }
 
     /// The body at angle θ and time t, not turning about the axis (θ̇ = 0): only the carrier's rate.
     pub fn placed(&self, t: f64, theta: f64) -> AxisRotation {
-        match self.carrier() {
+        match self.moving_support() {
             None => self.relative(theta),
-            Some(carrier) => {
-                let c = carrier.at(t);
+            Some(support) => {
+                let c = support.at(t);
                 let q = c.q_c * self.attitude(theta);
                 AxisRotation {
                     q,
@@ -376,7 +378,7 @@ impl FixedAxis {
                     omega_b: q.inverse_transform_vector(&c.omega_c_s),
                     omega_s: c.omega_c_s,
                     bias_s: c.omega_c_dot_s,
-                    carrier: Some(c),
+                    support: Some(c),
                 }
             }
         }
@@ -457,7 +459,7 @@ impl FixedAxis {
     /// ω = Ω_c + θ̇ u.
     pub fn required_moment_s(&self, t: f64, form: Form) -> Vector3<f64> {
         let angle = self.angle(t);
-        match (self.carrier(), form) {
+        match (self.moving_support(), form) {
             (None, Form::Space) => self.moment_s(&angle),
             (None, Form::Body) => self.attitude(angle.theta) * self.moment_b(&angle),
             (Some(_), _) => {
@@ -492,7 +494,7 @@ impl FixedAxis {
         let (angle, q) = (*angle, rotation.q);
         let omega_b = rotation.omega_b;
         let h_b = self.inertia_a_b * omega_b;
-        let (m_b, m_s) = match (rotation.carrier, form) {
+        let (m_b, m_s) = match (rotation.support, form) {
             (Some(_), _) => self.moment_in_carrier(rotation, angle.theta_ddot, form),
             (None, Form::Body) => {
                 let m_b = self.moment_b(&angle);
@@ -555,7 +557,7 @@ impl FixedAxis {
                     r_b_b: q.inverse_transform_vector(&r_b_s),
                 }
             }),
-            omega_c_s: rotation.carrier.map(|c| c.omega_c_s),
+            omega_c_s: rotation.support.map(|c| c.omega_c_s),
         }
     }
 }

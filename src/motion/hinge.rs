@@ -80,7 +80,7 @@ impl Hinge {
 
     /// The state at t = 0 in `form`: L = u·H_s = u_b·I_A ω_b (= I_uu θ̇ without a carrier).
     pub fn initial_state(&self, form: Form) -> HingeState {
-        match (form, self.axis.carrier()) {
+        match (form, self.axis.moving_support()) {
             (Form::Body, _) => HingeState::new(self.theta0, self.rate0),
             (Form::Space, None) => HingeState::new(self.theta0, self.i_uu * self.rate0),
             (Form::Space, Some(_)) => {
@@ -97,7 +97,7 @@ impl Hinge {
     fn rotation(&self, t: f64, form: Form, y: &HingeState) -> (f64, AxisRotation) {
         let u_b = self.axis.axis_b().into_inner();
         let placed = self.axis.placed(t, y[0]);
-        let theta_dot = match (form, self.axis.carrier()) {
+        let theta_dot = match (form, self.axis.moving_support()) {
             (Form::Body, _) => y[1],
             (Form::Space, None) => y[1] / self.i_uu,
             (Form::Space, Some(_)) => {
@@ -113,7 +113,7 @@ impl Hinge {
     /// (β = 0, ω ∥ u) and θ̈ = u_b·M_eff,b/I_uu.
     fn theta_ddot(&self, rotation: &AxisRotation, m_eff_b: &Vector3<f64>) -> f64 {
         let u_b = self.axis.axis_b().into_inner();
-        match rotation.carrier {
+        match rotation.support {
             None => u_b.dot(m_eff_b) / self.i_uu,
             Some(_) => {
                 let i_a = self.axis.inertia_a_b();
@@ -175,7 +175,7 @@ impl OdeSystem<2> for HingeSpaceForm<'_> {
         let (theta_dot, rotation) = hinge.rotation(t, Form::Space, y);
         let m_eff_s = rotation.q * hinge.moments.moment_b(t, &rotation.q, &rotation.omega_b);
         let axial = rotation.u_s.dot(&m_eff_s);
-        let l_dot = match rotation.carrier {
+        let l_dot = match rotation.support {
             None => axial,
             Some(c) => {
                 let h_s = rotation.q * (hinge.axis.inertia_a_b() * rotation.omega_b);

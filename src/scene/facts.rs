@@ -15,7 +15,6 @@ use serde::{Deserialize, Serialize};
 
 use super::model::{Motion, Scene};
 use super::oracle::{ClosedForm, Oracle};
-use super::spec::MotionSpec;
 use crate::effects::Effect;
 
 /// One conserved quantity, named by its CSV column.
@@ -70,6 +69,10 @@ pub struct Facts {
     /// `score` measure runs against.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub closed_form: Option<ClosedForm>,
+    /// The axis's support moves in space ([`crate::motion::moving_support`]: a carrier): it does work on the body,
+    /// and the bearing loads are read in space axes (written only when true).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub moving_support: bool,
 }
 
 impl Facts {
@@ -94,9 +97,7 @@ impl Facts {
             _ => true,
         });
         let torque_free = scene.effects.is_empty();
-        let carried = (scene.spec.motion.as_ref())
-            .and_then(MotionSpec::axis)
-            .is_some_and(|a| a.parts.carrier.is_some());
+        let moving_support = (scene.motion.axis()).is_some_and(|a| a.moving_support().is_some());
         use Invariant::*;
         let invariants = match &scene.motion {
             Motion::Free { gyrostat, .. } => {
@@ -117,23 +118,17 @@ impl Facts {
                     kept
                 }
             }
-            Motion::Hinge(_) if carried => vec![],
+            Motion::Hinge(_) if moving_support => vec![],
             Motion::Hinge(_) if torque_free => vec![Energy, HNorm],
             Motion::Hinge(_) if gravity_only => vec![EnergyTotal],
             Motion::Hinge(_) => vec![],
-            Motion::FixedAxis(_) => {
-                let accelerated =
-                    matches!(&scene.spec.motion, Some(MotionSpec::FixedAxis(m)) if m.accel != 0.0);
-                if carried || accelerated {
-                    vec![]
-                } else {
-                    vec![Energy, HNorm]
-                }
-            }
+            Motion::FixedAxis(axis) if moving_support || axis.accel() != 0.0 => vec![],
+            Motion::FixedAxis(_) => vec![Energy, HNorm],
         };
         Facts {
             invariants,
             closed_form: Oracle::for_scene(scene).map(|o| o.kind()),
+            moving_support,
         }
     }
 
@@ -212,11 +207,20 @@ mod tests {
         assert_eq!(closed_form("rod_pendulum"), None);
     }
 
+    /// A carrier moves the axis's support (`MovingSupport`); a prescribed axis fixed in space and a free body have
+    /// none.
+    #[test]
+    fn the_facts_say_when_the_support_moves() {
+        assert!(facts_of("turbine_yawing_aircraft").moving_support);
+        assert!(!facts_of("tilted_disk").moving_support);
+        assert!(!facts_of("tennis_racket").moving_support);
+    }
+
     #[test]
     fn the_conserved_energy_is_t_or_t_plus_v() {
         let facts = |invariants| Facts {
             invariants,
-            closed_form: None,
+            ..Facts::default()
         };
         assert_eq!(facts(vec![Energy, HNorm]).conserved_energy(), Some(Energy));
         assert_eq!(
@@ -230,7 +234,7 @@ mod tests {
     fn the_sidecar_names_the_invariants_by_their_columns() {
         let json = serde_json::to_string(&Facts {
             invariants: vec![EnergyTotal, HSpaceZ],
-            closed_form: None,
+            ..Facts::default()
         })
         .unwrap();
         assert_eq!(json, r#"{"invariants":["energy_total","H_s_z"]}"#);

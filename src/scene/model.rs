@@ -14,7 +14,7 @@ use crate::motion::hinge::Hinge;
 
 use super::spec::{MotionKind, SceneSpec};
 use crate::motion::gyrostat::Gyrostat;
-use crate::sample::{ColumnSet, rotor_columns};
+use crate::sample::ColumnSet;
 
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,8 +86,7 @@ impl Motion {
             };
             let names: Vec<String> = g.rotors().iter().map(|r| r.name.clone()).collect();
             return ColumnSet {
-                rotors: rotor_columns(&names, g.controlled()),
-                wheels: g.controlled(),
+                groups: vec![crate::wheels::columns(&names, g.controlled())],
                 ..ColumnSet::default()
             };
         };
@@ -97,7 +96,11 @@ impl Motion {
             h_s_integrated: matches!(self, Motion::FixedAxis(_)),
             support: true,
             bearings: axis.bearings().is_some(),
-            carrier: axis.carrier().is_some(),
+            groups: axis
+                .moving_support()
+                .map(|s| s.columns())
+                .into_iter()
+                .collect(),
             ..ColumnSet::default()
         }
     }
@@ -114,8 +117,9 @@ impl Motion {
     /// The largest rate (rad/s) the motion has at its start or, for a prescribed spin-up, its end `t_end`: |ω₀|
     /// of a free body, the hinge's θ̇₀, max(|θ̇₀|, |θ̇₀ + α t_end|) of a fixed axis; plus a carrier's largest rate.
     pub fn largest_rate(&self, t_end: f64) -> f64 {
-        let carrier = (self.axis().and_then(FixedAxis::carrier)).map_or(0.0, |c| c.largest_rate());
-        carrier
+        let support =
+            (self.axis().and_then(FixedAxis::moving_support)).map_or(0.0, |s| s.largest_rate());
+        support
             + match self {
                 Motion::Free { omega0_b, .. } => omega0_b.norm(),
                 Motion::FixedAxis(axis) => {

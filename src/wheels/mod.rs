@@ -15,12 +15,14 @@
 //! whose relative spin has reached zero under Coulomb friction sticks while the torque that holds it is within
 //! the breakaway level c + s (no chatter: [`solve`]).
 
+mod columns;
 mod describe;
 mod keys;
 mod law;
 mod solve;
 mod table;
 
+pub use columns::{columns, rotor_columns};
 pub(crate) use keys::wheel_keys;
 pub use keys::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
 pub use law::{AttitudePd, WheelInputs, WheelLaw, WheelTorqueLaw};

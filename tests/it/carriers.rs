@@ -271,14 +271,9 @@ every = 0.1
     assert_refused_writing_nothing(&cases);
 }
 
-#[test]
-fn the_turbine_scenario_plots_its_bearing_loads_in_space_axes() {
-    // scenarios/turbine_yawing_aircraft.toml: C = ½ m r² = 5.4 kg·m², 10 000 rpm, yaw 0.35 rad/s peak; the
-    // gyroscopic couple's peak C ω Ω (Meriam & Kraige art. 7/10) over the bearing span 0.9 m plus half the weight
-    // (588.6 N) bounds |R_A|.
-    let dir = tempfile::tempdir().unwrap();
-    let csv = dir.path().join("turbine.csv");
-    let svg = dir.path().join("turbine.svg");
+/// Runs scenarios/turbine_yawing_aircraft.toml into DIR/turbine.csv: that path and DIR/turbine.svg.
+fn turbine_run(dir: &std::path::Path) -> (std::path::PathBuf, std::path::PathBuf) {
+    let csv = dir.join("turbine.csv");
     let run = eulerdyn([
         "run",
         "scenarios/turbine_yawing_aircraft.toml",
@@ -286,6 +281,34 @@ fn the_turbine_scenario_plots_its_bearing_loads_in_space_axes() {
         csv.to_str().unwrap(),
     ]);
     assert_eq!(run.code, Some(0), "{}", run.stderr);
+    (csv, dir.join("turbine.svg"))
+}
+
+/// The sidecar's facts say the support moves (`moving_support`), and the plot, asked for no panel, draws the
+/// bearings of such a run in space axes (in the spinning body's axes they would turn at the rotor's rate).
+#[test]
+fn a_carried_run_says_its_support_moves_and_plots_its_bearings_in_space_axes() {
+    let dir = tempfile::tempdir().unwrap();
+    let (csv, svg) = turbine_run(dir.path());
+    let sidecar = std::fs::read_to_string(dir.path().join("turbine.csv.meta.json")).unwrap();
+    let sidecar: serde_json::Value = serde_json::from_str(&sidecar).unwrap();
+    assert_eq!(
+        sidecar["facts"]["moving_support"],
+        serde_json::Value::Bool(true)
+    );
+    let out = eulerdyn(["plot", csv.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let figure = std::fs::read_to_string(&svg).unwrap();
+    assert!(figure.contains("Bearing forces on the body, space axes"));
+}
+
+#[test]
+fn the_turbine_scenario_plots_its_bearing_loads_in_space_axes() {
+    // scenarios/turbine_yawing_aircraft.toml: C = ½ m r² = 5.4 kg·m², 10 000 rpm, yaw 0.35 rad/s peak; the
+    // gyroscopic couple's peak C ω Ω (Meriam & Kraige art. 7/10) over the bearing span 0.9 m plus half the weight
+    // (588.6 N) bounds |R_A|.
+    let dir = tempfile::tempdir().unwrap();
+    let (csv, svg) = turbine_run(dir.path());
     let out = eulerdyn([
         "plot",
         csv.to_str().unwrap(),

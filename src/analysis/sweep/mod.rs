@@ -391,7 +391,8 @@ fn plan_total(varied: &[Varied], runs: u64) -> Option<u64> {
 }
 
 /// The table's layout: the optional columns the base scene's motion has, and the `[summary]` columns, each a
-/// column of the base scene's CSV (of every possible column when the base scene alone is not valid).
+/// column of the CSV of the scene with the varied keys at their probe values, or else of the base scene, or else
+/// (neither is valid) one of the scene's own optional columns ([`ColumnSet::ALL`]).
 fn layout(
     base: &SceneSpec,
     template: &SceneTemplate,
@@ -409,6 +410,7 @@ fn layout(
         .spec_with(&probe)
         .ok()
         .and_then(|spec| spec.build().ok())
+        .or_else(|| base.build().ok())
         .map_or(ColumnSet::ALL, |scene| simulate::columns(&scene));
     let columns = columns.columns();
     let names: Vec<&str> = columns.iter().map(|c| c.name.as_ref()).collect();

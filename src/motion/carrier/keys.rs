@@ -51,7 +51,7 @@ impl Part for CarrierSpec {
 
 impl Attach<FixedAxis> for CarrierSpec {
     fn attach(&self, axis: FixedAxis, at: &KeyPath) -> Checked<FixedAxis> {
-        Ok(axis.with_carrier(validate(self, at)?))
+        Ok(axis.with_support(validate(self, at)?))
     }
 }
 

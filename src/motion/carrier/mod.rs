@@ -13,17 +13,24 @@
 //! A carrier that is a vehicle ([`vehicle`]) turns about a point of its own and accelerates; its axis point A then
 //! accelerates at a_A (its attitude, rate and angular acceleration are the same).
 
+mod columns;
 mod describe;
 pub(crate) mod keys;
 pub mod spec;
 pub mod vehicle;
 
+use std::any::Any;
+
 use nalgebra::{UnitQuaternion, Vector3};
 
+use crate::motion::moving_support::{MovingSupport, SupportMotion};
 use crate::profile::Profile;
+use crate::sample::ColumnGroup;
+use crate::text::Description;
+pub use columns::columns;
 use vehicle::Vehicle;
 
-/// A carrier turning about the space axis of `rate_s` at the rate `rate_s`·p(t).
+/// A carrier turning about the space axis of `rate_s` at the rate `rate_s`·p(t): a [`MovingSupport`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Carrier {
     rate_s: Vector3<f64>,
@@ -32,25 +39,12 @@ pub struct Carrier {
     vehicle: Option<Vehicle>,
 }
 
-/// The carrier at one time: its attitude R_c (carrier → space), rate Ω_c and angular acceleration Ω̇_c (space
-/// axes), and in a vehicle the acceleration a_A of the axis point A ([`Vehicle::accel_a_s`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CarrierMotion {
-    /// R_c, carrier → space.
-    pub q_c: UnitQuaternion<f64>,
-    /// Ω_c (rad/s, space axes).
-    pub omega_c_s: Vector3<f64>,
-    /// Ω̇_c (rad/s², space axes).
-    pub omega_c_dot_s: Vector3<f64>,
-    /// a_A (m/s², space axes); `None` without a vehicle (A fixed in space).
-    pub accel_a_s: Option<Vector3<f64>>,
-}
-
 impl Carrier {
     /// A carrier turning at `rate_s` (rad/s, space axes) times the `profile`.
     ///
     /// ```
     /// use eulerdyn::motion::carrier::Carrier;
+    /// use eulerdyn::motion::moving_support::MovingSupport;
     /// use eulerdyn::profile::Profile;
     /// use nalgebra::Vector3;
     /// // A quarter turn about z in one second.
@@ -70,6 +64,7 @@ impl Carrier {
     ///
     /// ```
     /// use eulerdyn::motion::carrier::{Carrier, vehicle::Vehicle};
+    /// use eulerdyn::motion::moving_support::MovingSupport;
     /// use eulerdyn::profile::Profile;
     /// use nalgebra::Vector3;
     /// // Yawing at 2 rad/s: about A itself, A stays put; about a centre 3 m along y, A feels Ω² r = 12 m/s².
@@ -99,15 +94,12 @@ impl Carrier {
     pub fn profile(&self) -> Profile {
         self.profile
     }
+}
 
-    /// The largest rate |r| max|p| (rad/s).
-    pub fn largest_rate(&self) -> f64 {
-        self.rate_s.norm()
-    }
-
+impl MovingSupport for Carrier {
     /// R_c(t) = exp(ψ(t) r̂) with ψ = ∫₀ᵗ p, Ω_c(t) = r p(t), Ω̇_c(t) = r p'(t) (a step's jumps left out) and, in a
     /// vehicle, a_A(t).
-    pub fn at(&self, t: f64) -> CarrierMotion {
+    fn at(&self, t: f64) -> SupportMotion {
         let (p, p_dot, psi) = match (self.profile, self.profile.sine_rad()) {
             (_, Some((omega_f, phase))) => {
                 let (s, c) = (omega_f * t + phase).sin_cos();
@@ -129,13 +121,34 @@ impl Carrier {
             self.rate_s * p,
             self.rate_s * p_dot,
         );
-        CarrierMotion {
+        SupportMotion {
             q_c,
             omega_c_s,
             omega_c_dot_s,
             accel_a_s: (self.vehicle.as_ref())
                 .map(|v| v.accel_a_s(t, &q_c, &omega_c_s, &omega_c_dot_s)),
         }
+    }
+
+    /// |r| max|p| = |r| (every profile's |p| ≤ 1).
+    fn largest_rate(&self) -> f64 {
+        self.rate_s.norm()
+    }
+
+    fn describe(&self, mass: f64, w: &mut Description) {
+        describe::lines(self, mass, w);
+    }
+
+    fn columns(&self) -> ColumnGroup {
+        columns::columns()
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+
+    fn same_as(&self, other: &dyn MovingSupport) -> bool {
+        other.as_any().downcast_ref::<Self>() == Some(self)
     }
 }
 
@@ -162,6 +175,16 @@ mod tests {
         assert_relative_eq!(r_dot, now.omega_c_s.cross_matrix() * r(t), epsilon = 1e-9);
         let rate_dot = (carrier.at(t + h).omega_c_s - carrier.at(t - h).omega_c_s) / (2.0 * h);
         assert_relative_eq!(rate_dot, now.omega_c_dot_s, epsilon = 1e-9);
+    }
+
+    /// Two supports are equal through the trait when they are the same kind with equal values (what `FixedAxis`'s
+    /// equality asks).
+    #[test]
+    fn supports_compare_by_kind_and_value() {
+        let yaw = |rate| Carrier::new(Vector3::new(0.0, 0.0, rate), Profile::Constant);
+        let (a, b, c) = (yaw(0.5), yaw(0.5), yaw(0.6));
+        let (a, b, c): (&dyn MovingSupport, &dyn MovingSupport, &dyn MovingSupport) = (&a, &b, &c);
+        assert!(a == b && a != c);
     }
 
     /// A step profile turns the carrier by ψ = ∫₀ᵗ p = clamp(t, t_on, t_off) − t_on about r̂, at r while on.

@@ -88,6 +88,7 @@ impl Vehicle {
 mod tests {
     use super::*;
     use crate::motion::carrier::Carrier;
+    use crate::motion::moving_support::MovingSupport;
     use approx::assert_relative_eq;
 
     /// a_A is the second derivative of A's position p_A(t) = D + R_c(t)(−d₀) + ½ a t² (constant a, D fixed in

@@ -13,8 +13,8 @@ use super::{Panel, PlotError};
 use crate::output::events_file::{EventRow, run_events};
 use crate::output::run_csv::RunCsvReader;
 use crate::output::sidecar::Sidecar;
-use crate::sample::rotor_columns;
-use crate::scene::{Facts, MotionKind, MotionSpec};
+use crate::scene::{Facts, MotionKind};
+use crate::wheels::rotor_columns;
 
 /// A derived curve of the drift panel: |x(t) − x(0)| / |x(0)| (or |x(t) − x(0)| when x(0) = 0).
 #[derive(Debug, Clone)]
@@ -45,8 +45,6 @@ pub(super) struct SceneFacts {
     pub(super) motion: MotionKind,
     /// What the scene conserves (the sidecar's `facts`), `None` in a sidecar written before 0.2.
     pub(super) facts: Option<Facts>,
-    /// The axis is in a turning carrier (`motion.carrier`): its bearing loads are drawn in space axes.
-    pub(super) carried: bool,
 }
 
 /// The curves read from a run's CSV, ready to draw.
@@ -217,7 +215,7 @@ pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     }
     let sidecar = Sidecar::read(path).ok();
     let facts = sidecar.as_ref().map(scene_facts);
-    let carried = facts.as_ref().is_some_and(|f| f.carried);
+    let carried = (facts.as_ref().and_then(|f| f.facts.as_ref())).is_some_and(|f| f.moving_support);
     let mut series = read_rows(RunCsvReader::open(path)?, panels, carried)?;
     series.scene = facts;
     series.events = run_events(path, sidecar.as_ref())?;
@@ -448,8 +446,5 @@ fn scene_facts(sidecar: &Sidecar) -> SceneFacts {
         frame: sidecar.solver.frame.clone(),
         motion: sidecar.scene.motion,
         facts: sidecar.facts.clone(),
-        carried: (sidecar.scene.spec.motion.as_ref())
-            .and_then(MotionSpec::axis)
-            .is_some_and(|a| a.parts.carrier.is_some()),
     }
 }

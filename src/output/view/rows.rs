@@ -10,7 +10,7 @@
 use std::io::Read;
 
 use crate::output::run_csv::{CsvInputError, RunCsvReader};
-use crate::sample::rotor_columns;
+use crate::wheels::rotor_columns;
 
 /// The most rows a page carries (see the module documentation for which).
 pub const MAX_DRAWN_ROWS: usize = 10_000;

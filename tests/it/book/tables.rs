@@ -2,8 +2,10 @@
 //! columns from `eulerdyn::sample`'s column sets, the commands' flags from their clap definitions (`--help`). Each
 //! sits in its book file between `<!-- generated: NAME … -->` and `<!-- end generated: NAME -->`.
 
-use eulerdyn::sample::{BASE_COLUMNS, Column, ColumnSet, rotor_columns};
+use eulerdyn::motion::carrier;
+use eulerdyn::sample::{BASE_COLUMNS, Column, ColumnSet};
 use eulerdyn::scene::reference::keys;
+use eulerdyn::wheels::rotor_columns;
 
 use super::blessing;
 use crate::common::{eulerdyn, repo_path};
@@ -100,19 +102,15 @@ pub(super) fn column_table() -> String {
                 ..none.clone()
             }),
         ),
-        (
-            "`carrier`",
-            only(ColumnSet {
-                carrier: true,
-                ..none.clone()
-            }),
-        ),
+        ("`carrier`", carrier::columns().columns),
         (
             "`rotors`",
             rotor_columns(&["NAME".to_string()], true).to_vec(),
         ),
     ];
-    let all = ColumnSet::ALL.columns().len() + rotor_columns(&["NAME".to_string()], true).len();
+    let all = ColumnSet::ALL.columns().len()
+        + carrier::columns().columns.len()
+        + rotor_columns(&["NAME".to_string()], true).len();
     assert_eq!(
         groups.iter().map(|(_, g)| g.len()).sum::<usize>(),
         all,

@@ -1,0 +1,79 @@
+//! A body's wheels' columns, written after all others: per wheel `<name>_spin` (rad/s), `<name>_h` (N·m·s) and
+//! `<name>_torque` (N·m), and under control `<name>_torque_cmd` and `<name>_friction` (N·m).
+
+use std::borrow::Cow;
+
+use crate::sample::{Column, ColumnGroup, MAX_ROTORS, Sample};
+
+/// The columns' suffixes, units and meanings: the first three for every rotor, all five under control.
+const SUFFIXES: [(&str, &str, &str); 5] = [
+    ("spin", "rad/s", "rotor spin relative to the body"),
+    (
+        "h",
+        "N*m*s",
+        "rotor's axial moment of momentum J (a.omega + spin)",
+    ),
+    ("torque", "N*m", "motor torque on the rotor"),
+    (
+        "torque_cmd",
+        "N*m",
+        "motor torque commanded (before the limits)",
+    ),
+    ("friction", "N*m", "friction torque on the rotor"),
+];
+
+/// The columns of rotors named `names`, in order: `<name>_spin`, `<name>_h`, `<name>_torque`, and with
+/// `controlled` `<name>_torque_cmd` and `<name>_friction`.
+///
+/// ```
+/// let columns = eulerdyn::wheels::rotor_columns(&["wheel".to_string()], true);
+/// assert_eq!(columns[0].name, "wheel_spin");
+/// assert_eq!(columns.len(), 5);
+/// ```
+pub fn rotor_columns(names: &[String], controlled: bool) -> Vec<Column> {
+    let per_rotor = if controlled { 5 } else { 3 };
+    (names.iter())
+        .flat_map(|name| {
+            SUFFIXES[..per_rotor]
+                .iter()
+                .map(move |&(suffix, unit, meaning)| Column {
+                    name: Cow::Owned(format!("{name}_{suffix}")),
+                    unit,
+                    meaning,
+                })
+        })
+        .collect()
+}
+
+/// The wheels' column group ([`rotor_columns`]), whose values come from each row's [`crate::sample::RotorRows`].
+///
+/// ```
+/// let group = eulerdyn::wheels::columns(&["a".to_string(), "b".to_string()], false);
+/// assert_eq!(group.columns[3].name, "b_spin");
+/// ```
+pub fn columns(names: &[String], controlled: bool) -> ColumnGroup {
+    ColumnGroup {
+        columns: rotor_columns(names, controlled),
+        values: if controlled {
+            wheel_values::<5>
+        } else {
+            wheel_values::<3>
+        },
+    }
+}
+
+/// `WIDTH` values for each wheel the columns name, NaN for a wheel the row lacks.
+fn wheel_values<const WIDTH: usize>(s: &Sample, columns: &[Column], out: &mut Vec<f64>) {
+    let rows = s.rotors.unwrap_or_default();
+    let fields: [&[f64; MAX_ROTORS]; 5] = [
+        &rows.spin,
+        &rows.h,
+        &rows.torque,
+        &rows.torque_cmd,
+        &rows.friction,
+    ];
+    for k in 0..columns.len() / WIDTH {
+        let value = |v: &&[f64; MAX_ROTORS]| if k < rows.n { v[k] } else { f64::NAN };
+        out.extend(fields[..WIDTH].iter().map(value));
+    }
+}
