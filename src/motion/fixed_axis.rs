@@ -7,13 +7,13 @@
 //! ([`crate::motion::carrier::vehicle`]) A accelerates at a_A: the rotation is the same, C's acceleration gains a_A
 //! and the moment about A gains ρ × m a_A; every moment here is about A.
 
+use std::sync::Arc;
+
 use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::frames::Form;
 use crate::kinetics::kinetic_energy;
-use std::sync::Arc;
-
 use crate::motion::moving_support::{MovingSupport, SupportMotion};
 use crate::motion::support::Bearings;
 use crate::sample::{BearingLoads, Sample, SupportLoads};

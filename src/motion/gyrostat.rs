@@ -328,15 +328,12 @@ impl Gyrostat {
         let law = (self.law.as_ref()).map(|law| {
             let q = UnitQuaternion::new_normalize(*q);
             let spins = &spins[..self.rotors.len()];
-            law.commands(
-                spins.len(),
-                &WheelInputs {
-                    t,
-                    q: &q,
-                    omega_b,
-                    spins,
-                },
-            )
+            law.commands(&WheelInputs {
+                t,
+                q: &q,
+                omega_b,
+                spins,
+            })
         });
         let mut commands = [0.0; MAX_ROTORS];
         let mut wheels = [Wheel::default(); MAX_ROTORS];

@@ -1,7 +1,7 @@
 //! The motions eulerdyn simulates: prescribed rotation about a fixed axis, and free rotation — by the Runge–Kutta
 //! right-hand sides of both forms of Euler's equation ([`free`]), by Lie–Poisson splitting ([`lie_poisson`]), or in
-//! closed form ([`exact_flow`]); a body with rotors inside it ([`gyrostat`]). An axis's support may move ([`moving_support`]: a
-//! [`carrier`]).
+//! closed form ([`exact_flow`]); a body with rotors inside it ([`gyrostat`]). An axis's support may move
+//! ([`moving_support`]: a [`carrier`]).
 
 pub mod carrier;
 pub mod exact_flow;

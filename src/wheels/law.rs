@@ -57,8 +57,10 @@ impl WheelTorqueLaw {
         }
     }
 
-    /// The commands of `n` wheels; NaN for every wheel when the law gives another number of torques.
-    pub fn commands(&self, n: usize, now: &WheelInputs<'_>) -> Vec<f64> {
+    /// The commands of the wheels whose spins `now` gives, one each; NaN for every wheel when the law gives
+    /// another number of torques.
+    pub fn commands(&self, now: &WheelInputs<'_>) -> Vec<f64> {
+        let n = now.spins.len();
         let torques = self.law.torques(now);
         match torques.len() == n {
             true => torques,

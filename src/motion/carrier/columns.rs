@@ -22,7 +22,8 @@ const CARRIER_COLUMNS: [Column; 3] = [
     ),
 ];
 
-/// `Omega_c_s_x,Omega_c_s_y,Omega_c_s_z`: Ω_c from the support's loads of each row ([`crate::sample::SupportLoads`]).
+/// `Omega_c_s_x,Omega_c_s_y,Omega_c_s_z`: Ω_c from the support's loads of each row
+/// ([`crate::sample::SupportLoads`]).
 ///
 /// ```
 /// let group = eulerdyn::motion::carrier::columns();

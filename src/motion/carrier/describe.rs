@@ -5,7 +5,8 @@ use super::Carrier;
 use crate::motion::moving_support::MovingSupport;
 use crate::text::{Description, line, vec3};
 
-/// Appends the carrier's lines to `w` for a body of mass `mass` (kg) on the axis it holds ([`MovingSupport::describe`]).
+/// Appends the carrier's lines to `w` for a body of mass `mass` (kg) on the axis it holds
+/// ([`MovingSupport::describe`]).
 ///
 /// ```
 /// use eulerdyn::motion::carrier::Carrier;
