@@ -208,3 +208,28 @@ impl Profile {
         Ok(self)
     }
 }
+
+/// A time profile's five keys of a table that has them (`@sine; @step;` and `profile`), read and set as one
+/// [`ProfileKeys`].
+macro_rules! profile_keys {
+    ($($file:ty),*) => {$(
+        impl $file {
+            pub(crate) fn profile_keys(&self) -> $crate::profile::ProfileKeys {
+                $crate::profile::ProfileKeys {
+                    profile: self.profile,
+                    freq_hz: self.freq_hz,
+                    phase_deg: self.phase_deg,
+                    t_on: self.t_on,
+                    t_off: self.t_off,
+                }
+            }
+
+            pub(crate) fn set_profile_keys(&mut self, keys: $crate::profile::ProfileKeys) {
+                (self.profile, self.freq_hz, self.phase_deg) = (keys.profile, keys.freq_hz, keys.phase_deg);
+                (self.t_on, self.t_off) = (keys.t_on, keys.t_off);
+            }
+        }
+    )*};
+}
+
+pub(crate) use profile_keys;

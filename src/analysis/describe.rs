@@ -12,7 +12,6 @@ use crate::frames::Form;
 use crate::method::Method;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
-use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::motion::hinge::Hinge;
 use crate::profile::Profile;
 use crate::sample::{BASE_COLUMNS, Sample};
@@ -20,62 +19,7 @@ use crate::scene::{Motion, Scene};
 use crate::simulate;
 pub use crate::text::{Description, for_people};
 use crate::text::{fixed, line, plain, turns, vec3};
-
-/// The rotors: each wheel's axis, J, initial relative spin and drive; the body's inertia is with them locked.
-fn rotor_lines(w: &mut Description, gyrostat: &Gyrostat) {
-    line(
-        w,
-        "rotors",
-        &format!(
-            "{} wheel(s) inside the body; the inertia above is the body with them locked, H = I omega + sum J Omega a",
-            gyrostat.rotors().len()
-        ),
-    );
-    for r in gyrostat.rotors() {
-        let drive = match &r.drive {
-            Drive::Accel(alpha) if *alpha == 0.0 => "constant relative spin".to_string(),
-            Drive::Accel(alpha) => format!("spin prescribed, d(Omega)/dt = {alpha} rad/s^2"),
-            Drive::Torque(_) => {
-                "driven by its motor torque (the body feels the opposite)".to_string()
-            }
-            Drive::Table(table) => format!(
-                "motor torque commanded by the table {}",
-                table.path().display()
-            ),
-            Drive::Law => format!(
-                "motor torque commanded by the wheel law \"{}\"",
-                gyrostat.law().map_or("", |law| law.name.as_str())
-            ),
-            Drive::Free => "free: no motor (friction only)".to_string(),
-        };
-        line(
-            w,
-            "",
-            &format!(
-                "{}: axis {} (body axes), J = {} kg*m^2, Omega(0) = {} rad/s relative, {drive}",
-                r.name,
-                vec3(&r.axis_b.into_inner()),
-                for_people(r.inertia),
-                for_people(r.spin0)
-            ),
-        );
-        r.control.describe(w);
-        if let Some(u) = &r.imbalance {
-            line(
-                w,
-                "",
-                &format!(
-                    "  imbalance: static {} kg*m (a force U_s Omega^2), dynamic {} kg*m^2 (a couple U_d Omega^2), \
-                     turning with the wheel from body direction {} at t = 0; wheel centre {} m from the moment center",
-                    for_people(u.static_kgm),
-                    for_people(u.dynamic_kgm2),
-                    vec3(&u.w2_b),
-                    vec3(&u.r_b)
-                ),
-            );
-        }
-    }
-}
+use crate::wheels::gyrostat::Gyrostat;
 
 /// The angle (degrees) between `axis` and the nearest principal direction of `principal`, and the number (1-based)
 /// of that principal axis. Principal moments equal to 1e-9 relative span a plane (or all of space) of principal
@@ -321,7 +265,7 @@ fn free_motion_lines(
         ),
     }
     if let Some(g) = gyrostat {
-        rotor_lines(w, g);
+        g.describe(w);
     }
     let h_rotors_b = gyrostat.map_or(Vector3::zeros(), |g| g.initial_rotor_momentum_b());
     let h_b = free.inertia_b() * omega0_b + h_rotors_b;
@@ -553,21 +497,10 @@ fn support_lines(w: &mut Description, scene: &Scene) {
 /// The effects, one a line, then each wheel's imbalance (a moment on the body turning with the wheel), or why
 /// there are none.
 fn effect_lines(w: &mut Description, scene: &Scene) {
-    let imbalances: Vec<String> = match &scene.motion {
+    let imbalances = match &scene.motion {
         Motion::Free {
             gyrostat: Some(g), ..
-        } => (g.rotors().iter())
-            .filter_map(|r| {
-                let u = r.imbalance.as_ref()?;
-                Some(format!(
-                    "imbalance of rotor {}: static {} kg*m, dynamic {} kg*m^2 (a force and a couple turning with the \
-                     wheel, growing as its spin squared)",
-                    r.name,
-                    for_people(u.static_kgm),
-                    for_people(u.dynamic_kgm2)
-                ))
-            })
-            .collect(),
+        } => g.imbalance_effects(),
         _ => Vec::new(),
     };
     if scene.effects.is_empty() && imbalances.is_empty() {

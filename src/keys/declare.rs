@@ -114,10 +114,7 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// Each key is `STORAGE FIELD [as "NAME"]: TYPE = KEY;` — `opt` (an `Option<TYPE>`, left out when absent), `arr`
 /// (an `Option` of an array of exactly N numbers), `req` (a plain `TYPE` serde requires), `list` (a `Vec<TYPE>`,
 /// an array of tables), `part` (a capability's inline table: `TYPE` is its typed spec, a [`Part`](super::Part)) —
-/// or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`), or `@PATH;` for a
-/// capability's own keys: the macro at PATH is called with the struct's name, the declaration so far and the rest,
-/// and calls `file_table!(@munch …)` back with its keys in place (and may add the struct's methods for them, e.g.
-/// `crate::wheels::wheel_keys`).
+/// or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
 /// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`],
 /// with its parts' tables), and `given()`: the names of the keys the file gives, in order. An optional
 /// `either { A, B: "message"; … }` after the keys declares keys that exclude each other: `exclusive()` refuses
@@ -138,9 +135,6 @@ macro_rules! file_table {
             opt t_on: f64 = $crate::keys::key("number", "s", "0", "", "`step` only");
             opt t_off: f64 = $crate::keys::key("number", "s", "never", "", "`step` only; > t_on");
             $($rest)*);
-    };
-    (@munch {$meta:tt $vis:vis struct $name:ident $($h:tt)*} $done:tt $parts:tt @$($splice:ident)::+; $($rest:tt)*) => {
-        $($splice)::+! { $name {$meta $vis struct $name $($h)*} $done $parts $($rest)* }
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [$(rename = $rename,)? skip_serializing_if = "Option::is_none"]

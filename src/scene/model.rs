@@ -13,8 +13,8 @@ use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 
 use super::spec::{MotionKind, SceneSpec};
-use crate::motion::gyrostat::Gyrostat;
 use crate::sample::ColumnSet;
+use crate::wheels::gyrostat::Gyrostat;
 
 /// `[solver]`, validated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,9 +84,8 @@ impl Motion {
             else {
                 return ColumnSet::default();
             };
-            let names: Vec<String> = g.rotors().iter().map(|r| r.name.clone()).collect();
             return ColumnSet {
-                groups: vec![crate::wheels::columns(&names, g.controlled())],
+                groups: vec![g.columns()],
                 ..ColumnSet::default()
             };
         };

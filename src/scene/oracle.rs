@@ -7,12 +7,11 @@ use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use crate::effects::Effect;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::Axes;
-use crate::motion::gyrostat::{Drive, Gyrostat};
 use crate::profile::Profile;
+use crate::wheels::gyrostat::Gyrostat;
 use serde::{Deserialize, Serialize};
 
 use super::model::{Motion, Scene};
-use crate::wheels::WheelControl;
 
 /// Which closed form applies to a scene, by the name the sidecar's `facts` gives it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -195,20 +194,11 @@ impl Oracle {
 fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> Option<Oracle> {
     let inertia = g.body().inertia_b();
     let diagonal = (0..3).all(|i| (0..3).all(|j| i == j || inertia[(i, j)] == 0.0));
-    let steady = |r: &crate::motion::gyrostat::Rotor| {
-        let on_z = r.axis_b.x == 0.0 && r.axis_b.y == 0.0;
-        let constant = match &r.drive {
-            Drive::Accel(alpha) => *alpha == 0.0,
-            Drive::Torque(tau) => tau.is_zero(),
-            Drive::Free => true,
-            Drive::Table(_) | Drive::Law => false,
-        };
-        on_z && constant && r.imbalance.is_none() && r.control == WheelControl::default()
-    };
     let applies = scene.effects.is_empty()
         && diagonal
         && inertia[(0, 0)] == inertia[(1, 1)]
-        && g.rotors().iter().all(steady);
+        && (g.rotors().iter())
+            .all(|r| r.axis_b.x == 0.0 && r.axis_b.y == 0.0 && r.spins_steadily());
     if !applies {
         return None;
     }

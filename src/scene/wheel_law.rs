@@ -2,10 +2,9 @@
 
 use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
-use super::spec::RotorDrive;
 use super::validate::InvalidScene;
-use crate::keys::{Checked, invalid};
-use crate::wheels::{WheelInputs, WheelLaw, WheelTorqueLaw};
+use crate::keys::invalid;
+use crate::wheels::WheelLaw;
 
 impl Scene {
     /// The scene with the wheel law `law` commanding the motor torque of every wheel (`[[body.rotor]]`), named
@@ -34,8 +33,6 @@ impl Scene {
         name: &str,
         law: impl WheelLaw + 'static,
     ) -> Result<Scene, InvalidScene> {
-        let rotors = || KeyPath::root().key("body").key("rotor");
-        self.wheels_take_a_law(name)?;
         let Motion::Free {
             gyrostat: Some(g),
             omega0_b,
@@ -43,65 +40,12 @@ impl Scene {
         } = &mut self.motion
         else {
             return invalid(
-                rotors(),
+                KeyPath::root().key("body").key("rotor"),
                 format!("the wheel law \"{name}\" needs a free body with wheels ([[body.rotor]])"),
             );
         };
-        let spins0: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-        let now = WheelInputs {
-            t: 0.0,
-            q: &self.attitude0,
-            omega_b: omega0_b,
-            spins: &spins0,
-        };
-        let given = law.torques(&now).len();
-        if given != spins0.len() {
-            return invalid(
-                rotors(),
-                format!(
-                    "the wheel law \"{name}\" gives {given} torque(s), the body has {} wheel(s): one torque per \
-                     wheel, in the scene's order",
-                    spins0.len()
-                ),
-            );
-        }
-        let law = WheelTorqueLaw::new(name, law);
-        **g = (**g).clone().with_law(law).map_err(|e| InvalidScene {
-            key: rotors(),
-            problem: e.to_string(),
-        })?;
+        let start = (&self.attitude0, &*omega0_b);
+        **g = g.take_law(&self.spec.body.rotor, name, law, start)?;
         Ok(self)
-    }
-
-    /// Whether every wheel can take the law `name`: none has its own driver.
-    fn wheels_take_a_law(&self, name: &str) -> Checked<()> {
-        for (k, rotor) in self.spec.body.rotor.iter().enumerate() {
-            let driver = match rotor.drive {
-                RotorDrive::ConstantSpin => continue,
-                RotorDrive::SpinAccel(_) => "spin_accel",
-                RotorDrive::Torque { .. } => "torque",
-                RotorDrive::Table(_) => "torque_table",
-                RotorDrive::Free => "mode",
-            };
-            let wheel = rotor.name.clone().unwrap_or_else(|| format!("rotor{k}"));
-            return invalid(
-                KeyPath::root()
-                    .key("body")
-                    .key("rotor")
-                    .index(k)
-                    .key(driver),
-                format!(
-                    "the wheel `{wheel}` has its own driver (`{driver}`), so the wheel law \"{name}\" cannot drive \
-                     it: remove `{driver}` or give the law only a body whose wheels have no driver"
-                ),
-            );
-        }
-        if name.trim().is_empty() {
-            return invalid(
-                KeyPath::root().key("body").key("rotor"),
-                "a wheel law needs a name (what check and the sidecar call it)",
-            );
-        }
-        Ok(())
     }
 }

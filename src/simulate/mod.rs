@@ -18,11 +18,11 @@ use crate::method::Method;
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
-use crate::motion::gyrostat::{self, Gyrostat, GyrostatForm};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::{ColumnSet, Sample};
 use crate::scene::{Motion, Scene};
+use crate::wheels::gyrostat::{self, Gyrostat, GyrostatForm};
 
 mod advice;
 mod events;

@@ -3,6 +3,7 @@
 
 use std::borrow::Cow;
 
+use super::gyrostat::Gyrostat;
 use crate::sample::{Column, ColumnGroup, MAX_ROTORS, Sample};
 
 /// The columns' suffixes, units and meanings: the first three for every rotor, all five under control.
@@ -59,6 +60,15 @@ pub fn columns(names: &[String], controlled: bool) -> ColumnGroup {
         } else {
             wheel_values::<3>
         },
+    }
+}
+
+impl Gyrostat {
+    /// The wheels' columns ([`columns`]): with each wheel's command and friction when some wheel is under
+    /// control ([`Gyrostat::controlled`]).
+    pub fn columns(&self) -> ColumnGroup {
+        let names: Vec<String> = self.rotors().iter().map(|r| r.name.clone()).collect();
+        columns(&names, self.controlled())
     }
 }
 

@@ -1,148 +1,134 @@
-//! A wheel's keys in `[[body.rotor]]`, declared here once and spliced into the rotor's table
-//! (`@crate::wheels::wheel_keys;`): `torque_table`, `mode = "free"`, `max_torque`, `max_speed_rpm` and
-//! `friction = { coulomb, viscous, stribeck = { torque, speed } }` (the scene file's form and the typed spec are
-//! the same types), and their validation into a [`WheelControl`].
+//! `[[body.rotor]]`'s keys, declared once ([`RotorFile`]: the file form and the reference's table), and
+//! [`RotorSpec`] as a [`Part`]: read from that table (its required keys, at most one drive, the motor's profile
+//! keys only with `torque`) and written back. `[body]` registers it with one line, `list rotor: RotorFile`.
 
-use serde::{Deserialize, Serialize};
+use super::limits::WheelMode;
+use super::spec::{RotorDrive, RotorSpec};
+use super::{FrictionKeys, WheelKeys};
+use crate::keys::{
+    Checked, KeyPath, Part, Table, file_table, invalid, key, position, profile, required,
+};
+use crate::profile::{Profile, ProfileKind, profile_keys};
 
-use super::{Friction, RPM, WheelControl};
-use crate::keys::{Checked, KeyPath, finite, invalid, positive};
-
-/// Splices a wheel's keys into a table that `file_table!` declares (at `@crate::wheels::wheel_keys;`), and gives
-/// that table `wheel_keys()` and `set_wheel_keys()`: its limits and friction as [`WheelKeys`] and back. The drive
-/// keys (`torque_table`, `mode`) are read with the rotor's other drives.
-macro_rules! wheel_keys {
-    ($name:ident $head:tt $done:tt $parts:tt $($rest:tt)*) => {
-        $crate::keys::file_table!(@munch $head $done $parts
-            opt torque_table: std::path::PathBuf = $crate::keys::key("path", "–", "none", "", "instead of `torque`: the motor torque commanded by a table (header `t,torque`; linear between rows), relative to the scene file");
-            opt mode: $crate::wheels::WheelMode = $crate::keys::key("\"free\"", "–", "held", "", "`\"free\"`: no motor, the wheel spins freely (friction only); without a driver a wheel holds its relative spin");
-            opt max_torque: f64 = $crate::keys::key("number", "N·m", "none", "", "> 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)");
-            opt max_speed_rpm: f64 = $crate::keys::key("number", "rpm", "none", "", "> 0: the relative spin's limit; at it the motor can only slow the wheel");
-            opt friction: $crate::wheels::FrictionKeys = $crate::keys::key("{ coulomb, viscous, stribeck = { torque, speed } }", "N·m, N·m·s, (N·m, rad/s)", "none", "", "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω");
-            $($rest)*);
-
-        impl $name {
-            /// The wheel's limits and friction as the table gives them.
-            pub(crate) fn wheel_keys(&self) -> $crate::wheels::WheelKeys {
-                $crate::wheels::WheelKeys {
-                    max_torque: self.max_torque,
-                    max_speed_rpm: self.max_speed_rpm,
-                    friction: self.friction,
-                }
-            }
-
-            /// The table with the wheel's limits and friction `keys`.
-            pub(crate) fn set_wheel_keys(&mut self, keys: &$crate::wheels::WheelKeys) {
-                self.max_torque = keys.max_torque;
-                self.max_speed_rpm = keys.max_speed_rpm;
-                self.friction = keys.friction;
-            }
-        }
-    };
+file_table! {
+    /// One `[[body.rotor]]`.
+    pub(crate) struct RotorFile(pub(super)) "[[body.rotor]]",
+        "a wheel spinning inside the body about an axis fixed in it (free motion or a pivot only)" {
+        opt name: String = key("string", "–", "rotor0, rotor1, …", "", "the prefix of its columns: letters, digits, `_`; unique");
+        arr axis: [f64; 3] = key("[x, y, z]", "–", "required", "", "spin axis in body axes (normalised, not zero)");
+        opt inertia: f64 = key("number", "kg·m²", "required", "", "J about the spin axis, > 0; `[body]` already holds J a aᵀ (wheels locked)");
+        opt spin: f64 = key("number", "rad/s", "0", "", "Ω at t = 0, relative to the body");
+        opt spin_accel: f64 = key("number", "rad/s²", "none", "", "Ω(t) = spin + spin_accel·t prescribed; the motor torque is an output");
+        opt torque: f64 = key("number", "N·m", "none", "", "instead of `spin_accel`: the motor torque on the wheel (the body feels its opposite); neither: Ω stays constant");
+        opt profile: ProfileKind = profile("the motor torque's profile, as a torque effect's");
+        @sine;
+        @step;
+        opt torque_table: std::path::PathBuf = key("path", "–", "none", "", "instead of `torque`: the motor torque commanded by a table (header `t,torque`; linear between rows), relative to the scene file");
+        opt mode: WheelMode = key("\"free\"", "–", "held", "", "`\"free\"`: no motor, the wheel spins freely (friction only); without a driver a wheel holds its relative spin");
+        opt max_torque: f64 = key("number", "N·m", "none", "", "> 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)");
+        opt max_speed_rpm: f64 = key("number", "rpm", "none", "", "> 0: the relative spin's limit; at it the motor can only slow the wheel");
+        opt friction: FrictionKeys = key("{ coulomb, viscous, stribeck = { torque, speed } }", "N·m, N·m·s, (N·m, rad/s)", "none", "", "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω");
+        arr at: [f64; 3] = position("[0, 0, 0]", "the wheel's centre");
+        opt imbalance_static_gmm: f64 = key("number", "g·mm", "0", "", "≥ 0: U_s = m·e, a force U_s Ω² at `at` turning with the wheel");
+        opt imbalance_dynamic_gmm2: f64 = key("number", "g·mm²", "0", "", "≥ 0: U_d, a couple U_d Ω² turning with the wheel");
+    }
 }
 
-pub(crate) use wheel_keys;
+profile_keys!(RotorFile);
 
-/// `friction.stribeck`: the extra breakaway torque (N·m) and the speed over which it fades (rad/s).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct StribeckKeys {
-    /// N·m.
-    pub torque: f64,
-    /// rad/s.
-    pub speed: f64,
-}
+impl Part for RotorSpec {
+    type File = RotorFile;
+    const TABLE: Table = RotorFile::TABLE;
 
-/// `friction`: Coulomb (N·m), viscous (N·m·s) and Stribeck friction, each absent as zero.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FrictionKeys {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    /// Coulomb level (N·m).
-    pub coulomb: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    /// Viscous coefficient (N·m·s).
-    pub viscous: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    /// Stribeck breakaway.
-    pub stribeck: Option<StribeckKeys>,
-}
-
-/// `mode`: `"free"`, a wheel without a motor.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum WheelMode {
-    /// No motor: the wheel spins freely.
-    Free,
-}
-
-/// A wheel's limits and friction as the scene gives them (absent: none).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct WheelKeys {
-    /// `max_torque` (N·m, > 0).
-    pub max_torque: Option<f64>,
-    /// `max_speed_rpm` (rpm, > 0): the limit of the relative spin.
-    pub max_speed_rpm: Option<f64>,
-    /// `friction`.
-    pub friction: Option<FrictionKeys>,
-}
-
-impl WheelKeys {
-    /// The wheel's limits and friction, validated at `table` (its `[[body.rotor]]`): `max_torque` (N·m) and
-    /// `max_speed_rpm` > 0, each friction level ≥ 0 and the Stribeck speed > 0. A limit needs a motor that a law or
-    /// a table may command: `motorless` says why the wheel has none (`spin_accel`, `mode = "free"`).
-    pub(crate) fn validate(
-        &self,
-        table: &KeyPath,
-        motorless: Option<&str>,
-    ) -> Checked<WheelControl> {
-        let key = |name: &str| table.clone().key(name);
-        let limits = [
-            ("max_torque", self.max_torque, "N*m"),
-            ("max_speed_rpm", self.max_speed_rpm, "rpm"),
-        ];
-        for (name, value, unit) in limits {
-            let Some(value) = value else { continue };
-            positive(key(name), value, unit)?;
-            if let Some(why) = motorless {
+    /// One `[[body.rotor]]` (its table at `at`): its required keys, at most one drive, and the motor's profile
+    /// keys only with `torque`.
+    fn read(doc: &RotorFile, at: &KeyPath) -> Checked<Self> {
+        let key = |name: &str| at.clone().key(name);
+        let kind = "a rotor";
+        let drive = drive(at, doc)?;
+        if !matches!(drive, RotorDrive::Torque { .. }) {
+            const PROFILE: [&str; 5] = ["profile", "freq_hz", "phase_deg", "t_on", "t_off"];
+            if let Some(name) = doc.given().into_iter().find(|k| PROFILE.contains(k)) {
                 return invalid(
                     key(name),
-                    format!("`{name}` limits a wheel's motor, but {why}"),
+                    format!(
+                        "`{name}` is the motor torque's profile: it applies with `torque` only"
+                    ),
                 );
             }
         }
-        Ok(WheelControl {
-            max_torque: self.max_torque.unwrap_or(f64::INFINITY),
-            max_speed: self.max_speed_rpm.map_or(f64::INFINITY, |rpm| rpm * RPM),
-            friction: self
-                .friction
-                .unwrap_or_default()
-                .validate(&key("friction"))?,
+        Ok(RotorSpec {
+            name: doc.name.clone(),
+            axis: required(key("axis"), doc.axis, kind)?,
+            inertia: required(key("inertia"), doc.inertia, kind)?,
+            spin: doc.spin.unwrap_or(0.0),
+            drive,
+            at: doc.at.unwrap_or([0.0; 3]),
+            imbalance_static_gmm: doc.imbalance_static_gmm.unwrap_or(0.0),
+            imbalance_dynamic_gmm2: doc.imbalance_dynamic_gmm2.unwrap_or(0.0),
+            wheel: WheelKeys {
+                max_torque: doc.max_torque,
+                max_speed_rpm: doc.max_speed_rpm,
+                friction: doc.friction,
+            },
         })
+    }
+
+    fn write(&self) -> RotorFile {
+        let mut file = RotorFile {
+            name: self.name.clone(),
+            axis: Some(self.axis),
+            inertia: Some(self.inertia),
+            spin: Some(self.spin),
+            at: Some(self.at),
+            imbalance_static_gmm: Some(self.imbalance_static_gmm),
+            imbalance_dynamic_gmm2: Some(self.imbalance_dynamic_gmm2),
+            max_torque: self.wheel.max_torque,
+            max_speed_rpm: self.wheel.max_speed_rpm,
+            friction: self.wheel.friction,
+            ..RotorFile::default()
+        };
+        match self.drive {
+            RotorDrive::ConstantSpin => {}
+            RotorDrive::Table(ref path) => file.torque_table = Some(path.clone()),
+            RotorDrive::Free => file.mode = Some(WheelMode::Free),
+            RotorDrive::SpinAccel(accel) => file.spin_accel = Some(accel),
+            RotorDrive::Torque { value, ref profile } => {
+                file.torque = Some(value);
+                file.set_profile_keys(profile.keys());
+            }
+        }
+        file
     }
 }
 
-impl FrictionKeys {
-    /// The friction, validated at `at` (the `friction` key): each level ≥ 0 (absent: 0), the Stribeck speed > 0.
-    fn validate(&self, at: &KeyPath) -> Checked<Friction> {
-        let at_least_zero = |name: KeyPath, v: Option<f64>, unit: &str| -> Checked<f64> {
-            let v = finite(name.clone(), v.unwrap_or(0.0), unit)?;
-            if v < 0.0 {
-                return invalid(name, format!("must be >= 0 ({unit}), got {v}"));
+/// A rotor's drive: at most one of `spin_accel`, `torque`, `torque_table` and `mode = "free"`.
+fn drive(table: &KeyPath, doc: &RotorFile) -> Checked<RotorDrive> {
+    const DRIVES: [&str; 4] = ["spin_accel", "torque", "torque_table", "mode"];
+    let given = doc.given();
+    let mut present = given.into_iter().filter(|k| DRIVES.contains(k));
+    if let (Some(first), Some(second)) = (present.next(), present.next()) {
+        let message = match (first, second) {
+            ("spin_accel", "torque") => {
+                "give either `spin_accel` (a prescribed spin) or `torque` (a motor torque), not both".to_string()
             }
-            Ok(v)
+            _ => format!(
+                "give at most one of `spin_accel`, `torque`, `torque_table` and `mode = \"free\"`: `{first}` and \
+                 `{second}` both drive the wheel"
+            ),
         };
-        let mut friction = Friction {
-            coulomb: at_least_zero(at.clone().key("coulomb"), self.coulomb, "N*m")?,
-            viscous: at_least_zero(at.clone().key("viscous"), self.viscous, "N*m*s")?,
-            ..Friction::default()
-        };
-        if let Some(stribeck) = self.stribeck {
-            let at = at.clone().key("stribeck");
-            friction.stribeck_torque =
-                at_least_zero(at.clone().key("torque"), Some(stribeck.torque), "N*m")?;
-            friction.stribeck_speed = positive(at.key("speed"), stribeck.speed, "rad/s")?;
-        }
-        Ok(friction)
+        return invalid(table.clone().key(second), message);
     }
+    Ok(
+        match (doc.spin_accel, doc.torque, &doc.torque_table, doc.mode) {
+            (Some(accel), ..) => RotorDrive::SpinAccel(accel),
+            (_, Some(value), ..) => RotorDrive::Torque {
+                value,
+                profile: Profile::read(table, &doc.profile_keys(), "a sine torque")?,
+            },
+            (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
+            (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,
+            _ => RotorDrive::ConstantSpin,
+        },
+    )
 }

@@ -1,6 +1,8 @@
-//! Wheels under control: what a reaction wheel's motor is told (a law, a table, nothing), what it can do (a torque
-//! limit, a speed limit) and what it loses (friction). The equations of the body with its wheels are the
-//! gyrostat's ([`crate::motion::gyrostat`]); this folder gives each wheel's torques:
+//! A body's wheels (`[[body.rotor]]`), one capability in one folder: the rotors spinning inside a freely turning
+//! body — their state and equations ([`gyrostat`]), their keys declared once and read (`keys.rs`, `spec.rs`,
+//! `limits.rs`), validated (`validate.rs`), their columns (`columns.rs`) and `check` lines (`describe.rs`) — and
+//! the wheels under control: what a wheel's motor is told (a law, a table, nothing), what it can do (a torque
+//! limit, a speed limit) and what it loses (friction). Each wheel's torques:
 //!
 //! ```text
 //!   τ_cmd                          the command: the wheel law's, the torque table's, 0 for a free wheel
@@ -17,17 +19,24 @@
 
 mod columns;
 mod describe;
+pub mod gyrostat;
 mod keys;
 mod law;
+mod limits;
 mod solve;
+mod spec;
 mod table;
+mod take_law;
+mod validate;
 
 pub use columns::{columns, rotor_columns};
-pub(crate) use keys::wheel_keys;
-pub use keys::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
+pub(crate) use keys::RotorFile;
 pub use law::{AttitudePd, WheelInputs, WheelLaw, WheelTorqueLaw};
+pub use limits::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
 pub use solve::{STICK_SPEED, Wheel, WheelSolve, solve};
+pub use spec::{RotorDrive, RotorSpec};
 pub use table::{WHEEL_TABLE_HEADER, read_wheel_table};
+pub(crate) use validate::validate_rotors;
 
 /// One rpm in rad/s.
 pub const RPM: f64 = std::f64::consts::PI / 30.0;

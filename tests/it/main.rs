@@ -5,6 +5,7 @@ mod balance_grade;
 mod balance_slips;
 mod body;
 mod book;
+mod capability_folders;
 mod carriers;
 mod cli_end_to_end;
 mod cli_usability;

@@ -9,10 +9,10 @@
 
 pub use crate::keys::{Key, Table};
 use crate::scene::spec::file_form::{
-    BodyFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile, RotorFile, SceneFile,
-    ShapeFile,
+    BodyFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile, SceneFile, ShapeFile,
 };
 use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
+use crate::wheels::RotorFile;
 
 /// The tables, in the file form's order: each one's declaration ([`crate::keys::file_table!`]); each lists its
 /// parts' tables, which [`keys`] puts after it.

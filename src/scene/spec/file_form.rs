@@ -10,7 +10,8 @@ use crate::effects::Interpolation;
 use crate::frames::Axes;
 use crate::keys::{file_table, key, position, profile};
 use crate::motion::carrier::spec::CarrierSpec;
-use crate::profile::{ProfileKeys, ProfileKind};
+use crate::profile::{ProfileKind, profile_keys};
+use crate::wheels::RotorFile;
 
 file_table! {
     /// A whole scene, as a scene file writes it.
@@ -41,26 +42,6 @@ file_table! {
     }
     either {
         shape, inertia: "give either `shape` or `inertia`, not both";
-    }
-}
-
-file_table! {
-    /// One `[[body.rotor]]`.
-    pub(in crate::scene) struct RotorFile(pub(super)) "[[body.rotor]]",
-        "a wheel spinning inside the body about an axis fixed in it (free motion or a pivot only)" {
-        opt name: String = key("string", "–", "rotor0, rotor1, …", "", "the prefix of its columns: letters, digits, `_`; unique");
-        arr axis: [f64; 3] = key("[x, y, z]", "–", "required", "", "spin axis in body axes (normalised, not zero)");
-        opt inertia: f64 = key("number", "kg·m²", "required", "", "J about the spin axis, > 0; `[body]` already holds J a aᵀ (wheels locked)");
-        opt spin: f64 = key("number", "rad/s", "0", "", "Ω at t = 0, relative to the body");
-        opt spin_accel: f64 = key("number", "rad/s²", "none", "", "Ω(t) = spin + spin_accel·t prescribed; the motor torque is an output");
-        opt torque: f64 = key("number", "N·m", "none", "", "instead of `spin_accel`: the motor torque on the wheel (the body feels its opposite); neither: Ω stays constant");
-        opt profile: ProfileKind = profile("the motor torque's profile, as a torque effect's");
-        @sine;
-        @step;
-        @crate::wheels::wheel_keys;
-        arr at: [f64; 3] = position("[0, 0, 0]", "the wheel's centre");
-        opt imbalance_static_gmm: f64 = key("number", "g·mm", "0", "", "≥ 0: U_s = m·e, a force U_s Ω² at `at` turning with the wheel");
-        opt imbalance_dynamic_gmm2: f64 = key("number", "g·mm²", "0", "", "≥ 0: U_d, a couple U_d Ω² turning with the wheel");
     }
 }
 
@@ -154,30 +135,7 @@ pub(super) enum EffectKind {
     TorqueTable,
 }
 
-/// A time profile's five keys of a table that has them (`@sine; @step;` and `profile`), read and set as one
-/// [`ProfileKeys`].
-macro_rules! profile_keys {
-    ($($file:ty),*) => {$(
-        impl $file {
-            pub(super) fn profile_keys(&self) -> ProfileKeys {
-                ProfileKeys {
-                    profile: self.profile,
-                    freq_hz: self.freq_hz,
-                    phase_deg: self.phase_deg,
-                    t_on: self.t_on,
-                    t_off: self.t_off,
-                }
-            }
-
-            pub(super) fn set_profile_keys(&mut self, keys: ProfileKeys) {
-                (self.profile, self.freq_hz, self.phase_deg) = (keys.profile, keys.freq_hz, keys.phase_deg);
-                (self.t_on, self.t_off) = (keys.t_on, keys.t_off);
-            }
-        }
-    )*};
-}
-
-profile_keys!(RotorFile, EffectFile);
+profile_keys!(EffectFile);
 
 file_table! {
     /// One `[[effect]]`.

@@ -4,21 +4,20 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile, RotorFile,
-    SceneFile, ShapeFile, ShapeKind,
+    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile, SceneFile,
+    ShapeFile, ShapeKind,
 };
 use super::{
     AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, ConditionSpec, Direction,
     Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind,
-    MotionSpec, PointMassSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
+    MotionSpec, PointMassSpec, RateSpec, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
     TorqueTableSpec,
 };
 use crate::effects::DEFAULT_GRAVITY;
 use crate::frames::Axes;
-use crate::keys::{Checked, invalid, only_keys, required};
+use crate::keys::{Checked, Part, invalid, only_keys, required};
 use crate::profile::Profile;
 use crate::scene::source_map::KeyPath;
-use crate::wheels::WheelMode;
 
 impl SceneFile {
     /// The typed scene, or the first key at fault.
@@ -65,7 +64,7 @@ fn body(doc: BodyFile) -> Checked<BodySpec> {
         })
         .collect::<Checked<_>>()?;
     let rotor = (doc.rotor.iter().enumerate())
-        .map(|(index, r)| rotor(index, r))
+        .map(|(index, r)| RotorSpec::read(r, &key().key("rotor").index(index)))
         .collect::<Checked<_>>()?;
     Ok(BodySpec {
         mass: doc.mass,
@@ -73,65 +72,6 @@ fn body(doc: BodyFile) -> Checked<BodySpec> {
         point_mass,
         rotor,
     })
-}
-
-/// One `[[body.rotor]]`: its required keys, at most one drive, and the motor's profile keys only with `torque`.
-fn rotor(index: usize, doc: &RotorFile) -> Checked<RotorSpec> {
-    let table = KeyPath::root().key("body").key("rotor").index(index);
-    let key = |name: &str| table.clone().key(name);
-    let kind = "a rotor";
-    let drive = rotor_drive(&table, doc)?;
-    if !matches!(drive, RotorDrive::Torque { .. }) {
-        const PROFILE: [&str; 5] = ["profile", "freq_hz", "phase_deg", "t_on", "t_off"];
-        if let Some(name) = doc.given().into_iter().find(|k| PROFILE.contains(k)) {
-            return invalid(
-                key(name),
-                format!("`{name}` is the motor torque's profile: it applies with `torque` only"),
-            );
-        }
-    }
-    Ok(RotorSpec {
-        name: doc.name.clone(),
-        axis: required(key("axis"), doc.axis, kind)?,
-        inertia: required(key("inertia"), doc.inertia, kind)?,
-        spin: doc.spin.unwrap_or(0.0),
-        drive,
-        at: doc.at.unwrap_or([0.0; 3]),
-        imbalance_static_gmm: doc.imbalance_static_gmm.unwrap_or(0.0),
-        imbalance_dynamic_gmm2: doc.imbalance_dynamic_gmm2.unwrap_or(0.0),
-        wheel: doc.wheel_keys(),
-    })
-}
-
-/// A rotor's drive: at most one of `spin_accel`, `torque`, `torque_table` and `mode = "free"`.
-fn rotor_drive(table: &KeyPath, doc: &RotorFile) -> Checked<RotorDrive> {
-    const DRIVES: [&str; 4] = ["spin_accel", "torque", "torque_table", "mode"];
-    let given = doc.given();
-    let mut present = given.into_iter().filter(|k| DRIVES.contains(k));
-    if let (Some(first), Some(second)) = (present.next(), present.next()) {
-        let message = match (first, second) {
-            ("spin_accel", "torque") => {
-                "give either `spin_accel` (a prescribed spin) or `torque` (a motor torque), not both".to_string()
-            }
-            _ => format!(
-                "give at most one of `spin_accel`, `torque`, `torque_table` and `mode = \"free\"`: `{first}` and \
-                 `{second}` both drive the wheel"
-            ),
-        };
-        return invalid(table.clone().key(second), message);
-    }
-    Ok(
-        match (doc.spin_accel, doc.torque, &doc.torque_table, doc.mode) {
-            (Some(accel), ..) => RotorDrive::SpinAccel(accel),
-            (_, Some(value), ..) => RotorDrive::Torque {
-                value,
-                profile: Profile::read(table, &doc.profile_keys(), "a sine torque")?,
-            },
-            (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
-            (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,
-            _ => RotorDrive::ConstantSpin,
-        },
-    )
 }
 
 /// `body.shape`: its `type` and the keys that type takes.
@@ -403,33 +343,8 @@ fn body_file(body: &BodySpec) -> BodyFile {
                 at: Some(p.at),
             })
             .collect(),
-        rotor: body.rotor.iter().map(rotor_file).collect(),
+        rotor: body.rotor.iter().map(Part::write).collect(),
     }
-}
-
-fn rotor_file(rotor: &RotorSpec) -> RotorFile {
-    let mut file = RotorFile {
-        name: rotor.name.clone(),
-        axis: Some(rotor.axis),
-        inertia: Some(rotor.inertia),
-        spin: Some(rotor.spin),
-        at: Some(rotor.at),
-        imbalance_static_gmm: Some(rotor.imbalance_static_gmm),
-        imbalance_dynamic_gmm2: Some(rotor.imbalance_dynamic_gmm2),
-        ..RotorFile::default()
-    };
-    file.set_wheel_keys(&rotor.wheel);
-    match rotor.drive {
-        RotorDrive::ConstantSpin => {}
-        RotorDrive::Table(ref path) => file.torque_table = Some(path.clone()),
-        RotorDrive::Free => file.mode = Some(WheelMode::Free),
-        RotorDrive::SpinAccel(accel) => file.spin_accel = Some(accel),
-        RotorDrive::Torque { value, ref profile } => {
-            file.torque = Some(value);
-            file.set_profile_keys(profile.keys());
-        }
-    }
-    file
 }
 
 fn shape_file(shape: &ShapeSpec) -> ShapeFile {
@@ -545,7 +460,7 @@ mod tests {
     use std::path::Path;
 
     use super::*;
-    use crate::scene::{CarrierSpec, InertiaSpec, parse_spec};
+    use crate::scene::{CarrierSpec, InertiaSpec, RotorDrive, parse_spec};
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,
     /// is the same value.

@@ -19,9 +19,8 @@ use crate::frames::Form;
 use crate::keys::{file_table, key};
 use crate::method::{Backend, Method};
 
-pub use body::{
-    BodySpec, Distribution, InertiaSpec, PointMassSpec, RotorDrive, RotorSpec, ShapeSpec,
-};
+pub use crate::wheels::{RotorDrive, RotorSpec};
+pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
 pub use effect::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
@@ -290,7 +289,8 @@ impl SceneSpec {
         self
     }
 
-    /// The scene with each torque table's relative `file` taken relative to `dir` (a scene file's directory).
+    /// The scene with each torque table's relative `file` (an effect's, a wheel's) taken relative to `dir` (a scene
+    /// file's directory).
     pub(in crate::scene) fn with_files_in(mut self, dir: &std::path::Path) -> Self {
         for effect in &mut self.effect {
             if let EffectSpec::TorqueTable(table) = effect {
@@ -298,9 +298,7 @@ impl SceneSpec {
             }
         }
         for rotor in &mut self.body.rotor {
-            if let RotorDrive::Table(file) = &mut rotor.drive {
-                *file = dir.join(&*file);
-            }
+            rotor.take_files_in(dir);
         }
         self
     }

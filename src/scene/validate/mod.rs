@@ -7,7 +7,6 @@ mod effect;
 mod event;
 mod motion;
 mod resolved;
-mod rotor;
 mod solver;
 
 use nalgebra::{Quaternion, UnitQuaternion};

@@ -89,7 +89,7 @@ fn free_motion(
             ),
         );
     }
-    let gyrostat = super::rotor::validate_rotors(&doc.body, &free_body, &(c_b + center_b))?;
+    let gyrostat = crate::wheels::validate_rotors(&doc.body.rotor, &free_body, &(c_b + center_b))?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,

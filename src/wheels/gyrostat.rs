@@ -29,12 +29,12 @@ use nalgebra::{Matrix3, Quaternion, SVector, SymmetricEigen, Unit, UnitQuaternio
 
 use std::sync::Arc;
 
-use super::free::FreeBody;
+use super::{Wheel, WheelControl, WheelInputs, WheelSolve, WheelTorqueLaw};
 use crate::effects::{AppliedMoment, TorqueSum, TorqueTable};
 use crate::frames::{Form, StateRotation};
 use crate::integrate::OdeSystem;
+use crate::motion::free::{self, FreeBody};
 use crate::sample::{MAX_ROTORS, RotorRows, Sample};
-use crate::wheels::{Wheel, WheelControl, WheelInputs, WheelSolve, WheelTorqueLaw};
 
 /// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4, φ_1, …, φ_4).
 pub type State = SVector<f64, 15>;
@@ -83,6 +83,20 @@ pub struct Rotor {
     pub control: WheelControl,
 }
 
+impl Rotor {
+    /// Whether its relative spin stays constant of itself where a·ω does: a balanced wheel without limits or
+    /// friction, at a constant prescribed spin, or driven by no torque (J (a·ω̇ + Ω̇) = 0).
+    pub fn spins_steadily(&self) -> bool {
+        let constant = match &self.drive {
+            Drive::Accel(alpha) => *alpha == 0.0,
+            Drive::Torque(tau) => tau.is_zero(),
+            Drive::Free => true,
+            Drive::Table(_) | Drive::Law => false,
+        };
+        constant && self.imbalance.is_none() && self.control == WheelControl::default()
+    }
+}
+
 /// A wheel's imbalance (module doc): U_s (kg·m), U_d (kg·m²), the wheel centre r from the moment center and the
 /// directions w2 (where the imbalance points at φ = 0) and w3 = a × w2, body axes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -105,7 +119,7 @@ impl Imbalance {
     /// made normal to it.
     ///
     /// ```
-    /// use eulerdyn::motion::gyrostat::Imbalance;
+    /// use eulerdyn::wheels::gyrostat::Imbalance;
     /// use nalgebra::{Unit, Vector3};
     /// let wheel = Imbalance::new(1e-6, 0.0, Vector3::zeros(), &Unit::new_normalize(Vector3::z()));
     /// assert_eq!((wheel.w2_b, wheel.w3_b), (Vector3::x(), Vector3::y()));
@@ -202,7 +216,7 @@ impl Gyrostat {
     /// use eulerdyn::effects::TorqueFree;
     /// use eulerdyn::integrate::OdeSystem;
     /// use eulerdyn::motion::free::FreeBody;
-    /// use eulerdyn::motion::gyrostat::{Drive, Gyrostat, GyrostatForm, Rotor};
+    /// use eulerdyn::wheels::gyrostat::{Drive, Gyrostat, GyrostatForm, Rotor};
     /// use eulerdyn::wheels::{WheelControl, WheelTorqueLaw};
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// let body = FreeBody::new(&RigidBody::from_principal(1.0, [1.0, 2.0, 3.0])?, &Vector3::zeros())?;
@@ -357,7 +371,7 @@ impl Gyrostat {
             };
         }
         let rhs0_b = m_b - omega_b.cross(h_b);
-        let solved = crate::wheels::solve(
+        let solved = super::solve(
             self.body.inertia_b(),
             &self.inertia_driven_inv_b,
             &rhs0_b,
@@ -426,7 +440,7 @@ impl Gyrostat {
             };
             rows.friction[k] = solved.friction[k];
         }
-        let mut sample = super::free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
+        let mut sample = free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
         sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..ANGLES]);
         sample.rotors = Some(rows);
         sample
@@ -436,7 +450,7 @@ impl Gyrostat {
 /// The state's rates: (ω̇_b or Ḣ_s, q̇, Ω̇_k, φ̇_k = Ω_k).
 #[inline(always)]
 fn state_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>, spin_dot: &[f64]) -> State {
-    let dq = super::free::quaternion_rate(&[y[3], y[4], y[5], y[6]], omega_b);
+    let dq = free::quaternion_rate(&[y[3], y[4], y[5], y[6]], omega_b);
     let mut dy = State::zeros();
     dy.fixed_rows_mut::<3>(0).copy_from(&first);
     dy.fixed_rows_mut::<4>(3)

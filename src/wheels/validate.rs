@@ -1,36 +1,37 @@
-//! `[[body.rotor]]`: wheels spinning inside a freely turning body (a gyrostat).
+//! `[[body.rotor]]` validated: each wheel's name, axis, J, spin, drive, imbalance, limits and friction, and the
+//! gyrostat they make with a freely turning body.
 
 use std::sync::Arc;
 
 use nalgebra::{Unit, Vector3};
 
-use super::super::spec::{BodySpec, RotorDrive, RotorSpec};
-use super::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
+use super::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
+use super::read_wheel_table;
+use super::spec::{RotorDrive, RotorSpec};
 use crate::effects::TorqueSum;
+use crate::keys::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
 use crate::motion::free::FreeBody;
-use crate::motion::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use crate::sample::MAX_ROTORS;
-use crate::wheels::read_wheel_table;
 
 /// The gyrostat of a free `body` about its moment center (at `center_b` from the reference origin, body axes)
-/// with the scene's rotors; `None` without rotors.
-pub(super) fn validate_rotors(
-    doc: &BodySpec,
+/// with the scene's rotors `specs` (`[[body.rotor]]`); `None` without rotors.
+pub(crate) fn validate_rotors(
+    specs: &[RotorSpec],
     body: &FreeBody,
     center_b: &Vector3<f64>,
 ) -> Checked<Option<Box<Gyrostat>>> {
-    if doc.rotor.is_empty() {
+    if specs.is_empty() {
         return Ok(None);
     }
     let table = || KeyPath::root().key("body").key("rotor");
-    if doc.rotor.len() > MAX_ROTORS {
+    if specs.len() > MAX_ROTORS {
         return invalid(
             table().index(MAX_ROTORS),
-            format!("at most {MAX_ROTORS} rotors, got {}", doc.rotor.len()),
+            format!("at most {MAX_ROTORS} rotors, got {}", specs.len()),
         );
     }
-    let mut rotors: Vec<Rotor> = Vec::with_capacity(doc.rotor.len());
-    for (index, spec) in doc.rotor.iter().enumerate() {
+    let mut rotors: Vec<Rotor> = Vec::with_capacity(specs.len());
+    for (index, spec) in specs.iter().enumerate() {
         let rotor = validate_rotor(index, spec, center_b)?;
         if rotors.iter().any(|r| r.name == rotor.name) {
             return invalid(

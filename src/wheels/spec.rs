@@ -1,0 +1,152 @@
+//! One `[[body.rotor]]` as Rust code gives it: the typed spec of a wheel (read from and written to its file form
+//! in [`keys`](super::keys), validated in [`validate`](super::validate)).
+
+use crate::profile::Profile;
+use crate::wheels::WheelKeys;
+
+/// One `[[body.rotor]]`: a wheel of moment of inertia J about its axis a (fixed in the body), spinning at Ω
+/// relative to the body; its momentum adds J Ω a to H (H = I ω + Σ J_k Ω_k a_k).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RotorSpec {
+    /// `name`: the prefix of its columns (absent: `rotor0`, `rotor1`, … in order).
+    pub name: Option<String>,
+    /// `axis`: spin axis, body axes (normalised by validation).
+    pub axis: [f64; 3],
+    /// `inertia`: J, kg·m², > 0.
+    pub inertia: f64,
+    /// `spin`: Ω at t = 0 relative to the body (rad/s; absent: 0).
+    pub spin: f64,
+    /// What drives it.
+    pub drive: RotorDrive,
+    /// `at`: the wheel's centre from the reference origin, body axes (m; absent: the origin).
+    pub at: [f64; 3],
+    /// `imbalance_static_gmm`: the static imbalance m·e (g·mm, ≥ 0; absent: 0).
+    pub imbalance_static_gmm: f64,
+    /// `imbalance_dynamic_gmm2`: the dynamic imbalance (g·mm², ≥ 0; absent: 0).
+    pub imbalance_dynamic_gmm2: f64,
+    /// `max_torque`, `max_speed_rpm`, `friction`: the wheel's limits and friction ([`crate::wheels`]).
+    pub wheel: WheelKeys,
+}
+
+/// What drives a rotor's relative spin.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RotorDrive {
+    /// Neither `spin_accel` nor `torque`: the relative spin stays constant (the motor supplies what that takes).
+    ConstantSpin,
+    /// `spin_accel`: Ω(t) = spin + spin_accel·t (rad/s²); the motor torque is an output.
+    SpinAccel(f64),
+    /// `torque` (N·m) with a torque effect's `profile`: the motor torque on the wheel about its axis; the body
+    /// feels its opposite.
+    Torque {
+        /// τ (N·m).
+        value: f64,
+        /// Its time profile.
+        profile: Profile,
+    },
+    /// `torque_table`: the motor torque commanded by a table (header `t,torque`), relative to the scene file.
+    Table(std::path::PathBuf),
+    /// `mode = "free"`: no motor, the wheel spins freely (friction only).
+    Free,
+}
+
+impl RotorDrive {
+    /// The key that gives this drive in `[[body.rotor]]` (`None`: no key, a constant relative spin).
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorDrive;
+    /// assert_eq!((RotorDrive::Free.key(), RotorDrive::ConstantSpin.key()), (Some("mode"), None));
+    /// ```
+    pub fn key(&self) -> Option<&'static str> {
+        match self {
+            RotorDrive::ConstantSpin => None,
+            RotorDrive::SpinAccel(_) => Some("spin_accel"),
+            RotorDrive::Torque { .. } => Some("torque"),
+            RotorDrive::Table(_) => Some("torque_table"),
+            RotorDrive::Free => Some("mode"),
+        }
+    }
+}
+
+impl RotorSpec {
+    /// A wheel of moment of inertia `inertia` (kg·m²) about `axis_b` (body axes) at the reference origin, spinning
+    /// at `spin` (rad/s) relative to the body, kept constant.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{RotorDrive, RotorSpec};
+    /// let wheel = RotorSpec::new([1.0, 0.0, 0.0], 0.01, 0.0).with_drive(RotorDrive::SpinAccel(2.0));
+    /// assert_eq!(wheel.drive, RotorDrive::SpinAccel(2.0));
+    /// ```
+    pub fn new(axis_b: [f64; 3], inertia: f64, spin: f64) -> Self {
+        Self {
+            name: None,
+            axis: axis_b,
+            inertia,
+            spin,
+            drive: RotorDrive::ConstantSpin,
+            at: [0.0; 3],
+            imbalance_static_gmm: 0.0,
+            imbalance_dynamic_gmm2: 0.0,
+            wheel: WheelKeys::default(),
+        }
+    }
+
+    /// With the static imbalance `static_gmm` (g·mm) and the dynamic imbalance `dynamic_gmm2` (g·mm²) of a wheel
+    /// centred at `at` (m, body axes, from the reference origin).
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorSpec;
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 600.0).with_imbalance([0.1, 0.0, 0.0], 2.0, 50.0);
+    /// assert_eq!((wheel.imbalance_static_gmm, wheel.imbalance_dynamic_gmm2), (2.0, 50.0));
+    /// ```
+    pub fn with_imbalance(mut self, at: [f64; 3], static_gmm: f64, dynamic_gmm2: f64) -> Self {
+        self.at = at;
+        self.imbalance_static_gmm = static_gmm;
+        self.imbalance_dynamic_gmm2 = dynamic_gmm2;
+        self
+    }
+
+    /// With `drive`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{RotorDrive, RotorSpec};
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 0.0).with_drive(RotorDrive::SpinAccel(2.0));
+    /// assert_eq!(wheel.drive, RotorDrive::SpinAccel(2.0));
+    /// ```
+    pub fn with_drive(mut self, drive: RotorDrive) -> Self {
+        self.drive = drive;
+        self
+    }
+
+    /// With the limits and friction `wheel`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorSpec;
+    /// use eulerdyn::wheels::WheelKeys;
+    /// let limits = WheelKeys { max_torque: Some(0.05), ..WheelKeys::default() };
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 0.0).with_wheel(limits.clone());
+    /// assert_eq!(wheel.wheel, limits);
+    /// ```
+    pub fn with_wheel(mut self, wheel: WheelKeys) -> Self {
+        self.wheel = wheel;
+        self
+    }
+
+    /// With `name`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::RotorSpec;
+    /// let wheel = RotorSpec::new([0.0, 0.0, 1.0], 0.01, 0.0).with_name("wheel_z");
+    /// assert_eq!(wheel.name.as_deref(), Some("wheel_z"));
+    /// ```
+    pub fn with_name(mut self, name: &str) -> Self {
+        self.name = Some(name.to_string());
+        self
+    }
+
+    /// Its torque table's relative path taken relative to `dir` (a scene file's directory).
+    pub(crate) fn take_files_in(&mut self, dir: &std::path::Path) {
+        if let RotorDrive::Table(file) = &mut self.drive {
+            *file = dir.join(&*file);
+        }
+    }
+}

@@ -1,0 +1,138 @@
+//! A capability lives in its folder (ARCHITECTURE.md, "Where a new thing goes"): outside it, the code of src/ does
+//! not name what only the capability knows, except in the registration lines listed here. Comments and test
+//! modules are not code for this purpose (a doc comment may say "carrier"; a test may build one).
+
+use std::path::{Path, PathBuf};
+
+/// Every `.rs` file under `dir`, recursively, in a stable order.
+fn rust_files(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.expect("a directory entry").path())
+        .collect();
+    entries.sort();
+    for path in entries {
+        if path.is_dir() {
+            files.extend(rust_files(&path));
+        } else if path.extension().is_some_and(|x| x == "rs") {
+            files.push(path);
+        }
+    }
+    files
+}
+
+/// The code of a source file: its lines before `#[cfg(test)]`, without comment lines.
+fn code(path: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    (text.lines())
+        .take_while(|l| l.trim() != "#[cfg(test)]")
+        .filter(|l| !l.trim_start().starts_with("//"))
+        .map(str::to_string)
+        .collect()
+}
+
+/// The places (`file:line: text`) outside `folder` whose code names one of `names`, except the lines of
+/// `registrations` (a file, and a text its line contains).
+fn named_outside(folder: &str, names: &[&str], registrations: &[(&str, &str)]) -> Vec<String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut found = Vec::new();
+    for path in rust_files(&src) {
+        let relative = path.strip_prefix(&src).expect("under src/");
+        let relative = relative.to_string_lossy().replace('\\', "/");
+        if relative.starts_with(folder) {
+            continue;
+        }
+        for (n, line) in code(&path).iter().enumerate() {
+            let registered =
+                (registrations.iter()).any(|(file, text)| relative == *file && line.contains(text));
+            if !registered && names.iter().any(|name| line.contains(name)) {
+                found.push(format!("src/{relative}:{}: {}", n + 1, line.trim()));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_wheels_control_is_named_only_in_its_folder() {
+    let names = [
+        "WheelControl",
+        "WheelKeys",
+        "FrictionKeys",
+        "StribeckKeys",
+        "WheelMode",
+        "Friction",
+        "WheelTorqueLaw",
+        "WheelInputs",
+        "wheels::solve",
+        "Drive::",
+        ".control",
+        "max_torque",
+        "max_speed",
+    ];
+    let outside = named_outside("wheels/", &names, &[]);
+    assert!(
+        outside.is_empty(),
+        "outside src/wheels/:\n{}",
+        outside.join("\n")
+    );
+}
+
+#[test]
+fn the_wheels_are_registered_in_the_listed_lines_only() {
+    let names = ["RotorFile", "RotorSpec", "validate_rotors"];
+    let registrations = [
+        ("scene/spec/file_form.rs", "use crate::wheels::RotorFile;"),
+        ("scene/spec/file_form.rs", "list rotor: RotorFile"),
+        ("scene/reference/mod.rs", "RotorFile"),
+        ("scene/spec/body.rs", "RotorSpec"),
+        (
+            "scene/spec/mod.rs",
+            "pub use crate::wheels::{RotorDrive, RotorSpec};",
+        ),
+        ("scene/mod.rs", "RotorSpec"),
+        ("scene/spec/from_file.rs", "RotorSpec"),
+        (
+            "scene/validate/motion.rs",
+            "crate::wheels::validate_rotors(&doc.body.rotor",
+        ),
+    ];
+    let outside = named_outside("wheels/", &names, &registrations);
+    assert!(
+        outside.is_empty(),
+        "outside src/wheels/:\n{}",
+        outside.join("\n")
+    );
+}
+
+#[test]
+fn the_carrier_is_named_only_in_its_folder_and_its_part_line() {
+    let registrations = [
+        ("motion/mod.rs", "pub mod carrier;"),
+        (
+            "scene/spec/file_form.rs",
+            "use crate::motion::carrier::spec::CarrierSpec;",
+        ),
+        ("scene/spec/file_form.rs", "part carrier: CarrierSpec"),
+        (
+            "scene/spec/motion.rs",
+            "pub use crate::motion::carrier::spec::{CarrierSpec, VehicleSpec};",
+        ),
+        ("scene/spec/motion.rs", "CarrierSpec"),
+        ("scene/spec/mod.rs", "CarrierSpec"),
+        ("scene/spec/mod.rs", "VehicleSpec"),
+        ("scene/mod.rs", "CarrierSpec"),
+        ("scene/mod.rs", "VehicleSpec"),
+    ];
+    let outside = named_outside(
+        "motion/carrier/",
+        &["Carrier", "carrier::", "Vehicle"],
+        &registrations,
+    );
+    assert!(
+        outside.is_empty(),
+        "outside src/motion/carrier/:\n{}",
+        outside.join("\n")
+    );
+}
