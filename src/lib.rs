@@ -37,9 +37,9 @@
 //! # Layers
 //!
 //! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`body`], [`kinetics`],
-//! [`effects`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions ([`motion`]) → the
-//! validated [`scene`] → [`simulate`] → [`analysis`] and [`output`]. The command line is a binary over the
-//! library (feature `cli`, on by default).
+//! [`effects`], [`events`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions
+//! ([`motion`]) and the body's wheels ([`wheels`]) → the validated [`scene`] → [`simulate`] → [`analysis`] and
+//! [`output`]. The command line is a binary over the library (feature `cli`, on by default).
 //!
 //! # Features
 //!

@@ -115,58 +115,6 @@ fn tensor_lines(out: &mut Description, title: &str, i: &Matrix3<f64>) {
     }
 }
 
-fn effect_text(e: &Effect) -> String {
-    match e {
-        Effect::Torque {
-            frame,
-            value,
-            profile,
-        } => {
-            let profile = match profile {
-                Profile::Constant => "constant".to_string(),
-                Profile::Sine { freq_hz, phase_deg } => {
-                    format!(
-                        "sine at {} Hz, phase {} deg",
-                        plain(*freq_hz),
-                        plain(*phase_deg)
-                    )
-                }
-                Profile::Step { t_on, t_off } => {
-                    format!("step, on for {} <= t < {} s", plain(*t_on), plain(*t_off))
-                }
-            };
-            format!(
-                "torque {} N*m in {} axes, {profile}",
-                vec3(value),
-                frame.name()
-            )
-        }
-        Effect::Gravity { g_s, pivot_b } => format!(
-            "gravity g = {} m/s^2 (space axes) at C, pivot {} m from C (body axes)",
-            vec3(g_s),
-            vec3(pivot_b)
-        ),
-        Effect::Damping { c } => format!("viscous damping M = -{} N*m*s * omega", plain(*c)),
-        Effect::TorqueTable { frame, table } => {
-            let (t0, t1) = table.time_range();
-            format!(
-                "torque table {} ({} rows, {} <= t <= {} s, {} interpolation, zero outside) in {} axes",
-                table.path().display(),
-                table.rows(),
-                plain(t0),
-                plain(t1),
-                table.interpolation().name(),
-                frame.name()
-            )
-        }
-        Effect::User(user) => format!(
-            "user's moment law \"{}\" (a Rust or Python function of t, q, omega) in {} axes",
-            user.name,
-            user.frame.name()
-        ),
-    }
-}
-
 /// What the scene will simulate: body, principal moments and axes, motion and moment center, the state at t = 0,
 /// effects, method and tolerances, rows and an estimate of the steps; then `warnings` and a fixed step too coarse
 /// for the motion ([`simulate::CoarseStep`]), one `warning` item each.
@@ -511,7 +459,7 @@ fn effect_lines(w: &mut Description, scene: &Scene) {
         };
         line(w, "effects", none);
     }
-    let texts = scene.effects.iter().map(effect_text).chain(imbalances);
+    let texts = scene.effects.iter().map(Effect::describe).chain(imbalances);
     for (k, text) in texts.enumerate() {
         line(w, if k == 0 { "effects" } else { "" }, &text);
     }

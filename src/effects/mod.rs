@@ -5,12 +5,19 @@ use std::sync::Arc;
 use nalgebra::Vector3;
 
 mod compiled;
+mod describe;
+mod keys;
+mod spec;
 mod table;
 mod user;
+mod validate;
 
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
+pub(crate) use keys::EffectFile;
+pub use spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
 pub use user::{MomentLaw, UserMoment};
+pub(crate) use validate::validate_effects;
 
 use crate::frames::Axes;
 use crate::profile::Profile;

@@ -18,7 +18,14 @@
 use crate::sample::{Column, ColumnSet, Sample};
 
 mod brent;
+mod keys;
+mod spec;
+mod validate;
+
 pub use brent::brent;
+pub(crate) use keys::EventFile;
+pub use spec::{ConditionSpec, EventSpec};
+pub(crate) use validate::validate_events;
 
 /// Subintervals of each interval at which the quantity is sampled for sign changes: two roots closer than
 /// (t₁ − t₀)/`PROBES` may be missed (a crossing and its return).

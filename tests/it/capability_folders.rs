@@ -136,3 +136,34 @@ fn the_carrier_is_named_only_in_its_folder_and_its_part_line() {
         outside.join("\n")
     );
 }
+
+#[test]
+fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registrations() {
+    let registrations = [
+        ("scene/spec/file_form.rs", "use crate::effects::EffectFile;"),
+        ("scene/spec/file_form.rs", "use crate::events::EventFile;"),
+        ("scene/spec/file_form.rs", "list effect: EffectFile"),
+        ("scene/spec/file_form.rs", "list event: EventFile"),
+        ("scene/reference/mod.rs", "EffectFile"),
+        ("scene/reference/mod.rs", "EventFile"),
+        ("scene/validate/mod.rs", "crate::effects::validate_effects("),
+        (
+            "scene/validate/mod.rs",
+            "crate::events::validate_events(&doc.event",
+        ),
+    ];
+    for (folder, names) in [
+        ("effects/", ["EffectFile", "EffectKind", "validate_effects"]),
+        (
+            "events/",
+            ["EventFile", "Quantity::parse", "validate_events"],
+        ),
+    ] {
+        let outside = named_outside(folder, &names, &registrations);
+        assert!(
+            outside.is_empty(),
+            "outside src/{folder}:\n{}",
+            outside.join("\n")
+        );
+    }
+}

@@ -7,9 +7,11 @@
 //! Every position in body axes is measured from the *reference origin*: the shape's center, or the point the given
 //! `inertia` is about (C when there are no point masses).
 
+use crate::effects::EffectFile;
+use crate::events::EventFile;
 pub use crate::keys::{Key, Table};
 use crate::scene::spec::file_form::{
-    BodyFile, EffectFile, EventFile, InitialFile, MotionFile, PointMassFile, SceneFile, ShapeFile,
+    BodyFile, InitialFile, MotionFile, PointMassFile, SceneFile, ShapeFile,
 };
 use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
 use crate::wheels::RotorFile;

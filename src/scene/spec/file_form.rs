@@ -5,12 +5,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{CompareSpec, Direction, Extremum, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
-use crate::effects::Interpolation;
-use crate::frames::Axes;
-use crate::keys::{file_table, key, position, profile};
+use super::{CompareSpec, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
+use crate::effects::EffectFile;
+use crate::events::EventFile;
+use crate::keys::{file_table, key, position};
 use crate::motion::carrier::spec::CarrierSpec;
-use crate::profile::{ProfileKind, profile_keys};
 use crate::wheels::RotorFile;
 
 file_table! {
@@ -122,51 +121,5 @@ file_table! {
     }
     either {
         attitude, attitude_euler_deg: "give either `attitude` or `attitude_euler_deg`, not both";
-    }
-}
-
-/// The `type` of an effect.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub(super) enum EffectKind {
-    Torque,
-    Gravity,
-    Damping,
-    TorqueTable,
-}
-
-profile_keys!(EffectFile);
-
-file_table! {
-    /// One `[[effect]]`.
-    pub(in crate::scene) struct EffectFile(pub(super)) "[[effect]]",
-        "a moment on the body; any number, at most one gravity" {
-        opt kind as "type": EffectKind = key("\"torque\" | \"gravity\" | \"damping\" | \"torque_table\"", "–", "required", "", "the effect");
-        opt frame: Axes = key("\"body\" | \"space\"", "–", "\"body\"", "", "torque and torque_table: the axes of the moment");
-        arr value: [f64; 3] = key("[x, y, z]", "N·m", "required for `torque`", "", "the torque (amplitude for `sine`)");
-        opt profile: ProfileKind = profile("torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off");
-        @sine;
-        @step;
-        arr g: [f64; 3] = key("[x, y, z]", "m/s²", "[0, 0, -9.81]", "", "gravity: uniform, space axes, acting at C");
-        arr pivot: [f64; 3] = position("required for free motion", "gravity: the fixed point, which becomes the moment center (an error with a fixed axis or hinge)");
-        opt c: f64 = key("number", "N·m·s", "required for `damping`", "", "viscous M = −c·ω, ≥ 0");
-        opt file: std::path::PathBuf = key("path", "–", "required for `torque_table`", "", "CSV with header t,M_x,M_y,M_z (s, N·m), relative to the scene file; zero outside its rows");
-        opt interpolation: Interpolation = key("\"linear\" | \"cubic\"", "–", "\"linear\"", "", "torque_table: between rows (cubic: the natural spline)");
-    }
-}
-
-file_table! {
-    /// One `[[event]]`.
-    pub(in crate::scene) struct EventFile(pub(super)) "[[event]]",
-        "a moment located between the rows on the continuous solution" {
-        opt name: String = key("string", "–", "required", "", "letters, digits, `_`; unique");
-        opt when: String = key("string", "–", "required", "", "a CSV column of this run, or `|X|` for the norm of X_s_x..z");
-        opt crosses: f64 = key("number", "the column's", "one of `crosses` / `extremum`", "", "a crossing of this value");
-        opt direction: Direction = key("\"up\" | \"down\" | \"both\"", "–", "\"both\"", "", "with `crosses`");
-        opt extremum: Extremum = key("\"max\" | \"min\"", "–", "one of `crosses` / `extremum`", "", "every local extremum");
-        opt stop: bool = key("bool", "–", "false", "", "true: the run ends at the first occurrence");
-    }
-    either {
-        crosses, extremum: "give either `crosses` (a value) or `extremum` (\"max\" or \"min\"), not both";
     }
 }

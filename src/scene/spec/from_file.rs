@@ -4,19 +4,14 @@
 //! range) are validation's ([`SceneSpec::build`]).
 
 use super::file_form::{
-    BodyFile, EffectFile, EffectKind, EventFile, InitialFile, MotionFile, PointMassFile, SceneFile,
-    ShapeFile, ShapeKind,
+    BodyFile, InitialFile, MotionFile, PointMassFile, SceneFile, ShapeFile, ShapeKind,
 };
 use super::{
-    AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, ConditionSpec, Direction,
-    Distribution, EffectSpec, EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind,
-    MotionSpec, PointMassSpec, RateSpec, RotorSpec, SceneSpec, ShapeSpec, TorqueSpec,
-    TorqueTableSpec,
+    AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, Distribution, EffectSpec,
+    EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec, PointMassSpec,
+    RateSpec, RotorSpec, SceneSpec, ShapeSpec,
 };
-use crate::effects::DEFAULT_GRAVITY;
-use crate::frames::Axes;
 use crate::keys::{Checked, Part, invalid, only_keys, required};
-use crate::profile::Profile;
 use crate::scene::source_map::KeyPath;
 
 impl SceneFile {
@@ -29,10 +24,10 @@ impl SceneFile {
             motion: self.motion.as_ref().map(motion).transpose()?,
             initial: self.initial.map(initial).transpose()?,
             effect: (self.effect.iter().enumerate())
-                .map(|(i, e)| effect(i, e))
+                .map(|(i, e)| EffectSpec::read(e, &KeyPath::root().key("effect").index(i)))
                 .collect::<Checked<_>>()?,
             event: (self.event.iter().enumerate())
-                .map(|(i, e)| event(i, e))
+                .map(|(i, e)| EventSpec::read(e, &KeyPath::root().key("event").index(i)))
                 .collect::<Checked<_>>()?,
             solver: self.solver,
             output: self.output,
@@ -197,108 +192,6 @@ fn initial(doc: InitialFile) -> Checked<InitialSpec> {
     })
 }
 
-/// One `[[effect]]`: its `type` and the keys that type takes.
-fn effect(index: usize, doc: &EffectFile) -> Checked<EffectSpec> {
-    let table = KeyPath::root().key("effect").index(index);
-    let key = |name: &str| table.clone().key(name);
-    let Some(kind) = doc.kind else {
-        return invalid(
-            key("type"),
-            "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\"",
-        );
-    };
-    let (name, takes): (&str, &[&str]) = match kind {
-        EffectKind::Torque => (
-            "torque",
-            &[
-                "frame",
-                "value",
-                "profile",
-                "freq_hz",
-                "phase_deg",
-                "t_on",
-                "t_off",
-            ],
-        ),
-        EffectKind::Gravity => ("gravity", &["g", "pivot"]),
-        EffectKind::Damping => ("damping", &["c"]),
-        EffectKind::TorqueTable => ("torque_table", &["file", "frame", "interpolation"]),
-    };
-    let kind_text = format!("effect type = \"{name}\"");
-    let given = doc.given();
-    only_keys(&table, &kind_text, takes, &given)?;
-    Ok(match kind {
-        EffectKind::Torque => EffectSpec::Torque(TorqueSpec {
-            frame: doc.frame.unwrap_or(Axes::Body),
-            value: required(key("value"), doc.value, &kind_text)?,
-            profile: Profile::read(&table, &doc.profile_keys(), "a sine torque")?,
-        }),
-        EffectKind::Gravity => EffectSpec::Gravity {
-            g: doc.g.unwrap_or(DEFAULT_GRAVITY),
-            pivot: doc.pivot,
-        },
-        EffectKind::Damping => EffectSpec::Damping {
-            c: required(key("c"), doc.c, &kind_text)?,
-        },
-        EffectKind::TorqueTable => EffectSpec::TorqueTable(TorqueTableSpec {
-            file: required(key("file"), doc.file.clone(), &kind_text)?,
-            frame: doc.frame.unwrap_or(Axes::Body),
-            interpolation: doc.interpolation.unwrap_or_default(),
-        }),
-    })
-}
-
-/// One `[[event]]`: `name` and `when`, and exactly one of `crosses` (with its optional `direction`) and
-/// `extremum`.
-fn event(index: usize, doc: &EventFile) -> Checked<EventSpec> {
-    let table = KeyPath::root().key("event").index(index);
-    let key = |name: &str| table.clone().key(name);
-    let kind = "an event";
-    doc.exclusive(&table)?;
-    let condition = match (doc.crosses, doc.extremum) {
-        (None, None) => {
-            return invalid(
-                table,
-                "an event needs `crosses = VALUE` (with `direction` = \"up\" | \"down\" | \"both\") or `extremum` = \"max\" | \"min\"",
-            );
-        }
-        (Some(value), _) => ConditionSpec::Crosses {
-            value,
-            direction: doc.direction.unwrap_or(Direction::Both),
-        },
-        (None, Some(extremum)) => {
-            if doc.direction.is_some() {
-                return invalid(
-                    key("direction"),
-                    "`direction` applies to `crosses` only; an extremum is \"max\" or \"min\"",
-                );
-            }
-            ConditionSpec::Extremum(extremum)
-        }
-    };
-    Ok(EventSpec {
-        name: required(key("name"), doc.name.clone(), kind)?,
-        when: required(key("when"), doc.when.clone(), kind)?,
-        condition,
-        stop: doc.stop.unwrap_or(false),
-    })
-}
-
-fn event_file(event: &EventSpec) -> EventFile {
-    let (crosses, direction, extremum) = match event.condition {
-        ConditionSpec::Crosses { value, direction } => (Some(value), Some(direction), None),
-        ConditionSpec::Extremum(e) => (None, None, Some(e)),
-    };
-    EventFile {
-        name: Some(event.name.clone()),
-        when: Some(event.when.clone()),
-        crosses,
-        direction,
-        extremum,
-        stop: Some(event.stop),
-    }
-}
-
 impl From<&SceneSpec> for SceneFile {
     /// The scene written key for key: every value the typed scene holds (defaults it filled in included); an
     /// absent `t_off` (+∞) and `None`s are left out.
@@ -319,8 +212,8 @@ impl From<&SceneSpec> for SceneFile {
                     _ => None,
                 },
             }),
-            effect: spec.effect.iter().map(effect_file).collect(),
-            event: spec.event.iter().map(event_file).collect(),
+            effect: spec.effect.iter().map(Part::write).collect(),
+            event: spec.event.iter().map(Part::write).collect(),
             solver: spec.solver,
             output: spec.output,
             compare: spec.compare,
@@ -422,45 +315,16 @@ fn motion_file(motion: &MotionSpec) -> MotionFile {
     }
 }
 
-fn effect_file(effect: &EffectSpec) -> EffectFile {
-    match effect {
-        EffectSpec::Torque(torque) => {
-            let mut file = EffectFile {
-                kind: Some(EffectKind::Torque),
-                frame: Some(torque.frame),
-                value: Some(torque.value),
-                ..EffectFile::default()
-            };
-            file.set_profile_keys(torque.profile.keys());
-            file
-        }
-        EffectSpec::Gravity { g, pivot } => EffectFile {
-            kind: Some(EffectKind::Gravity),
-            g: Some(*g),
-            pivot: *pivot,
-            ..EffectFile::default()
-        },
-        EffectSpec::Damping { c } => EffectFile {
-            kind: Some(EffectKind::Damping),
-            c: Some(*c),
-            ..EffectFile::default()
-        },
-        EffectSpec::TorqueTable(table) => EffectFile {
-            kind: Some(EffectKind::TorqueTable),
-            file: Some(table.file.clone()),
-            frame: Some(table.frame),
-            interpolation: Some(table.interpolation),
-            ..EffectFile::default()
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use std::path::Path;
 
     use super::*;
-    use crate::scene::{CarrierSpec, InertiaSpec, RotorDrive, parse_spec};
+    use crate::frames::Axes;
+    use crate::profile::Profile;
+    use crate::scene::{
+        CarrierSpec, InertiaSpec, RotorDrive, TorqueSpec, TorqueTableSpec, parse_spec,
+    };
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,
     /// is the same value.

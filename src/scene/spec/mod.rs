@@ -7,8 +7,6 @@
 //! key for key), converted by `from_file.rs`, which names the key at fault when a table is not one of its type's.
 
 mod body;
-mod effect;
-mod event;
 pub(in crate::scene) mod file_form;
 mod from_file;
 mod motion;
@@ -19,10 +17,10 @@ use crate::frames::Form;
 use crate::keys::{file_table, key};
 use crate::method::{Backend, Method};
 
+pub use crate::effects::{EffectSpec, TorqueSpec, TorqueTableSpec};
+pub use crate::events::{ConditionSpec, Direction, EventSpec, Extremum};
 pub use crate::wheels::{RotorDrive, RotorSpec};
 pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
-pub use effect::{EffectSpec, TorqueSpec, TorqueTableSpec};
-pub use event::{ConditionSpec, Direction, EventSpec, Extremum};
 pub(in crate::scene) use file_form::SceneFile;
 pub use motion::{
     AxisDirection, AxisParts, AxisSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
@@ -293,9 +291,7 @@ impl SceneSpec {
     /// file's directory).
     pub(in crate::scene) fn with_files_in(mut self, dir: &std::path::Path) -> Self {
         for effect in &mut self.effect {
-            if let EffectSpec::TorqueTable(table) = effect {
-                table.file = dir.join(&table.file);
-            }
+            effect.take_files_in(dir);
         }
         for rotor in &mut self.body.rotor {
             rotor.take_files_in(dir);

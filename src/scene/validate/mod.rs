@@ -3,17 +3,18 @@
 //! front end adds the file, line and column.
 
 mod body;
-mod effect;
 mod event;
 mod motion;
 mod resolved;
 mod solver;
 
-use nalgebra::{Quaternion, UnitQuaternion};
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 use super::model::Scene;
 use super::source_map::KeyPath;
 use super::spec::{AttitudeSpec, MotionSpec, SceneSpec};
+use crate::body::RigidBody;
+use crate::effects::Effect;
 use crate::frames::Form;
 use crate::keys::{Checked, Invalid, finite, invalid, positive, vector};
 use crate::method::{Backend, Method, defaults};
@@ -65,7 +66,7 @@ impl SceneSpec {
 fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     let (body, center_b) = body::validate_body(&doc.body)?;
     let attitude0 = attitude(doc)?;
-    let effects = effect::validate_effects(doc, &body, &center_b)?;
+    let effects = effects(doc, &body, &center_b)?;
     let motion = motion::validate_motion(doc, &body, &attitude0, &effects, &center_b)?;
     // An axis motion may set the attitude itself (`axis_in_space`, a hinge's `angle_deg`).
     let attitude0 = motion.attitude0(attitude0);
@@ -73,7 +74,10 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     solver::validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let schedule = solver::validate_schedule(doc, &solver, overrides)?;
     let columns = Scene::run_columns(&motion, &effects);
-    let events = event::validate_events(doc, columns, &motion, &solver, overrides)?;
+    if !doc.event.is_empty() {
+        event::locatable(&motion, &solver, overrides)?;
+    }
+    let events = crate::events::validate_events(&doc.event, &columns.columns())?;
     let compare_tolerance = match &doc.compare {
         None => defaults::COMPARE_TOLERANCE,
         Some(c) => positive(
@@ -97,6 +101,31 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         spec: doc.resolved(&solver, schedule.every(), compare_tolerance),
         source: None,
     })
+}
+
+/// The scene's effects (`crate::effects::validate_effects`), gravity's moment center on an axis its point; a
+/// fixed-axis motion takes gravity only.
+fn effects(doc: &SceneSpec, body: &RigidBody, center_b: &Vector3<f64>) -> Checked<Vec<Effect>> {
+    let axis_point_b = match doc.motion.as_ref().and_then(MotionSpec::axis) {
+        Some(axis) => {
+            Some(vector(KeyPath::root().key("motion").key("point"), axis.point, "m")? - center_b)
+        }
+        None => None,
+    };
+    let effects = crate::effects::validate_effects(
+        &doc.effect,
+        axis_point_b.as_ref(),
+        body.mass(),
+        center_b,
+    )?;
+    let not_gravity = (effects.iter()).position(|e| !matches!(e, Effect::Gravity { .. }));
+    if let (Some(MotionSpec::FixedAxis(_)), Some(index)) = (&doc.motion, not_gravity) {
+        return invalid(
+            KeyPath::root().key("effect").index(index),
+            "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no torque or damping (only gravity, whose weight its bearings carry); remove the effect, or use type = \"hinge\" to let the effects drive the rotation",
+        );
+    }
+    Ok(effects)
 }
 
 /// `initial.attitude`, normalised, or the rotation of `initial.attitude_euler_deg` = [z, y, x], intrinsic

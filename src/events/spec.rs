@@ -1,7 +1,7 @@
-//! `[[event]]`: a moment between the rows to locate — a quantity crossing a value, or its local extrema
-//! ([`crate::events`] locates them).
+//! One `[[event]]` as Rust code gives it: a moment between the rows to locate — a quantity crossing a value, or
+//! its local extrema (read from and written to its file form in `keys.rs`, validated in `validate.rs`).
 
-pub use crate::events::{Direction, Extremum};
+use super::{Direction, Extremum};
 
 /// One `[[event]]`.
 #[derive(Debug, Clone, PartialEq)]

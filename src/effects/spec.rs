@@ -1,8 +1,9 @@
-//! `[[effect]]`: an applied torque with its time profile, uniform gravity, viscous damping, a tabulated torque.
+//! One `[[effect]]` as Rust code gives it: an applied torque with its time profile, uniform gravity, viscous
+//! damping, a tabulated torque (read from and written to its file form in `keys.rs`, validated in `validate.rs`).
 
 use std::path::{Path, PathBuf};
 
-use crate::effects::{DEFAULT_GRAVITY, Interpolation};
+use super::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
 use crate::profile::Profile;
 
@@ -146,6 +147,13 @@ impl EffectSpec {
             EffectSpec::Gravity { .. } => "gravity",
             EffectSpec::Damping { .. } => "damping",
             EffectSpec::TorqueTable(_) => "torque_table",
+        }
+    }
+
+    /// Its torque table's relative path taken relative to `dir` (a scene file's directory).
+    pub(crate) fn take_files_in(&mut self, dir: &Path) {
+        if let EffectSpec::TorqueTable(table) = self {
+            table.file = dir.join(&table.file);
         }
     }
 }

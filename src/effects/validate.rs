@@ -1,45 +1,28 @@
-//! `[[effect]]`: torques (with their time profiles), gravity about a pivot, viscous damping, tabulated torques.
+//! `[[effect]]` validated: torques (with their time profiles), gravity about a pivot, viscous damping, tabulated
+//! torques.
 
 use std::sync::Arc;
 
-use super::super::spec::{EffectSpec, MotionSpec, SceneSpec, TorqueSpec};
-use super::{Checked, KeyPath, finite, invalid, vector};
-use crate::body::RigidBody;
-use crate::effects::{Effect, TorqueTable};
 use nalgebra::Vector3;
 
-/// Every `[[effect]]`, in order; a fixed-axis motion takes gravity only, and at most one gravity (its pivot is the
-/// body's one fixed point). Positions are turned from the reference origin to the mass center `center_b`.
-pub(super) fn validate_effects(
-    doc: &SceneSpec,
-    body: &RigidBody,
+use super::spec::{EffectSpec, TorqueSpec};
+use super::{Effect, TorqueTable};
+use crate::keys::{Checked, KeyPath, finite, invalid, vector};
+
+/// Every `[[effect]]` of `specs`, in order, and at most one gravity (its pivot is the body's one fixed point) on a
+/// body of `mass` (kg). `axis_point_b` is the axis point of a fixed-axis or hinge motion from the mass center,
+/// gravity's moment center there; other positions are turned from the reference origin to the mass center
+/// `center_b`.
+pub(crate) fn validate_effects(
+    specs: &[EffectSpec],
+    axis_point_b: Option<&Vector3<f64>>,
+    mass: f64,
     center_b: &Vector3<f64>,
 ) -> Checked<Vec<Effect>> {
-    let axis_point = match doc.motion.as_ref().and_then(MotionSpec::axis) {
-        Some(axis) => {
-            Some(vector(KeyPath::root().key("motion").key("point"), axis.point, "m")? - center_b)
-        }
-        None => None,
-    };
-    let effects = doc
-        .effect
-        .iter()
-        .enumerate()
-        .map(|(i, e)| validate_effect(i, e, axis_point.as_ref(), center_b))
+    let effects = (specs.iter().enumerate())
+        .map(|(i, e)| validate_effect(i, e, axis_point_b, center_b))
         .collect::<Checked<Vec<_>>>()?;
-    let not_gravity = effects
-        .iter()
-        .position(|e| !matches!(e, Effect::Gravity { .. }));
-    if let (Some(MotionSpec::FixedAxis(_)), Some(index)) = (&doc.motion, not_gravity) {
-        return invalid(
-            KeyPath::root().key("effect").index(index),
-            "a fixed-axis motion is prescribed: its moment is computed from the motion (M = dH/dt), so it takes no torque or damping (only gravity, whose weight its bearings carry); remove the effect, or use type = \"hinge\" to let the effects drive the rotation",
-        );
-    }
-    let second_gravity = doc
-        .effect
-        .iter()
-        .enumerate()
+    let second_gravity = (specs.iter().enumerate())
         .filter(|(_, e)| matches!(e, EffectSpec::Gravity { .. }))
         .nth(1);
     if let Some((second, _)) = second_gravity {
@@ -48,7 +31,7 @@ pub(super) fn validate_effects(
             "only one gravity effect is allowed: its pivot is the single fixed point of the body",
         );
     }
-    effect_moments_in_range(&effects, body.mass())?;
+    effect_moments_in_range(&effects, mass)?;
     Ok(effects)
 }
 
