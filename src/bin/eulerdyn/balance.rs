@@ -14,6 +14,9 @@ use eulerdyn::output::{AtomicFile, same_file};
 use eulerdyn::scene::{self, Overrides};
 
 #[derive(Debug, Args)]
+#[command(
+    after_help = "Examples:\n  eulerdyn balance scenarios/rotor_bearings.toml --planes -0.1,0.1 --radius 0.2 -o balanced.toml\n  eulerdyn balance scenarios/fan_rotor_g63.toml --planes -0.1,0.08 --radius 0.25 --grade 6.3 \\\n      --measured scenarios/fan_rotor_measured.csv      from measured phasors, to grade G 6.3\n\nThe grade is judged at the service speed (--service-rpm, default the scene's rate) in the bearing planes;\n--rpm is the speed of the measured runs. A likely unit slip is warned of and the verdict reads `unverified`.\n\nPhasors: amp*cos(theta + phase), theta turned since the reference mark passed the sensor; trial angles\nfrom the mark in the direction of rotation (or both the other way: the corrections follow the trials' convention)."
+)]
 pub struct BalanceArgs {
     /// Scene file (TOML) with a fixed_axis or hinge motion.
     pub scene: PathBuf,

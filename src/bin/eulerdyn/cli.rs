@@ -72,22 +72,13 @@ pub enum Command {
     ///
     /// One panel per quantity, in a grid: H in body and in space axes, the moment M, omega, the energy, and the
     /// drift of the scene's invariants on a log scale.
-    #[command(
-        after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (`all`: these six, which every run has); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings; bearings_space draws them in space axes). Default: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
-    )]
     Plot(PlotArgs),
     /// Work-precision study: every applicable method over a sweep of tolerances or step sizes, its error against
     /// the closed form (or a reference run) and its cost in wall time, steps and evaluations.
-    #[command(
-        after_help = "Example:\n  eulerdyn accuracy scenarios/asymmetric_free.toml -o table.csv --plot work_precision.svg\n\nWithout -o the table goes to stdout and the summary to stderr; with -o the summary goes to stdout."
-    )]
     Accuracy(AccuracyArgs),
     /// Two-plane balancing of a fixed-axis or hinge scene: the correction masses that remove the static and the
     /// dynamic imbalance, so that the rotating bearing reactions vanish at every rate; from the scene's mass
     /// distribution or from measured 1x phasors, with the ISO 21940-11 balance grade before and after.
-    #[command(
-        after_help = "Examples:\n  eulerdyn balance scenarios/rotor_bearings.toml --planes -0.1,0.1 --radius 0.2 -o balanced.toml\n  eulerdyn balance scenarios/fan_rotor_g63.toml --planes -0.1,0.08 --radius 0.25 --grade 6.3 \\\n      --measured scenarios/fan_rotor_measured.csv      from measured phasors, to grade G 6.3\n\nThe grade is judged at the service speed (--service-rpm, default the scene's rate) in the bearing planes;\n--rpm is the speed of the measured runs. A likely unit slip is warned of and the verdict reads `unverified`.\n\nPhasors: amp*cos(theta + phase), theta turned since the reference mark passed the sensor; trial angles\nfrom the mark in the direction of rotation (or both the other way: the corrections follow the trials' convention)."
-    )]
     Balance(BalanceArgs),
     /// Sweeps and Monte Carlo: many runs of a base scene with numeric keys set from grids or random draws, run in
     /// parallel, one results row per run (largest loads, drifts, final omega, cost).
@@ -107,6 +98,9 @@ pub enum Command {
 }
 
 #[derive(Debug, Args)]
+#[command(
+    after_help = "Example:\n  eulerdyn accuracy scenarios/asymmetric_free.toml -o table.csv --plot work_precision.svg\n\nWithout -o the table goes to stdout and the summary to stderr; with -o the summary goes to stdout."
+)]
 pub struct AccuracyArgs {
     /// Scene file (TOML).
     pub scene: PathBuf,
@@ -122,6 +116,9 @@ pub struct AccuracyArgs {
 }
 
 #[derive(Debug, Args)]
+#[command(
+    after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (`all`: these six, which every run has); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings; bearings_space draws them in space axes). Default: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
+)]
 pub struct PlotArgs {
     /// CSV written by `eulerdyn run` (columns are found by their header names); `-`: stdin.
     #[arg(value_name = "RUN.csv")]

@@ -1,14 +1,17 @@
-//! The scene file's form: one flat struct per table, every key an `Option` (absent means the documented default),
-//! so that serde reads any file and [`super::from_file`] can name the key at fault — its messages (key, line and
-//! column) would be lost inside serde's internally tagged enums. The typed [`super::SceneFile`] is read and
-//! written through this form.
+//! The scene file's own tables (a capability declares its table in its folder): one flat struct per table, every
+//! optional key an `Option` (absent means the documented default), so that serde reads any file and
+//! [`super::from_file`] can name the key at fault — its messages (key, line and column) would be lost inside serde's
+//! internally tagged enums. The typed [`super::SceneSpec`] is read and written through this form; `[solver]`,
+//! `[output]` and `[compare]` have no keys that depend on another, so their tables are their typed specs.
 
 use serde::{Deserialize, Serialize};
 
-use super::{CompareSpec, InertiaSpec, MotionKind, OutputSpec, SolverSpec};
+use super::{InertiaSpec, MotionKind};
 use crate::effects::EffectFile;
 use crate::events::EventFile;
+use crate::frames::Form;
 use crate::keys::{file_table, key, position};
+use crate::method::{Backend, Method};
 use crate::motion::carrier::spec::CarrierSpec;
 use crate::wheels::RotorFile;
 
@@ -121,5 +124,47 @@ file_table! {
     }
     either {
         attitude, attitude_euler_deg: "give either `attitude` or `attitude_euler_deg`, not both";
+    }
+}
+
+file_table! {
+    /// `[solver]`.
+    #[derive(Copy)]
+    pub struct SolverSpec(pub) "[solver]",
+        "the integration; `run --method --frame --backend --rtol --atol --dt --t-end` override it" {
+        /// Default [`Method::DEFAULT`].
+        opt method: Method = key("\"rk4\" | \"split2\" | \"split4\" | \"dopri5\" | \"dop853\" | \"exact\"", "–", "\"dop853\"", "", "fixed step (`dt`), adaptive, or the torque-free closed form");
+        /// The form of Euler's equation (default body).
+        opt form as "frame": Form = key("\"body\" | \"space\"", "–", "\"body\"", "", "which form of Euler's equation is integrated");
+        /// Default own.
+        opt backend: Backend = key("\"own\" | \"ode_solvers\"", "–", "\"own\"", "", "the Runge–Kutta implementation");
+        /// Default [`crate::method::defaults::RTOL`].
+        opt rtol: f64 = key("number", "1", "1e-10", "", "adaptive methods, in [1e-14, 1)");
+        /// Default [`crate::method::defaults::ATOL`].
+        opt atol: f64 = key("number", "as the state", "1e-12", "", "adaptive methods, > 0");
+        /// Default [`crate::method::defaults::DT`] (s).
+        opt dt: f64 = key("number", "s", "1e-3", "", "fixed-step methods, > 0");
+        /// s, ≥ 0, required.
+        req t_end: f64 = key("number", "s", "required", "", "≥ 0");
+    }
+}
+
+file_table! {
+    /// `[output]`.
+    #[derive(Copy)]
+    pub struct OutputSpec(pub) "[output]",
+        "the rows; `run --every` overrides it" {
+        /// s between rows, > 0, required.
+        req every: f64 = key("number", "s", "required", "", "> 0: rows at t = k·every and at t_end");
+    }
+}
+
+file_table! {
+    /// `[compare]`.
+    #[derive(Copy)]
+    pub struct CompareSpec(pub) "[compare]",
+        "`eulerdyn compare`'s tolerance" {
+        /// Largest allowed difference for `eulerdyn compare`.
+        req tolerance: f64 = key("number", "as the quantity", "1e-8", "", "largest accepted difference, > 0");
     }
 }

@@ -14,14 +14,14 @@ mod motion;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::frames::Form;
-use crate::keys::{file_table, key};
-use crate::method::{Backend, Method};
+use crate::method::Method;
 
 pub use crate::effects::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use crate::events::{ConditionSpec, Direction, EventSpec, Extremum};
 pub use crate::wheels::{RotorDrive, RotorSpec};
 pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
 pub(in crate::scene) use file_form::SceneFile;
+pub use file_form::{CompareSpec, OutputSpec, SolverSpec};
 pub use motion::{
     AxisDirection, AxisParts, AxisSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
     MotionSpec, RateSpec, VehicleSpec,
@@ -68,48 +68,6 @@ pub enum AttitudeSpec {
     Quaternion([f64; 4]),
     /// `attitude_euler_deg = [z, y, x]`: intrinsic z-y'-x'' angles in degrees.
     EulerDeg([f64; 3]),
-}
-
-file_table! {
-    /// `[solver]`.
-    #[derive(Copy)]
-    pub struct SolverSpec(pub) "[solver]",
-        "the integration; `run --method --frame --backend --rtol --atol --dt --t-end` override it" {
-        /// Default [`Method::DEFAULT`].
-        opt method: Method = key("\"rk4\" | \"split2\" | \"split4\" | \"dopri5\" | \"dop853\" | \"exact\"", "–", "\"dop853\"", "", "fixed step (`dt`), adaptive, or the torque-free closed form");
-        /// The form of Euler's equation (default body).
-        opt form as "frame": Form = key("\"body\" | \"space\"", "–", "\"body\"", "", "which form of Euler's equation is integrated");
-        /// Default own.
-        opt backend: Backend = key("\"own\" | \"ode_solvers\"", "–", "\"own\"", "", "the Runge–Kutta implementation");
-        /// Default [`crate::method::defaults::RTOL`].
-        opt rtol: f64 = key("number", "1", "1e-10", "", "adaptive methods, in [1e-14, 1)");
-        /// Default [`crate::method::defaults::ATOL`].
-        opt atol: f64 = key("number", "as the state", "1e-12", "", "adaptive methods, > 0");
-        /// Default [`crate::method::defaults::DT`] (s).
-        opt dt: f64 = key("number", "s", "1e-3", "", "fixed-step methods, > 0");
-        /// s, ≥ 0, required.
-        req t_end: f64 = key("number", "s", "required", "", "≥ 0");
-    }
-}
-
-file_table! {
-    /// `[output]`.
-    #[derive(Copy)]
-    pub struct OutputSpec(pub) "[output]",
-        "the rows; `run --every` overrides it" {
-        /// s between rows, > 0, required.
-        req every: f64 = key("number", "s", "required", "", "> 0: rows at t = k·every and at t_end");
-    }
-}
-
-file_table! {
-    /// `[compare]`.
-    #[derive(Copy)]
-    pub struct CompareSpec(pub) "[compare]",
-        "`eulerdyn compare`'s tolerance" {
-        /// Largest allowed difference for `eulerdyn compare`.
-        req tolerance: f64 = key("number", "as the quantity", "1e-8", "", "largest accepted difference, > 0");
-    }
 }
 
 impl Serialize for SceneSpec {
