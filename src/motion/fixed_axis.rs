@@ -2,7 +2,8 @@
 //! rod): the angle θ(t) is known in closed form, and the moment the motion requires is inverse dynamics —
 //! computed in body axes (Euler's equation with constant I) and, independently, in space axes with the
 //! coordinate-dependent inertia I_s(θ) (eq. 8.10). In a turning carrier ([`crate::motion::carrier`]) the axis is
-//! fixed in the carrier and the methods taking an [`AxisAngle`] alone describe the rotation relative to it;
+//! fixed in the carrier and the methods taking an [`AxisAngle`] alone describe the rotation relative to it, their
+//! vectors in body axes or in the carrier's ([`CarrierAxes`], `_c`: space axes when nothing moves the support);
 //! [`FixedAxis::rotation`] and [`FixedAxis::sample`] give the motion in space, ω = Ω_c + θ̇ u. In a vehicle
 //! ([`crate::motion::carrier::vehicle`]) A accelerates at a_A: the rotation is the same, C's acceleration gains a_A
 //! and the moment about A gains ρ × m a_A; every moment here is about A.
@@ -12,21 +13,22 @@ use std::sync::Arc;
 use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
-use crate::frames::Form;
+use crate::frames::{BodyAxes, CarrierAxes, Form, SpaceAxes, Vector};
 use crate::kinetics::kinetic_energy;
 use crate::motion::moving_support::{MovingSupport, SupportMotion};
 use crate::motion::support::Bearings;
 use crate::sample::{BearingLoads, Sample, SupportLoads};
 
 /// Rotation about a fixed axis through the fixed point A: θ(t) = θ̇₀ t + ½ θ̈ t², attitude
-/// R(t) = Rot(a_s, θ(t))·R₀ with a_s = R₀ a_b, so that the axis a_b is fixed in the body and in space.
+/// R(t) = Rot(a_c, θ(t))·R₀ with a_c = R₀ a_b, so that the axis a_b is fixed in the body and in the support (space, or
+/// a carrier's axes).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FixedAxis {
     mass: f64,
     /// Unit axis in body axes.
     axis_b: Unit<Vector3<f64>>,
-    /// Unit axis in space axes, a_s = R₀ a_b.
-    axis_s: Unit<Vector3<f64>>,
+    /// Unit axis in the support's axes, a_c = R₀ a_b (space axes when the support does not move).
+    axis_c: Unit<Vector3<f64>>,
     /// θ̇ at t = 0 (rad/s).
     rate: f64,
     /// θ̈, constant (rad/s²).
@@ -72,7 +74,7 @@ impl FixedAxis {
         Self {
             mass: body.mass(),
             axis_b,
-            axis_s: Unit::new_normalize(q0 * axis_b.into_inner()),
+            axis_c: Unit::new_normalize(q0 * axis_b.into_inner()),
             rate,
             accel,
             q0,
@@ -114,8 +116,8 @@ impl FixedAxis {
     ///     .with_support(Carrier::new(Vector3::new(0.0, 0.0, 0.5), Profile::Constant));
     /// assert!(rotor.moving_support().is_some());
     /// // The gyroscopic couple Ω_c × H = I_x θ̇ Ω_c = 10 N·m about y.
-    /// let m_s = rotor.required_moment_s(0.0, Form::Body);
-    /// assert!((m_s - Vector3::new(0.0, 10.0, 0.0)).norm() < 1e-12);
+    /// let m_a_s = rotor.required_moment_a_s(0.0, Form::Body);
+    /// assert!((*m_a_s - Vector3::new(0.0, 10.0, 0.0)).norm() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn with_support(mut self, support: impl MovingSupport) -> Self {
@@ -206,9 +208,9 @@ impl FixedAxis {
         -self.rho_c_b
     }
 
-    /// Unit axis in space axes.
-    pub fn axis_s(&self) -> &Unit<Vector3<f64>> {
-        &self.axis_s
+    /// The unit axis a_c in the support's axes: a carrier's, or space's when the support does not move.
+    pub fn axis_c(&self) -> Vector<CarrierAxes> {
+        Vector::new(self.axis_c.into_inner())
     }
 
     /// Inertia about the moment center A, in body axes: I_A = I_C + m(|ρ|²E − ρρᵀ).
@@ -254,55 +256,58 @@ impl FixedAxis {
         }
     }
 
-    /// Attitude R(θ) = Rot(a_s, θ)·R₀ (body → space; body → carrier in a carrier).
+    /// Attitude R(θ) = Rot(a_c, θ)·R₀, body → the support's axes (body → space when the support does not move).
     pub fn attitude(&self, theta: f64) -> UnitQuaternion<f64> {
-        UnitQuaternion::from_axis_angle(&self.axis_s, theta) * self.q0
+        UnitQuaternion::from_axis_angle(&self.axis_c, theta) * self.q0
     }
 
-    /// ω_b = θ̇ a_b.
-    pub fn omega_b(&self, angle: &AxisAngle) -> Vector3<f64> {
-        self.axis_b.into_inner() * angle.theta_dot
+    /// ω_b = θ̇ a_b, relative to the support.
+    pub fn omega_b(&self, angle: &AxisAngle) -> Vector<BodyAxes> {
+        Vector::new(self.axis_b.into_inner() * angle.theta_dot)
     }
 
-    /// ω_s = θ̇ a_s.
-    pub fn omega_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        self.axis_s.into_inner() * angle.theta_dot
+    /// ω_c = θ̇ a_c, relative to the support, in its axes.
+    pub fn omega_c(&self, angle: &AxisAngle) -> Vector<CarrierAxes> {
+        Vector::new(self.axis_c.into_inner() * angle.theta_dot)
     }
 
-    /// Moment of momentum about the fixed point A in body axes, H_A = I_A · ω (eq. 8.6).
-    pub fn h_b(&self, angle: &AxisAngle) -> Vector3<f64> {
-        self.inertia_a_b * self.omega_b(angle)
+    /// Moment of momentum about the axis point A in body axes, H_A = I_A · ω (eq. 8.6), ω relative to the support.
+    pub fn h_a_b(&self, angle: &AxisAngle) -> Vector<BodyAxes> {
+        Vector::new(self.inertia_a_b * *self.omega_b(angle))
     }
 
     /// Required moment about A in body axes, Euler's equation with the constant body inertia:
-    /// M_b = I_A · α + ω × (I_A · ω), with α = θ̈ a_b (eq. 8.9 in body axes).
-    pub fn moment_b(&self, angle: &AxisAngle) -> Vector3<f64> {
-        let omega_b = self.omega_b(angle);
+    /// M_b = I_A · α + ω × (I_A · ω), with α = θ̈ a_b (eq. 8.9 in body axes), the support at rest.
+    pub fn moment_a_b(&self, angle: &AxisAngle) -> Vector<BodyAxes> {
+        let omega_b = self.omega_b(angle).into_inner();
         let alpha_b = self.axis_b.into_inner() * angle.theta_ddot;
-        self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b))
+        Vector::new(self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b)))
     }
 
-    /// The coordinate-dependent inertia in space axes, I_s(θ) = R(θ) I_A Rᵀ(θ) (eq. 8.10; the notes' rod example
-    /// I(θ) = Tᵗ I T).
-    pub fn inertia_s(&self, theta: f64) -> Matrix3<f64> {
+    /// The coordinate-dependent inertia about A in the support's axes, I_c(θ) = R(θ) I_A Rᵀ(θ) (eq. 8.10 in space
+    /// axes; the notes' rod example I(θ) = Tᵗ I T).
+    pub fn inertia_a_c(&self, theta: f64) -> Matrix3<f64> {
         let r = self.attitude(theta).to_rotation_matrix();
         r.matrix() * self.inertia_a_b * r.matrix().transpose()
     }
 
-    /// dI_s/dθ = â_s I_s − I_s â_s, since dR/dθ = â_s R (â the cross-product matrix of a_s).
-    pub fn inertia_s_derivative(&self, theta: f64) -> Matrix3<f64> {
-        let a_hat = self.axis_s.into_inner().cross_matrix();
-        let i_s = self.inertia_s(theta);
-        a_hat * i_s - i_s * a_hat
+    /// dI_c/dθ = â_c I_c − I_c â_c, since dR/dθ = â_c R (â the cross-product matrix of a_c).
+    pub fn inertia_a_c_derivative(&self, theta: f64) -> Matrix3<f64> {
+        let a_hat = self.axis_c.into_inner().cross_matrix();
+        let i_c = self.inertia_a_c(theta);
+        a_hat * i_c - i_c * a_hat
     }
 
-    /// Required moment about A in space axes, Euler's equation with the coordinate-dependent inertia (eq. 8.10):
-    /// M_s = d/dt[I_s(θ) ω_s] = (dI_s/dθ) θ̇ ω_s + I_s(θ) ω̇_s, with ω̇_s = θ̈ a_s.
-    pub fn moment_s(&self, angle: &AxisAngle) -> Vector3<f64> {
-        let omega_s = self.omega_s(angle);
-        let omega_dot_s = self.axis_s.into_inner() * angle.theta_ddot;
-        self.inertia_s_derivative(angle.theta) * omega_s * angle.theta_dot
-            + self.inertia_s(angle.theta) * omega_dot_s
+    /// Required moment about A in the support's axes, Euler's equation with the coordinate-dependent inertia
+    /// (eq. 8.10), the support at rest: M_c = d/dt[I_c(θ) ω_c] = (dI_c/dθ) θ̇ ω_c + I_c(θ) ω̇_c, with ω̇_c = θ̈ a_c.
+    /// Without a moving support these are space axes.
+    pub fn moment_a_c(&self, angle: &AxisAngle) -> Vector<CarrierAxes> {
+        let omega_c = self.omega_c(angle).into_inner();
+        let omega_dot_c = self.axis_c.into_inner() * angle.theta_ddot;
+        Vector::new(
+            self.inertia_a_c_derivative(angle.theta) * omega_c * angle.theta_dot
+                + self.inertia_a_c(angle.theta) * omega_dot_c,
+        )
     }
 }
 
@@ -357,7 +362,7 @@ impl FixedAxis {
     fn relative(&self, theta: f64) -> AxisRotation {
         AxisRotation {
             q: self.attitude(theta),
-            u_s: self.axis_s.into_inner(),
+            u_s: self.axis_c.into_inner(),
             omega_b: Vector3::zeros(),
             omega_s: Vector3::zeros(),
             bias_s: Vector3::zeros(),
@@ -374,7 +379,7 @@ impl FixedAxis {
                 let q = c.q_c * self.attitude(theta);
                 AxisRotation {
                     q,
-                    u_s: c.q_c * self.axis_s.into_inner(),
+                    u_s: c.q_c * self.axis_c.into_inner(),
                     omega_b: q.inverse_transform_vector(&c.omega_c_s),
                     omega_s: c.omega_c_s,
                     bias_s: c.omega_c_dot_s,
@@ -457,20 +462,20 @@ impl FixedAxis {
     /// The moment about A the prescribed motion requires at time t, space axes, computed in the form `frame`
     /// selects: R(θ)·(I_A α + ω × I_A ω) (body form) or d/dt[I_s ω_s] (space form, eq. 8.10), in a carrier with
     /// ω = Ω_c + θ̇ u.
-    pub fn required_moment_s(&self, t: f64, form: Form) -> Vector3<f64> {
+    pub fn required_moment_a_s(&self, t: f64, form: Form) -> Vector<SpaceAxes> {
         let angle = self.angle(t);
-        match (self.moving_support(), form) {
-            (None, Form::Space) => self.moment_s(&angle),
-            (None, Form::Body) => self.attitude(angle.theta) * self.moment_b(&angle),
+        Vector::new(match (self.moving_support(), form) {
+            (None, Form::Space) => self.moment_a_c(&angle).into_inner(),
+            (None, Form::Body) => self.attitude(angle.theta) * *self.moment_a_b(&angle),
             (Some(_), _) => {
                 let rotation = self.rotation(t, angle.theta, angle.theta_dot);
                 self.moment_in_carrier(&rotation, angle.theta_ddot, form).1
             }
-        }
+        })
     }
 
     /// The full kinetic state at time t, with the required moment computed in the form `frame` selects (the other
-    /// frame's components by rotation): body form [`FixedAxis::moment_b`], space form [`FixedAxis::moment_s`] (in
+    /// frame's components by rotation): body form [`FixedAxis::moment_a_b`], space form [`FixedAxis::moment_a_c`] (in
     /// a carrier, their generalisations with ω = Ω_c + θ̇ u). Energy is ½ ω·H_A, the body's whole kinetic energy
     /// since A is fixed (in a vehicle, where A accelerates, the kinetic energy of the motion relative to A).
     pub fn sample(&self, t: f64, form: Form) -> Sample {
@@ -497,11 +502,11 @@ impl FixedAxis {
         let (m_b, m_s) = match (rotation.support, form) {
             (Some(_), _) => self.moment_in_carrier(rotation, angle.theta_ddot, form),
             (None, Form::Body) => {
-                let m_b = self.moment_b(&angle);
+                let m_b = self.moment_a_b(&angle).into_inner();
                 (m_b, q * m_b)
             }
             (None, Form::Space) => {
-                let m_s = self.moment_s(&angle);
+                let m_s = self.moment_a_c(&angle).into_inner();
                 (q.inverse() * m_s, m_s)
             }
         };

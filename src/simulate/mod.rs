@@ -388,7 +388,7 @@ struct RequiredMomentRate<'a> {
 impl RequiredMomentRate<'_> {
     /// M_s(t): (dI_s/dθ) θ̇ ω_s + I_s ω̇_s (space form, eq. 8.10) or R(θ)·(I α + ω × I ω) (body form).
     fn moment_s(&self, t: f64) -> Vector3<f64> {
-        self.motion.required_moment_s(t, self.form)
+        self.motion.required_moment_a_s(t, self.form).into_inner()
     }
 }
 

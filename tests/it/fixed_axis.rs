@@ -16,7 +16,7 @@ use eulerdyn::sample::Sample;
 use eulerdyn::scene::Motion;
 use eulerdyn::scene::{self, Overrides};
 use eulerdyn::simulate;
-use nalgebra::{Matrix3, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
 const MASS: f64 = 2.0;
 const RADIUS: f64 = 0.3;
@@ -59,7 +59,7 @@ fn disk_part_a_central_moment_of_momentum_in_principal_axes() {
     let mr2 = MASS * RADIUS * RADIUS;
     for theta in tilts() {
         let motion = disk_motion(theta);
-        let h_b = motion.h_b(&motion.angle(0.37));
+        let h_b = motion.h_a_b(&motion.angle(0.37)).into_inner();
         let expected = Vector3::new(
             0.0,
             -0.25 * mr2 * OMEGA * theta.sin(),
@@ -94,8 +94,8 @@ fn disk_part_b_inertia_and_moment_of_momentum_in_axes_along_the_spin_axis() {
             Vector3::zeros(),
             attitude,
         );
-        assert_relative_eq!(motion.axis_s().into_inner(), Vector3::z(), epsilon = 1e-15);
-        let i_bar = motion.inertia_s(0.0);
+        assert_relative_eq!(motion.axis_c().into_inner(), Vector3::z(), epsilon = 1e-15);
+        let i_bar = motion.inertia_a_c(0.0);
         let expected = Matrix3::new(
             q,
             0.0,
@@ -149,7 +149,7 @@ fn thin_rod_inertia_depends_on_the_angle_as_in_the_notes() {
         let theta = step as f64 * 2.0 * PI / 72.0;
         let (s, c) = theta.sin_cos();
         let expected = Matrix3::new(s * s, s * c, 0.0, s * c, c * c, 0.0, 0.0, 0.0, 1.0) * k;
-        let i_s = motion.inertia_s(theta);
+        let i_s = motion.inertia_a_c(theta);
         assert!(
             (i_s - expected).amax() <= 8.0 * f64::EPSILON * k,
             "θ = {theta}: {i_s} vs {expected}"
@@ -166,22 +166,28 @@ fn disk_required_moment_is_omega_cross_h_along_x1_constant_in_body_turning_in_sp
         let motion = disk_motion(theta);
         let magnitude = q * OMEGA * OMEGA * theta.sin() * theta.cos();
         let scale = q * OMEGA * OMEGA;
-        let m_b0 = motion.moment_b(&motion.angle(0.0));
+        let m_b0 = motion.moment_a_b(&motion.angle(0.0)).into_inner();
         assert!((m_b0 - Vector3::new(-magnitude, 0.0, 0.0)).amax() <= 8.0 * f64::EPSILON * scale);
         for t in [0.05, 0.3, 1.7, 12.0] {
             let angle = motion.angle(t);
             // Constant in body axes.
-            assert!((motion.moment_b(&angle) - m_b0).amax() <= 8.0 * f64::EPSILON * scale);
+            assert!(
+                (motion.moment_a_b(&angle).into_inner() - m_b0).amax()
+                    <= 8.0 * f64::EPSILON * scale
+            );
             // In space it turns about the axis at rate ω: M_s(t) = Rot(a_s, ωt)·M_s(0).
-            let turned = UnitQuaternion::from_axis_angle(motion.axis_s(), OMEGA * t)
-                * motion.moment_s(&motion.angle(0.0));
-            let m_s = motion.moment_s(&angle);
+            // Without a carrier the support's axes are space axes (`_c` = `_s`).
+            let turned =
+                UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*motion.axis_c()), OMEGA * t)
+                    * motion.moment_a_c(&motion.angle(0.0)).into_inner();
+            let m_s = motion.moment_a_c(&angle).into_inner();
             assert!(
                 (m_s - turned).amax() <= 64.0 * f64::EPSILON * scale,
                 "θ = {theta}, t = {t}: {m_s} vs {turned}"
             );
             // Both forms agree to round-off (the 1e-12 relative).
-            let m_s_from_body = motion.attitude(angle.theta) * motion.moment_b(&angle);
+            let m_s_from_body =
+                motion.attitude(angle.theta) * motion.moment_a_b(&angle).into_inner();
             assert!(rel_err(&m_s, &m_s_from_body, scale) <= 1e-12);
         }
     }
@@ -189,8 +195,8 @@ fn disk_required_moment_is_omega_cross_h_along_x1_constant_in_body_turning_in_sp
     for theta in [0.0, FRAC_PI_2] {
         let motion = disk_motion(theta);
         let angle = motion.angle(0.4);
-        assert!(motion.moment_b(&angle).norm() <= 8.0 * f64::EPSILON * q * OMEGA * OMEGA);
-        assert!(motion.moment_s(&angle).norm() <= 8.0 * f64::EPSILON * q * OMEGA * OMEGA);
+        assert!(motion.moment_a_b(&angle).norm() <= 8.0 * f64::EPSILON * q * OMEGA * OMEGA);
+        assert!(motion.moment_a_c(&angle).norm() <= 8.0 * f64::EPSILON * q * OMEGA * OMEGA);
     }
 }
 
@@ -225,8 +231,8 @@ fn required_moment_is_the_rate_of_change_of_h_s() {
                 );
             }
             let rel = rel_err(
-                &motion.moment_s(&angle),
-                &(motion.attitude(angle.theta) * motion.moment_b(&angle)),
+                &motion.moment_a_c(&angle).into_inner(),
+                &(motion.attitude(angle.theta) * motion.moment_a_b(&angle).into_inner()),
                 scale,
             );
             assert!(rel <= 1e-12, "body and space forms differ by {rel}");
@@ -364,7 +370,7 @@ fn offset_point_force_is_m_a_c_and_h_about_the_fixed_point_is_i_a_omega() {
         let rho_s = row.q * motion.rho_c_b();
         assert_relative_eq!(rho_s.norm(), e, max_relative = 1e-14);
         let inward = -rho_s / e;
-        let axis_s = motion.axis_s().into_inner();
+        let axis_s = motion.axis_c().into_inner();
         let tangent = axis_s.cross(&(rho_s / e));
         let scale = MASS * w * w * e;
         assert!((f.dot(&inward) - MASS * w * w * e).abs() <= 1e-13 * scale);
