@@ -4,8 +4,11 @@ use std::borrow::Cow;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-/// The state of the body at one output time. Vectors carry their frame in the name: `_b` body axes, `_s` space
-/// axes. H and M are about the moment center (C, the fixed pivot, or the fixed-axis point).
+use crate::frames::{BodyAxes, SpaceAxes, Vector};
+
+/// The state of the body at one output time. Vectors carry their axes in their type and their name: `_b` body
+/// axes ([`BodyAxes`]), `_s` space axes ([`SpaceAxes`]). H and M are about the moment center (C, the fixed pivot,
+/// or the fixed-axis point).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
     /// Time (s).
@@ -13,25 +16,25 @@ pub struct Sample {
     /// Attitude, body → space.
     pub q: UnitQuaternion<f64>,
     /// Angular velocity (rad/s).
-    pub omega_b: Vector3<f64>,
+    pub omega_b: Vector<BodyAxes>,
     /// Angular velocity in space axes (rad/s).
-    pub omega_s: Vector3<f64>,
+    pub omega_s: Vector<SpaceAxes>,
     /// Moment of momentum about the moment center (kg·m²/s).
-    pub h_b: Vector3<f64>,
+    pub h_b: Vector<BodyAxes>,
     /// H in space axes.
-    pub h_s: Vector3<f64>,
+    pub h_s: Vector<SpaceAxes>,
     /// Resultant external moment about the moment center (N·m).
-    pub m_b: Vector3<f64>,
+    pub m_b: Vector<BodyAxes>,
     /// M in space axes.
-    pub m_s: Vector3<f64>,
+    pub m_s: Vector<SpaceAxes>,
     /// Kinetic energy ½ ω·H (J).
     pub energy: f64,
     /// Prescribed motion: angle turned about the fixed axis (rad).
     pub theta: Option<f64>,
     /// Prescribed motion with C off the axis: the required force F = m a_C (N, space axes).
-    pub f_s: Option<Vector3<f64>>,
+    pub f_s: Option<Vector<SpaceAxes>>,
     /// Prescribed motion: H_s obtained by integrating Ḣ_s = M_s numerically (kg·m²/s, space axes).
-    pub h_s_integrated: Option<Vector3<f64>>,
+    pub h_s_integrated: Option<Vector<SpaceAxes>>,
     /// Rotation about a fixed axis: what the support (bearings and drive) supplies.
     pub support: Option<SupportLoads>,
     /// With gravity: the potential energy V = −m g·r_C, r_C from the moment center in space axes (J).
@@ -53,12 +56,12 @@ impl Sample {
         Sample {
             t,
             q,
-            omega_b,
-            omega_s: q * omega_b,
-            h_b,
-            h_s,
-            m_b,
-            m_s,
+            omega_b: Vector::new(omega_b),
+            omega_s: Vector::new(q * omega_b),
+            h_b: Vector::new(h_b),
+            h_s: Vector::new(h_s),
+            m_b: Vector::new(m_b),
+            m_s: Vector::new(m_s),
             energy: 0.5 * omega_b.dot(&h_b),
             theta: None,
             f_s: None,
@@ -411,7 +414,7 @@ impl ColumnSet {
         out.clear();
         out.push(s.t);
         out.extend([s.q.w, s.q.i, s.q.j, s.q.k]);
-        for v in [&s.omega_b, &s.omega_s, &s.h_b, &s.h_s, &s.m_b, &s.m_s] {
+        for v in [*s.omega_b, *s.omega_s, *s.h_b, *s.h_s, *s.m_b, *s.m_s] {
             out.extend(v.iter());
         }
         out.push(s.energy);
@@ -420,10 +423,18 @@ impl ColumnSet {
             out.push(s.theta.unwrap_or(f64::NAN));
         }
         if self.force {
-            out.extend(s.f_s.unwrap_or(Vector3::repeat(f64::NAN)).iter());
+            out.extend(
+                s.f_s
+                    .map_or(Vector3::repeat(f64::NAN), Vector::into_inner)
+                    .iter(),
+            );
         }
         if self.h_s_integrated {
-            out.extend(s.h_s_integrated.unwrap_or(Vector3::repeat(f64::NAN)).iter());
+            out.extend(
+                s.h_s_integrated
+                    .map_or(Vector3::repeat(f64::NAN), Vector::into_inner)
+                    .iter(),
+            );
         }
         let nan3 = Vector3::repeat(f64::NAN);
         if self.support {

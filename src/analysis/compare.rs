@@ -80,13 +80,14 @@ impl Differences {
 
     fn add_exact(&mut self, s: &Sample, e: &Exact) {
         if let Some(omega_b) = e.omega_b {
-            self.omega.add((s.omega_b - omega_b).norm(), omega_b.norm());
+            self.omega
+                .add((*s.omega_b - omega_b).norm(), omega_b.norm());
         }
         if let Some(q) = e.q {
             self.attitude.add(attitude_angle(&s.q, &q), 0.0);
         }
         if let Some(h_s) = e.h_s {
-            self.h_s.add((s.h_s - h_s).norm(), h_s.norm());
+            self.h_s.add((*s.h_s - h_s).norm(), h_s.norm());
             self.h_norm
                 .add((s.h_s.norm() - h_s.norm()).abs(), h_s.norm());
         }

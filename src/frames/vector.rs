@@ -5,7 +5,7 @@
 
 use std::fmt;
 use std::marker::PhantomData;
-use std::ops::{Add, AddAssign, Deref, Mul, Neg, Sub};
+use std::ops::{Add, AddAssign, Deref, Div, Mul, Neg, Sub};
 
 use nalgebra::Vector3;
 
@@ -108,6 +108,13 @@ impl<F: Frame> fmt::Debug for Vector<F> {
     }
 }
 
+/// The coordinates as nalgebra prints them.
+impl<F: Frame> fmt::Display for Vector<F> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.coordinates, f)
+    }
+}
+
 impl<F: Frame> Add for Vector<F> {
     type Output = Self;
 
@@ -143,5 +150,21 @@ impl<F: Frame> Mul<f64> for Vector<F> {
 
     fn mul(self, factor: f64) -> Self {
         Self::new(self.coordinates * factor)
+    }
+}
+
+impl<F: Frame> Mul<Vector<F>> for f64 {
+    type Output = Vector<F>;
+
+    fn mul(self, v: Vector<F>) -> Vector<F> {
+        v * self
+    }
+}
+
+impl<F: Frame> Div<f64> for Vector<F> {
+    type Output = Self;
+
+    fn div(self, divisor: f64) -> Self {
+        Self::new(self.coordinates / divisor)
     }
 }

@@ -961,7 +961,7 @@ mod tests {
         assert_eq!(evals, 40 * 2);
         let t = 40.0 * h;
         let omega = lp.sample(t, &y).omega_b;
-        assert!((omega - exact.omega_p(t)).norm() <= 1e-13 * omega0.norm());
+        assert!((*omega - exact.omega_p(t)).norm() <= 1e-13 * omega0.norm());
         assert!(unit(&y.q_p).angle_to(&exact.attitude(t)) <= 1e-13);
     }
 }

@@ -217,7 +217,7 @@ impl DivergenceGuard {
             hint: self.hint,
         };
         let h_norm = s.h_s.norm();
-        let h_moved = (s.h_s - self.h0_s).norm();
+        let h_moved = (*s.h_s - self.h0_s).norm();
         if self.conserved {
             let (de, dh) = (delta * self.e0, delta * self.h0_norm);
             if !within((s.energy - self.e0).abs(), de) {

@@ -12,7 +12,7 @@ use nalgebra::{SVector, Vector3};
 
 use crate::effects::{EffectMoments, TorqueFree};
 use crate::events::{Locator, Occurrence};
-use crate::frames::Form;
+use crate::frames::{Form, Vector};
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::Method;
 use crate::motion::exact_flow::ExactFlow;
@@ -409,10 +409,10 @@ fn run_fixed_axis<E>(
     locator: Option<&mut Locator>,
 ) -> Result<Stats, IntegrateError<Stop<E>>> {
     let form = scene.solver.form;
-    let h_s0: Vector3<f64> = motion.sample(0.0, form).h_s;
+    let h_s0: Vector3<f64> = *motion.sample(0.0, form).h_s;
     let mut system = RequiredMomentRate { motion, form };
     let row = |t: f64, h_s_int: &Vector3<f64>| Sample {
-        h_s_integrated: Some(*h_s_int),
+        h_s_integrated: Some(Vector::new(*h_s_int)),
         ..motion.sample(t, form)
     };
     let on_row = |t: f64, h_s_int: &Vector3<f64>| sink(&row(t, h_s_int));

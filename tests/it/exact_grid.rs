@@ -79,7 +79,7 @@ fn equal_grid_matches_the_mpmath_oracle_over_1e5_rows() {
         let (mut k, mut err_omega, mut err_q) = (0usize, 0.0f64, 0.0f64);
         simulate::run(&scene, |s: &Sample| {
             if let Some(o) = at.next_if(|o| o.k == k) {
-                err_omega = err_omega.max((s.omega_b - o.omega_b).norm() / o.omega_b.norm());
+                err_omega = err_omega.max((*s.omega_b - o.omega_b).norm() / o.omega_b.norm());
                 err_q = err_q.max(angle(&s.q, &o.q_b));
             }
             k += 1;

@@ -263,9 +263,9 @@ fn tilted_disk_h_s_turns_about_the_axis_at_rate_omega() {
         assert!((row.h_b - first.h_b).amax() <= 4.0 * f64::EPSILON * scale);
         let turned =
             UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_unchecked(axis_s), OMEGA * row.t)
-                * first.h_s;
+                * *first.h_s;
         assert!(
-            (row.h_s - turned).norm() <= 1e-13 * scale,
+            (*row.h_s - turned).norm() <= 1e-13 * scale,
             "t = {}: {} vs {turned}",
             row.t,
             row.h_s
@@ -333,7 +333,7 @@ fn spin_up_moment_is_i_alpha_plus_gyroscopic_term_with_omega_growing() {
         let expected = i_a * alpha + a.cross(&i_a) * (w * w);
         let scale = expected.norm().max(q * alpha);
         assert!(
-            (row.m_b - expected).norm() <= 1e-14 * scale,
+            (*row.m_b - expected).norm() <= 1e-14 * scale,
             "t = {}: {} vs {expected}",
             row.t,
             row.m_b
@@ -378,10 +378,10 @@ fn offset_point_force_is_m_a_c_and_h_about_the_fixed_point_is_i_a_omega() {
         assert!(f.dot(&axis_s).abs() <= 1e-13 * scale);
         // H about A by transport from C.
         let omega_s = row.omega_s;
-        let h_c_s = row.q * (disk().inertia_c() * row.omega_b);
+        let h_c_s = row.q * (disk().inertia_c() * *row.omega_b);
         let v_c = omega_s.cross(&rho_s);
         let h_a_transport = h_c_s + rho_s.cross(&(v_c * MASS));
-        assert!((row.h_s - h_a_transport).norm() <= 1e-14 * row.h_s.norm());
+        assert!((*row.h_s - h_a_transport).norm() <= 1e-14 * row.h_s.norm());
         // Energy: whole kinetic energy ½ m v_C² + ½ ω·I_C ω equals ½ ω·H_A.
         let t_c = 0.5 * MASS * v_c.norm_squared() + 0.5 * omega_s.dot(&h_c_s);
         assert_relative_eq!(row.energy, t_c, max_relative = 1e-14);

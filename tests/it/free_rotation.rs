@@ -128,7 +128,7 @@ fn torque_free_asymmetric_body_matches_the_jacobi_elliptic_solution() {
             let (mut err_w, mut err_q) = (0.0f64, 0.0f64);
             for row in rows(&scene) {
                 let w = p_b * exact.omega_p(row.t);
-                err_w = err_w.max((row.omega_b - w).norm() / omega0_b.norm());
+                err_w = err_w.max((*row.omega_b - w).norm() / omega0_b.norm());
                 err_q = err_q.max(attitude_angle(
                     &row.q,
                     &(exact.attitude(row.t) * p_b.inverse()),
@@ -216,7 +216,7 @@ fn symmetric_body_precesses_in_the_body_at_the_closed_form_rate() {
         for row in rows(&scene) {
             let expected = Vector3::new(w * (rate * row.t).cos(), w * (rate * row.t).sin(), w3);
             assert!(
-                (row.omega_b - expected).norm() <= limit * w3,
+                (*row.omega_b - expected).norm() <= limit * w3,
                 "{} t = {}: {} vs {expected}",
                 label(&o),
                 row.t,
@@ -238,7 +238,7 @@ fn constant_axial_torque_on_a_symmetric_body() {
         for row in rows(&scene) {
             let w = exact.omega_p(row.t);
             assert!(
-                (row.omega_b - w).norm() <= limit * w.norm(),
+                (*row.omega_b - w).norm() <= limit * w.norm(),
                 "{} t = {}",
                 label(&o),
                 row.t
@@ -273,7 +273,7 @@ fn heavy_top_in_steady_precession_and_energy_conservation() {
         for row in rows(&scene) {
             let w = steady.omega_p(row.t);
             assert!(
-                (row.omega_b - w).norm() <= limit * omega3,
+                (*row.omega_b - w).norm() <= limit * omega3,
                 "{} t = {}: ω",
                 label(&o),
                 row.t

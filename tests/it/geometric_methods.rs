@@ -113,7 +113,7 @@ impl Oracle {
             let omega_b = self.p_b * self.exact.omega_p(r.t);
             let q_b = self.exact.attitude(r.t) * self.p_b.inverse();
             (
-                w.max((r.omega_b - omega_b).norm() / scale),
+                w.max((*r.omega_b - omega_b).norm() / scale),
                 q.max(attitude_angle(&r.q, &q_b)),
             )
         })
@@ -355,7 +355,7 @@ fn exact_reads_the_closed_form_two_ways() {
     for (b, s) in body.iter().zip(&space) {
         worst = worst.max((b.omega_b - s.omega_b).norm() / b.omega_b.norm());
         assert_eq!(s.h_s, space[0].h_s);
-        assert_eq!(b.m_b, Vector3::zeros());
+        assert_eq!(*b.m_b, Vector3::zeros());
     }
     println!("exact body vs space: {worst:.2e}");
     assert!(worst <= 1e-14, "{worst:e}");

@@ -66,7 +66,7 @@ pub(crate) fn assert_equilibrium(
             "t = {}: ΣR − F_sup = {force}",
             s.t
         );
-        let m_sup = s.m_s - m_eff_s(s);
+        let m_sup = *s.m_s - m_eff_s(s);
         let m_perp = m_sup - u_s * m_sup.dot(u_s);
         let couple = (u_s * a).cross(&r.r_a_s) + (u_s * b).cross(&r.r_b_s);
         assert!(
@@ -117,7 +117,7 @@ fn the_skewed_disk_bearings_carry_the_notes_couple() {
                     s.t
                 );
                 // ... and turning at ω in space: R_A(t) = Rot(u, ω t) R_A(0).
-                let u_s = s.omega_s / OMEGA;
+                let u_s = *s.omega_s / OMEGA;
                 let turned = nalgebra::UnitQuaternion::from_axis_angle(
                     &nalgebra::Unit::new_normalize(u_s),
                     OMEGA * s.t,
@@ -130,7 +130,7 @@ fn the_skewed_disk_bearings_carry_the_notes_couple() {
                     "no drive at constant rate",
                 );
             }
-            let u_s = rows[0].omega_s / OMEGA;
+            let u_s = *rows[0].omega_s / OMEGA;
             assert_equilibrium(&rows, BEARINGS, |_| u_s, |_| Vector3::zeros());
         }
     }

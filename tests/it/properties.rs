@@ -210,10 +210,10 @@ proptest! {
                 _ => ROUND_OFF * (1.0 + omega * T_END),
             };
             for (x, y) in a.iter().zip(&b) {
-                let w = (turn * x.omega_b - y.omega_b).norm() / omega;
+                let w = (turn * *x.omega_b - *y.omega_b).norm() / omega;
                 let ws = (x.omega_s - y.omega_s).norm() / omega;
                 let q = attitude_angle(&(x.q * r_q.inverse()), &y.q);
-                let h = (x.h_s - y.h_s).norm().max((turn * x.h_b - y.h_b).norm()) / x.h_s.norm();
+                let h = (*x.h_s - *y.h_s).norm().max((turn * *x.h_b - *y.h_b).norm()) / x.h_s.norm();
                 let e = (x.energy - y.energy).abs() / x.energy;
                 prop_assert!(w <= limit && ws <= limit && q <= limit && h <= limit && e <= limit,
                     "{method} t = {}: ω_b {w:e} ω_s {ws:e} q {q:e} H {h:e} E {e:e} > {limit:e}\n{turned}", x.t);

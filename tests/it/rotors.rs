@@ -331,7 +331,7 @@ fn an_imbalanced_wheel_turns_its_force_and_couple_with_it() {
                 let expected =
                     nalgebra::Vector3::z() * (r * scale * phi.sin()) + d * (u_d * spin * spin);
                 assert!(
-                    (s.m_b - expected).norm() <= 1e-9 * expected.norm().max(r * scale),
+                    (*s.m_b - expected).norm() <= 1e-9 * expected.norm().max(r * scale),
                     "Ω₀ = {spin0}, α = {alpha}, t = {}: M_b = {} vs {expected}",
                     s.t,
                     s.m_b

@@ -178,7 +178,7 @@ fn an_unbalanced_rotor_in_a_rolling_heaving_turning_vehicle_agrees_in_both_forms
         for s in rows {
             let f_sup = s.support.unwrap().f_sup_s;
             close(
-                &(s.f_s.unwrap() - Vector3::new(0.0, 0.0, -G * M)),
+                &(*s.f_s.unwrap() - Vector3::new(0.0, 0.0, -G * M)),
                 &f_sup,
                 0.0,
                 "F − m g",

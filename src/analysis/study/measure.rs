@@ -55,7 +55,7 @@ impl Errors {
 
     /// Adds a row against its reference row.
     pub fn add(&mut self, s: &Sample, r: &RefRow) {
-        self.omega = self.omega.max((s.omega_b - r.omega_b).norm());
+        self.omega = self.omega.max((*s.omega_b - r.omega_b).norm());
         if let Some(q) = &r.q {
             Self::max_into(&mut self.attitude, attitude_angle(&s.q, q));
         }
@@ -64,7 +64,7 @@ impl Errors {
         self.h_norm = self.h_norm.max((s.h_s.norm() - r.h_norm).abs());
         self.h_scale = self.h_scale.max(r.h_norm.abs());
         if let Some(h_s) = &r.h_s {
-            Self::max_into(&mut self.h_s, (s.h_s - h_s).norm());
+            Self::max_into(&mut self.h_s, (*s.h_s - h_s).norm());
         }
     }
 
@@ -72,7 +72,7 @@ impl Errors {
     pub fn add_fixed_axis(&mut self, s: &Sample) {
         self.attitude = Some(0.0);
         if let Some(h_int) = &s.h_s_integrated {
-            Self::max_into(&mut self.h_s, (h_int - s.h_s).norm());
+            Self::max_into(&mut self.h_s, (*h_int - s.h_s).norm());
         }
         self.energy_scale = self.energy_scale.max(s.energy.abs());
         self.h_scale = self.h_scale.max(s.h_s.norm());

@@ -153,11 +153,11 @@ fn reference_run(
         let report = simulate::run(&scene, |s: &Sample| {
             rows.push(RefRow {
                 t: s.t,
-                omega_b: s.omega_b,
+                omega_b: *s.omega_b,
                 q: Some(s.q),
                 energy: s.energy,
                 h_norm: s.h_s.norm(),
-                h_s: Some(s.h_s),
+                h_s: Some(*s.h_s),
             });
             Ok::<(), Infallible>(())
         })

@@ -147,7 +147,7 @@ impl Summarizer {
         if let Some(d) = relative(h_norm, h0) {
             r.h_drift = max_of(r.h_drift, d);
         }
-        r.final_omega_b = s.omega_b.into();
+        r.final_omega_b = s.omega_b.into_inner().into();
         if self.wanted.iter().any(Option::is_some) {
             self.columns.values(s, &mut self.row);
             for (slot, at) in r.columns.iter_mut().zip(&self.wanted) {
