@@ -105,29 +105,29 @@ pub struct SupportLoads {
     /// θ̈ (rad/s²).
     pub theta_ddot: f64,
     /// Force the support applies to the body (N, space axes).
-    pub f_sup_s: Vector3<f64>,
+    pub f_sup_s: Vector<SpaceAxes>,
     /// Moment the support (bearings and drive) applies about the axis point, M_sup = dH/dt − Σ M_effects (N·m,
     /// space axes): with `f_sup_s`, the support's share of the resultant.
-    pub m_sup_s: Vector3<f64>,
+    pub m_sup_s: Vector<SpaceAxes>,
     /// Moment about the axis that the drive supplies, M_sup·u (N·m).
     pub m_drive: f64,
     /// The bearings' forces on the body, where the scene places two bearings.
     pub bearings: Option<BearingLoads>,
     /// The carrier's rate Ω_c (rad/s, space axes), when the axis is in a turning carrier.
-    pub omega_c_s: Option<Vector3<f64>>,
+    pub omega_c_s: Option<Vector<SpaceAxes>>,
 }
 
 /// The forces bearings A and B apply to the body (N): R_A + R_B = F_sup, r_A × R_A + r_B × R_B = M_sup⊥.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BearingLoads {
     /// R_A in space axes.
-    pub r_a_s: Vector3<f64>,
+    pub r_a_s: Vector<SpaceAxes>,
     /// R_B in space axes.
-    pub r_b_s: Vector3<f64>,
+    pub r_b_s: Vector<SpaceAxes>,
     /// R_A in body axes.
-    pub r_a_b: Vector3<f64>,
+    pub r_a_b: Vector<BodyAxes>,
     /// R_B in body axes.
-    pub r_b_b: Vector3<f64>,
+    pub r_b_b: Vector<BodyAxes>,
 }
 
 /// Which optional columns a run writes (fixed for the whole run).
@@ -441,16 +441,16 @@ impl ColumnSet {
             let support = s.support;
             out.push(support.map_or(f64::NAN, |l| l.theta_dot));
             out.push(support.map_or(f64::NAN, |l| l.theta_ddot));
-            out.extend(support.map_or(nan3, |l| l.f_sup_s).iter());
+            out.extend(support.map_or(nan3, |l| *l.f_sup_s).iter());
             out.push(support.map_or(f64::NAN, |l| l.m_drive));
         }
         if self.bearings {
             let loads = s.support.and_then(|l| l.bearings);
             for v in [
-                loads.map_or(nan3, |b| b.r_a_s),
-                loads.map_or(nan3, |b| b.r_b_s),
-                loads.map_or(nan3, |b| b.r_a_b),
-                loads.map_or(nan3, |b| b.r_b_b),
+                loads.map_or(nan3, |b| *b.r_a_s),
+                loads.map_or(nan3, |b| *b.r_b_s),
+                loads.map_or(nan3, |b| *b.r_a_b),
+                loads.map_or(nan3, |b| *b.r_b_b),
             ] {
                 out.extend(v.iter());
             }
@@ -461,7 +461,7 @@ impl ColumnSet {
             out.push(s.energy + v);
         }
         if self.support {
-            out.extend(s.support.map_or(nan3, |l| l.m_sup_s).iter());
+            out.extend(s.support.map_or(nan3, |l| *l.m_sup_s).iter());
         }
         for group in &self.groups {
             (group.values)(s, &group.columns, out);

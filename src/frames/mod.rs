@@ -1,7 +1,7 @@
 //! Two words for two things that are easily spelled alike: the axes a vector is expressed in, and the form of Euler's
 //! equation that is integrated. A vector `v_b` is in [`Axes::Body`], `v_s` in [`Axes::Space`]; the attitude
 //! `r_sb` (the quaternion q) maps body to space, `v_s = r_sb · v_b`. A [`Vector`] carries its axes in its type
-//! (`Vector<BodyAxes>`, `Vector<SpaceAxes>`, `Vector<CarrierAxes>`).
+//! (`Vector<BodyAxes>`, `Vector<SpaceAxes>`, `Vector<SupportAxes>`).
 
 mod vector;
 
@@ -9,7 +9,7 @@ use nalgebra::{Matrix3, Quaternion, Vector3};
 
 use crate::named::{Named, serde_by_name};
 
-pub use vector::{BodyAxes, CarrierAxes, Frame, SpaceAxes, Vector};
+pub use vector::{BodyAxes, Frame, SpaceAxes, SupportAxes, Vector};
 
 /// The axes a vector is expressed in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -23,10 +23,10 @@ pub enum BodyAxes {}
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpaceAxes {}
 
-/// The axes a fixed axis, its point and its bearings are fixed in (suffix `_c`): a carrier's, which turn in space,
-/// or space's own when the support does not move.
+/// The axes of the support a fixed axis, its point and its bearings are fixed in (suffix `_c`, for carrier): a
+/// moving support's, which turn in space (`crate::motion::moving_support`), or space's own when nothing moves it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum CarrierAxes {}
+pub enum SupportAxes {}
 
 impl Frame for BodyAxes {
     const SUFFIX: &'static str = "b";
@@ -36,7 +36,7 @@ impl Frame for SpaceAxes {
     const SUFFIX: &'static str = "s";
 }
 
-impl Frame for CarrierAxes {
+impl Frame for SupportAxes {
     const SUFFIX: &'static str = "c";
 }
 

@@ -3,7 +3,7 @@
 //! computed in body axes (Euler's equation with constant I) and, independently, in space axes with the
 //! coordinate-dependent inertia I_s(θ) (eq. 8.10). In a turning carrier ([`crate::motion::carrier`]) the axis is
 //! fixed in the carrier and the methods taking an [`AxisAngle`] alone describe the rotation relative to it, their
-//! vectors in body axes or in the carrier's ([`CarrierAxes`], `_c`: space axes when nothing moves the support);
+//! vectors in body axes or in the carrier's ([`SupportAxes`], `_c`: space axes when nothing moves the support);
 //! [`FixedAxis::rotation`] and [`FixedAxis::sample`] give the motion in space, ω = Ω_c + θ̇ u. In a vehicle
 //! ([`crate::motion::carrier::vehicle`]) A accelerates at a_A: the rotation is the same, C's acceleration gains a_A
 //! and the moment about A gains ρ × m a_A; every moment here is about A.
@@ -13,7 +13,7 @@ use std::sync::Arc;
 use nalgebra::{Matrix3, Unit, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
-use crate::frames::{BodyAxes, CarrierAxes, Form, SpaceAxes, Vector};
+use crate::frames::{BodyAxes, Form, SpaceAxes, SupportAxes, Vector};
 use crate::kinetics::kinetic_energy;
 use crate::motion::moving_support::{MovingSupport, SupportMotion};
 use crate::motion::support::Bearings;
@@ -209,7 +209,7 @@ impl FixedAxis {
     }
 
     /// The unit axis a_c in the support's axes: a carrier's, or space's when the support does not move.
-    pub fn axis_c(&self) -> Vector<CarrierAxes> {
+    pub fn axis_c(&self) -> Vector<SupportAxes> {
         Vector::new(self.axis_c.into_inner())
     }
 
@@ -267,7 +267,7 @@ impl FixedAxis {
     }
 
     /// ω_c = θ̇ a_c, relative to the support, in its axes.
-    pub fn omega_c(&self, angle: &AxisAngle) -> Vector<CarrierAxes> {
+    pub fn omega_c(&self, angle: &AxisAngle) -> Vector<SupportAxes> {
         Vector::new(self.axis_c.into_inner() * angle.theta_dot)
     }
 
@@ -301,7 +301,7 @@ impl FixedAxis {
     /// Required moment about A in the support's axes, Euler's equation with the coordinate-dependent inertia
     /// (eq. 8.10), the support at rest: M_c = d/dt[I_c(θ) ω_c] = (dI_c/dθ) θ̇ ω_c + I_c(θ) ω̇_c, with ω̇_c = θ̈ a_c.
     /// Without a moving support these are space axes.
-    pub fn moment_a_c(&self, angle: &AxisAngle) -> Vector<CarrierAxes> {
+    pub fn moment_a_c(&self, angle: &AxisAngle) -> Vector<SupportAxes> {
         let omega_c = self.omega_c(angle).into_inner();
         let omega_dot_c = self.axis_c.into_inner() * angle.theta_ddot;
         Vector::new(
@@ -312,9 +312,9 @@ impl FixedAxis {
 }
 
 /// The body's rotation at one time, in space: its attitude, the axis in space, ω in both axes and the part of ω̇
-/// that does not come from θ̈. Without a carrier R = Rot(a_s, θ)·R₀, u = a_s, ω = θ̇ u and ω̇ = θ̈ u; in a carrier
-/// R = R_c·Rot(a_s, θ)·R₀, u = R_c a_s, ω_s = Ω_c + θ̇ u and ω̇_s = θ̈ u + Ω̇_c + θ̇ Ω_c × u (u turns with the
-/// carrier: u̇ = Ω_c × u).
+/// that does not come from θ̈. Without a carrier R = Rot(a_c, θ)·R₀, u = a_c (the carrier's axes are space's),
+/// ω = θ̇ u and ω̇ = θ̈ u; in a carrier R = R_c·Rot(a_c, θ)·R₀, u = R_c a_c, ω_s = Ω_c + θ̇ u and
+/// ω̇_s = θ̈ u + Ω̇_c + θ̇ Ω_c × u (u turns with the carrier: u̇ = Ω_c × u).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AxisRotation {
     /// Attitude, body → space.
@@ -550,19 +550,19 @@ impl FixedAxis {
         SupportLoads {
             theta_dot: angle.theta_dot,
             theta_ddot: angle.theta_ddot,
-            f_sup_s,
-            m_sup_s,
+            f_sup_s: Vector::new(f_sup_s),
+            m_sup_s: Vector::new(m_sup_s),
             m_drive: m_sup_s.dot(&u_s),
             bearings: self.bearings.map(|bearings| {
                 let (r_a_s, r_b_s) = bearings.split(&f_sup_s, &m_sup_s, &u_s);
                 BearingLoads {
-                    r_a_s,
-                    r_b_s,
-                    r_a_b: q.inverse_transform_vector(&r_a_s),
-                    r_b_b: q.inverse_transform_vector(&r_b_s),
+                    r_a_s: Vector::new(r_a_s),
+                    r_b_s: Vector::new(r_b_s),
+                    r_a_b: Vector::new(q.inverse_transform_vector(&r_a_s)),
+                    r_b_b: Vector::new(q.inverse_transform_vector(&r_b_s)),
                 }
             }),
-            omega_c_s: rotation.support.map(|c| c.omega_c_s),
+            omega_c_s: rotation.support.map(|c| Vector::new(c.omega_c_s)),
         }
     }
 }

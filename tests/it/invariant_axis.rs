@@ -84,10 +84,10 @@ pub(crate) fn assert_equilibrium(
         );
         // The M_sup_s columns (CONTRACT, third round): the support's moment itself, M_sup = dH/dt − Σ M_effects.
         assert!(
-            (support.m_sup_s - m_sup).norm() <= 1e-14 * scale,
+            (*support.m_sup_s - m_sup).norm() <= 1e-14 * scale,
             "t = {}: M_sup_s − (M − M_eff) = {}",
             s.t,
-            support.m_sup_s - m_sup
+            *support.m_sup_s - m_sup
         );
     }
 }
@@ -121,8 +121,8 @@ fn the_skewed_disk_bearings_carry_the_notes_couple() {
                 let turned = nalgebra::UnitQuaternion::from_axis_angle(
                     &nalgebra::Unit::new_normalize(u_s),
                     OMEGA * s.t,
-                ) * first.r_a_s;
-                assert!((b.r_a_s - turned).norm() <= 1e-9 * expected, "t = {}", s.t);
+                ) * *first.r_a_s;
+                assert!((*b.r_a_s - turned).norm() <= 1e-9 * expected, "t = {}", s.t);
                 close(
                     s.support.unwrap().m_drive,
                     0.0,
@@ -291,7 +291,7 @@ fn the_compound_pendulum_swings_with_the_elliptic_period() {
             let a_c = alpha.cross(&rho_s) + w.cross(&w.cross(&rho_s));
             let expected = (a_c - Vector3::new(0.0, -g, 0.0)) * m;
             assert!(
-                (loads.f_sup_s - expected).norm() <= 1e-12 * (m * g),
+                (*loads.f_sup_s - expected).norm() <= 1e-12 * (m * g),
                 "t = {}",
                 s.t
             );

@@ -39,5 +39,5 @@ pub fn columns() -> ColumnGroup {
 /// Ω_c of the row, NaN where it has none.
 fn omega_c_s(s: &Sample, _: &[Column], out: &mut Vec<f64>) {
     let omega_c_s = s.support.and_then(|l| l.omega_c_s);
-    out.extend(omega_c_s.unwrap_or(Vector3::repeat(f64::NAN)).iter());
+    out.extend(omega_c_s.map_or(Vector3::repeat(f64::NAN), |w| *w).iter());
 }
