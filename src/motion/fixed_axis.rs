@@ -142,7 +142,7 @@ impl FixedAxis {
     /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
     ///     .with_gravity(Vector3::new(0.0, 0.0, -9.81));
     /// let support = rotor.sample(0.3, Form::Body).support.unwrap();
-    /// assert!((support.f_sup_s - Vector3::new(0.0, 0.0, 19.62)).norm() < 1e-12);
+    /// assert!((*support.f_sup_s - Vector3::new(0.0, 0.0, 19.62)).norm() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn with_gravity(mut self, g_s: Vector3<f64>) -> Self {
@@ -164,8 +164,8 @@ impl FixedAxis {
     ///     .with_gravity(Vector3::new(0.0, 0.0, -10.0))
     ///     .with_bearings(Bearings { a: -1.0, b: 3.0 });
     /// let loads = rotor.sample(0.3, Form::Body).support.unwrap().bearings.unwrap();
-    /// assert!((loads.r_a_s - Vector3::new(0.0, 0.0, 7.5)).norm() < 1e-12);
-    /// assert!((loads.r_b_s - Vector3::new(0.0, 0.0, 2.5)).norm() < 1e-12);
+    /// assert!((*loads.r_a_s - Vector3::new(0.0, 0.0, 7.5)).norm() < 1e-12);
+    /// assert!((*loads.r_b_s - Vector3::new(0.0, 0.0, 2.5)).norm() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn with_bearings(mut self, bearings: Bearings) -> Self {
