@@ -36,7 +36,7 @@
 //!
 //! # Layers
 //!
-//! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`body`], [`kinetics`],
+//! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`panel`], [`body`], [`kinetics`],
 //! [`effects`], [`events`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions
 //! ([`motion`]) and the body's wheels ([`wheels`]) → the validated [`scene`] → [`simulate`] → [`analysis`] and
 //! [`output`]. The command line is a binary over the library (feature `cli`, on by default).
@@ -74,6 +74,7 @@ pub mod method;
 pub mod motion;
 pub mod named;
 pub mod output;
+pub mod panel;
 pub mod profile;
 pub mod sample;
 pub mod scene;

@@ -1,5 +1,6 @@
-//! What a scene conserves, as one typed value ([`Facts`]) computed from the validated scene: the run's energy
-//! watch, the sidecar's `facts`, `check` and the plot's drift panel all read it instead of deciding again.
+//! What a scene conserves, the closed form that applies and the panels its runs have, as one typed value
+//! ([`Facts`]) computed from the validated scene: the run's energy watch, the sidecar's `facts`, `check` and the
+//! plot (its drift panel, the panels it draws by default) all read it instead of deciding again.
 //!
 //! The invariants (Rigid-body dynamics, lecture notes, Thms 24–25; Landau & Lifshitz §§33–35):
 //! - free motion with no effect: H_s (Ḣ_s = M_s = 0, whatever the rotors' motors do: their torques are internal),
@@ -16,6 +17,7 @@ use serde::{Deserialize, Serialize};
 use super::model::{Motion, Scene};
 use super::oracle::{ClosedForm, Oracle};
 use crate::effects::Effect;
+use crate::panel::Panel;
 
 /// One conserved quantity, named by its CSV column.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -73,6 +75,12 @@ pub struct Facts {
     /// and the bearing loads are read in space axes (written only when true).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub moving_support: bool,
+    /// The panels `eulerdyn plot` draws of a run when none are asked for, in order (names as `--panels` takes
+    /// them): the six every run has; θ and the support's force on an axis, with its bearings' forces (in space
+    /// axes when the support moves); the wheels' spin and torque with rotors. Empty in a sidecar written before
+    /// 0.4, whose plot reads them from the CSV's header.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub panels: Vec<Panel>,
 }
 
 impl Facts {
@@ -129,6 +137,7 @@ impl Facts {
             invariants,
             closed_form: Oracle::for_scene(scene).map(|o| o.kind()),
             moving_support,
+            panels: panels(&scene.motion, moving_support),
         }
     }
 
@@ -143,6 +152,27 @@ impl Facts {
             .copied()
             .find(|i| matches!(i, Invariant::Energy | Invariant::EnergyTotal))
     }
+}
+
+/// The panels of a run of `motion` ([`Facts::panels`]).
+fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
+    let mut panels = Panel::ALL.to_vec();
+    if let Some(axis) = motion.axis() {
+        panels.extend([Panel::Theta, Panel::Support]);
+        if axis.bearings().is_some() {
+            panels.push(match moving_support {
+                true => Panel::BearingsSpace,
+                false => Panel::Bearings,
+            });
+        }
+    }
+    if let Motion::Free {
+        gyrostat: Some(_), ..
+    } = motion
+    {
+        panels.extend(Panel::WHEELS);
+    }
+    panels
 }
 
 impl Scene {

@@ -284,8 +284,8 @@ fn turbine_run(dir: &std::path::Path) -> (std::path::PathBuf, std::path::PathBuf
     (csv, dir.join("turbine.svg"))
 }
 
-/// The sidecar's facts say the support moves (`moving_support`), and the plot, asked for no panel, draws the
-/// bearings of such a run in space axes (in the spinning body's axes they would turn at the rotor's rate).
+/// The sidecar's facts say the support moves (`moving_support`) and name the run's panels, and the plot, asked
+/// for no panel, draws the bearings of such a run in space axes (in the spinning body's axes they would turn at the rotor's rate).
 #[test]
 fn a_carried_run_says_its_support_moves_and_plots_its_bearings_in_space_axes() {
     let dir = tempfile::tempdir().unwrap();
@@ -295,6 +295,21 @@ fn a_carried_run_says_its_support_moves_and_plots_its_bearings_in_space_axes() {
     assert_eq!(
         sidecar["facts"]["moving_support"],
         serde_json::Value::Bool(true)
+    );
+    // The facts name the run's panels: the six of every run, the axis's, its bearings in space axes.
+    assert_eq!(
+        sidecar["facts"]["panels"],
+        serde_json::json!([
+            "h_body",
+            "h_space",
+            "moment",
+            "omega",
+            "energy",
+            "drift",
+            "theta",
+            "support",
+            "bearings_space"
+        ])
     );
     let out = eulerdyn(["plot", csv.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);

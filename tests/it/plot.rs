@@ -1109,3 +1109,43 @@ fn a_corrupt_events_file_is_refused_naming_it_and_its_line() {
         assert_eq!(std::fs::read(&svg).unwrap(), b"precious\n");
     }
 }
+
+/// The panels a scene's `Facts` name for its runs (`Facts::panels`, in the sidecar) are those the plot reads from
+/// a run's header when there is no sidecar (`Panel::of_run`), for every bundled scenario: a CSV with its sidecar
+/// and the same CSV piped in draw the same figure. The scenarios cover each kind: a free body, an axis, bearings,
+/// bearings in a moving support (space axes), wheels.
+#[test]
+fn the_facts_name_the_panels_a_runs_header_shows_for_every_bundled_scenario() {
+    use eulerdyn::panel::Panel;
+    use eulerdyn::scene::{self, Overrides};
+    let mut scenes: Vec<PathBuf> = std::fs::read_dir(repo_path("scenarios"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    scenes.sort();
+    let mut seen = Vec::new();
+    for path in &scenes {
+        let scene = scene::load(path, &Overrides::default()).unwrap();
+        let facts = scene.facts();
+        let columns: Vec<String> = (eulerdyn::simulate::columns(&scene).columns().iter())
+            .map(|c| c.name.to_string())
+            .collect();
+        let has = |c: &str| columns.iter().any(|n| n == c);
+        let wheels = !scene.spec.body.rotor.is_empty();
+        let from_header = Panel::of_run(has, facts.moving_support, wheels);
+        assert_eq!(facts.panels, from_header, "{}", path.display());
+        seen.extend(facts.panels);
+    }
+    for kind in [
+        Panel::Theta,
+        Panel::Bearings,
+        Panel::BearingsSpace,
+        Panel::WheelSpin,
+    ] {
+        assert!(
+            seen.contains(&kind),
+            "no bundled scenario has the {kind} panel"
+        );
+    }
+}

@@ -211,12 +211,12 @@ impl RunSeries {
 pub fn read_run(path: &Path, panels: &[Panel]) -> Result<RunSeries, PlotError> {
     if path.as_os_str() == "-" {
         let reader = RunCsvReader::new(Path::new("stdin"), std::io::stdin().lock())?;
-        return read_rows(reader, panels, false);
+        return read_rows(reader, panels, None);
     }
     let sidecar = Sidecar::read(path).ok();
     let facts = sidecar.as_ref().map(scene_facts);
-    let carried = (facts.as_ref().and_then(|f| f.facts.as_ref())).is_some_and(|f| f.moving_support);
-    let mut series = read_rows(RunCsvReader::open(path)?, panels, carried)?;
+    let scene_facts = facts.as_ref().and_then(|f| f.facts.as_ref());
+    let mut series = read_rows(RunCsvReader::open(path)?, panels, scene_facts)?;
     series.scene = facts;
     series.events = run_events(path, sidecar.as_ref())?;
     Ok(series)
@@ -228,36 +228,31 @@ pub fn read_run_from(
     reader: impl Read,
     panels: &[Panel],
 ) -> Result<RunSeries, PlotError> {
-    read_rows(RunCsvReader::new(file, reader)?, panels, false)
+    read_rows(RunCsvReader::new(file, reader)?, panels, None)
 }
 
-/// Reads the data rows of `csv` (its header read) into the curves of `panels` (when empty, those the run has; for
-/// a run in a turning carrier, `carried`, the bearing forces in space axes rather than in the spinning body's).
+/// Reads the data rows of `csv` (its header read) into the curves of `panels`; when empty, the panels the run has:
+/// those its sidecar's `facts` name, or for a file without them, those its header has ([`Panel::of_run`]; for a
+/// run whose support moves, the bearing forces in space axes rather than in the spinning body's).
 fn read_rows(
     mut csv: RunCsvReader<impl Read>,
     panels: &[Panel],
-    carried: bool,
+    facts: Option<&Facts>,
 ) -> Result<RunSeries, PlotError> {
     let file = csv.file().to_path_buf();
     if csv.index_of("t").is_none() && looks_like_a_scene(&csv) {
         return Err(PlotError::input(&file, scene_file_advice(&file)));
     }
     let wheels = csv.rotor_names();
-    let panels = if panels.is_empty() {
-        let has = |c: &str| csv.index_of(c).is_some();
-        let space = carried && Panel::BearingsSpace.columns().iter().all(|c| has(c));
-        let mut panels: Vec<Panel> = (Panel::of_run(has).into_iter())
-            .map(|p| match p {
-                Panel::Bearings if space => Panel::BearingsSpace,
-                p => p,
-            })
-            .collect();
-        if !wheels.is_empty() {
-            panels.extend(Panel::WHEELS);
+    let panels = match (panels.is_empty(), facts) {
+        (false, _) => panels.to_vec(),
+        (true, Some(facts)) if !facts.panels.is_empty() => facts.panels.clone(),
+        (true, _) => {
+            let has = |c: &str| csv.index_of(c).is_some();
+            let carried = facts.is_some_and(|f| f.moving_support);
+            let space = carried && Panel::BearingsSpace.columns().iter().all(|c| has(c));
+            Panel::of_run(has, space, !wheels.is_empty())
         }
-        panels
-    } else {
-        panels.to_vec()
     };
     let wheel_panels = panels.iter().any(|p| Panel::WHEELS.contains(p));
     if wheel_panels && wheels.is_empty() {
@@ -392,7 +387,7 @@ fn absent_axis_panels(
         .filter(|p| missing.iter().any(|(name, _)| p.columns().contains(name)))
         .map(|p| p.absence())
         .collect::<Option<_>>()?;
-    let has: Vec<&str> = Panel::of_run(|c| csv.index_of(c).is_some())
+    let has: Vec<&str> = Panel::of_run(|c| csv.index_of(c).is_some(), false, false)
         .iter()
         .map(|p| p.name())
         .collect();

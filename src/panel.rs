@@ -1,0 +1,249 @@
+//! The panels of a run's figure (`eulerdyn plot`): their names, the columns each draws and which runs have them.
+//! Vocabulary, so that a scene's [`crate::scene::Facts`] can say which panels its runs have; the plot
+//! ([`crate::output::plot`]) draws them.
+
+use std::fmt;
+use std::str::FromStr;
+
+use crate::named::{Named, serde_by_name};
+
+/// One panel of the figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Panel {
+    /// H in body axes (and |H|).
+    HBody,
+    /// H in space axes (and |H|).
+    HSpace,
+    /// The moment M about the moment center, body axes (solid) and space axes (dashed).
+    Moment,
+    /// The angular velocity ω, body axes (solid) and space axes (dashed).
+    Omega,
+    /// The kinetic energy.
+    Energy,
+    /// |x(t) − x(0)| / |x(0)| of |H| and of the energy, on a log scale.
+    Drift,
+    /// The bearings' forces on the body: |R_A|, |R_B| and their components in body axes (A solid, B dashed).
+    /// Only runs with bearings have its columns.
+    Bearings,
+    /// The same in space axes (`bearings_space`): for a rotor spinning fast, or in a turning carrier, whose loads
+    /// are steadier in space than in the spinning body. Drawn only when asked for.
+    BearingsSpace,
+    /// The force the support applies to the body, F_sup, in space axes, and |F_sup| (fixed_axis and hinge runs).
+    Support,
+    /// The angle θ turned about the fixed axis (fixed_axis and hinge runs).
+    Theta,
+    /// Each wheel's spin relative to the body (runs with `[[body.rotor]]`; its columns are the run's).
+    WheelSpin,
+    /// Each wheel's motor torque applied (solid) and commanded (dashed, wheels under control).
+    WheelTorque,
+}
+
+impl Panel {
+    /// The panels every run has, in the order they are drawn by default (`--panels all`).
+    pub const ALL: [Panel; 6] = [
+        Panel::HBody,
+        Panel::HSpace,
+        Panel::Moment,
+        Panel::Omega,
+        Panel::Energy,
+        Panel::Drift,
+    ];
+
+    /// The panels of fixed-axis and hinge runs (bearings: with bearings only), drawn after [`Panel::ALL`] by
+    /// default when the run has their columns.
+    pub const AXIS_ONLY: [Panel; 3] = [Panel::Theta, Panel::Support, Panel::Bearings];
+
+    /// The panels a run has, read from its header (`has`) where no sidecar says them
+    /// ([`crate::scene::Facts::panels`]): every panel of [`Panel::ALL`], then those of [`Panel::AXIS_ONLY`] whose
+    /// columns the header has (the bearings in space axes when the support moves, `moving_support`), then
+    /// [`Panel::WHEELS`] when the run has wheels.
+    ///
+    /// ```
+    /// use eulerdyn::panel::Panel;
+    /// let free = Panel::of_run(|c| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup"), false, false);
+    /// assert_eq!(free, Panel::ALL);
+    /// ```
+    pub fn of_run(has: impl Fn(&str) -> bool, moving_support: bool, wheels: bool) -> Vec<Panel> {
+        let axis = (Panel::AXIS_ONLY.into_iter())
+            .filter(|p| p.columns().iter().all(|c| has(c)))
+            .map(|p| match p {
+                Panel::Bearings if moving_support => Panel::BearingsSpace,
+                p => p,
+            });
+        let wheels = Panel::WHEELS.into_iter().filter(|_| wheels);
+        Panel::ALL.into_iter().chain(axis).chain(wheels).collect()
+    }
+
+    /// The name used with `--panels`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Panel::HBody => "h_body",
+            Panel::HSpace => "h_space",
+            Panel::Moment => "moment",
+            Panel::Omega => "omega",
+            Panel::Energy => "energy",
+            Panel::Drift => "drift",
+            Panel::Bearings => "bearings",
+            Panel::BearingsSpace => "bearings_space",
+            Panel::Support => "support",
+            Panel::Theta => "theta",
+            Panel::WheelSpin => "wheel_spin",
+            Panel::WheelTorque => "wheel_torque",
+        }
+    }
+
+    /// The panels of rotor runs, drawn after the others by default when the run has wheel columns; their columns
+    /// are named by the wheels (`<name>_spin`, `<name>_torque`, `<name>_torque_cmd`).
+    pub const WHEELS: [Panel; 2] = [Panel::WheelSpin, Panel::WheelTorque];
+
+    /// The CSV columns the panel needs (besides `t`).
+    pub fn columns(self) -> &'static [&'static str] {
+        match self {
+            Panel::HBody => &["H_b_x", "H_b_y", "H_b_z", "H_norm"],
+            Panel::HSpace => &["H_s_x", "H_s_y", "H_s_z", "H_norm"],
+            Panel::Moment => &["M_b_x", "M_b_y", "M_b_z", "M_s_x", "M_s_y", "M_s_z"],
+            Panel::Omega => &[
+                "omega_b_x",
+                "omega_b_y",
+                "omega_b_z",
+                "omega_s_x",
+                "omega_s_y",
+                "omega_s_z",
+            ],
+            Panel::Energy => &["energy"],
+            Panel::Drift => &["H_norm", "energy"],
+            Panel::Bearings => &[
+                "R_A_b_x", "R_A_b_y", "R_A_b_z", "R_B_b_x", "R_B_b_y", "R_B_b_z",
+            ],
+            Panel::BearingsSpace => &[
+                "R_A_s_x", "R_A_s_y", "R_A_s_z", "R_B_s_x", "R_B_s_y", "R_B_s_z",
+            ],
+            Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
+            Panel::Theta => &["theta"],
+            Panel::WheelSpin | Panel::WheelTorque => &[],
+        }
+    }
+
+    /// The CSV columns the panel draws when the file has them: V and T + V (gravity scenes) for the energy panel,
+    /// T + V and H_s,z (an invariant under vertical gravity) for the drift panel; the H panels read T and ω_b for
+    /// the run's momentum scale, below which a change of H is drawn flat.
+    pub fn optional_columns(self) -> &'static [&'static str] {
+        match self {
+            Panel::HBody | Panel::HSpace => &["energy", "omega_b_x", "omega_b_y", "omega_b_z"],
+            Panel::Energy => &["potential", "energy_total"],
+            Panel::Drift => &["energy_total", "H_s_z"],
+            _ => &[],
+        }
+    }
+
+    /// Which runs have the panel's columns, for panels that not every run can draw.
+    pub fn which_runs(self) -> Option<&'static str> {
+        match self {
+            Panel::Bearings | Panel::BearingsSpace => {
+                Some("only runs of scenes with `bearings` have the bearing forces")
+            }
+            Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
+            Panel::WheelSpin | Panel::WheelTorque => {
+                Some("only runs of scenes with [[body.rotor]] have the wheels' columns")
+            }
+            _ => None,
+        }
+    }
+
+    /// What a run of `eulerdyn run` lacks when it has not the panel's columns, in words ("this run has …"), for
+    /// panels that not every run can draw.
+    pub fn absence(self) -> Option<&'static str> {
+        match self {
+            Panel::Bearings => Some(
+                "no bearings (only runs of scenes with `bearings` have the bearing forces, columns R_A_b_x … \
+                 R_B_b_z, that the bearings panel draws)",
+            ),
+            Panel::BearingsSpace => Some(
+                "no bearings (only runs of scenes with `bearings` have the bearing forces, columns R_A_s_x … \
+                 R_B_s_z, that the bearings_space panel draws)",
+            ),
+            Panel::Theta => Some(
+                "no fixed axis, so no angle `theta` (needed by theta; only fixed_axis and hinge runs have them)",
+            ),
+            Panel::Support => Some(
+                "no support force `F_sup_s_*` (needed by support; only fixed_axis and hinge runs have them)",
+            ),
+            _ => None,
+        }
+    }
+
+    /// A comma-separated list of panel names (`h_body,h_space`), in the order given; a name given twice is drawn
+    /// once. `all` stands for the six panels every run has ([`Panel::ALL`]).
+    pub fn parse_list(text: &str) -> Result<Vec<Panel>, String> {
+        let mut panels = Vec::new();
+        for name in text.split(',').map(str::trim) {
+            if name.is_empty() {
+                return Err(format!(
+                    "empty panel name in \"{text}\"; give names separated by commas, e.g. h_body,h_space (panels: {})",
+                    Self::names()
+                ));
+            }
+            let chosen = if name == "all" {
+                Panel::ALL.to_vec()
+            } else {
+                vec![name.parse::<Panel>()?]
+            };
+            for panel in chosen {
+                if !panels.contains(&panel) {
+                    panels.push(panel);
+                }
+            }
+        }
+        Ok(panels)
+    }
+
+    /// Every panel name, comma-separated.
+    pub fn names() -> String {
+        Panel::ALL.map(Panel::name).join(", ")
+            + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
+               (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_torque"
+    }
+}
+
+impl fmt::Display for Panel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Panel {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Panel::ALL
+            .into_iter()
+            .chain(Panel::AXIS_ONLY)
+            .chain([Panel::BearingsSpace])
+            .chain(Panel::WHEELS)
+            .find(|p| p.name() == s)
+            .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
+    }
+}
+
+impl Named for Panel {
+    const ALL: &'static [Self] = &[
+        Panel::HBody,
+        Panel::HSpace,
+        Panel::Moment,
+        Panel::Omega,
+        Panel::Energy,
+        Panel::Drift,
+        Panel::Theta,
+        Panel::Support,
+        Panel::Bearings,
+        Panel::BearingsSpace,
+        Panel::WheelSpin,
+        Panel::WheelTorque,
+    ];
+
+    fn name(&self) -> &'static str {
+        Panel::name(*self)
+    }
+}
+
+serde_by_name!(Panel);
