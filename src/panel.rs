@@ -1,11 +1,9 @@
 //! The panels of a run's figure (`eulerdyn plot`): their names, the columns each draws and which runs have them.
 //! Vocabulary, so that a scene's [`crate::scene::Facts`] can say which panels its runs have; the plot
-//! ([`crate::output::plot`]) draws them.
+//! (`output::plot`, feature `plot`) draws them.
 
 use std::fmt;
 use std::str::FromStr;
-
-use crate::named::{Named, serde_by_name};
 
 /// One panel of the figure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -225,25 +223,16 @@ impl FromStr for Panel {
     }
 }
 
-impl Named for Panel {
-    const ALL: &'static [Self] = &[
-        Panel::HBody,
-        Panel::HSpace,
-        Panel::Moment,
-        Panel::Omega,
-        Panel::Energy,
-        Panel::Drift,
-        Panel::Theta,
-        Panel::Support,
-        Panel::Bearings,
-        Panel::BearingsSpace,
-        Panel::WheelSpin,
-        Panel::WheelTorque,
-    ];
-
-    fn name(&self) -> &'static str {
-        Panel::name(*self)
+impl serde::Serialize for Panel {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
     }
 }
 
-serde_by_name!(Panel);
+impl<'de> serde::Deserialize<'de> for Panel {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        String::deserialize(deserializer)?
+            .parse()
+            .map_err(serde::de::Error::custom)
+    }
+}
