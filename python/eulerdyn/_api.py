@@ -181,7 +181,9 @@ def check(scene: SceneLike) -> Dict[str, Any]:
         A dict: ``text`` (the printout), ``items`` (each label of the printout with its lines, e.g.
         ``items["method"]``), and the settings as values: ``name``, ``description``, ``motion`` (``free``,
         ``fixed_axis`` or ``hinge``), ``method``, ``frame``, ``backend``, ``rtol``, ``atol``, ``dt``, ``t_end``,
-        ``every``, ``rows`` (how many rows :func:`run` returns) and ``columns`` (its columns).
+        ``every``, ``rows`` (how many rows :func:`run` returns), ``columns`` (its columns) and ``facts`` (what
+        the scene conserves, the closed form that applies, the panels of its runs and, under ``check``, its
+        numbers at full precision: as a run's sidecar records them under ``facts``).
 
     Raises:
         SceneError: the scene is not valid.

@@ -8,8 +8,8 @@ use eulerdyn::analysis::balance::{
 use eulerdyn::analysis::compare::{Comparison, compare_until};
 use eulerdyn::analysis::describe::describe;
 use eulerdyn::analysis::study::{self, StudyError, StudyOptions};
-use eulerdyn::scene::{Flags, Motion, Overrides, Scene, SceneError};
-use eulerdyn::simulate::{self, RunFailed};
+use eulerdyn::scene::{Flags, Overrides, SceneError};
+use eulerdyn::simulate::RunFailed;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
@@ -18,18 +18,11 @@ use crate::errors::{no_panic, run_error, run_error_message, scene_error};
 use crate::input::SceneInput;
 use crate::run::{SignalCheck, stop_on};
 
-/// The motion's kind as the scene file names it (`motion.kind`; `free` without a `[motion]`).
-fn motion_kind(scene: &Scene) -> &'static str {
-    match scene.motion {
-        Motion::Free { .. } => "free",
-        Motion::FixedAxis(_) => "fixed_axis",
-        Motion::Hinge(_) => "hinge",
-    }
-}
-
 /// What `eulerdyn check` prints about a scene (a path or a dict), as a dict: `text` (the printout), `items` (each
-/// label with its lines; a `warning` item for each warning), and the settings as values: name, description,
-/// motion, method, frame, backend, rtol, atol, dt, t_end, every, rows, columns. Raises SceneError for bad input.
+/// label with its lines; a `warning` item for each warning), the settings as values: name, description, motion,
+/// method, frame, backend, rtol, atol, dt, t_end, every, rows, columns; and `facts`, the scene's facts as the
+/// sidecar writes them (invariants, closed_form, panels, check: the numbers at full precision). Raises
+/// SceneError for bad input.
 #[pyfunction]
 pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
     no_panic(|| {
@@ -54,7 +47,11 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
         d.set_item("items", items)?;
         d.set_item("name", &s.name)?;
         d.set_item("description", &s.description)?;
-        d.set_item("motion", motion_kind(&s))?;
+        let facts = serde_json::to_value(s.facts()).map_err(|e| {
+            pyo3::exceptions::PyRuntimeError::new_err(format!("the scene's facts: {e}"))
+        })?;
+        d.set_item("motion", json_to_py(py, &facts["check"]["motion"])?)?;
+        d.set_item("facts", json_to_py(py, &facts)?)?;
         let solver = &s.solver;
         d.set_item("method", solver.method.name())?;
         d.set_item("frame", solver.form.name())?;
@@ -65,7 +62,7 @@ pub fn check<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
         d.set_item("t_end", solver.t_end)?;
         d.set_item("every", s.schedule.every())?;
         d.set_item("rows", s.schedule.len())?;
-        let columns: Vec<String> = (simulate::columns(&s).columns().into_iter())
+        let columns: Vec<String> = (s.facts().columns().columns().into_iter())
             .map(|c| c.name.into_owned())
             .collect();
         d.set_item("columns", columns)?;

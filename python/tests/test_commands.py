@@ -1,5 +1,6 @@
 """check, compare, accuracy and balance: the commands' output, as Python data."""
 
+import json
 import math
 
 import numpy as np
@@ -36,6 +37,22 @@ def test_check_of_the_disk_dict():
     assert info["name"] == "tilted-disk"
     assert "dop853" in info["items"]["method"][0]
     assert info["text"].startswith("scene          tilted-disk\n")
+
+
+def test_check_gives_the_facts_the_sidecar_writes(scenario, tmp_path):
+    # One Facts value per scene: what check gives is what a run's sidecar records, and its numbers are those of
+    # `check --json` (full precision).
+    path = scenario("heavy_top.toml")
+    facts = eulerdyn.check(path)["facts"]
+    csv = tmp_path / "top.csv"
+    run_cli("run", str(path), "-o", str(csv))
+    sidecar = json.loads((tmp_path / "top.csv.meta.json").read_text())
+    assert facts == sidecar["facts"]
+    # A heavy top conserves T + V and H_s,z (Landau & Lifshitz §35: gravity's moment is horizontal).
+    assert facts["invariants"] == ["energy_total", "H_s_z"]
+    numbers = json.loads(run_cli("check", str(path), "--json").stdout)
+    for key, value in facts["check"].items():
+        assert numbers[key] == value, key
 
 
 def test_compare_is_what_the_cli_prints(scenario):

@@ -12,7 +12,7 @@ use crate::frames::Form;
 use crate::integrate::IntegrateError;
 use crate::method::Method;
 use crate::sample::Sample;
-use crate::scene::{Exact, Oracle};
+use crate::scene::Exact;
 use crate::scene::{Motion, Scene};
 use crate::simulate::{self, RunError};
 
@@ -254,7 +254,7 @@ pub fn compare_until(
     body_scene.solver.form = Form::Body;
     let mut space_scene = scene.clone();
     space_scene.solver.form = Form::Space;
-    let oracle = Oracle::for_scene(scene);
+    let oracle = scene.facts().oracle();
     let (sender, receiver) = mpsc::sync_channel::<Sample>(1024);
     let space_run = thread::spawn(move || {
         simulate::run(&space_scene, |s| sender.send(*s).map_err(|_| HandOver))

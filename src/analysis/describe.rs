@@ -4,7 +4,7 @@
 //! tolerances, the rows and an estimate of the steps. [`describe`] gives it as labelled items ([`Description`]),
 //! [`Description::text`] as the command line prints it.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
 use crate::body::Principal;
 use crate::effects::Effect;
@@ -15,7 +15,7 @@ use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::profile::Profile;
 use crate::sample::{BASE_COLUMNS, Sample};
-use crate::scene::{Motion, Scene};
+use crate::scene::{CheckNumbers, Motion, Scene};
 use crate::simulate;
 pub use crate::text::{Description, for_people};
 use crate::text::{fixed, line, plain, turns, vec3};
@@ -83,38 +83,6 @@ fn characteristic_rate(scene: &Scene) -> f64 {
         .fold(motion_rate, f64::max)
 }
 
-fn principal_lines(out: &mut Description, principal: &Principal, about: &str) {
-    for k in 0..3 {
-        let axis = principal.axes_b.matrix().column(k).into_owned();
-        line(
-            out,
-            "",
-            &format!(
-                "principal moment {} = {:.6e} kg*m^2 about body axis {}{about}",
-                k + 1,
-                principal.moments[k],
-                vec3(&axis)
-            ),
-        );
-    }
-}
-
-fn tensor_lines(out: &mut Description, title: &str, i: &Matrix3<f64>) {
-    line(out, "", title);
-    for r in 0..3 {
-        line(
-            out,
-            "",
-            &format!(
-                "  [{:>12.6e} {:>12.6e} {:>12.6e}]",
-                i[(r, 0)],
-                i[(r, 1)],
-                i[(r, 2)]
-            ),
-        );
-    }
-}
-
 /// What the scene will simulate: body, principal moments and axes, motion and moment center, the state at t = 0,
 /// effects, method and tolerances, rows and an estimate of the steps; then `warnings` and a fixed step too coarse
 /// for the motion ([`simulate::CoarseStep`]), one `warning` item each.
@@ -122,7 +90,9 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
     let mut out = Description::default();
     let w = &mut out;
     scene_lines(w, scene);
-    body_lines(w, scene);
+    if let Some(numbers) = &scene.facts().check {
+        body_lines(w, numbers);
+    }
     match &scene.motion {
         Motion::Free {
             omega0_b,
@@ -161,12 +131,27 @@ fn scene_lines(w: &mut Description, scene: &Scene) {
     }
 }
 
-/// The body: mass, inertia tensor about C, principal moments and axes.
-fn body_lines(w: &mut Description, scene: &Scene) {
-    let body = &scene.body;
-    line(w, "body", &format!("mass {} kg", plain(body.mass())));
-    tensor_lines(w, "inertia about C, body axes (kg*m^2):", body.inertia_c());
-    principal_lines(w, body.principal(), "");
+/// The body: mass, inertia tensor about C, principal moments and axes (the scene's facts, rounded for reading).
+fn body_lines(w: &mut Description, numbers: &CheckNumbers) {
+    line(w, "body", &format!("mass {} kg", plain(numbers.mass)));
+    line(w, "", "inertia about C, body axes (kg*m^2):");
+    for row in &numbers.inertia_c_b {
+        let [a, b, c] = row;
+        line(w, "", &format!("  [{a:>12.6e} {b:>12.6e} {c:>12.6e}]"));
+    }
+    let axes = &numbers.principal_axes_b;
+    for (k, moment) in numbers.principal_moments_c.iter().enumerate() {
+        let axis = Vector3::new(axes[0][k], axes[1][k], axes[2][k]);
+        line(
+            w,
+            "",
+            &format!(
+                "principal moment {} = {moment:.6e} kg*m^2 about body axis {}",
+                k + 1,
+                vec3(&axis)
+            ),
+        );
+    }
 }
 
 /// Free motion: its moment center (C, or the pivot of a gravity effect) and the state at t = 0.
@@ -491,7 +476,7 @@ fn method_lines(w: &mut Description, scene: &Scene) -> String {
                 plain(s.dt)
             ),
         );
-        let h = simulate::fixed_step(scene).unwrap_or(s.dt);
+        let h = scene.fixed_step().unwrap_or(s.dt);
         if h < s.dt {
             line(
                 w,

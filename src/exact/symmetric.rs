@@ -46,7 +46,7 @@ fn rotate_z(v: &Vector3<f64>, angle: f64) -> Vector3<f64> {
 /// [`SymmetricTorqueFree::gyrostat`]), H_p = (I₁ω₁, I₁ω₂, I₃ω₃ + h): ω₃ stays constant and the transverse ω turns at
 /// λ = ((I₃ − I₁)ω₃ + h)/I₁ (Hughes, *Spacecraft Attitude Dynamics*, 1986, §3.5, the axisymmetric gyrostat), and
 /// `ω_p = H_p/I₁ − λ e₃` gives the attitude in the same form with λ for Ω_b.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SymmetricTorqueFree {
     i_t: f64,
     i_a: f64,
@@ -200,7 +200,7 @@ impl SymmetricTorqueFree {
 ///
 /// No attitude is provided: with ω₃ linear in time the attitude problem is a linearly swept
 /// two-level (Landau–Zener) problem whose solution needs parabolic-cylinder functions.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct AxialTorqueSymmetric {
     i_t: f64,
     i_a: f64,

@@ -74,7 +74,7 @@ pub enum TorqueFreeCase {
 
 /// A torque-free rigid body with given principal moments and initial state, solved in closed
 /// form (Landau & Lifshitz, *Mechanics*, §37). See the module documentation for the formulas.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TorqueFreeBody {
     moments_p: Vector3<f64>,
     omega0_p: Vector3<f64>,
@@ -86,14 +86,14 @@ pub struct TorqueFreeBody {
     pub(super) motion: Motion,
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub(super) enum Motion {
     Stationary,
     Elliptic(Box<Elliptic>),
 }
 
 /// The non-stationary solution in the canonical frame (see the module docs).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub(super) struct Elliptic {
     /// User → canonical: `v_c = perm · v_u` (signed permutation, det +1).
     pub(super) perm: Matrix3<f64>,

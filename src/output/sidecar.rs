@@ -168,7 +168,7 @@ impl Sidecar {
                 atol: s.atol,
                 dt: s.dt,
                 fixed_step: s.method.is_fixed_step(),
-                step_used: simulate::fixed_step(scene),
+                step_used: scene.fixed_step(),
                 t_end: s.t_end,
                 every: scene.schedule.every(),
             },
@@ -190,7 +190,7 @@ impl Sidecar {
                 })
                 .collect(),
             events: None,
-            facts: Some(scene.facts()),
+            facts: Some(scene.facts().clone()),
         }
     }
 

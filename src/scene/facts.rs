@@ -12,12 +12,15 @@
 //! - nothing with torques, damping or a user's law, an accelerating prescribed axis, a turning carrier (which
 //!   does work on the body), or an imbalanced wheel (its turning moment changes H and T).
 
+use nalgebra::Matrix3;
 use serde::{Deserialize, Serialize};
 
 use super::model::{Motion, Scene};
 use super::oracle::{ClosedForm, Oracle};
+use super::spec::MotionKind;
 use crate::effects::Effect;
 use crate::panel::Panel;
+use crate::sample::ColumnSet;
 
 /// One conserved quantity, named by its CSV column.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -61,8 +64,10 @@ impl Invariant {
     }
 }
 
-/// What a scene conserves (the module's rules), in the order: energy, then momentum.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize, Deserialize)]
+/// What a scene conserves (the module's rules), in the order: energy, then momentum; the closed form that
+/// applies, evaluated once; the columns and panels its runs have; the numbers `check` prints. Computed when the
+/// scene is built ([`Scene::facts`]); the sidecar writes the serialisable part under `facts`.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Facts {
     /// The conserved quantities, by their columns (`energy`, `H_s_x`…`H_s_z`, `H_norm` for a torque-free body;
     /// `energy_total` and `H_s_z` for a heavy top).
@@ -81,6 +86,72 @@ pub struct Facts {
     /// 0.4, whose plot reads them from the CSV's header.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub panels: Vec<Panel>,
+    /// The numbers `check` prints, at full precision (`check --json` writes them at its top level). `None` in a
+    /// sidecar written before 0.5.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub check: Option<CheckNumbers>,
+    /// The closed form itself ([`Facts::oracle`]); not written (the sidecar names it by `closed_form`).
+    #[serde(skip)]
+    oracle: Option<Oracle>,
+    /// The optional columns a run writes ([`Facts::columns`]); not written here (the sidecar lists every column
+    /// at its top level, `columns`).
+    #[serde(skip)]
+    columns: ColumnSet,
+}
+
+/// The numbers `check` prints about a scene, at full precision (SI units; body axes unless the name says
+/// otherwise).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CheckNumbers {
+    /// kg.
+    pub mass: f64,
+    /// The mass center C from the reference origin (m).
+    pub center_b: [f64; 3],
+    /// The inertia tensor about C (kg·m²), rows; off-diagonal entries are −∫ x y dm.
+    pub inertia_c_b: [[f64; 3]; 3],
+    /// Principal moments about C (kg·m²), in [`crate::body::Principal`]'s order.
+    pub principal_moments_c: [f64; 3],
+    /// The principal axes (columns; rows written out), body axes.
+    pub principal_axes_b: [[f64; 3]; 3],
+    /// `free`, `fixed_axis` or `hinge`.
+    pub motion: MotionKind,
+    /// The moment center O (C, a gravity pivot, or the axis point) from C (m).
+    pub moment_center_from_c_b: [f64; 3],
+    /// The inertia tensor about O (kg·m²), rows.
+    pub inertia_o_b: [[f64; 3]; 3],
+    /// The fixed axis (unit, body axes), for a fixed axis or hinge.
+    pub axis_b: Option<[f64; 3]>,
+    /// The fixed step taken (s), for fixed-step methods ([`Scene::fixed_step`]).
+    pub step_used: Option<f64>,
+    /// Rows a run writes.
+    pub rows: usize,
+}
+
+impl CheckNumbers {
+    /// The numbers of `scene`.
+    fn of(scene: &Scene) -> Self {
+        let inertia_c = scene.body.inertia_c();
+        let principal = scene.body.principal();
+        let (rho_c_b, inertia_o_b) = scene.motion.about_moment_center();
+        CheckNumbers {
+            mass: scene.body.mass(),
+            center_b: scene.center_b.into(),
+            inertia_c_b: rows_of(inertia_c),
+            principal_moments_c: principal.moments.into(),
+            principal_axes_b: rows_of(principal.axes_b.matrix()),
+            motion: scene.motion.kind(),
+            moment_center_from_c_b: (-rho_c_b).into(),
+            inertia_o_b: rows_of(&inertia_o_b),
+            axis_b: scene.motion.axis().map(|a| a.axis_b().into_inner().into()),
+            step_used: scene.fixed_step(),
+            rows: scene.schedule.len(),
+        }
+    }
+}
+
+/// The rows of `m`.
+fn rows_of(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
+    std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
 }
 
 impl Facts {
@@ -96,48 +167,16 @@ impl Facts {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn of(scene: &Scene) -> Self {
-        let gravity_only = scene
-            .effects
-            .iter()
-            .all(|e| matches!(e, Effect::Gravity { .. }));
-        let vertical_gravity = scene.effects.iter().all(|e| match e {
-            Effect::Gravity { g_s, .. } => g_s.x == 0.0 && g_s.y == 0.0,
-            _ => true,
-        });
-        let torque_free = scene.effects.is_empty();
         let moving_support = (scene.motion.axis()).is_some_and(|a| a.moving_support().is_some());
-        use Invariant::*;
-        let invariants = match &scene.motion {
-            Motion::Free { gyrostat, .. } => {
-                if gyrostat.as_ref().is_some_and(|g| g.imbalanced()) {
-                    vec![]
-                } else {
-                    let no_motor_work = gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely());
-                    let energy = if torque_free { Energy } else { EnergyTotal };
-                    let mut kept = Vec::new();
-                    if no_motor_work && gravity_only {
-                        kept.push(energy);
-                    }
-                    if torque_free {
-                        kept.extend([HSpaceX, HSpaceY, HSpaceZ, HNorm]);
-                    } else if gravity_only && vertical_gravity {
-                        kept.push(HSpaceZ);
-                    }
-                    kept
-                }
-            }
-            Motion::Hinge(_) if moving_support => vec![],
-            Motion::Hinge(_) if torque_free => vec![Energy, HNorm],
-            Motion::Hinge(_) if gravity_only => vec![EnergyTotal],
-            Motion::Hinge(_) => vec![],
-            Motion::FixedAxis(axis) if moving_support || axis.accel() != 0.0 => vec![],
-            Motion::FixedAxis(_) => vec![Energy, HNorm],
-        };
+        let oracle = Oracle::for_scene(scene);
         Facts {
-            invariants,
-            closed_form: Oracle::for_scene(scene).map(|o| o.kind()),
+            invariants: invariants(scene, moving_support),
+            closed_form: oracle.as_ref().map(Oracle::kind),
             moving_support,
             panels: panels(&scene.motion, moving_support),
+            check: Some(CheckNumbers::of(scene)),
+            oracle,
+            columns: Scene::run_columns(&scene.motion, &scene.effects),
         }
     }
 
@@ -151,6 +190,58 @@ impl Facts {
         (self.invariants.iter())
             .copied()
             .find(|i| matches!(i, Invariant::Energy | Invariant::EnergyTotal))
+    }
+
+    /// The closed form that applies, as evaluated when the scene was built: what `compare`, the accuracy study
+    /// and `score` measure runs against (`None` without one, and in facts read back from a sidecar).
+    pub fn oracle(&self) -> Option<&Oracle> {
+        self.oracle.as_ref()
+    }
+
+    /// The optional columns a run writes (θ, the support's, the potential's, the capabilities' groups); empty in
+    /// facts read back from a sidecar, whose `columns` list them all.
+    pub fn columns(&self) -> &ColumnSet {
+        &self.columns
+    }
+}
+
+/// The invariants of `scene` (the module's rules).
+fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
+    let gravity_only = scene
+        .effects
+        .iter()
+        .all(|e| matches!(e, Effect::Gravity { .. }));
+    let vertical_gravity = scene.effects.iter().all(|e| match e {
+        Effect::Gravity { g_s, .. } => g_s.x == 0.0 && g_s.y == 0.0,
+        _ => true,
+    });
+    let torque_free = scene.effects.is_empty();
+    use Invariant::*;
+    match &scene.motion {
+        Motion::Free { gyrostat, .. } => {
+            if gyrostat.as_ref().is_some_and(|g| g.imbalanced()) {
+                vec![]
+            } else {
+                let no_motor_work = gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely());
+                let energy = if torque_free { Energy } else { EnergyTotal };
+                let mut kept = Vec::new();
+                if no_motor_work && gravity_only {
+                    kept.push(energy);
+                }
+                if torque_free {
+                    kept.extend([HSpaceX, HSpaceY, HSpaceZ, HNorm]);
+                } else if gravity_only && vertical_gravity {
+                    kept.push(HSpaceZ);
+                }
+                kept
+            }
+        }
+        Motion::Hinge(_) if moving_support => vec![],
+        Motion::Hinge(_) if torque_free => vec![Energy, HNorm],
+        Motion::Hinge(_) if gravity_only => vec![EnergyTotal],
+        Motion::Hinge(_) => vec![],
+        Motion::FixedAxis(axis) if moving_support || axis.accel() != 0.0 => vec![],
+        Motion::FixedAxis(_) => vec![Energy, HNorm],
     }
 }
 
@@ -175,13 +266,6 @@ fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
     panels
 }
 
-impl Scene {
-    /// What the scene conserves ([`Facts::of`]).
-    pub fn facts(&self) -> Facts {
-        Facts::of(self)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::Invariant::*;
@@ -193,7 +277,7 @@ mod tests {
         let path = std::path::PathBuf::from(format!("scenarios/{name}.toml"));
         let text = std::fs::read_to_string(&path).expect("a bundled scenario");
         let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
-        scene.facts()
+        scene.facts().clone()
     }
 
     /// The invariants of the bundled scenario `name`.
@@ -235,6 +319,41 @@ mod tests {
         assert_eq!(closed_form("damped_spin"), Some(ClosedForm::DampedSpin));
         assert_eq!(closed_form("heavy_top"), None);
         assert_eq!(closed_form("rod_pendulum"), None);
+    }
+
+    /// The closed form is evaluated once, with the scene: the facts hold it and name it by its kind; the columns
+    /// are those a run writes (a heavy top's potential, a disk's θ and support).
+    #[test]
+    fn the_facts_hold_the_closed_form_and_the_columns_they_name() {
+        for name in ["tennis_racket", "tilted_disk", "damped_spin", "heavy_top"] {
+            let facts = facts_of(name);
+            assert_eq!(
+                facts.oracle().map(Oracle::kind),
+                facts.closed_form,
+                "{name}"
+            );
+        }
+        assert!(facts_of("heavy_top").columns().potential);
+        let disk = facts_of("tilted_disk");
+        assert!(disk.columns().theta && disk.columns().support && !disk.columns().potential);
+    }
+
+    /// A user's moment added to a built scene changes what it conserves: the facts are computed again (a
+    /// torque-free body keeps neither T nor H_s under a moment, and no closed form applies).
+    #[test]
+    fn a_users_moment_recomputes_the_facts() {
+        use crate::frames::Axes;
+        use nalgebra::{UnitQuaternion, Vector3};
+        let path = std::path::PathBuf::from("scenarios/tennis_racket.toml");
+        let text = std::fs::read_to_string(&path).expect("a bundled scenario");
+        let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
+        assert!(scene.facts().oracle().is_some());
+        let push =
+            |_t: f64, _q: &UnitQuaternion<f64>, _w: &Vector3<f64>| Vector3::new(0.0, 0.0, 0.1);
+        let pushed = scene.with_moment("push", Axes::Body, push).expect("a law");
+        assert_eq!(pushed.facts().invariants, vec![]);
+        assert_eq!(pushed.facts().closed_form, None);
+        assert!(pushed.facts().oracle().is_none());
     }
 
     /// A carrier moves the axis's support (`MovingSupport`); a prescribed axis fixed in space and a free body have

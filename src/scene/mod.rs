@@ -14,7 +14,7 @@ mod user_moment;
 mod validate;
 mod wheel_law;
 
-pub use facts::{Facts, Invariant};
+pub use facts::{CheckNumbers, Facts, Invariant};
 #[cfg(feature = "sweep")]
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};

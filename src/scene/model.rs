@@ -12,6 +12,7 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 
+use super::facts::Facts;
 use super::spec::{MotionKind, SceneSpec};
 use crate::sample::ColumnSet;
 use crate::wheels::gyrostat::Gyrostat;
@@ -161,6 +162,21 @@ impl Motion {
 }
 
 impl Scene {
+    /// What the scene conserves, the closed form that applies (evaluated once), the columns and panels of its
+    /// runs and the numbers `check` prints ([`Facts::of`], computed when the scene was built).
+    pub fn facts(&self) -> &Facts {
+        &self.facts
+    }
+
+    /// The step a fixed-step method (rk4, split2, split4) takes: `dt`, or less where the rows come more often
+    /// ([`Schedule::largest_fixed_step`]); `None` for the adaptive and exact methods.
+    pub fn fixed_step(&self) -> Option<f64> {
+        let s = &self.solver;
+        s.method
+            .is_fixed_step()
+            .then(|| self.schedule.largest_fixed_step(s.dt))
+    }
+
     /// The optional columns a run of `motion` with `effects` writes: the motion's, and the potential energy's
     /// with gravity.
     pub fn run_columns(motion: &Motion, effects: &[Effect]) -> ColumnSet {
@@ -212,6 +228,9 @@ pub struct Scene {
     pub spec: SceneSpec,
     /// The scene file it was read from and that file's text; `None` for a scene built in code.
     pub source: Option<SceneSource>,
+    /// What it conserves, the closed form that applies, its columns and panels ([`Scene::facts`]), computed when
+    /// it is built (and again when a user's moment is added).
+    pub(super) facts: Facts,
 }
 
 /// Where a scene came from: its file (or `<dict>` for a Python dict) and the text as written.

@@ -52,6 +52,7 @@ impl ClosedForm {
 }
 
 /// A closed-form solution that applies to a scene.
+#[derive(Debug, Clone, PartialEq)]
 pub enum Oracle {
     /// Torque-free body: ω and attitude (Landau & Lifshitz §37).
     TorqueFree {

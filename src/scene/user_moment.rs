@@ -1,5 +1,6 @@
 //! A built scene with one more effect: the user's own moment law ([`MomentLaw`]), which a scene file cannot hold.
 
+use super::facts::Facts;
 use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
 use super::validate::InvalidScene;
@@ -47,6 +48,7 @@ impl Scene {
         self.takes_a_law(name)?;
         let user = UserMoment::new(name, axes, law);
         self.effects.push(Effect::User(user));
+        self.facts = Facts::of(&self);
         Ok(self)
     }
 

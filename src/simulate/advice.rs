@@ -16,15 +16,6 @@ pub const MAX_TURN_PER_STEP: f64 = 0.1;
 /// The largest relative drift |E(t) − E₀| / (T₀ + |V₀|) of a conserved energy E = T + V before a run is warned.
 pub const MAX_ENERGY_DRIFT: f64 = 1e-3;
 
-/// The step a fixed-step method (rk4, split2, split4) takes: `dt`, or less where the rows come more often
-/// ([`crate::integrate::Schedule::largest_fixed_step`]); `None` for the adaptive and exact methods.
-pub fn fixed_step(scene: &Scene) -> Option<f64> {
-    let s = &scene.solver;
-    s.method
-        .is_fixed_step()
-        .then(|| scene.schedule.largest_fixed_step(s.dt))
-}
-
 /// A fixed step that turns the body by more than [`MAX_TURN_PER_STEP`] at the largest rate the scene starts or
 /// is driven with.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,7 +30,7 @@ impl CoarseStep {
     /// The coarse step of `scene`, if its step is coarse: |ω|·h > [`MAX_TURN_PER_STEP`], with |ω| the initial
     /// rate of a free body or a hinge, and the largest rate of a prescribed motion over the run.
     pub fn of(scene: &Scene) -> Option<Self> {
-        let step = fixed_step(scene)?;
+        let step = scene.fixed_step()?;
         let omega = scene.motion.largest_rate(scene.solver.t_end);
         (omega * step > MAX_TURN_PER_STEP).then_some(Self { step, omega })
     }

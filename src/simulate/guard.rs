@@ -158,7 +158,7 @@ impl DivergenceGuard {
                 Accuracy::Tolerance(s.rtol + s.atol / scale)
             }
             Method::Rk4 | Method::Split2 | Method::Split4 => Accuracy::Step {
-                dt: super::fixed_step(scene).unwrap_or(s.dt),
+                dt: scene.fixed_step().unwrap_or(s.dt),
                 order: s.method.order().map_or(1, |p| p as i32),
             },
             Method::Exact => Accuracy::RoundOff,

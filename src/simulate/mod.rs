@@ -29,8 +29,8 @@ mod events;
 mod guard;
 
 pub use advice::{
-    CoarseStep, EnergyWatch, MAX_ENERGY_DRIFT, MAX_TURN_PER_STEP, drift_warning, fixed_step,
-    warnings, warnings_before_run,
+    CoarseStep, EnergyWatch, MAX_ENERGY_DRIFT, MAX_TURN_PER_STEP, drift_warning, warnings,
+    warnings_before_run,
 };
 pub use guard::{Divergence, DivergenceGuard, GuardedQuantity};
 
@@ -97,9 +97,9 @@ impl RunFailed {
     }
 }
 
-/// The optional columns a scene's run writes.
+/// The optional columns a scene's run writes ([`crate::scene::Facts::columns`]).
 pub fn columns(scene: &Scene) -> ColumnSet {
-    Scene::run_columns(&scene.motion, &scene.effects)
+    scene.facts().columns().clone()
 }
 
 /// How a scene's method runs: a splitting scheme or the closed form (the project's own methods, stepped here), or

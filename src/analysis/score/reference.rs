@@ -114,7 +114,7 @@ pub fn reference(scene: &Scene, path: &str, times: &[f64]) -> Result<Reference, 
         every: Some(every),
         ..Overrides::default()
     };
-    let closed = match Oracle::for_scene(scene) {
+    let closed = match scene.facts().oracle() {
         Some(o @ (Oracle::TorqueFree { .. } | Oracle::SymmetricGyrostat { .. })) => Some(o.name()),
         _ => None,
     };

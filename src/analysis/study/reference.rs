@@ -53,7 +53,7 @@ pub(super) struct StudyReference {
 impl StudyReference {
     /// The reference for the scene `base` (read from `path` as `spec`).
     pub fn for_scene(base: &Scene, path: &Path, spec: &SceneSpec) -> Result<Self, StudyError> {
-        Ok(match &Oracle::for_scene(base) {
+        Ok(match base.facts().oracle() {
             Some(Oracle::FixedAxis) => Self {
                 reference: Reference::FixedAxis,
                 description: "closed form: prescribed fixed-axis motion, H_s = I_s(theta) omega_s against H_s integrated from dH_s/dt = M_s (omega and attitude are the closed form in every run)".to_string(),

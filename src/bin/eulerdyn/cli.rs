@@ -385,7 +385,9 @@ fn run_to_file(
     if quiet {
         return Ok(());
     }
-    let step = simulate::fixed_step(scene_model).map_or(String::new(), |h| format!(" of {h} s"));
+    let step = scene_model
+        .fixed_step()
+        .map_or(String::new(), |h| format!(" of {h} s"));
     eprintln!(
         "wrote {} rows to {} ({} steps{step}, {} rejected, {} right-hand-side evaluations, {:.3} s)",
         report.rows,

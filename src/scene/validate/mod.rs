@@ -10,6 +10,7 @@ mod solver;
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
+use super::facts::Facts;
 use super::model::Scene;
 use super::source_map::KeyPath;
 use super::spec::{AttitudeSpec, MotionSpec, SceneSpec};
@@ -73,11 +74,9 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     let solver = solver::validate_solver(&doc.solver, overrides)?;
     solver::validate_method(&solver, &motion, &effects, &attitude0, overrides)?;
     let schedule = solver::validate_schedule(doc, &solver, overrides)?;
-    let columns = Scene::run_columns(&motion, &effects);
     if !doc.event.is_empty() {
         event::locatable(&motion, &solver, overrides)?;
     }
-    let events = crate::events::validate_events(&doc.event, &columns.columns())?;
     let compare_tolerance = match &doc.compare {
         None => defaults::COMPARE_TOLERANCE,
         Some(c) => positive(
@@ -86,7 +85,7 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
             "largest allowed difference",
         )?,
     };
-    Ok(Scene {
+    let mut scene = Scene {
         name: doc.name.clone().unwrap_or_default(),
         description: doc.description.clone().unwrap_or_default(),
         body,
@@ -94,13 +93,17 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         motion,
         attitude0,
         effects,
-        events,
+        events: Vec::new(),
         solver,
         schedule,
         compare_tolerance,
         spec: doc.resolved(&solver, schedule.every(), compare_tolerance),
         source: None,
-    })
+        facts: Facts::default(),
+    };
+    scene.facts = Facts::of(&scene);
+    scene.events = crate::events::validate_events(&doc.event, &scene.facts.columns().columns())?;
+    Ok(scene)
 }
 
 /// The scene's effects (`crate::effects::validate_effects`), gravity's moment center on an axis its point; a
