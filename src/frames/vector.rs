@@ -79,6 +79,13 @@ impl<F: Frame> Vector<F> {
     }
 }
 
+impl<F: Frame> Default for Vector<F> {
+    /// The zero vector.
+    fn default() -> Self {
+        Self::zeros()
+    }
+}
+
 impl<F: Frame> Deref for Vector<F> {
     type Target = Vector3<f64>;
 

@@ -320,25 +320,25 @@ pub struct AxisRotation {
     /// Attitude, body → space.
     pub q: UnitQuaternion<f64>,
     /// The unit axis u in space axes.
-    pub u_s: Vector3<f64>,
+    pub u_s: Vector<SpaceAxes>,
     /// ω in body axes (rad/s).
-    pub omega_b: Vector3<f64>,
+    pub omega_b: Vector<BodyAxes>,
     /// ω in space axes (rad/s).
-    pub omega_s: Vector3<f64>,
+    pub omega_s: Vector<SpaceAxes>,
     /// ω̇_s − θ̈ u = Ω̇_c + θ̇ Ω_c × u (space axes; zero without a carrier).
-    pub bias_s: Vector3<f64>,
+    pub bias_s: Vector<SpaceAxes>,
     /// The support's motion at this time, if it moves.
     pub support: Option<SupportMotion>,
 }
 
 impl AxisRotation {
     /// The axis point's acceleration a_A in a vehicle (space axes); `None` when A is fixed in space.
-    pub fn accel_a_s(&self) -> Option<Vector3<f64>> {
+    pub fn accel_a_s(&self) -> Option<Vector<SpaceAxes>> {
         self.support.and_then(|c| c.accel_a_s)
     }
 
     /// ω̇_s = θ̈ u + (Ω̇_c + θ̇ Ω_c × u).
-    pub fn alpha_s(&self, theta_ddot: f64) -> Vector3<f64> {
+    pub fn alpha_s(&self, theta_ddot: f64) -> Vector<SpaceAxes> {
         match self.support {
             None => self.u_s * theta_ddot,
             Some(_) => self.bias_s + self.u_s * theta_ddot,
@@ -347,11 +347,11 @@ impl AxisRotation {
 
     /// The same placement turning at θ̇ = `theta_dot` about `axis_b` more: ω += θ̇ u, and in a carrier ω̇ gains
     /// θ̇ Ω_c × u.
-    pub fn turning(mut self, axis_b: &Vector3<f64>, theta_dot: f64) -> Self {
-        self.omega_b += axis_b * theta_dot;
+    pub fn turning(mut self, axis_b: &Vector<BodyAxes>, theta_dot: f64) -> Self {
+        self.omega_b += *axis_b * theta_dot;
         self.omega_s += self.u_s * theta_dot;
         if let Some(c) = self.support {
-            self.bias_s += c.omega_c_s.cross(&self.u_s) * theta_dot;
+            self.bias_s += Vector::new(c.omega_c_s.cross(&*self.u_s)) * theta_dot;
         }
         self
     }
@@ -362,10 +362,10 @@ impl FixedAxis {
     fn relative(&self, theta: f64) -> AxisRotation {
         AxisRotation {
             q: self.attitude(theta),
-            u_s: self.axis_c.into_inner(),
-            omega_b: Vector3::zeros(),
-            omega_s: Vector3::zeros(),
-            bias_s: Vector3::zeros(),
+            u_s: Vector::new(self.axis_c.into_inner()),
+            omega_b: Vector::zeros(),
+            omega_s: Vector::zeros(),
+            bias_s: Vector::zeros(),
             support: None,
         }
     }
@@ -379,8 +379,8 @@ impl FixedAxis {
                 let q = c.q_c * self.attitude(theta);
                 AxisRotation {
                     q,
-                    u_s: c.q_c * self.axis_c.into_inner(),
-                    omega_b: q.inverse_transform_vector(&c.omega_c_s),
+                    u_s: Vector::new(c.q_c * self.axis_c.into_inner()),
+                    omega_b: Vector::new(q.inverse_transform_vector(&c.omega_c_s)),
                     omega_s: c.omega_c_s,
                     bias_s: c.omega_c_dot_s,
                     support: Some(c),
@@ -392,28 +392,30 @@ impl FixedAxis {
     /// The body at angle θ, rate θ̇ and time t ([`AxisRotation`]).
     pub fn rotation(&self, t: f64, theta: f64, theta_dot: f64) -> AxisRotation {
         self.placed(t, theta)
-            .turning(&self.axis_b.into_inner(), theta_dot)
+            .turning(&Vector::new(self.axis_b.into_inner()), theta_dot)
     }
 
     /// a_C = a_A + ω̇ × ρ + ω × (ω × ρ), space axes, ρ = R ρ_C, where a_A is the axis point's acceleration in a
     /// vehicle ([`crate::motion::carrier::vehicle`]) and is absent otherwise (A fixed in space).
     fn accel_c_at(&self, rotation: &AxisRotation, theta_ddot: f64) -> Vector3<f64> {
         let rho_s = rotation.q * self.rho_c_b;
-        let omega_s = rotation.omega_s;
+        let omega_s = *rotation.omega_s;
         let relative =
             rotation.alpha_s(theta_ddot).cross(&rho_s) + omega_s.cross(&omega_s.cross(&rho_s));
         match rotation.accel_a_s() {
             None => relative,
-            Some(a_a_s) => a_a_s + relative,
+            Some(a_a_s) => *a_a_s + relative,
         }
     }
 
     /// In a vehicle, the moment about A of the d'Alembert force at C, ρ × m a_A (space axes; `None` without a
     /// vehicle): the resultant moment about the accelerating point A is M = dH_A/dt + ρ × m a_A, with H_A = I_A ω
     /// the moment of momentum relative to A (Rigid-body dynamics, lecture notes: moments about a moving point).
-    pub fn transport_moment_s(&self, rotation: &AxisRotation) -> Option<Vector3<f64>> {
+    pub fn transport_moment_s(&self, rotation: &AxisRotation) -> Option<Vector<SpaceAxes>> {
         let a_a_s = rotation.accel_a_s()?;
-        Some((rotation.q * self.rho_c_b).cross(&(a_a_s * self.mass)))
+        Some(Vector::new(
+            (rotation.q * self.rho_c_b).cross(&(*a_a_s * self.mass)),
+        ))
     }
 
     /// M = dH_A/dt in a carrier, in the form `frame` selects, returned in (body, space) axes. Body form:
@@ -431,7 +433,7 @@ impl FixedAxis {
         let alpha_s = rotation.alpha_s(theta_ddot);
         match form {
             Form::Body => {
-                let (omega_b, alpha_b) = (rotation.omega_b, q.inverse_transform_vector(&alpha_s));
+                let (omega_b, alpha_b) = (*rotation.omega_b, q.inverse_transform_vector(&alpha_s));
                 let m_b = self.inertia_a_b * alpha_b + omega_b.cross(&(self.inertia_a_b * omega_b));
                 let m_b = match rotation.accel_a_s() {
                     None => m_b,
@@ -447,10 +449,10 @@ impl FixedAxis {
                 let i_s = r * self.inertia_a_b * r.transpose();
                 let w_hat = rotation.omega_s.cross_matrix();
                 let i_s_dot = w_hat * i_s - i_s * w_hat;
-                let m_s = i_s_dot * rotation.omega_s + i_s * alpha_s;
+                let m_s = i_s_dot * *rotation.omega_s + i_s * *alpha_s;
                 let m_s = match self.transport_moment_s(rotation) {
                     None => m_s,
-                    Some(transport_s) => m_s + transport_s,
+                    Some(transport_s) => m_s + *transport_s,
                 };
                 (q.inverse_transform_vector(&m_s), m_s)
             }
@@ -497,7 +499,7 @@ impl FixedAxis {
         m_eff_s: &Vector3<f64>,
     ) -> Sample {
         let (angle, q) = (*angle, rotation.q);
-        let omega_b = rotation.omega_b;
+        let omega_b = *rotation.omega_b;
         let h_b = self.inertia_a_b * omega_b;
         let (m_b, m_s) = match (rotation.support, form) {
             (Some(_), _) => self.moment_in_carrier(rotation, angle.theta_ddot, form),
@@ -514,7 +516,7 @@ impl FixedAxis {
             t,
             q,
             omega_b: Vector::new(omega_b),
-            omega_s: Vector::new(rotation.omega_s),
+            omega_s: rotation.omega_s,
             h_b: Vector::new(h_b),
             h_s: Vector::new(q * h_b),
             m_b: Vector::new(m_b),
@@ -552,7 +554,7 @@ impl FixedAxis {
             theta_ddot: angle.theta_ddot,
             f_sup_s: Vector::new(f_sup_s),
             m_sup_s: Vector::new(m_sup_s),
-            m_drive: m_sup_s.dot(&u_s),
+            m_drive: m_sup_s.dot(&*u_s),
             bearings: self.bearings.map(|bearings| {
                 let (r_a_s, r_b_s) = bearings.split(&f_sup_s, &m_sup_s, &u_s);
                 BearingLoads {
@@ -562,7 +564,7 @@ impl FixedAxis {
                     r_b_b: Vector::new(q.inverse_transform_vector(&r_b_s)),
                 }
             }),
-            omega_c_s: rotation.support.map(|c| Vector::new(c.omega_c_s)),
+            omega_c_s: rotation.support.map(|c| c.omega_c_s),
         }
     }
 }

@@ -20,7 +20,7 @@
 use nalgebra::{SVector, Vector3};
 
 use crate::effects::{AppliedMoment, EffectMoments};
-use crate::frames::Form;
+use crate::frames::{Form, Vector};
 use crate::integrate::OdeSystem;
 use crate::motion::fixed_axis::{AxisAngle, AxisRotation, FixedAxis};
 use crate::sample::Sample;
@@ -86,7 +86,7 @@ impl Hinge {
             (Form::Space, Some(_)) => {
                 let rotation = self.axis.rotation(0.0, self.theta0, self.rate0);
                 let u_b = self.axis.axis_b().into_inner();
-                let l = u_b.dot(&(self.axis.inertia_a_b() * rotation.omega_b));
+                let l = u_b.dot(&(self.axis.inertia_a_b() * *rotation.omega_b));
                 HingeState::new(self.theta0, l)
             }
         }
@@ -101,11 +101,11 @@ impl Hinge {
             (Form::Body, _) => y[1],
             (Form::Space, None) => y[1] / self.i_uu,
             (Form::Space, Some(_)) => {
-                let carried = u_b.dot(&(self.axis.inertia_a_b() * placed.omega_b));
+                let carried = u_b.dot(&(self.axis.inertia_a_b() * *placed.omega_b));
                 (y[1] - carried) / self.i_uu
             }
         };
-        (theta_dot, placed.turning(&u_b, theta_dot))
+        (theta_dot, placed.turning(&Vector::new(u_b), theta_dot))
     }
 
     /// θ̈ from u·(dH/dt + ρ × m a_A − M_eff) = 0: θ̈ = u_b·(M_eff,b − ρ_b × m a_A,b − I_A β_b − ω_b × I_A ω_b)/I_uu
@@ -118,7 +118,7 @@ impl Hinge {
             Some(_) => {
                 let i_a = self.axis.inertia_a_b();
                 let (omega_b, beta_b) = (
-                    rotation.omega_b,
+                    *rotation.omega_b,
                     rotation.q.inverse_transform_vector(&rotation.bias_s),
                 );
                 let inertial = i_a * beta_b + omega_b.cross(&(i_a * omega_b));
@@ -178,11 +178,11 @@ impl OdeSystem<2> for HingeSpaceForm<'_> {
         let l_dot = match rotation.support {
             None => axial,
             Some(c) => {
-                let h_s = rotation.q * (hinge.axis.inertia_a_b() * rotation.omega_b);
-                let l_dot = c.omega_c_s.cross(&rotation.u_s).dot(&h_s) + axial;
+                let h_s = rotation.q * (hinge.axis.inertia_a_b() * *rotation.omega_b);
+                let l_dot = c.omega_c_s.cross(&*rotation.u_s).dot(&h_s) + axial;
                 match hinge.axis.transport_moment_s(&rotation) {
                     None => l_dot,
-                    Some(transport_s) => l_dot - rotation.u_s.dot(&transport_s),
+                    Some(transport_s) => l_dot - rotation.u_s.dot(&*transport_s),
                 }
             }
         };

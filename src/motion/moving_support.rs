@@ -7,7 +7,9 @@
 use std::any::Any;
 use std::fmt;
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::UnitQuaternion;
+
+use crate::frames::{SpaceAxes, Vector};
 
 use crate::sample::ColumnGroup;
 use crate::text::Description;
@@ -19,11 +21,11 @@ pub struct SupportMotion {
     /// R_c, support → space.
     pub q_c: UnitQuaternion<f64>,
     /// Ω_c (rad/s, space axes).
-    pub omega_c_s: Vector3<f64>,
+    pub omega_c_s: Vector<SpaceAxes>,
     /// Ω̇_c (rad/s², space axes).
-    pub omega_c_dot_s: Vector3<f64>,
+    pub omega_c_dot_s: Vector<SpaceAxes>,
     /// a_A (m/s², space axes); `None` when A stays fixed in space.
-    pub accel_a_s: Option<Vector3<f64>>,
+    pub accel_a_s: Option<Vector<SpaceAxes>>,
 }
 
 /// A support that moves in space, as an axis motion sees it ([`SupportMotion`] at each time), with what the rest

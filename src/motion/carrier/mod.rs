@@ -23,6 +23,7 @@ use std::any::Any;
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use crate::frames::Vector;
 use crate::motion::moving_support::{MovingSupport, SupportMotion};
 use crate::profile::Profile;
 use crate::sample::ColumnGroup;
@@ -73,7 +74,7 @@ impl Carrier {
     /// let centre = Vector3::new(0.0, 3.0, 0.0);
     /// let car = yaw.with_vehicle(Vehicle::new(centre, Vector3::zeros(), Profile::Constant));
     /// assert_eq!(car.vehicle().map(Vehicle::center_s), Some(&centre));
-    /// assert!((car.at(0.0).accel_a_s.unwrap() - Vector3::new(0.0, 12.0, 0.0)).norm() < 1e-14);
+    /// assert!((*car.at(0.0).accel_a_s.unwrap() - Vector3::new(0.0, 12.0, 0.0)).norm() < 1e-14);
     /// ```
     pub fn with_vehicle(mut self, vehicle: Vehicle) -> Self {
         self.vehicle = Some(vehicle);
@@ -123,10 +124,10 @@ impl MovingSupport for Carrier {
         );
         SupportMotion {
             q_c,
-            omega_c_s,
-            omega_c_dot_s,
+            omega_c_s: Vector::new(omega_c_s),
+            omega_c_dot_s: Vector::new(omega_c_dot_s),
             accel_a_s: (self.vehicle.as_ref())
-                .map(|v| v.accel_a_s(t, &q_c, &omega_c_s, &omega_c_dot_s)),
+                .map(|v| Vector::new(v.accel_a_s(t, &q_c, &omega_c_s, &omega_c_dot_s))),
         }
     }
 
@@ -174,7 +175,7 @@ mod tests {
         let r_dot = (r(t + h) - r(t - h)) / (2.0 * h);
         assert_relative_eq!(r_dot, now.omega_c_s.cross_matrix() * r(t), epsilon = 1e-9);
         let rate_dot = (carrier.at(t + h).omega_c_s - carrier.at(t - h).omega_c_s) / (2.0 * h);
-        assert_relative_eq!(rate_dot, now.omega_c_dot_s, epsilon = 1e-9);
+        assert_relative_eq!(*rate_dot, *now.omega_c_dot_s, epsilon = 1e-9);
     }
 
     /// Two supports are equal through the trait when they are the same kind with equal values (what `FixedAxis`'s
@@ -201,7 +202,7 @@ mod tests {
         for (t, psi, on) in [(0.5, 0.0, 0.0), (1.5, 0.5, 1.0), (3.0, 1.0, 0.0)] {
             let now = carrier.at(t);
             assert_relative_eq!(now.q_c.angle(), 0.5 * psi, epsilon = 1e-15);
-            assert_eq!(now.omega_c_s, rate_s * on);
+            assert_eq!(*now.omega_c_s, rate_s * on);
         }
     }
 }

@@ -107,6 +107,6 @@ mod tests {
         let p_a = |t: f64| center_s + carrier.at(t).q_c * (-center_s) + accel_s * (0.5 * t * t);
         let (t, h) = (2.3, 1e-4);
         let second = (p_a(t + h) - p_a(t) * 2.0 + p_a(t - h)) / (h * h);
-        assert_relative_eq!(second, carrier.at(t).accel_a_s.unwrap(), epsilon = 1e-6);
+        assert_relative_eq!(second, *carrier.at(t).accel_a_s.unwrap(), epsilon = 1e-6);
     }
 }
