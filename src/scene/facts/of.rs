@@ -1,0 +1,134 @@
+//! The facts of a validated scene ([`Facts::of`]), computed once when it is built.
+//!
+//! The invariants (Rigid-body dynamics, lecture notes, Thms 24–25; Landau & Lifshitz §§33–35):
+//! - free motion with no effect: H_s (Ḣ_s = M_s = 0, whatever the rotors' motors do: their torques are internal),
+//!   hence |H|; and T when no motor does work (no rotors, or every wheel spinning freely);
+//! - free motion about a fixed pivot under gravity alone: T + V when no motor does work, and H_s,z when g is along
+//!   space z (gravity's moment r × m g is horizontal);
+//! - a hinge: T with no effect, T + V under gravity alone;
+//! - a prescribed fixed axis turning steadily: T and |H| (H_s turns with the body; its magnitude does not);
+//! - nothing with torques, damping or a user's law, an accelerating prescribed axis, a turning carrier (which
+//!   does work on the body), or an imbalanced wheel (its turning moment changes H and T).
+
+use nalgebra::Matrix3;
+
+use super::{CheckNumbers, Facts, Invariant};
+use crate::effects::Effect;
+use crate::panel::Panel;
+use crate::scene::model::{Motion, Scene};
+use crate::scene::oracle::Oracle;
+
+impl Facts {
+    /// The facts of `scene`.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{BodySpec, Invariant, SceneSpec, ShapeSpec};
+    /// let scene = SceneSpec::new(BodySpec::shape(1.0, ShapeSpec::sphere(0.1)), 1.0, 0.01)
+    ///     .with_omega([0.0, 0.0, 3.0])
+    ///     .build()?;
+    /// let facts = scene.facts();
+    /// assert!(facts.conserves(Invariant::Energy) && facts.conserves(Invariant::HSpaceX));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn of(scene: &Scene) -> Self {
+        let moving_support = (scene.motion.axis()).is_some_and(|a| a.moving_support().is_some());
+        let oracle = Oracle::for_scene(scene);
+        Facts {
+            invariants: invariants(scene, moving_support),
+            closed_form: oracle.as_ref().map(Oracle::kind),
+            moving_support,
+            panels: panels(&scene.motion, moving_support),
+            check: Some(CheckNumbers::of(scene)),
+            oracle,
+            columns: Scene::run_columns(&scene.motion, &scene.effects),
+        }
+    }
+}
+
+/// The invariants of `scene` (the module's rules).
+fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
+    let gravity_only = scene
+        .effects
+        .iter()
+        .all(|e| matches!(e, Effect::Gravity { .. }));
+    let vertical_gravity = scene.effects.iter().all(|e| match e {
+        Effect::Gravity { g_s, .. } => g_s.x == 0.0 && g_s.y == 0.0,
+        _ => true,
+    });
+    let torque_free = scene.effects.is_empty();
+    use Invariant::*;
+    match &scene.motion {
+        Motion::Free { gyrostat, .. } => {
+            if gyrostat.as_ref().is_some_and(|g| g.imbalanced()) {
+                vec![]
+            } else {
+                let no_motor_work = gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely());
+                let energy = if torque_free { Energy } else { EnergyTotal };
+                let mut kept = Vec::new();
+                if no_motor_work && gravity_only {
+                    kept.push(energy);
+                }
+                if torque_free {
+                    kept.extend([HSpaceX, HSpaceY, HSpaceZ, HNorm]);
+                } else if gravity_only && vertical_gravity {
+                    kept.push(HSpaceZ);
+                }
+                kept
+            }
+        }
+        Motion::Hinge(_) if moving_support => vec![],
+        Motion::Hinge(_) if torque_free => vec![Energy, HNorm],
+        Motion::Hinge(_) if gravity_only => vec![EnergyTotal],
+        Motion::Hinge(_) => vec![],
+        Motion::FixedAxis(axis) if moving_support || axis.accel() != 0.0 => vec![],
+        Motion::FixedAxis(_) => vec![Energy, HNorm],
+    }
+}
+
+/// The panels of a run of `motion` ([`Facts::panels`]).
+fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
+    let mut panels = Panel::ALL.to_vec();
+    if let Some(axis) = motion.axis() {
+        panels.extend([Panel::Theta, Panel::Support]);
+        if axis.bearings().is_some() {
+            panels.push(match moving_support {
+                true => Panel::BearingsSpace,
+                false => Panel::Bearings,
+            });
+        }
+    }
+    if let Motion::Free {
+        gyrostat: Some(_), ..
+    } = motion
+    {
+        panels.extend(Panel::WHEELS);
+    }
+    panels
+}
+
+impl CheckNumbers {
+    /// The numbers of `scene`.
+    fn of(scene: &Scene) -> Self {
+        let inertia_c = scene.body.inertia_c();
+        let principal = scene.body.principal();
+        let (rho_c_b, inertia_o_b) = scene.motion.about_moment_center();
+        CheckNumbers {
+            mass: scene.body.mass(),
+            center_b: scene.center_b.into(),
+            inertia_c_b: rows_of(inertia_c),
+            principal_moments_c: principal.moments.into(),
+            principal_axes_b: rows_of(principal.axes_b.matrix()),
+            motion: scene.motion.kind(),
+            moment_center_from_c_b: (-rho_c_b).into(),
+            inertia_o_b: rows_of(&inertia_o_b),
+            axis_b: scene.motion.axis().map(|a| a.axis_b().into_inner().into()),
+            step_used: scene.fixed_step(),
+            rows: scene.schedule.len(),
+        }
+    }
+}
+
+/// The rows of `m`.
+fn rows_of(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
+    std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
+}
