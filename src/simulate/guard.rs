@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use crate::effects::{Effect, EffectMoments};
 use crate::method::Method;
 use crate::sample::Sample;
-use crate::scene::Scene;
+use crate::scene::{Invariant, Scene};
 
 /// The quantity a [`DivergenceGuard`] found out of bounds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -125,6 +125,7 @@ pub struct DivergenceGuard {
     m_max: f64,
     damping_c: f64,
     i_min: f64,
+    /// T and H_s are conserved (the scene's [`crate::scene::Facts`]: torque-free).
     conserved: bool,
     accuracy: Accuracy,
     hint: &'static str,
@@ -146,6 +147,7 @@ impl DivergenceGuard {
         if scene.effects.iter().any(|e| matches!(e, Effect::User(_))) {
             return None;
         }
+        let facts = scene.facts();
         let (h0_b, e0) = body.momentum_and_energy(omega0_b);
         let h0_s = scene.attitude0 * h0_b;
         let moments = EffectMoments::new(&scene.effects, body.mass());
@@ -170,7 +172,7 @@ impl DivergenceGuard {
             m_max: moments.rest_moment_bound(),
             damping_c: moments.damping_c(),
             i_min,
-            conserved: scene.effects.is_empty(),
+            conserved: facts.conserves(Invariant::Energy) && facts.conserves(Invariant::HSpaceX),
             accuracy,
             hint: match s.method {
                 Method::Rk4 => HINT_RK4,

@@ -1118,12 +1118,7 @@ fn a_corrupt_events_file_is_refused_naming_it_and_its_line() {
 fn the_facts_name_the_panels_a_runs_header_shows_for_every_bundled_scenario() {
     use eulerdyn::panel::Panel;
     use eulerdyn::scene::{self, Overrides};
-    let mut scenes: Vec<PathBuf> = std::fs::read_dir(repo_path("scenarios"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    scenes.sort();
+    let scenes = crate::common::bundled_scenarios();
     let mut seen = Vec::new();
     for path in &scenes {
         let scene = scene::load(path, &Overrides::default()).unwrap();

@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 use std::fs;
 
-use crate::common::{eulerdyn, repo_path};
+use crate::common::{bundled_scenarios, eulerdyn, repo_path};
 
 const GOLDEN: &str = "tests/golden/scenario_csv.txt";
 
@@ -20,12 +20,7 @@ fn fnv1a64(bytes: &[u8]) -> u64 {
 /// One line per bundled scenario, in file-name order: `name hash bytes rows`.
 fn fingerprints() -> String {
     let dir = tempfile::tempdir().unwrap();
-    let mut scenes: Vec<_> = fs::read_dir(repo_path("scenarios"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    scenes.sort();
+    let scenes = bundled_scenarios();
     let mut text = String::new();
     for scene in scenes {
         let name = scene.file_stem().unwrap().to_string_lossy().into_owned();
