@@ -56,7 +56,7 @@ impl Invariant {
 
 /// What a scene conserves (the module's rules), in the order: energy, then momentum; the closed form that
 /// applies, evaluated once; the columns and panels its runs have; the numbers `check` prints. Computed when the
-/// scene is built ([`Scene::facts`]); the sidecar writes the serialisable part under `facts`.
+/// scene is built ([`crate::scene::Scene::facts`]); the sidecar writes the serialisable part under `facts`.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Facts {
     /// The conserved quantities, by their columns (`energy`, `H_s_x`…`H_s_z`, `H_norm` for a torque-free body;
@@ -111,7 +111,7 @@ pub struct CheckNumbers {
     pub inertia_o_b: [[f64; 3]; 3],
     /// The fixed axis (unit, body axes), for a fixed axis or hinge.
     pub axis_b: Option<[f64; 3]>,
-    /// The fixed step taken (s), for fixed-step methods ([`Scene::fixed_step`]).
+    /// The fixed step taken (s), for fixed-step methods ([`crate::scene::Scene::fixed_step`]).
     pub step_used: Option<f64>,
     /// Rows a run writes.
     pub rows: usize,
