@@ -530,7 +530,7 @@ fn method_lines(w: &mut Description, scene: &Scene) -> String {
 fn output_lines(w: &mut Description, scene: &Scene) {
     let s = &scene.solver;
     let rows = scene.schedule.len();
-    let columns = simulate::columns(scene).columns();
+    let columns = scene.facts().columns().columns();
     let extra: Vec<&str> = (columns.iter().skip(BASE_COLUMNS.len()))
         .map(|c| c.name.as_ref())
         .collect();
