@@ -130,32 +130,23 @@ pub struct BearingLoads {
     pub r_b_b: Vector<BodyAxes>,
 }
 
-/// Which optional columns a run writes (fixed for the whole run).
+/// Which optional columns a run writes (fixed for the whole run): groups of columns after the base ones, each
+/// built by the capability that writes it — an axis motion's (`crate::motion::axis_columns`), gravity's potential
+/// (`crate::effects::potential_columns`), a carrier's rate (`crate::motion::carrier::columns`), a body's wheels
+/// (`crate::wheels::columns`) — in the order the scene composes them (`crate::scene::Scene::run_columns`).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct ColumnSet {
-    /// `theta`.
-    pub theta: bool,
-    /// `F_s_x,F_s_y,F_s_z`.
-    pub force: bool,
-    /// `H_s_int_x,H_s_int_y,H_s_int_z`.
-    pub h_s_integrated: bool,
-    /// `theta_dot,theta_ddot,F_sup_s_x,F_sup_s_y,F_sup_s_z,M_drive`, and `M_sup_s_x,M_sup_s_y,M_sup_s_z` after the
-    /// potential's columns (added in the third round: appended, so that earlier columns keep their places).
-    pub support: bool,
-    /// `R_A_s_*,R_B_s_*,R_A_b_*,R_B_b_*`.
-    pub bearings: bool,
-    /// `potential,energy_total`.
-    pub potential: bool,
-    /// The capabilities' columns, after all others, in the order of the groups: a carrier's rate
-    /// (`crate::motion::carrier::columns`), a body's wheels (`crate::wheels::columns`).
+    /// The groups, in the order of their columns.
     pub groups: Vec<ColumnGroup>,
 }
 
-/// Columns a capability adds to a run, after the scene's own ([`ColumnSet::groups`]), and how their values are
-/// read from a row: `values(sample, columns, out)` appends one value per column, NaN where the sample lacks one.
-/// Two groups are equal when they write the same columns.
+/// Columns a capability adds to a run ([`ColumnSet::groups`]), and how their values are read from a row:
+/// `values(sample, columns, out)` appends one value per column, NaN where the sample lacks one. Two groups are
+/// equal when they write the same columns.
 #[derive(Debug, Clone)]
 pub struct ColumnGroup {
+    /// What adds it, as the book's column reference names it (`theta`, `support`, `potential`, `rotors`…).
+    pub name: &'static str,
     /// The columns, in order.
     pub columns: Vec<Column>,
     /// Appends one row's values of `columns`.
@@ -275,133 +266,10 @@ pub const BASE_COLUMNS: [Column; 25] = [
     Column::fixed("H_norm", "kg*m^2/s", "|H|"),
 ];
 
-const THETA_COLUMN: Column = Column::fixed("theta", "rad", "angle turned about the fixed axis");
-const FORCE_COLUMNS: [Column; 3] = [
-    Column::fixed("F_s_x", "N", "required force m a_C, space axes"),
-    Column::fixed("F_s_y", "N", "required force m a_C, space axes"),
-    Column::fixed("F_s_z", "N", "required force m a_C, space axes"),
-];
-const H_INT_COLUMNS: [Column; 3] = [
-    Column::fixed(
-        "H_s_int_x",
-        "kg*m^2/s",
-        "H_s integrated from dH_s/dt = M_s, space axes",
-    ),
-    Column::fixed(
-        "H_s_int_y",
-        "kg*m^2/s",
-        "H_s integrated from dH_s/dt = M_s, space axes",
-    ),
-    Column::fixed(
-        "H_s_int_z",
-        "kg*m^2/s",
-        "H_s integrated from dH_s/dt = M_s, space axes",
-    ),
-];
-
-const SUPPORT_COLUMNS: [Column; 6] = [
-    Column::fixed("theta_dot", "rad/s", "rate about the fixed axis"),
-    Column::fixed(
-        "theta_ddot",
-        "rad/s^2",
-        "angular acceleration about the fixed axis",
-    ),
-    Column::fixed(
-        "F_sup_s_x",
-        "N",
-        "force of the support on the body, space axes",
-    ),
-    Column::fixed(
-        "F_sup_s_y",
-        "N",
-        "force of the support on the body, space axes",
-    ),
-    Column::fixed(
-        "F_sup_s_z",
-        "N",
-        "force of the support on the body, space axes",
-    ),
-    Column::fixed(
-        "M_drive",
-        "N*m",
-        "moment about the axis that the drive supplies",
-    ),
-];
-
-/// One bearing force column: `R_{bearing}_{axes}_{component}`.
-const fn bearing(name: &'static str, meaning: &'static str) -> Column {
-    Column::fixed(name, "N", meaning)
-}
-
-const BEARING_COLUMNS: [Column; 12] = [
-    bearing("R_A_s_x", "force of bearing A on the body, space axes"),
-    bearing("R_A_s_y", "force of bearing A on the body, space axes"),
-    bearing("R_A_s_z", "force of bearing A on the body, space axes"),
-    bearing("R_B_s_x", "force of bearing B on the body, space axes"),
-    bearing("R_B_s_y", "force of bearing B on the body, space axes"),
-    bearing("R_B_s_z", "force of bearing B on the body, space axes"),
-    bearing("R_A_b_x", "force of bearing A on the body, body axes"),
-    bearing("R_A_b_y", "force of bearing A on the body, body axes"),
-    bearing("R_A_b_z", "force of bearing A on the body, body axes"),
-    bearing("R_B_b_x", "force of bearing B on the body, body axes"),
-    bearing("R_B_b_y", "force of bearing B on the body, body axes"),
-    bearing("R_B_b_z", "force of bearing B on the body, body axes"),
-];
-
-const SUPPORT_MOMENT_COLUMNS: [Column; 3] = [
-    Column::fixed(
-        "M_sup_s_x",
-        "N*m",
-        "moment of the support (bearings and drive) about the axis point, space axes",
-    ),
-    Column::fixed(
-        "M_sup_s_y",
-        "N*m",
-        "moment of the support (bearings and drive) about the axis point, space axes",
-    ),
-    Column::fixed(
-        "M_sup_s_z",
-        "N*m",
-        "moment of the support (bearings and drive) about the axis point, space axes",
-    ),
-];
-
-const POTENTIAL_COLUMNS: [Column; 2] = [
-    Column::fixed(
-        "potential",
-        "J",
-        "potential energy of gravity -m g.r_C, r_C from the moment center",
-    ),
-    Column::fixed("energy_total", "J", "kinetic plus potential energy"),
-];
-
 impl ColumnSet {
-    /// Every optional column of the scene's own (no capability's group).
-    pub const ALL: ColumnSet = ColumnSet {
-        theta: true,
-        force: true,
-        h_s_integrated: true,
-        support: true,
-        bearings: true,
-        potential: true,
-        groups: Vec::new(),
-    };
-
-    /// All columns of a run, in order.
+    /// All columns of a run, in order: the base columns, then the groups'.
     pub fn columns(&self) -> Vec<Column> {
-        let groups: [(bool, &[Column]); 7] = [
-            (self.theta, &[THETA_COLUMN]),
-            (self.force, &FORCE_COLUMNS),
-            (self.h_s_integrated, &H_INT_COLUMNS),
-            (self.support, &SUPPORT_COLUMNS),
-            (self.bearings, &BEARING_COLUMNS),
-            (self.potential, &POTENTIAL_COLUMNS),
-            (self.support, &SUPPORT_MOMENT_COLUMNS),
-        ];
         let mut cols = BASE_COLUMNS.to_vec();
-        for (_, group) in groups.iter().filter(|(wanted, _)| *wanted) {
-            cols.extend_from_slice(group);
-        }
         for group in &self.groups {
             cols.extend_from_slice(&group.columns);
         }
@@ -419,50 +287,6 @@ impl ColumnSet {
         }
         out.push(s.energy);
         out.push(s.h_s.norm());
-        if self.theta {
-            out.push(s.theta.unwrap_or(f64::NAN));
-        }
-        if self.force {
-            out.extend(
-                s.f_s
-                    .map_or(Vector3::repeat(f64::NAN), Vector::into_inner)
-                    .iter(),
-            );
-        }
-        if self.h_s_integrated {
-            out.extend(
-                s.h_s_integrated
-                    .map_or(Vector3::repeat(f64::NAN), Vector::into_inner)
-                    .iter(),
-            );
-        }
-        let nan3 = Vector3::repeat(f64::NAN);
-        if self.support {
-            let support = s.support;
-            out.push(support.map_or(f64::NAN, |l| l.theta_dot));
-            out.push(support.map_or(f64::NAN, |l| l.theta_ddot));
-            out.extend(support.map_or(nan3, |l| *l.f_sup_s).iter());
-            out.push(support.map_or(f64::NAN, |l| l.m_drive));
-        }
-        if self.bearings {
-            let loads = s.support.and_then(|l| l.bearings);
-            for v in [
-                loads.map_or(nan3, |b| *b.r_a_s),
-                loads.map_or(nan3, |b| *b.r_b_s),
-                loads.map_or(nan3, |b| *b.r_a_b),
-                loads.map_or(nan3, |b| *b.r_b_b),
-            ] {
-                out.extend(v.iter());
-            }
-        }
-        if self.potential {
-            let v = s.potential.unwrap_or(f64::NAN);
-            out.push(v);
-            out.push(s.energy + v);
-        }
-        if self.support {
-            out.extend(s.support.map_or(nan3, |l| *l.m_sup_s).iter());
-        }
         for group in &self.groups {
             (group.values)(s, &group.columns, out);
         }

@@ -4,6 +4,7 @@ use std::sync::Arc;
 
 use nalgebra::Vector3;
 
+mod columns;
 mod compiled;
 mod describe;
 mod keys;
@@ -12,6 +13,7 @@ mod table;
 mod user;
 mod validate;
 
+pub use columns::potential_columns;
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
 pub(crate) use keys::EffectFile;
 pub use spec::{EffectSpec, TorqueSpec, TorqueTableSpec};

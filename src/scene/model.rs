@@ -14,7 +14,9 @@ use crate::motion::hinge::Hinge;
 
 use super::facts::Facts;
 use super::spec::{MotionKind, SceneSpec};
-use crate::sample::ColumnSet;
+use crate::effects::potential_columns;
+use crate::motion::axis_columns::AxisColumns;
+use crate::sample::{ColumnGroup, ColumnSet};
 use crate::wheels::gyrostat::Gyrostat;
 
 /// `[solver]`, validated.
@@ -75,33 +77,25 @@ impl Motion {
         }
     }
 
-    /// The optional columns the motion writes: θ, the support's force, moment and bearing loads on an axis (the
-    /// force only when C is off the axis, the loads only with bearings), H_s integrated for a prescribed motion.
-    pub fn columns(&self) -> ColumnSet {
-        let Some(axis) = self.axis() else {
-            let Motion::Free {
-                gyrostat: Some(g), ..
-            } = self
-            else {
-                return ColumnSet::default();
-            };
-            return ColumnSet {
-                groups: vec![g.columns()],
-                ..ColumnSet::default()
-            };
-        };
-        ColumnSet {
-            theta: true,
+    /// The optional columns of an axis motion ([`AxisColumns`]): the force only when C is off the axis, H_s
+    /// integrated for a prescribed motion, the loads only with bearings; `None` for free motion.
+    pub fn axis_columns(&self) -> Option<AxisColumns> {
+        self.axis().map(|axis| AxisColumns {
             force: axis.center_off_axis(),
             h_s_integrated: matches!(self, Motion::FixedAxis(_)),
-            support: true,
             bearings: axis.bearings().is_some(),
-            groups: axis
-                .moving_support()
-                .map(|s| s.columns())
-                .into_iter()
-                .collect(),
-            ..ColumnSet::default()
+        })
+    }
+
+    /// The columns its capabilities add after all others: a moving support's, a body's wheels'.
+    pub fn capability_columns(&self) -> Option<ColumnGroup> {
+        match self {
+            Motion::Free {
+                gyrostat: Some(g), ..
+            } => Some(g.columns()),
+            _ => (self.axis())
+                .and_then(FixedAxis::moving_support)
+                .map(|s| s.columns()),
         }
     }
 
@@ -177,13 +171,36 @@ impl Scene {
             .then(|| self.schedule.largest_fixed_step(s.dt))
     }
 
-    /// The optional columns a run of `motion` with `effects` writes: the motion's, and the potential energy's
-    /// with gravity.
+    /// The optional columns a run of `motion` with `effects` writes, in order: an axis motion's leading groups,
+    /// gravity's potential, the axis motion's trailing group, then the capabilities' ([`Motion::capability_columns`]).
     pub fn run_columns(motion: &Motion, effects: &[Effect]) -> ColumnSet {
-        ColumnSet {
-            potential: effects.iter().any(|e| matches!(e, Effect::Gravity { .. })),
-            ..motion.columns()
-        }
+        let gravity = effects.iter().any(|e| matches!(e, Effect::Gravity { .. }));
+        Self::own_columns(motion.axis_columns(), gravity, motion.capability_columns())
+    }
+
+    /// Every optional column of a scene's own (an axis motion's with force, H_s integrated and bearings, and the
+    /// potential's), no capability's: what a sweep may summarise when no scene of it builds.
+    ///
+    /// ```
+    /// let names: Vec<String> = eulerdyn::scene::Scene::all_own_columns().columns().iter()
+    ///     .map(|c| c.name.to_string()).collect();
+    /// assert!(names.contains(&"R_B_b_z".to_string()) && names.contains(&"energy_total".to_string()));
+    /// ```
+    pub fn all_own_columns() -> ColumnSet {
+        Self::own_columns(Some(AxisColumns::ALL), true, None)
+    }
+
+    /// The column groups in the order a run writes them.
+    fn own_columns(
+        axis: Option<AxisColumns>,
+        gravity: bool,
+        capability: Option<ColumnGroup>,
+    ) -> ColumnSet {
+        let mut groups = axis.map_or_else(Vec::new, AxisColumns::leading);
+        groups.extend(gravity.then(potential_columns));
+        groups.extend(axis.map(AxisColumns::trailing));
+        groups.extend(capability);
+        ColumnSet { groups }
     }
 
     /// The potential energy of the scene's gravity at the attitude `q`: V = −m g·r_C, with r_C = q ρ_C the

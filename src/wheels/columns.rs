@@ -54,6 +54,7 @@ pub fn rotor_columns(names: &[String], controlled: bool) -> Vec<Column> {
 /// ```
 pub fn columns(names: &[String], controlled: bool) -> ColumnGroup {
     ColumnGroup {
+        name: "rotors",
         columns: rotor_columns(names, controlled),
         values: if controlled {
             wheel_values::<5>

@@ -392,7 +392,7 @@ fn plan_total(varied: &[Varied], runs: u64) -> Option<u64> {
 
 /// The table's layout: the optional columns the base scene's motion has, and the `[summary]` columns, each a
 /// column of the CSV of the scene with the varied keys at their probe values, or else of the base scene, or else
-/// (neither is valid) one of the scene's own optional columns ([`ColumnSet::ALL`]).
+/// (neither is valid) one of the scene's own optional columns ([`Scene::all_own_columns`]).
 fn layout(
     base: &SceneSpec,
     template: &SceneTemplate,
@@ -411,7 +411,7 @@ fn layout(
         .ok()
         .and_then(|spec| spec.build().ok())
         .or_else(|| base.build().ok())
-        .map_or(ColumnSet::ALL, |scene| simulate::columns(&scene));
+        .map_or_else(Scene::all_own_columns, |scene| simulate::columns(&scene));
     let columns = columns.columns();
     let names: Vec<&str> = columns.iter().map(|c| c.name.as_ref()).collect();
     if let Some(unknown) = summary.iter().find(|c| !names.contains(&c.as_str())) {

@@ -31,6 +31,7 @@ const CARRIER_COLUMNS: [Column; 3] = [
 /// ```
 pub fn columns() -> ColumnGroup {
     ColumnGroup {
+        name: "carrier",
         columns: CARRIER_COLUMNS.to_vec(),
         values: omega_c_s,
     }

@@ -210,9 +210,15 @@ mod tests {
                 "{name}"
             );
         }
-        assert!(facts_of("heavy_top").columns().potential);
-        let disk = facts_of("tilted_disk");
-        assert!(disk.columns().theta && disk.columns().support && !disk.columns().potential);
+        let groups = |name: &str| -> Vec<&'static str> {
+            let facts = facts_of(name);
+            facts.columns().groups.iter().map(|g| g.name).collect()
+        };
+        assert_eq!(groups("heavy_top"), ["potential"]);
+        assert_eq!(
+            groups("tilted_disk"),
+            ["theta", "h_s_integrated", "support", "support"]
+        );
     }
 
     /// A user's moment added to a built scene changes what it conserves: the facts are computed again (a

@@ -3,9 +3,9 @@
 //! sits in its book file between `<!-- generated: NAME … -->` and `<!-- end generated: NAME -->`.
 
 use eulerdyn::motion::carrier;
-use eulerdyn::sample::{BASE_COLUMNS, Column, ColumnSet};
+use eulerdyn::sample::{BASE_COLUMNS, Column};
+use eulerdyn::scene::Scene;
 use eulerdyn::scene::reference::keys;
-use eulerdyn::wheels::rotor_columns;
 
 use super::blessing;
 use crate::common::{eulerdyn, repo_path};
@@ -49,73 +49,29 @@ fn axes(column: &Column) -> &'static str {
     }
 }
 
-/// The column table: every column in the order a run writes them, with the `ColumnSet` field that adds it.
+/// The column table: every column in the order a run writes them, with the group that adds it (its name, as
+/// `ColumnGroup::name`): the scene's own (`Scene::all_own_columns`), then a carrier's and a body's wheels'.
 pub(super) fn column_table() -> String {
-    let base = BASE_COLUMNS.to_vec();
-    let only = |set: ColumnSet| -> Vec<Column> {
-        (set.columns().into_iter())
-            .filter(|c| !base.contains(c))
-            .collect()
-    };
-    let none = ColumnSet::default();
-    let groups: Vec<(&str, Vec<Column>)> = vec![
-        ("always", base.clone()),
-        (
-            "`theta`",
-            only(ColumnSet {
-                theta: true,
-                ..none.clone()
-            }),
-        ),
-        (
-            "`force`",
-            only(ColumnSet {
-                force: true,
-                ..none.clone()
-            }),
-        ),
-        (
-            "`h_s_integrated`",
-            only(ColumnSet {
-                h_s_integrated: true,
-                ..none.clone()
-            }),
-        ),
-        (
-            "`support`",
-            only(ColumnSet {
-                support: true,
-                ..none.clone()
-            }),
-        ),
-        (
-            "`bearings`",
-            only(ColumnSet {
-                bearings: true,
-                ..none.clone()
-            }),
-        ),
-        (
-            "`potential`",
-            only(ColumnSet {
-                potential: true,
-                ..none.clone()
-            }),
-        ),
-        ("`carrier`", carrier::columns().columns),
-        (
-            "`rotors`",
-            rotor_columns(&["NAME".to_string()], true).to_vec(),
-        ),
+    let capabilities = [
+        carrier::columns(),
+        eulerdyn::wheels::columns(&["NAME".to_string()], true),
     ];
-    let all = ColumnSet::ALL.columns().len()
-        + carrier::columns().columns.len()
-        + rotor_columns(&["NAME".to_string()], true).len();
-    assert_eq!(
-        groups.iter().map(|(_, g)| g.len()).sum::<usize>(),
-        all,
-        "a column in no group"
-    );
+    let groups: Vec<(String, Vec<Column>)> =
+        std::iter::once(("always".to_string(), BASE_COLUMNS.to_vec()))
+            .chain(
+                (Scene::all_own_columns().groups.into_iter())
+                    .chain(capabilities)
+                    .map(|g| (format!("`{}`", g.name), g.columns)),
+            )
+            .collect();
+    let names: Vec<&str> = groups
+        .iter()
+        .flat_map(|(_, g)| g.iter().map(|c| c.name.as_ref()))
+        .collect();
+    let mut unique = names.clone();
+    unique.sort_unstable();
+    unique.dedup();
+    assert_eq!(unique.len(), names.len(), "a column written twice");
     let mut out =
         String::from("\n| column | unit | axes | written | meaning |\n|---|---|---|---|---|\n");
     for (group, columns) in &groups {
