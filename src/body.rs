@@ -230,6 +230,32 @@ impl Principal {
             axes_b: Rotation3::from_matrix_unchecked(axes),
         }
     }
+
+    /// The angle (degrees) between `axis` (body axes) and the nearest principal direction, and the number (1-based)
+    /// of that principal axis. Principal moments equal to 1e-9 relative span a plane (or all of space) of principal
+    /// directions, and the angle is measured to that plane: every axis of a sphere is principal.
+    pub fn tilt_of(&self, axis: &Vector3<f64>) -> (f64, usize) {
+        let axis = axis.normalize();
+        let m = self.moments;
+        let scale = m.amax().max(f64::MIN_POSITIVE);
+        let p = self.axes_b.matrix();
+        // (angle, -|cos| to axis k itself, k): among axes at the same angle (a plane of equal moments), the one
+        // closest to the axis is named.
+        let mut best = (f64::INFINITY, 0.0, 1);
+        for k in 0..3 {
+            // The principal directions with the same moment as axis k: the projection of `axis` onto their span.
+            let projection: f64 = (0..3)
+                .filter(|&j| (m[j] - m[k]).abs() <= 1e-9 * scale)
+                .map(|j| p.column(j).dot(&axis).powi(2))
+                .sum();
+            let angle = projection.sqrt().clamp(0.0, 1.0).acos().to_degrees();
+            let own = -p.column(k).dot(&axis).abs();
+            if angle < best.0 - 1e-9 || (angle <= best.0 + 1e-9 && own < best.1) {
+                best = (angle, own, k + 1);
+            }
+        }
+        (best.0, best.2)
+    }
 }
 
 /// A rigid body: mass m and central inertia tensor I_C in body axes (origin at the mass center C).
@@ -377,5 +403,45 @@ impl RigidBody {
         self.inertia_c
             + (Matrix3::identity() * rho_c_b.norm_squared() - rho_c_b * rho_c_b.transpose())
                 * self.mass
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn principal(moments: [f64; 3]) -> Principal {
+        Principal {
+            moments: Vector3::from(moments),
+            axes_b: Rotation3::identity(),
+        }
+    }
+
+    #[test]
+    fn the_tilt_is_measured_to_the_nearest_principal_axis() {
+        let disk = principal([1.0, 1.0, 2.0]);
+        let tilt = 30f64.to_radians();
+        let (angle, k) = disk.tilt_of(&Vector3::new(0.0, -tilt.sin(), tilt.cos()));
+        assert!((angle - 30.0).abs() < 1e-9, "{angle}");
+        assert_eq!(k, 3);
+        // 60 deg from the symmetry axis is 30 deg from the plane of equal moments, whatever its azimuth.
+        let a = 60f64.to_radians();
+        let axis = Vector3::new(a.sin() * 0.6, a.sin() * 0.8, a.cos());
+        let (angle, k) = disk.tilt_of(&axis);
+        assert!((angle - 30.0).abs() < 1e-9, "{angle}");
+        // Of the axes in that plane, the one nearer the axis is named.
+        assert_eq!(k, 2);
+        // Along an axis of the plane of equal moments: that axis is named.
+        let (angle, k) = disk.tilt_of(&Vector3::new(0.0, 0.0, -1.0));
+        assert!(angle < 1e-6 && k == 3, "{angle} {k}");
+        let (angle, k) = disk.tilt_of(&Vector3::new(0.0, 2.0, 0.0));
+        assert!(angle < 1e-6 && k == 2, "{angle} {k}");
+    }
+
+    #[test]
+    fn every_axis_of_a_sphere_is_principal() {
+        let sphere = principal([2.0, 2.0, 2.0]);
+        let (angle, _) = sphere.tilt_of(&Vector3::new(1.0, 2.0, 3.0));
+        assert!(angle < 1e-6, "{angle}");
     }
 }

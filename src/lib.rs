@@ -27,10 +27,10 @@
 //!
 //! // H_s along the spin axis stays ¼ m R² ω (1 + cos²θ); its part across the axis turns at ω.
 //! let h_axial = 0.25 * m * r * r * omega * (1.0 + tilt.cos().powi(2));
-//! assert!(samples.iter().all(|s| (s.h_s.z - h_axial).abs() < 1e-12));
+//! assert!(samples.iter().all(|s| (s.h_o_s.z - h_axial).abs() < 1e-12));
 //! // The bearings' moment: |M| = ¼ m R² ω² sin θ cos θ = 1.9486 N·m.
 //! let moment = 0.25 * m * r * r * omega * omega * tilt.sin() * tilt.cos();
-//! assert!((samples[0].m_s.norm() - moment).abs() < 1e-12);
+//! assert!((samples[0].m_o_s.norm() - moment).abs() < 1e-12);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!

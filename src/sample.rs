@@ -2,13 +2,13 @@
 
 use std::borrow::Cow;
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::UnitQuaternion;
 
 use crate::frames::{BodyAxes, SpaceAxes, Vector};
 
 /// The state of the body at one output time. Vectors carry their axes in their type and their name: `_b` body
-/// axes ([`BodyAxes`]), `_s` space axes ([`SpaceAxes`]). H and M are about the moment center (C, the fixed pivot,
-/// or the fixed-axis point).
+/// axes ([`BodyAxes`]), `_s` space axes ([`SpaceAxes`]). H and M are about the moment center O, named by `_o_`:
+/// the mass center C of a free body, the fixed pivot, or the fixed axis's point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
     /// Time (s).
@@ -19,22 +19,22 @@ pub struct Sample {
     pub omega_b: Vector<BodyAxes>,
     /// Angular velocity in space axes (rad/s).
     pub omega_s: Vector<SpaceAxes>,
-    /// Moment of momentum about the moment center (kg·m²/s).
-    pub h_b: Vector<BodyAxes>,
-    /// H in space axes.
-    pub h_s: Vector<SpaceAxes>,
-    /// Resultant external moment about the moment center (N·m).
-    pub m_b: Vector<BodyAxes>,
-    /// M in space axes.
-    pub m_s: Vector<SpaceAxes>,
+    /// Moment of momentum H_O about the moment center O (kg·m²/s).
+    pub h_o_b: Vector<BodyAxes>,
+    /// H_O in space axes.
+    pub h_o_s: Vector<SpaceAxes>,
+    /// Resultant external moment M_O about the moment center O (N·m).
+    pub m_o_b: Vector<BodyAxes>,
+    /// M_O in space axes.
+    pub m_o_s: Vector<SpaceAxes>,
     /// Kinetic energy ½ ω·H (J).
     pub energy: f64,
     /// Prescribed motion: angle turned about the fixed axis (rad).
     pub theta: Option<f64>,
     /// Prescribed motion with C off the axis: the required force F = m a_C (N, space axes).
     pub f_s: Option<Vector<SpaceAxes>>,
-    /// Prescribed motion: H_s obtained by integrating Ḣ_s = M_s numerically (kg·m²/s, space axes).
-    pub h_s_integrated: Option<Vector<SpaceAxes>>,
+    /// Prescribed motion: H_O obtained by integrating Ḣ_O = M_O numerically (kg·m²/s, space axes).
+    pub h_o_s_integrated: Option<Vector<SpaceAxes>>,
     /// Rotation about a fixed axis: what the support (bearings and drive) supplies.
     pub support: Option<SupportLoads>,
     /// With gravity: the potential energy V = −m g·r_C, r_C from the moment center in space axes (J).
@@ -44,28 +44,28 @@ pub struct Sample {
 }
 
 impl Sample {
-    /// The row of a body that only turns, from its attitude q (body → space), ω_b, H about the moment center in
-    /// both axes and the applied moment M in both axes: ω_s = R ω_b, energy T = ½ ω·H; no optional column.
+    /// The row of a body that only turns, from its attitude q (body → space), ω_b, H_O about the moment center O in
+    /// both axes and the applied moment M_O in both axes: ω_s = R ω_b, energy T = ½ ω·H_O; no optional column.
     pub fn rigid(
         t: f64,
         q: UnitQuaternion<f64>,
-        omega_b: Vector3<f64>,
-        (h_b, h_s): (Vector3<f64>, Vector3<f64>),
-        (m_b, m_s): (Vector3<f64>, Vector3<f64>),
+        omega_b: Vector<BodyAxes>,
+        (h_o_b, h_o_s): (Vector<BodyAxes>, Vector<SpaceAxes>),
+        (m_o_b, m_o_s): (Vector<BodyAxes>, Vector<SpaceAxes>),
     ) -> Self {
         Sample {
             t,
             q,
-            omega_b: Vector::new(omega_b),
-            omega_s: Vector::new(q * omega_b),
-            h_b: Vector::new(h_b),
-            h_s: Vector::new(h_s),
-            m_b: Vector::new(m_b),
-            m_s: Vector::new(m_s),
-            energy: 0.5 * omega_b.dot(&h_b),
+            omega_b,
+            omega_s: omega_b.in_space(&q),
+            h_o_b,
+            h_o_s,
+            m_o_b,
+            m_o_s,
+            energy: 0.5 * omega_b.dot(&h_o_b),
             theta: None,
             f_s: None,
-            h_s_integrated: None,
+            h_o_s_integrated: None,
             support: None,
             potential: None,
             rotors: None,
@@ -282,11 +282,13 @@ impl ColumnSet {
         out.clear();
         out.push(s.t);
         out.extend([s.q.w, s.q.i, s.q.j, s.q.k]);
-        for v in [*s.omega_b, *s.omega_s, *s.h_b, *s.h_s, *s.m_b, *s.m_s] {
+        for v in [
+            *s.omega_b, *s.omega_s, *s.h_o_b, *s.h_o_s, *s.m_o_b, *s.m_o_s,
+        ] {
             out.extend(v.iter());
         }
         out.push(s.energy);
-        out.push(s.h_s.norm());
+        out.push(s.h_o_s.norm());
         for group in &self.groups {
             (group.values)(s, &group.columns, out);
         }

@@ -70,12 +70,12 @@ impl Differences {
     fn add_samples(&mut self, a: &Sample, b: &Sample) {
         self.omega
             .add((a.omega_b - b.omega_b).norm(), a.omega_b.norm());
-        self.h_s.add((a.h_s - b.h_s).norm(), a.h_s.norm());
+        self.h_s.add((a.h_o_s - b.h_o_s).norm(), a.h_o_s.norm());
         self.attitude.add(attitude_angle(&a.q, &b.q), 0.0);
         self.energy.add((a.energy - b.energy).abs(), a.energy.abs());
         self.h_norm
-            .add((a.h_s.norm() - b.h_s.norm()).abs(), a.h_s.norm());
-        self.moment.add((a.m_s - b.m_s).norm(), a.m_s.norm());
+            .add((a.h_o_s.norm() - b.h_o_s.norm()).abs(), a.h_o_s.norm());
+        self.moment.add((a.m_o_s - b.m_o_s).norm(), a.m_o_s.norm());
     }
 
     fn add_exact(&mut self, s: &Sample, e: &Exact) {
@@ -87,15 +87,15 @@ impl Differences {
             self.attitude.add(attitude_angle(&s.q, &q), 0.0);
         }
         if let Some(h_s) = e.h_s {
-            self.h_s.add((*s.h_s - h_s).norm(), h_s.norm());
+            self.h_s.add((*s.h_o_s - h_s).norm(), h_s.norm());
             self.h_norm
-                .add((s.h_s.norm() - h_s.norm()).abs(), h_s.norm());
+                .add((s.h_o_s.norm() - h_s.norm()).abs(), h_s.norm());
         }
         if let Some(energy) = e.energy {
             self.energy.add((s.energy - energy).abs(), energy.abs());
         }
-        if let Some(h_int) = s.h_s_integrated {
-            self.h_s.add((h_int - s.h_s).norm(), s.h_s.norm());
+        if let Some(h_int) = s.h_o_s_integrated {
+            self.h_s.add((h_int - s.h_o_s).norm(), s.h_o_s.norm());
         }
     }
 

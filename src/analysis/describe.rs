@@ -6,46 +6,18 @@
 
 use nalgebra::Vector3;
 
-use crate::body::Principal;
 use crate::effects::Effect;
 use crate::frames::Form;
 use crate::method::Method;
-use crate::motion::fixed_axis::FixedAxis;
-use crate::motion::free::FreeBody;
-use crate::motion::hinge::Hinge;
 use crate::profile::Profile;
-use crate::sample::{BASE_COLUMNS, Sample};
-use crate::scene::{CheckNumbers, Motion, Scene};
+use crate::sample::BASE_COLUMNS;
+use crate::scene::{
+    AxisNumbers, CheckNumbers, MomentCenter, Motion, MotionNumbers, Scene, StartNumbers,
+};
 use crate::simulate;
 pub use crate::text::{Description, for_people};
 use crate::text::{fixed, line, plain, turns, vec3};
 use crate::wheels::gyrostat::Gyrostat;
-
-/// The angle (degrees) between `axis` and the nearest principal direction of `principal`, and the number (1-based)
-/// of that principal axis. Principal moments equal to 1e-9 relative span a plane (or all of space) of principal
-/// directions, and the angle is measured to that plane: every axis of a sphere is principal.
-pub fn tilt_from_principal(principal: &Principal, axis: &Vector3<f64>) -> (f64, usize) {
-    let axis = axis.normalize();
-    let m = principal.moments;
-    let scale = m.amax().max(f64::MIN_POSITIVE);
-    let p = principal.axes_b.matrix();
-    // (angle, -|cos| to axis k itself, k): among axes at the same angle (a plane of equal moments), the one
-    // closest to the axis is named.
-    let mut best = (f64::INFINITY, 0.0, 1);
-    for k in 0..3 {
-        // The principal directions with the same moment as axis k: the projection of `axis` onto their span.
-        let projection: f64 = (0..3)
-            .filter(|&j| (m[j] - m[k]).abs() <= 1e-9 * scale)
-            .map(|j| p.column(j).dot(&axis).powi(2))
-            .sum();
-        let angle = projection.sqrt().clamp(0.0, 1.0).acos().to_degrees();
-        let own = -p.column(k).dot(&axis).abs();
-        if angle < best.0 - 1e-9 || (angle <= best.0 + 1e-9 && own < best.1) {
-            best = (angle, own, k + 1);
-        }
-    }
-    (best.0, best.2)
-}
 
 /// A rough estimate of the steps an adaptive method takes to reach t_end: its step h follows from
 /// |ω|·h ≈ C·rtol^(1/(p+1)) (p the order; C measured on the shipped scenarios: 4 for dopri5, 5 for dop853), and it
@@ -92,17 +64,11 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
     scene_lines(w, scene);
     if let Some(numbers) = &scene.facts().check {
         body_lines(w, numbers);
+        if let Some(motion) = &numbers.motion_numbers {
+            motion_lines(w, scene, numbers, motion);
+            support_lines(w, numbers, motion.axis.as_ref());
+        }
     }
-    match &scene.motion {
-        Motion::Free {
-            omega0_b,
-            body: free,
-            gyrostat,
-        } => free_motion_lines(w, scene, omega0_b, free, gyrostat.as_deref()),
-        Motion::FixedAxis(motion) => fixed_axis_lines(w, scene, motion),
-        Motion::Hinge(hinge) => hinge_lines(w, hinge),
-    }
-    support_lines(w, scene);
     attitude_line(w, scene);
     effect_lines(w, scene);
     let steps = method_lines(w, scene);
@@ -154,102 +120,94 @@ fn body_lines(w: &mut Description, numbers: &CheckNumbers) {
     }
 }
 
-/// Free motion: its moment center (C, or the pivot of a gravity effect) and the state at t = 0.
-fn free_motion_lines(
+/// The motion, its moment center and the state at t = 0, from the scene's numbers; the capabilities that modify
+/// it (wheels, a carrier) add their own lines.
+fn motion_lines(
     w: &mut Description,
     scene: &Scene,
-    omega0_b: &Vector3<f64>,
-    free: &FreeBody,
+    numbers: &CheckNumbers,
+    motion: &MotionNumbers,
+) {
+    match (&scene.motion, &motion.axis) {
+        (Motion::Free { gyrostat, .. }, _) => {
+            free_motion_lines(w, numbers, motion, gyrostat.as_deref())
+        }
+        (Motion::FixedAxis(_), Some(axis)) => fixed_axis_lines(w, scene, numbers, axis),
+        (Motion::Hinge(_), Some(axis)) => hinge_lines(w, numbers, axis),
+        _ => {}
+    }
+    if let Some(axis) = scene.motion.axis() {
+        axis_point_lines(w, motion.moment_center, &numbers.moment_center_from_c_b);
+        if let Some(support) = axis.moving_support() {
+            support.describe(axis.mass(), w);
+        }
+    }
+    if let Some(start) = &motion.at_start {
+        start_lines(w, start);
+    }
+}
+
+/// Free motion: its moment center (C, or the pivot of a gravity effect).
+fn free_motion_lines(
+    w: &mut Description,
+    numbers: &CheckNumbers,
+    motion: &MotionNumbers,
     gyrostat: Option<&Gyrostat>,
 ) {
-    let pivot = scene.effects.iter().find_map(|e| match e {
-        Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
-        _ => None,
-    });
     line(
         w,
         "motion",
         "free rotation from omega(0), under the effects listed below",
     );
-    match pivot {
-        Some(pivot) => {
-            line(
-                w,
-                "moment center",
-                &format!(
-                    "the fixed pivot, {} m from C (body axes): H and M are about it",
-                    vec3(&pivot)
-                ),
-            );
-            let about = Principal::of(free.inertia_b());
-            line(
-                w,
-                "",
-                &format!(
-                    "principal moments about the pivot: {:.6e}, {:.6e}, {:.6e} kg*m^2",
-                    about.moments[0], about.moments[1], about.moments[2]
-                ),
-            );
-        }
-        None => line(
+    if motion.moment_center == MomentCenter::Pivot {
+        line(
+            w,
+            "moment center",
+            &format!(
+                "the fixed pivot, {} m from C (body axes): H and M are about it",
+                vec3(&numbers.moment_center_from_c_b.into())
+            ),
+        );
+        let [a, b, c] = motion.principal_moments_o;
+        line(
+            w,
+            "",
+            &format!("principal moments about the pivot: {a:.6e}, {b:.6e}, {c:.6e} kg*m^2"),
+        );
+    } else {
+        line(
             w,
             "moment center",
             "C, the mass center: H and M are about it",
-        ),
+        );
     }
     if let Some(g) = gyrostat {
         g.describe(w);
     }
-    let h_rotors_b = gyrostat.map_or(Vector3::zeros(), |g| g.initial_rotor_momentum_b());
-    let h_b = free.inertia_b() * omega0_b + h_rotors_b;
-    let h_s = scene.attitude0 * h_b;
-    line(
-        w,
-        "at t = 0",
-        &format!("omega = {} rad/s (body axes)", vec3(omega0_b)),
-    );
-    line(
-        w,
-        "",
-        &format!(
-            "H = {} kg*m^2/s (body axes), {} (space axes), |H| = {:.6e}",
-            vec3(&h_b),
-            vec3(&h_s),
-            h_b.norm()
-        ),
-    );
-    line(
-        w,
-        "",
-        &format!(
-            "kinetic energy {:.6e} J",
-            gyrostat.map_or(0.5 * omega0_b.dot(&h_b), |g| {
-                let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-                g.kinetic_energy(omega0_b, &spins)
-            })
-        ),
-    );
 }
 
-/// Prescribed fixed-axis motion: the axis and its tilt from the nearest principal axis, the rate, the moment
-/// center and the state at t = 0.
-fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
-    let axis_b = motion.axis_b().into_inner();
-    let (tilt, nearest) = tilt_from_principal(scene.body.principal(), &axis_b);
+/// Prescribed fixed-axis motion: the axis and its tilt from the nearest principal axis, the rate.
+fn fixed_axis_lines(
+    w: &mut Description,
+    scene: &Scene,
+    numbers: &CheckNumbers,
+    axis: &AxisNumbers,
+) {
     line(
         w,
         "motion",
         "prescribed rotation about an axis fixed in the body and in space; M is the moment it requires (M = dH/dt)",
     );
+    let (tilt, nearest) = (axis.tilt_deg, axis.nearest_principal);
     line(
         w,
         "",
         &format!(
             "axis {} (body axes), {tilt:.3} deg from principal axis {nearest}{}",
-            vec3(&axis_b),
+            vec3(&numbers.axis_b.unwrap_or_default().into()),
             if tilt < 1e-6
-                && motion.point_b() == Vector3::zeros()
-                && motion.moving_support().is_none()
+                && numbers.moment_center_from_c_b == [0.0; 3]
+                && !scene.facts().moving_support
             {
                 ": a principal axis, no moment is needed at a constant rate"
             } else {
@@ -257,7 +215,7 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
             }
         ),
     );
-    let (rate, accel, t_end) = (motion.rate(), motion.accel(), scene.solver.t_end);
+    let (rate, accel, t_end) = (axis.rate, axis.accel, scene.solver.t_end);
     let turned = rate * t_end + 0.5 * accel * t_end * t_end;
     line(
         w,
@@ -269,16 +227,11 @@ fn fixed_axis_lines(w: &mut Description, scene: &Scene, motion: &FixedAxis) {
             turns(turned / std::f64::consts::TAU)
         ),
     );
-    axis_point_lines(w, &motion.point_b());
-    if let Some(support) = motion.moving_support() {
-        support.describe(motion.mass(), w);
-    }
-    fixed_axis_state_lines(w, &motion.sample(0.0, scene.solver.form));
 }
 
-/// The moment center of fixed-axis motion: C on the axis, or the axis point (C then moves on a circle).
-fn axis_point_lines(w: &mut Description, point_b: &Vector3<f64>) {
-    if *point_b == Vector3::zeros() {
+/// The moment center of an axis motion: C on the axis, or the axis point (C then moves on a circle).
+fn axis_point_lines(w: &mut Description, center: MomentCenter, point_b: &[f64; 3]) {
+    if center != MomentCenter::AxisPoint {
         line(
             w,
             "moment center",
@@ -290,7 +243,7 @@ fn axis_point_lines(w: &mut Description, point_b: &Vector3<f64>) {
             "moment center",
             &format!(
                 "the axis point {} m from C (body axes): H and M are about it",
-                vec3(point_b)
+                vec3(&(*point_b).into())
             ),
         );
         line(
@@ -301,39 +254,51 @@ fn axis_point_lines(w: &mut Description, point_b: &Vector3<f64>) {
     }
 }
 
-/// The state of fixed-axis motion at t = 0: ω, H, the moment the bearings supply, the force, the energy.
-fn fixed_axis_state_lines(w: &mut Description, s: &Sample) {
+/// The state at t = 0: ω, H (free motion: in both axes), the moment a prescribed axis's bearings supply and its
+/// force, the energy.
+fn start_lines(w: &mut Description, start: &StartNumbers) {
+    let v = |a: &[f64; 3]| Vector3::from(*a);
+    let (omega_b, h_b) = (v(&start.omega_b), v(&start.h_o_b));
     line(
         w,
         "at t = 0",
-        &format!("omega = {} rad/s (body axes)", vec3(&s.omega_b)),
+        &format!("omega = {} rad/s (body axes)", vec3(&omega_b)),
     );
-    line(
-        w,
-        "",
-        &format!(
+    let h_text = match start.m_o_b {
+        None => format!(
+            "H = {} kg*m^2/s (body axes), {} (space axes), |H| = {:.6e}",
+            vec3(&h_b),
+            vec3(&v(&start.h_o_s)),
+            h_b.norm()
+        ),
+        Some(_) => format!(
             "H = {} kg*m^2/s (body axes), |H| = {:.6e}",
-            vec3(&s.h_b),
-            s.h_b.norm()
+            vec3(&h_b),
+            h_b.norm()
         ),
-    );
-    line(
-        w,
-        "",
-        &format!(
-            "M = {} N*m (body axes), |M| = {:.6e}: the moment the bearings supply",
-            vec3(&s.m_b),
-            s.m_b.norm()
-        ),
-    );
-    if let Some(f) = s.f_s {
+    };
+    line(w, "", &h_text);
+    if let Some(m_b) = &start.m_o_b {
+        let m_b = v(m_b);
+        line(
+            w,
+            "",
+            &format!(
+                "M = {} N*m (body axes), |M| = {:.6e}: the moment the bearings supply",
+                vec3(&m_b),
+                m_b.norm()
+            ),
+        );
+    }
+    if let Some(f) = &start.f_s {
+        let f = v(f);
         line(
             w,
             "",
             &format!("F = {} N (space axes), |F| = {:.6e}", vec3(&f), f.norm()),
         );
     }
-    line(w, "", &format!("kinetic energy {:.6e} J", s.energy));
+    line(w, "", &format!("kinetic energy {:.6e} J", start.energy));
 }
 
 /// The initial attitude, when it is not the identity.
@@ -357,8 +322,7 @@ fn attitude_line(w: &mut Description, scene: &Scene) {
 }
 
 /// A hinge: its axis, I_uu and initial angle and rate.
-fn hinge_lines(w: &mut Description, hinge: &Hinge) {
-    let axis = hinge.axis();
+fn hinge_lines(w: &mut Description, numbers: &CheckNumbers, axis: &AxisNumbers) {
     line(
         w,
         "motion",
@@ -369,60 +333,49 @@ fn hinge_lines(w: &mut Description, hinge: &Hinge) {
         "",
         &format!(
             "axis {} (body axes); I_uu = {:.6e} kg*m^2; theta(0) = {} rad, rate {} rad/s at t = 0",
-            vec3(&axis.axis_b().into_inner()),
-            hinge.i_uu(),
-            plain(hinge.theta0()),
-            plain(axis.rate())
+            vec3(&numbers.axis_b.unwrap_or_default().into()),
+            axis.i_uu,
+            plain(axis.theta0.unwrap_or_default()),
+            plain(axis.rate)
         ),
     );
-    axis_point_lines(w, &axis.point_b());
-    if let Some(support) = axis.moving_support() {
-        support.describe(axis.mass(), w);
-    }
 }
 
 /// Where C is (with point masses), and for an axis motion its bearings and its imbalance: static m·e (e the
 /// distance of C from the axis) and dynamic |I_A u − (u·I_A u) u| (the product of inertia about the axis).
-fn support_lines(w: &mut Description, scene: &Scene) {
-    if scene.center_b != Vector3::zeros() {
+fn support_lines(w: &mut Description, numbers: &CheckNumbers, axis: Option<&AxisNumbers>) {
+    if numbers.center_b != [0.0; 3] {
         line(
             w,
             "mass center",
             &format!(
                 "C at {} m from the reference origin (body axes), the point masses included",
-                vec3(&scene.center_b)
+                vec3(&numbers.center_b.into())
             ),
         );
     }
-    let Some(axis) = scene.motion.axis() else {
+    let Some(axis) = axis else {
         return;
     };
-    let u_b = axis.axis_b().into_inner();
-    if let Some(b) = axis.bearings() {
-        let at = |z: f64| vec3(&(axis.point_b() + scene.center_b + u_b * z));
+    if let Some(b) = &axis.bearings {
         line(
             w,
             "bearings",
             &format!(
                 "A at {} m along the axis ({} m from the reference origin), B at {} m ({})",
                 plain(b.a),
-                at(b.a),
+                vec3(&b.a_b.into()),
                 plain(b.b),
-                at(b.b)
+                vec3(&b.b_b.into())
             ),
         );
     }
-    let (static_imbalance, dynamic_imbalance) = axis.imbalance();
-    let e = static_imbalance.norm() / axis.mass();
-    let product = dynamic_imbalance.norm();
     line(
         w,
         "imbalance",
         &format!(
             "static m*e = {:.6e} kg*m (C {:.6e} m from the axis); dynamic |I_A u - (u.I_A u) u| = {:.6e} kg*m^2",
-            axis.mass() * e,
-            e,
-            product
+            axis.imbalance_static_kgm, axis.imbalance_offset_m, axis.imbalance_dynamic_kgm2
         ),
     );
 }
@@ -559,45 +512,4 @@ fn output_lines(w: &mut Description, scene: &Scene) {
             )
         },
     );
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::Rotation3;
-
-    fn principal(moments: [f64; 3]) -> Principal {
-        Principal {
-            moments: Vector3::from(moments),
-            axes_b: Rotation3::identity(),
-        }
-    }
-
-    #[test]
-    fn the_tilt_is_measured_to_the_nearest_principal_axis() {
-        let disk = principal([1.0, 1.0, 2.0]);
-        let tilt = 30f64.to_radians();
-        let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, -tilt.sin(), tilt.cos()));
-        assert!((angle - 30.0).abs() < 1e-9, "{angle}");
-        assert_eq!(k, 3);
-        // 60 deg from the symmetry axis is 30 deg from the plane of equal moments, whatever its azimuth.
-        let a = 60f64.to_radians();
-        let axis = Vector3::new(a.sin() * 0.6, a.sin() * 0.8, a.cos());
-        let (angle, k) = tilt_from_principal(&disk, &axis);
-        assert!((angle - 30.0).abs() < 1e-9, "{angle}");
-        // Of the axes in that plane, the one nearer the axis is named.
-        assert_eq!(k, 2);
-        // Along an axis of the plane of equal moments: that axis is named.
-        let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, 0.0, -1.0));
-        assert!(angle < 1e-6 && k == 3, "{angle} {k}");
-        let (angle, k) = tilt_from_principal(&disk, &Vector3::new(0.0, 2.0, 0.0));
-        assert!(angle < 1e-6 && k == 2, "{angle} {k}");
-    }
-
-    #[test]
-    fn every_axis_of_a_sphere_is_principal() {
-        let sphere = principal([2.0, 2.0, 2.0]);
-        let (angle, _) = tilt_from_principal(&sphere, &Vector3::new(1.0, 2.0, 3.0));
-        assert!(angle < 1e-6, "{angle}");
-    }
 }

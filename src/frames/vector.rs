@@ -7,7 +7,7 @@ use std::fmt;
 use std::marker::PhantomData;
 use std::ops::{Add, AddAssign, Deref, Div, Mul, Neg, Sub};
 
-use nalgebra::Vector3;
+use nalgebra::{UnitQuaternion, Vector3};
 
 /// The axes a [`Vector`] is expressed in (a marker type, never built).
 pub trait Frame: Copy + fmt::Debug + PartialEq + 'static {
@@ -52,7 +52,7 @@ impl<F: Frame> Vector<F> {
     ///
     /// ```
     /// use eulerdyn::frames::{SpaceAxes, Vector};
-    /// use nalgebra::Vector3;
+    /// use nalgebra::{UnitQuaternion, Vector3};
     /// let g_s = Vector::<SpaceAxes>::new(Vector3::new(0.0, 0.0, -9.81));
     /// assert_eq!(g_s.z, -9.81);
     /// ```
@@ -76,6 +76,38 @@ impl<F: Frame> Vector<F> {
     /// The coordinates, leaving the type's axes behind (for arithmetic nalgebra does and this type does not).
     pub fn into_inner(self) -> Vector3<f64> {
         self.coordinates
+    }
+}
+
+impl Vector<BodyAxes> {
+    /// The same vector in space axes, v_s = R(q) v_b, q the attitude (body → space).
+    ///
+    /// ```
+    /// use eulerdyn::frames::{BodyAxes, Vector};
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
+    /// let x_b = Vector::<BodyAxes>::new(Vector3::x());
+    /// assert!((*x_b.in_space(&q) - Vector3::y()).norm() < 1e-15);
+    /// ```
+    #[inline(always)]
+    pub fn in_space(&self, q: &UnitQuaternion<f64>) -> Vector<SpaceAxes> {
+        Vector::new(q * self.coordinates)
+    }
+}
+
+impl Vector<SpaceAxes> {
+    /// The same vector in body axes, v_b = R(q)ᵀ v_s, q the attitude (body → space).
+    ///
+    /// ```
+    /// use eulerdyn::frames::{SpaceAxes, Vector};
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
+    /// let y_s = Vector::<SpaceAxes>::new(Vector3::y());
+    /// assert!((*y_s.in_body(&q) - Vector3::x()).norm() < 1e-15);
+    /// ```
+    #[inline(always)]
+    pub fn in_body(&self, q: &UnitQuaternion<f64>) -> Vector<BodyAxes> {
+        Vector::new(q.inverse_transform_vector(&self.coordinates))
     }
 }
 

@@ -80,7 +80,7 @@ fn force(s: &Sample, _: &[Column], out: &mut Vec<f64>) {
 }
 
 fn h_s_integrated(s: &Sample, _: &[Column], out: &mut Vec<f64>) {
-    out.extend(s.h_s_integrated.map_or(NAN3, Vector::into_inner).iter());
+    out.extend(s.h_o_s_integrated.map_or(NAN3, Vector::into_inner).iter());
 }
 
 fn support(s: &Sample, _: &[Column], out: &mut Vec<f64>) {

@@ -21,7 +21,7 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use crate::exact::{ExactError, TorqueFreeBody};
-use crate::frames::Form;
+use crate::frames::{Form, Vector};
 use crate::integrate::{IntegrateError, Schedule, Stats};
 use crate::motion::free::FreeBody;
 use crate::sample::Sample;
@@ -88,8 +88,9 @@ impl ExactFlow {
                 (self.body.inertia_inv_b() * h_b, h_b, h_s)
             }
         };
-        let zero = Vector3::zeros();
-        Sample::rigid(t, q, omega_b, (h_b, h_s), (zero, zero))
+        let zero = (Vector::zeros(), Vector::zeros());
+        let h = (Vector::new(h_b), Vector::new(h_s));
+        Sample::rigid(t, q, Vector::new(omega_b), h, zero)
     }
 
     /// Streams the row of every schedule time to `on_row`. A non-finite row (which the closed form does not
@@ -134,9 +135,9 @@ pub fn sample_is_finite(s: &Sample) -> bool {
     s.q.coords
         .iter()
         .chain(s.omega_b.iter())
-        .chain(s.h_b.iter())
-        .chain(s.h_s.iter())
-        .chain(s.m_b.iter())
+        .chain(s.h_o_b.iter())
+        .chain(s.h_o_s.iter())
+        .chain(s.m_o_b.iter())
         .all(|v| v.is_finite())
         && s.energy.is_finite()
 }

@@ -36,11 +36,11 @@ pub struct FixedAxis {
     /// Attitude at t = 0 (body → space).
     q0: UnitQuaternion<f64>,
     /// Position of C relative to the moment center A, in body axes (ρ_C = −point).
-    rho_c_b: Vector3<f64>,
+    rho_c_b: Vector<BodyAxes>,
     /// Inertia about A in body axes (parallel-axis theorem).
     inertia_a_b: Matrix3<f64>,
     /// Uniform gravity acting at C (m/s², space axes); zero without a gravity effect.
-    g_s: Vector3<f64>,
+    g_s: Vector<SpaceAxes>,
     /// The two bearings, where the scene places them.
     bearings: Option<Bearings>,
     /// What moves the axis's support in space (a carrier); `None`: the axis is fixed in space.
@@ -66,7 +66,7 @@ impl FixedAxis {
         axis_b: Vector3<f64>,
         rate: f64,
         accel: f64,
-        point_b: Vector3<f64>,
+        point_b: Vector<BodyAxes>,
         q0: UnitQuaternion<f64>,
     ) -> Self {
         let axis_b = Unit::new_normalize(axis_b);
@@ -80,7 +80,7 @@ impl FixedAxis {
             q0,
             rho_c_b,
             inertia_a_b: body.inertia_about(&rho_c_b),
-            g_s: Vector3::zeros(),
+            g_s: Vector::zeros(),
             bearings: None,
             support: None,
         }
@@ -92,7 +92,7 @@ impl FixedAxis {
         Self {
             rate,
             accel: 0.0,
-            g_s: Vector3::zeros(),
+            g_s: Vector::zeros(),
             bearings: None,
             support: None,
             ..other.clone()
@@ -109,10 +109,11 @@ impl FixedAxis {
     /// use eulerdyn::motion::carrier::Carrier;
     /// use eulerdyn::profile::Profile;
     /// use eulerdyn::motion::fixed_axis::FixedAxis;
+    /// use eulerdyn::frames::Vector;
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // A rotor (I_x = 2 kg·m²) spinning at 10 rad/s about x in a carrier yawing at 0.5 rad/s about z.
     /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
-    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
+    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
     ///     .with_support(Carrier::new(Vector3::new(0.0, 0.0, 0.5), Profile::Constant));
     /// assert!(rotor.moving_support().is_some());
     /// // The gyroscopic couple Ω_c × H = I_x θ̇ Ω_c = 10 N·m about y.
@@ -136,16 +137,17 @@ impl FixedAxis {
     /// use eulerdyn::Form;
     /// use eulerdyn::body::RigidBody;
     /// use eulerdyn::motion::fixed_axis::FixedAxis;
+    /// use eulerdyn::frames::Vector;
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // 2 kg spinning about an axis through C: C does not accelerate, so the support force is −m g.
     /// let body = RigidBody::from_principal(2.0, [2.0, 1.0, 1.0])?;
-    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
-    ///     .with_gravity(Vector3::new(0.0, 0.0, -9.81));
+    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
+    ///     .with_gravity(Vector::new(Vector3::new(0.0, 0.0, -9.81)));
     /// let support = rotor.sample(0.3, Form::Body).support.unwrap();
     /// assert!((*support.f_sup_s - Vector3::new(0.0, 0.0, 19.62)).norm() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn with_gravity(mut self, g_s: Vector3<f64>) -> Self {
+    pub fn with_gravity(mut self, g_s: Vector<SpaceAxes>) -> Self {
         self.g_s = g_s;
         self
     }
@@ -157,11 +159,12 @@ impl FixedAxis {
     /// use eulerdyn::body::RigidBody;
     /// use eulerdyn::motion::fixed_axis::FixedAxis;
     /// use eulerdyn::motion::support::Bearings;
+    /// use eulerdyn::frames::Vector;
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // A balanced rotor of 10 N weight between bearings at −1 m and +3 m: the lever rule, 7.5 N and 2.5 N.
     /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
-    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector3::zeros(), UnitQuaternion::identity())
-    ///     .with_gravity(Vector3::new(0.0, 0.0, -10.0))
+    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
+    ///     .with_gravity(Vector::new(Vector3::new(0.0, 0.0, -10.0)))
     ///     .with_bearings(Bearings { a: -1.0, b: 3.0 });
     /// let loads = rotor.sample(0.3, Form::Body).support.unwrap().bearings.unwrap();
     /// assert!((*loads.r_a_s - Vector3::new(0.0, 0.0, 7.5)).norm() < 1e-12);
@@ -179,7 +182,7 @@ impl FixedAxis {
     }
 
     /// Gravity acting at C (m/s², space axes; zero when the scene has none).
-    pub fn g_s(&self) -> &Vector3<f64> {
+    pub fn g_s(&self) -> &Vector<SpaceAxes> {
         &self.g_s
     }
 
@@ -204,7 +207,7 @@ impl FixedAxis {
     }
 
     /// The moment center A on the axis, relative to C, body axes.
-    pub fn point_b(&self) -> Vector3<f64> {
+    pub fn point_b(&self) -> Vector<BodyAxes> {
         -self.rho_c_b
     }
 
@@ -219,7 +222,7 @@ impl FixedAxis {
     }
 
     /// Position of C relative to A in body axes.
-    pub fn rho_c_b(&self) -> &Vector3<f64> {
+    pub fn rho_c_b(&self) -> &Vector<BodyAxes> {
         &self.rho_c_b
     }
 
@@ -232,13 +235,13 @@ impl FixedAxis {
     /// The imbalance about the axis, body axes: static s = m ρ_C⊥ (kg·m; C's offset from the axis times the mass)
     /// and dynamic d = I_A u − (u·I_A u) u (kg·m², the product of inertia about the axis). Both vanish for a
     /// balanced rotor, whose bearings then carry no rotating load.
-    pub fn imbalance(&self) -> (Vector3<f64>, Vector3<f64>) {
+    pub fn imbalance(&self) -> (Vector<BodyAxes>, Vector<BodyAxes>) {
         let u_b = self.axis_b.into_inner();
-        let rho = self.rho_c_b;
+        let rho = *self.rho_c_b;
         let i_u = self.inertia_a_b * u_b;
         (
-            (rho - u_b * rho.dot(&u_b)) * self.mass,
-            i_u - u_b * i_u.dot(&u_b),
+            Vector::new((rho - u_b * rho.dot(&u_b)) * self.mass),
+            Vector::new(i_u - u_b * i_u.dot(&u_b)),
         )
     }
 
@@ -398,7 +401,7 @@ impl FixedAxis {
     /// a_C = a_A + ω̇ × ρ + ω × (ω × ρ), space axes, ρ = R ρ_C, where a_A is the axis point's acceleration in a
     /// vehicle ([`crate::motion::carrier::vehicle`]) and is absent otherwise (A fixed in space).
     fn accel_c_at(&self, rotation: &AxisRotation, theta_ddot: f64) -> Vector3<f64> {
-        let rho_s = rotation.q * self.rho_c_b;
+        let rho_s = *self.rho_c_b.in_space(&rotation.q);
         let omega_s = *rotation.omega_s;
         let relative =
             rotation.alpha_s(theta_ddot).cross(&rho_s) + omega_s.cross(&omega_s.cross(&rho_s));
@@ -414,7 +417,9 @@ impl FixedAxis {
     pub fn transport_moment_s(&self, rotation: &AxisRotation) -> Option<Vector<SpaceAxes>> {
         let a_a_s = rotation.accel_a_s()?;
         Some(Vector::new(
-            (rotation.q * self.rho_c_b).cross(&(*a_a_s * self.mass)),
+            self.rho_c_b
+                .in_space(&rotation.q)
+                .cross(&(*a_a_s * self.mass)),
         ))
     }
 
@@ -483,7 +488,7 @@ impl FixedAxis {
     pub fn sample(&self, t: f64, form: Form) -> Sample {
         let angle = self.angle(t);
         let rotation = self.rotation(t, angle.theta, angle.theta_dot);
-        let weight_moment_s = (rotation.q * self.rho_c_b).cross(&(self.g_s * self.mass));
+        let weight_moment_s = (self.rho_c_b.in_space(&rotation.q)).cross(&(*self.g_s * self.mass));
         self.sample_at(t, &angle, &rotation, form, &weight_moment_s)
     }
 
@@ -517,15 +522,15 @@ impl FixedAxis {
             q,
             omega_b: Vector::new(omega_b),
             omega_s: rotation.omega_s,
-            h_b: Vector::new(h_b),
-            h_s: Vector::new(q * h_b),
-            m_b: Vector::new(m_b),
-            m_s: Vector::new(m_s),
+            h_o_b: Vector::new(h_b),
+            h_o_s: Vector::new(q * h_b),
+            m_o_b: Vector::new(m_b),
+            m_o_s: Vector::new(m_s),
             energy: kinetic_energy(&omega_b, &h_b),
             theta: Some(angle.theta),
             f_s: (self.center_off_axis())
                 .then(|| Vector::new(self.accel_c_at(rotation, angle.theta_ddot) * self.mass)),
-            h_s_integrated: None,
+            h_o_s_integrated: None,
             support: Some(self.support(&angle, rotation, &m_s, m_eff_s)),
             potential: None,
             rotors: None,
@@ -546,7 +551,7 @@ impl FixedAxis {
     ) -> SupportLoads {
         let q = rotation.q;
         let f_sup_s =
-            self.accel_c_at(rotation, angle.theta_ddot) * self.mass - self.g_s * self.mass;
+            self.accel_c_at(rotation, angle.theta_ddot) * self.mass - *self.g_s * self.mass;
         let m_sup_s = m_s - m_eff_s;
         let u_s = rotation.u_s;
         SupportLoads {

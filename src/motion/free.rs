@@ -9,7 +9,7 @@ use nalgebra::{Matrix3, Quaternion, Rotation3, SVector, UnitQuaternion, Vector3}
 
 use crate::body::RigidBody;
 use crate::effects::AppliedMoment;
-use crate::frames::{Form, StateRotation};
+use crate::frames::{BodyAxes, Form, SpaceAxes, StateRotation, Vector};
 use crate::integrate::OdeSystem;
 use crate::kinetics::kinetic_energy;
 use crate::sample::Sample;
@@ -42,7 +42,7 @@ pub struct FreeBody {
     /// Principal axes about A: columns in body axes, a proper rotation, v_b = P v_p.
     axes_b: Rotation3<f64>,
     /// Position of C relative to A, body axes.
-    rho_c_b: Vector3<f64>,
+    rho_c_b: Vector<BodyAxes>,
     mass: f64,
     euler: EulerForm,
 }
@@ -63,8 +63,8 @@ impl FreeBody {
     /// Refuses ([`SingularInertia`]) a principal moment ≤ 1e-12 × the largest: the inertia tensor of a body with a
     /// zero principal moment (a thin rod) does not determine the rotation about that axis, see the README's
     /// "Numerical stability" section.
-    pub fn new(body: &RigidBody, center_b: &Vector3<f64>) -> Result<Self, SingularInertia> {
-        let rho_c_b = -center_b;
+    pub fn new(body: &RigidBody, center_b: &Vector<BodyAxes>) -> Result<Self, SingularInertia> {
+        let rho_c_b = -*center_b;
         let inertia_b = body.inertia_about(&rho_c_b);
         let principal = crate::body::Principal::of(&inertia_b);
         let largest = principal.moments.amax();
@@ -123,15 +123,15 @@ impl FreeBody {
         &self.axes_b
     }
 
-    /// The moment of momentum about the moment center and the kinetic energy at the angular velocity `omega_b`:
-    /// H_b = I_A ω_b (eq. 8.6: A fixed or A = C) and T = ½ ω_b·H_b.
-    pub fn momentum_and_energy(&self, omega_b: &Vector3<f64>) -> (Vector3<f64>, f64) {
-        let h_b = self.inertia_b * omega_b;
-        (h_b, kinetic_energy(omega_b, &h_b))
+    /// The moment of momentum about the moment center A and the kinetic energy at the angular velocity `omega_b`:
+    /// H_A = I_A ω_b (eq. 8.6: A fixed or A = C) and T = ½ ω_b·H_A.
+    pub fn momentum_and_energy(&self, omega_b: &Vector<BodyAxes>) -> (Vector<BodyAxes>, f64) {
+        let h_a_b = self.inertia_b * **omega_b;
+        (Vector::new(h_a_b), kinetic_energy(omega_b, &h_a_b))
     }
 
-    /// Position of C relative to the moment center, body axes.
-    pub fn rho_c_b(&self) -> &Vector3<f64> {
+    /// Position of C relative to the moment center A, body axes.
+    pub fn rho_c_b(&self) -> &Vector<BodyAxes> {
         &self.rho_c_b
     }
 
@@ -140,11 +140,21 @@ impl FreeBody {
         self.mass
     }
 
-    /// ω̇_b from Euler's equation in body axes, I ω̇ = M_b − ω × I ω, with M_b = 0 when `m_b` is `None`. When I_A is
+    /// ω̇_b from Euler's equation about A in body axes, I_A ω̇ = M_A − ω × I_A ω, with M_A = 0 when `m_a_b` is `None`. When I_A is
     /// diagonal in body axes, in principal form: I_1 ω̇_1 = M_1 − (I_3 − I_2) ω_2 ω_3 (and cyclic), evaluated as
     /// ω̇_k = e_k ω_{k+1} ω_{k+2} + M_k / I_k with e_k = (I_{k+1} − I_{k+2}) / I_k; else ω̇ = I⁻¹ (M − ω × I ω).
     #[inline(always)]
-    pub fn omega_dot_b(&self, omega_b: &Vector3<f64>, m_b: Option<&Vector3<f64>>) -> Vector3<f64> {
+    pub fn omega_dot_b(
+        &self,
+        omega_b: &Vector<BodyAxes>,
+        m_a_b: Option<&Vector<BodyAxes>>,
+    ) -> Vector<BodyAxes> {
+        Vector::new(self.omega_dot(omega_b, m_a_b.map(|m| &**m)))
+    }
+
+    /// [`Self::omega_dot_b`] on the coordinates.
+    #[inline(always)]
+    fn omega_dot(&self, omega_b: &Vector3<f64>, m_b: Option<&Vector3<f64>>) -> Vector3<f64> {
         match &self.euler {
             EulerForm::Principal {
                 inertia_recip_b,
@@ -167,15 +177,15 @@ impl FreeBody {
         }
     }
 
-    /// ω_b = I⁻¹ H_b: diag(1/I_k) H_b when I_A is diagonal in body axes, else the 3×3 product with I⁻¹.
+    /// ω_b = I_A⁻¹ H_A: diag(1/I_k) H_A when I_A is diagonal in body axes, else the 3×3 product with I_A⁻¹.
     #[inline(always)]
-    pub fn omega_b_of(&self, h_b: &Vector3<f64>) -> Vector3<f64> {
-        match &self.euler {
+    pub fn omega_b_of(&self, h_a_b: &Vector<BodyAxes>) -> Vector<BodyAxes> {
+        Vector::new(match &self.euler {
             EulerForm::Principal {
                 inertia_recip_b, ..
-            } => inertia_recip_b.component_mul(h_b),
-            EulerForm::General => self.inertia_inv_b * h_b,
-        }
+            } => inertia_recip_b.component_mul(h_a_b),
+            EulerForm::General => self.inertia_inv_b * **h_a_b,
+        })
     }
 }
 
@@ -226,7 +236,7 @@ pub struct BodyForm<M: AppliedMoment> {
 impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
     #[inline(always)]
     fn rhs(&mut self, t: f64, y: &State) -> State {
-        let omega_b = Vector3::new(y[0], y[1], y[2]);
+        let omega_b = Vector::new(Vector3::new(y[0], y[1], y[2]));
         let omega_dot_b = if M::ZERO {
             self.body.omega_dot_b(&omega_b, None)
         } else {
@@ -237,9 +247,9 @@ impl<M: AppliedMoment> OdeSystem<7> for BodyForm<M> {
                 || StateRotation::of(&q_state),
                 &omega_b,
             );
-            self.body.omega_dot_b(&omega_b, Some(&m_b))
+            self.body.omega_dot_b(&omega_b, Some(&Vector::new(m_b)))
         };
-        with_attitude_rate(omega_dot_b, y, &omega_b)
+        with_attitude_rate(*omega_dot_b, y, &omega_b)
     }
 
     fn project(&self, y: &mut State) {
@@ -269,7 +279,7 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
         let q_state = Quaternion::new(y[3], y[4], y[5], y[6]);
         let rotation = StateRotation::of(&q_state);
         let h_s = Vector3::new(y[0], y[1], y[2]);
-        let omega_b = self.body.omega_b_of(&rotation.to_body(&h_s));
+        let omega_b = *self.body.omega_b_of(&Vector::new(rotation.to_body(&h_s)));
         let m_s = if M::ZERO {
             Vector3::zeros()
         } else {
@@ -291,14 +301,14 @@ impl<M: AppliedMoment> OdeSystem<7> for SpaceForm<M> {
     }
 }
 
-/// The initial state of the form `form` from ω_b(0) and q(0).
+/// The initial state of the form `form` from ω_b(0) and q(0): (ω_b, q) or (H_A,s = R I_A ω_b, q).
 pub fn initial_state(
     body: &FreeBody,
     form: Form,
-    omega0_b: &Vector3<f64>,
+    omega0_b: &Vector<BodyAxes>,
     q0: &UnitQuaternion<f64>,
 ) -> State {
-    let first = form.first_states(omega0_b, || q0 * (body.inertia_b * omega0_b));
+    let first = form.first_states(omega0_b, || q0 * (body.inertia_b * **omega0_b));
     State::from([first[0], first[1], first[2], q0.w, q0.i, q0.j, q0.k])
 }
 
@@ -312,32 +322,31 @@ pub fn sample<M: AppliedMoment>(
 ) -> Sample {
     let q = attitude(y);
     let first = Vector3::new(y[0], y[1], y[2]);
-    let (omega_b, h_b) = match form {
-        Form::Body => (first, body.inertia_b * first),
+    let (omega_b, h_a_b, h_a_s) = match form {
+        Form::Body => {
+            let h_a_b = Vector::<BodyAxes>::new(body.inertia_b * first);
+            (Vector::new(first), h_a_b, h_a_b.in_space(&q))
+        }
         Form::Space => {
-            let h_b = q.inverse_transform_vector(&first);
-            (body.omega_b_of(&h_b), h_b)
+            let h_a_s = Vector::<SpaceAxes>::new(first);
+            let h_a_b = h_a_s.in_body(&q);
+            (body.omega_b_of(&h_a_b), h_a_b, h_a_s)
         }
     };
-    let h_s = match form {
-        Form::Body => q * h_b,
-        Form::Space => first,
-    };
-    let m_b = moment.moment_b(t, &q, &omega_b);
-    free_sample(t, q, omega_b, h_b, h_s, m_b)
+    let m_a_b = Vector::new(moment.moment_b(t, &q, &omega_b));
+    free_sample(t, q, omega_b, (h_a_b, h_a_s), m_a_b)
 }
 
-/// The row of a freely turning body from its attitude q, ω_b, H_b, H_s and the applied moment M_b:
-/// ω_s = R ω_b, M_s = R M_b, energy ½ ω·H.
+/// The row of a freely turning body from its attitude q, ω_b, H_A in both axes and the applied moment M_A in
+/// body axes (A the moment center): ω_s = R ω_b, M_A,s = R M_A,b, energy ½ ω·H_A.
 pub fn free_sample(
     t: f64,
     q: UnitQuaternion<f64>,
-    omega_b: Vector3<f64>,
-    h_b: Vector3<f64>,
-    h_s: Vector3<f64>,
-    m_b: Vector3<f64>,
+    omega_b: Vector<BodyAxes>,
+    h_a: (Vector<BodyAxes>, Vector<SpaceAxes>),
+    m_a_b: Vector<BodyAxes>,
 ) -> Sample {
-    Sample::rigid(t, q, omega_b, (h_b, h_s), (m_b, q * m_b))
+    Sample::rigid(t, q, omega_b, h_a, (m_a_b, m_a_b.in_space(&q)))
 }
 
 #[cfg(test)]
@@ -353,7 +362,7 @@ mod tests {
     fn principal_body(moments: [f64; 3]) -> FreeBody {
         FreeBody::new(
             &RigidBody::from_principal(2.0, moments).unwrap(),
-            &Vector3::zeros(),
+            &Vector::zeros(),
         )
         .unwrap()
     }
@@ -377,7 +386,7 @@ mod tests {
         // A pivot on a body axis shifts the tensor by m(|ρ|²E − ρρᵀ), still diagonal.
         let on_axis = FreeBody::new(
             &RigidBody::from_principal(2.0, [1.0, 2.0, 3.0]).unwrap(),
-            &v(0.0, 0.0, -0.5),
+            &Vector::new(v(0.0, 0.0, -0.5)),
         )
         .unwrap();
         assert!(matches!(on_axis.euler, EulerForm::Principal { .. }));
@@ -385,12 +394,12 @@ mod tests {
         // Off the axes it is not.
         let off_axis = FreeBody::new(
             &RigidBody::from_principal(2.0, [1.0, 2.0, 3.0]).unwrap(),
-            &v(0.1, 0.0, -0.5),
+            &Vector::new(v(0.1, 0.0, -0.5)),
         )
         .unwrap();
         assert_eq!(off_axis.euler, EulerForm::General);
         let tensor = Matrix3::new(2.0, 0.3, -0.2, 0.3, 2.5, 0.1, -0.2, 0.1, 3.0);
-        let full = FreeBody::new(&RigidBody::new(1.0, tensor).unwrap(), &Vector3::zeros()).unwrap();
+        let full = FreeBody::new(&RigidBody::new(1.0, tensor).unwrap(), &Vector::zeros()).unwrap();
         assert_eq!(full.euler, EulerForm::General);
     }
 
@@ -410,7 +419,7 @@ mod tests {
             prop_assume!(i1 + i2 >= i3 && i2 + i3 >= i1 && i3 + i1 >= i2);
             let body = principal_body([i1, i2, i3]);
             let matrix = general(&body);
-            let (omega_b, m_b) = (Vector3::from(w), Vector3::from(m));
+            let (omega_b, m_b) = (Vector::new(Vector3::from(w)), Vector::new(Vector3::from(m)));
             let i = [i1, i2, i3];
             for torque in [None, Some(&m_b)] {
                 let fast = body.omega_dot_b(&omega_b, torque);
@@ -424,7 +433,7 @@ mod tests {
             }
             // ω_b = I⁻¹ H_b: I⁻¹ = P diag(1/I) Pᵀ with P = identity is exactly diag(1/I), and the zero entries add
             // exact zeros, so the two agree to the bit.
-            let h_b = Vector3::from(m);
+            let h_b = Vector::new(Vector3::from(m));
             prop_assert_eq!(body.omega_b_of(&h_b), matrix.omega_b_of(&h_b));
         }
     }

@@ -14,7 +14,10 @@ mod user_moment;
 mod validate;
 mod wheel_law;
 
-pub use facts::{CheckNumbers, Facts, Invariant};
+pub use facts::{
+    AxisNumbers, BearingNumbers, CheckNumbers, Facts, Invariant, MomentCenter, MotionNumbers,
+    StartNumbers,
+};
 #[cfg(feature = "sweep")]
 pub(crate) use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};

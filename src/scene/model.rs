@@ -147,9 +147,9 @@ impl Motion {
     /// C from the moment center O (the pivot, the axis point, or C itself), and the inertia about O, body axes.
     pub fn about_moment_center(&self) -> (Vector3<f64>, Matrix3<f64>) {
         match (self, self.axis()) {
-            (Motion::Free { body, .. }, _) => (*body.rho_c_b(), *body.inertia_b()),
+            (Motion::Free { body, .. }, _) => (**body.rho_c_b(), *body.inertia_b()),
             (_, axis) => axis.map_or((Vector3::zeros(), Matrix3::zeros()), |a| {
-                (*a.rho_c_b(), *a.inertia_a_b())
+                (**a.rho_c_b(), *a.inertia_a_b())
             }),
         }
     }

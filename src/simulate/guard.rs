@@ -6,6 +6,7 @@ use std::fmt;
 use nalgebra::Vector3;
 
 use crate::effects::{Effect, EffectMoments};
+use crate::frames::Vector;
 use crate::method::Method;
 use crate::sample::Sample;
 use crate::scene::{Invariant, Scene};
@@ -148,8 +149,8 @@ impl DivergenceGuard {
             return None;
         }
         let facts = scene.facts();
-        let (h0_b, e0) = body.momentum_and_energy(omega0_b);
-        let h0_s = scene.attitude0 * h0_b;
+        let (h0_b, e0) = body.momentum_and_energy(&Vector::new(*omega0_b));
+        let h0_s = *h0_b.in_space(&scene.attitude0);
         let moments = EffectMoments::new(&scene.effects, body.mass());
         let i_min = body.principal_moments().min();
         let s = &scene.solver;
@@ -218,8 +219,8 @@ impl DivergenceGuard {
             conserved,
             hint: self.hint,
         };
-        let h_norm = s.h_s.norm();
-        let h_moved = (*s.h_s - self.h0_s).norm();
+        let h_norm = s.h_o_s.norm();
+        let h_moved = (*s.h_o_s - self.h0_s).norm();
         if self.conserved {
             let (de, dh) = (delta * self.e0, delta * self.h0_norm);
             if !within((s.energy - self.e0).abs(), de) {

@@ -153,7 +153,7 @@ enum Stop<E> {
 ///     .unwrap();
 /// let (samples, report) = eulerdyn::simulate::samples(&scene).unwrap();
 /// assert_eq!(samples.len() as u64, report.rows);
-/// assert!((samples.last().unwrap().h_s.norm() - 6.0).abs() < 1e-9);
+/// assert!((samples.last().unwrap().h_o_s.norm() - 6.0).abs() < 1e-9);
 /// ```
 pub fn samples(scene: &Scene) -> Result<(Vec<Sample>, RunReport), RunError<Infallible>> {
     let mut samples = Vec::with_capacity(scene.schedule.len());
@@ -281,7 +281,7 @@ fn run_free<M: KickMoment + Clone, E>(
         Runner::Splitting(scheme) => {
             let mut split = LiePoisson::new(body, form, scheme, moment);
             let sampler = split.clone();
-            let y0 = split.initial_state(body, omega0_b, &scene.attitude0);
+            let y0 = split.initial_state(body, &Vector::new(*omega0_b), &scene.attitude0);
             return run_fixed_step(
                 &mut split,
                 y0,
@@ -317,7 +317,7 @@ fn run_free<M: KickMoment + Clone, E>(
         }
         Runner::RungeKutta(settings) => settings,
     };
-    let y0 = free::initial_state(body, form, omega0_b, &scene.attitude0);
+    let y0 = free::initial_state(body, form, &Vector::new(*omega0_b), &scene.attitude0);
     let row = |t: f64, y: &free::State| free::sample(body, &moment, form, t, y);
     let on_row = |t: f64, y: &free::State| sink(&row(t, y));
     let run = events::Integration {
@@ -362,7 +362,7 @@ fn run_gyrostat<E>(
         });
     };
     let form = scene.solver.form;
-    let y0 = gyrostat.initial_state(form, omega0_b, &scene.attitude0);
+    let y0 = gyrostat.initial_state(form, &Vector::new(*omega0_b), &scene.attitude0);
     let row = |t: f64, y: &gyrostat::State| gyrostat.sample(&moment, form, t, y);
     let on_row = |t: f64, y: &gyrostat::State| sink(&row(t, y));
     let mut system = GyrostatForm {
@@ -409,10 +409,10 @@ fn run_fixed_axis<E>(
     locator: Option<&mut Locator>,
 ) -> Result<Stats, IntegrateError<Stop<E>>> {
     let form = scene.solver.form;
-    let h_s0: Vector3<f64> = *motion.sample(0.0, form).h_s;
+    let h_s0: Vector3<f64> = *motion.sample(0.0, form).h_o_s;
     let mut system = RequiredMomentRate { motion, form };
     let row = |t: f64, h_s_int: &Vector3<f64>| Sample {
-        h_s_integrated: Some(Vector::new(*h_s_int)),
+        h_o_s_integrated: Some(Vector::new(*h_s_int)),
         ..motion.sample(t, form)
     };
     let on_row = |t: f64, h_s_int: &Vector3<f64>| sink(&row(t, h_s_int));
@@ -430,7 +430,7 @@ fn run_fixed_axis<E>(
         }
         Runner::Exact => {
             // The exact integral of Ḣ_s = M_s is H_s itself.
-            let exact_row = |t: f64| row(t, &motion.sample(t, form).h_s);
+            let exact_row = |t: f64| row(t, &motion.sample(t, form).h_o_s);
             let rows = |sink: &mut dyn FnMut(&Sample) -> Result<(), Stop<E>>| {
                 let mut stats = Stats::default();
                 for t in scene.schedule.iter() {

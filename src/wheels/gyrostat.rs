@@ -31,7 +31,7 @@ use std::sync::Arc;
 
 use super::{Wheel, WheelControl, WheelInputs, WheelSolve, WheelTorqueLaw};
 use crate::effects::{AppliedMoment, TorqueSum, TorqueTable};
-use crate::frames::{Form, StateRotation};
+use crate::frames::{BodyAxes, Form, StateRotation, Vector};
 use crate::integrate::OdeSystem;
 use crate::motion::free::{self, FreeBody};
 use crate::sample::{MAX_ROTORS, RotorRows, Sample};
@@ -106,11 +106,11 @@ pub struct Imbalance {
     /// U_d (kg·m²).
     pub dynamic_kgm2: f64,
     /// r, the wheel centre from the moment center (m).
-    pub r_b: Vector3<f64>,
+    pub r_b: Vector<BodyAxes>,
     /// w2.
-    pub w2_b: Vector3<f64>,
+    pub w2_b: Vector<BodyAxes>,
     /// w3 = a × w2.
-    pub w3_b: Vector3<f64>,
+    pub w3_b: Vector<BodyAxes>,
 }
 
 impl Imbalance {
@@ -119,15 +119,16 @@ impl Imbalance {
     /// made normal to it.
     ///
     /// ```
+    /// use eulerdyn::frames::Vector;
     /// use eulerdyn::wheels::gyrostat::Imbalance;
     /// use nalgebra::{Unit, Vector3};
-    /// let wheel = Imbalance::new(1e-6, 0.0, Vector3::zeros(), &Unit::new_normalize(Vector3::z()));
-    /// assert_eq!((wheel.w2_b, wheel.w3_b), (Vector3::x(), Vector3::y()));
+    /// let wheel = Imbalance::new(1e-6, 0.0, Vector::zeros(), &Unit::new_normalize(Vector3::z()));
+    /// assert_eq!((*wheel.w2_b, *wheel.w3_b), (Vector3::x(), Vector3::y()));
     /// ```
     pub fn new(
         static_kgm: f64,
         dynamic_kgm2: f64,
-        r_b: Vector3<f64>,
+        r_b: Vector<BodyAxes>,
         axis_b: &Unit<Vector3<f64>>,
     ) -> Self {
         let a = axis_b.into_inner();
@@ -140,17 +141,19 @@ impl Imbalance {
             static_kgm,
             dynamic_kgm2,
             r_b,
-            w2_b,
-            w3_b: a.cross(&w2_b),
+            w2_b: Vector::new(w2_b),
+            w3_b: Vector::new(a.cross(&w2_b)),
         }
     }
 
     /// M = r × (U_s Ω² d) + U_d Ω² d, d = cos φ w2 + sin φ w3 (body axes) at the relative spin Ω and angle φ.
-    pub fn moment_b(&self, spin: f64, phi: f64) -> Vector3<f64> {
+    pub fn moment_b(&self, spin: f64, phi: f64) -> Vector<BodyAxes> {
         let (sin, cos) = phi.sin_cos();
-        let d = self.w2_b * cos + self.w3_b * sin;
+        let d = *self.w2_b * cos + *self.w3_b * sin;
         let spin2 = spin * spin;
-        self.r_b.cross(&(d * (self.static_kgm * spin2))) + d * (self.dynamic_kgm2 * spin2)
+        Vector::new(
+            self.r_b.cross(&(d * (self.static_kgm * spin2))) + d * (self.dynamic_kgm2 * spin2),
+        )
     }
 }
 
@@ -214,12 +217,13 @@ impl Gyrostat {
     /// use eulerdyn::Form;
     /// use eulerdyn::body::RigidBody;
     /// use eulerdyn::effects::TorqueFree;
+    /// use eulerdyn::frames::Vector;
     /// use eulerdyn::integrate::OdeSystem;
     /// use eulerdyn::motion::free::FreeBody;
     /// use eulerdyn::wheels::gyrostat::{Drive, Gyrostat, GyrostatForm, Rotor};
     /// use eulerdyn::wheels::{WheelControl, WheelTorqueLaw};
     /// use nalgebra::{UnitQuaternion, Vector3};
-    /// let body = FreeBody::new(&RigidBody::from_principal(1.0, [1.0, 2.0, 3.0])?, &Vector3::zeros())?;
+    /// let body = FreeBody::new(&RigidBody::from_principal(1.0, [1.0, 2.0, 3.0])?, &Vector::zeros())?;
     /// let wheel = Rotor {
     ///     name: "w".into(),
     ///     axis_b: Vector3::z_axis(),
@@ -233,7 +237,7 @@ impl Gyrostat {
     /// let g = Gyrostat::new(body, vec![wheel])?.with_law(WheelTorqueLaw::new("spin-up", law))?;
     /// assert_eq!((g.law().unwrap().name.as_str(), &g.rotors()[0].drive), ("spin-up", &Drive::Law));
     /// // At rest the wheel's 0.1 N·m turns the body back through I_z − J = 2.9 kg·m²: ω̇_z = −0.1/2.9.
-    /// let y = g.initial_state(Form::Body, &Vector3::zeros(), &UnitQuaternion::identity());
+    /// let y = g.initial_state(Form::Body, &Vector::zeros(), &UnitQuaternion::identity());
     /// let dy = GyrostatForm { gyrostat: &g, moment: TorqueFree, form: Form::Body }.rhs(0.0, &y);
     /// assert!((dy[2] + 0.1 / 2.9).abs() < 1e-15);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -301,22 +305,22 @@ impl Gyrostat {
             return m_b;
         }
         (self.rotors.iter().enumerate()).fold(m_b, |m, (k, r)| match &r.imbalance {
-            Some(imbalance) => m + imbalance.moment_b(y[7 + k], y[ANGLES + k]),
+            Some(imbalance) => m + *imbalance.moment_b(y[7 + k], y[ANGLES + k]),
             None => m,
         })
     }
 
     /// Σ J_k Ω_k(0) a_k, body axes: the rotors' share of H at t = 0.
-    pub fn initial_rotor_momentum_b(&self) -> Vector3<f64> {
+    pub fn initial_rotor_momentum_b(&self) -> Vector<BodyAxes> {
         let spins: Vec<f64> = self.rotors.iter().map(|r| r.spin0).collect();
-        self.rotor_momentum_b(&spins)
+        Vector::new(self.rotor_momentum_b(&spins))
     }
 
     /// The kinetic energy at ω_b with the wheels' relative spins `spins`: T = ½ ωᵀ I ω + Σ (J_k Ω_k (a_k·ω) +
     /// ½ J_k Ω_k²).
-    pub fn kinetic_energy(&self, omega_b: &Vector3<f64>, spins: &[f64]) -> f64 {
+    pub fn kinetic_energy(&self, omega_b: &Vector<BodyAxes>, spins: &[f64]) -> f64 {
         (self.rotors.iter().zip(spins)).fold(
-            0.5 * omega_b.dot(&(self.body.inertia_b() * omega_b)),
+            0.5 * omega_b.dot(&(self.body.inertia_b() * **omega_b)),
             |t, (r, &spin)| t + r.inertia * spin * (r.axis_b.dot(omega_b) + 0.5 * spin),
         )
     }
@@ -384,11 +388,11 @@ impl Gyrostat {
     pub fn initial_state(
         &self,
         form: Form,
-        omega0_b: &Vector3<f64>,
+        omega0_b: &Vector<BodyAxes>,
         q0: &UnitQuaternion<f64>,
     ) -> State {
         let first = form.first_states(omega0_b, || {
-            q0 * (self.body.inertia_b() * omega0_b + self.initial_rotor_momentum_b())
+            q0 * (self.body.inertia_b() * **omega0_b + *self.initial_rotor_momentum_b())
         });
         let mut y = State::zeros();
         y.fixed_rows_mut::<3>(0).copy_from(&first);
@@ -413,7 +417,7 @@ impl Gyrostat {
             Form::Body => (first, self.body.inertia_b() * first + h_rotors_b),
             Form::Space => {
                 let h_b = to_body(&first);
-                (self.body.omega_b_of(&(h_b - h_rotors_b)), h_b)
+                (*self.body.omega_b_of(&Vector::new(h_b - h_rotors_b)), h_b)
             }
         }
     }
@@ -440,7 +444,10 @@ impl Gyrostat {
             };
             rows.friction[k] = solved.friction[k];
         }
-        let mut sample = free::free_sample(t, q, omega_b, h_b, q * h_b, m_b);
+        let h_b = Vector::<BodyAxes>::new(h_b);
+        let omega_b = Vector::new(omega_b);
+        let mut sample =
+            free::free_sample(t, q, omega_b, (h_b, h_b.in_space(&q)), Vector::new(m_b));
         sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..ANGLES]);
         sample.rotors = Some(rows);
         sample

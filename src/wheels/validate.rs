@@ -9,6 +9,7 @@ use super::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use super::read_wheel_table;
 use super::spec::{RotorDrive, RotorSpec};
 use crate::effects::TorqueSum;
+use crate::frames::Vector;
 use crate::keys::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
 use crate::motion::free::FreeBody;
 use crate::sample::MAX_ROTORS;
@@ -93,7 +94,7 @@ fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Ch
         Imbalance::new(
             static_gmm * GRAM_MM,
             dynamic_gmm2 * GRAM_MM2,
-            at_b - center_b,
+            Vector::new(at_b - center_b),
             &axis_b,
         )
     });

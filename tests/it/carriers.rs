@@ -72,20 +72,26 @@ fn a_disk_in_a_yawing_carrier_carries_the_gyroscopic_couple() {
                 s.t,
             );
             close(
-                &s.h_s,
+                &s.h_o_s,
                 &(u * (c * SPIN) + Vector3::z() * (a * yaw)),
                 0.0,
                 "H_s",
                 s.t,
             );
-            close(&s.m_s, &(Vector3::z().cross(&u) * couple), 0.0, "M_s", s.t);
+            close(
+                &s.m_o_s,
+                &(Vector3::z().cross(&u) * couple),
+                0.0,
+                "M_s",
+                s.t,
+            );
             let bearings = support.bearings.unwrap();
             let expected = couple / (BEARINGS.1 - BEARINGS.0);
             assert!((bearings.r_a_s.norm() - expected).abs() <= 1e-9 * expected);
             assert!((bearings.r_b_s.norm() - expected).abs() <= 1e-9 * expected);
             assert!((bearings.r_a_s + bearings.r_b_s).norm() <= 1e-12 * expected);
             // H_s integrated from dH_s/dt = M_s by dop853 reproduces the closed form's H_s.
-            close(&s.h_s_integrated.unwrap(), &s.h_s, 0.0, "H_s_int", s.t);
+            close(&s.h_o_s_integrated.unwrap(), &s.h_o_s, 0.0, "H_s_int", s.t);
             assert!(
                 support.m_drive.abs() <= 1e-12 * couple,
                 "no drive at constant spin"
@@ -119,14 +125,20 @@ fn a_disk_in_a_rolling_carrier_carries_the_spin_and_the_roll_acceleration() {
                 s.t,
             );
             let expected = omega_c.cross(&u) * (c * SPIN) + omega_c_dot * a;
-            close(&s.m_s, &expected, scale, "M_s", s.t);
-            close(&s.h_s_integrated.unwrap(), &s.h_s, c * SPIN, "H_s_int", s.t);
+            close(&s.m_o_s, &expected, scale, "M_s", s.t);
+            close(
+                &s.h_o_s_integrated.unwrap(),
+                &s.h_o_s,
+                c * SPIN,
+                "H_s_int",
+                s.t,
+            );
         }
         assert_equilibrium(&rows, BEARINGS, disk_axis_s, |_| Vector3::zeros());
         by_form.push(rows);
     }
     for (b, s) in by_form[0].iter().zip(&by_form[1]) {
-        close(&b.m_s, &s.m_s, 1e-3, "body and space forms", b.t);
+        close(&b.m_o_s, &s.m_o_s, 1e-3, "body and space forms", b.t);
     }
 }
 
@@ -210,7 +222,7 @@ fn a_hinge_in_a_turning_carrier_swings_at_the_closed_form_period() {
                 s.t
             );
             // The drive supplies nothing about the axis: u·(dH/dt − M_eff) = 0.
-            assert!(support.m_drive.abs() <= 1e-12 * (s.m_s.norm() + a * yaw * yaw));
+            assert!(support.m_drive.abs() <= 1e-12 * (s.m_o_s.norm() + a * yaw * yaw));
         }
         assert_equilibrium(&rows, (-0.05, 0.05), box_axis_s, |_| Vector3::zeros());
         theta_by_form.push(rows);

@@ -307,7 +307,7 @@ fn a_full_inertia_tensor_gets_the_rows_of_the_direct_evaluation() {
         simulate::run(&scene, |s: &Sample| {
             let d = flow.sample(s.t, scene.solver.form);
             err_omega = err_omega.max((s.omega_b - d.omega_b).norm() / d.omega_b.norm());
-            err_h = err_h.max((s.h_s - d.h_s).norm() / d.h_s.norm());
+            err_h = err_h.max((s.h_o_s - d.h_o_s).norm() / d.h_o_s.norm());
             err_q = err_q.max(angle(&s.q, &d.q));
             rows += 1;
             Ok::<(), Infallible>(())

@@ -156,7 +156,7 @@ fn torque_free_invariants_and_body_space_agreement() {
     for o in configurations() {
         let scene = scene_from(text, &o);
         let rows = rows(&scene);
-        let (e0, h0) = (rows[0].energy, rows[0].h_s);
+        let (e0, h0) = (rows[0].energy, rows[0].h_o_s);
         let limit = bound(&o, 2.1, 50.0);
         for row in &rows {
             assert!(
@@ -165,14 +165,14 @@ fn torque_free_invariants_and_body_space_agreement() {
                 label(&o)
             );
             assert!(
-                (row.h_s - h0).norm() <= limit * h0.norm(),
+                (row.h_o_s - h0).norm() <= limit * h0.norm(),
                 "{}: H_s drift",
                 label(&o)
             );
             assert!((row.q.into_inner().norm() - 1.0).abs() <= 4.0 * f64::EPSILON);
             if o.form == Some(eulerdyn::Form::Space) {
                 assert_eq!(
-                    row.h_s,
+                    row.h_o_s,
                     h0,
                     "{}: H_s is the exact invariant of the space form",
                     label(&o)

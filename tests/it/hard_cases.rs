@@ -158,7 +158,7 @@ fn long_horizon_split_methods_keep_h_exact_and_energy_bounded() {
             if k >= n_rows - tenth {
                 last = last.max(e);
             }
-            h_drift = h_drift.max(((r.h_s.norm() - h0) / h0).abs());
+            h_drift = h_drift.max(((r.h_o_s.norm() - h0) / h0).abs());
             q_norm = q_norm.max((r.q.into_inner().norm() - 1.0).abs());
             k += 1;
         });
@@ -337,7 +337,7 @@ fn spins_about_the_major_and_minor_axes_stay_in_their_cones() {
             let scene = scene_from(&text, &s.overrides());
             let (mut a_min, mut a_max, mut flipped) = (f64::INFINITY, 0.0f64, false);
             stream(&scene, |r| {
-                let a = angle(&r.h_b);
+                let a = angle(&r.h_o_b);
                 a_min = a_min.min(a);
                 a_max = a_max.max(a);
                 flipped |= r.omega_b[axis] <= 0.0;
@@ -667,7 +667,12 @@ fn fast_spin_adaptive_methods_finish_and_a_too_large_fixed_step_is_caught() {
         let e0 = exact.energy();
         for r in &rows {
             assert!(r.t < d.t);
-            assert!(r.omega_b.iter().chain(r.h_s.iter()).all(|v| v.is_finite()));
+            assert!(
+                r.omega_b
+                    .iter()
+                    .chain(r.h_o_s.iter())
+                    .all(|v| v.is_finite())
+            );
             assert!(
                 (r.energy - e0).abs() <= guard.allowance(r.t) * e0,
                 "{frame}: garbage row at t = {}",
@@ -829,10 +834,10 @@ fn fixed_axis_at_zero_ninety_degrees_and_a_tiny_tilt() {
             };
             let (mut err_m, mut err_h) = (0.0f64, 0.0f64);
             for row in &rows {
-                err_m = err_m.max((row.m_b[0] - expected).abs() / scale);
-                err_m = err_m.max(row.m_b.yz().norm() / scale);
-                let h_int = row.h_s_integrated.unwrap();
-                err_h = err_h.max((h_int - row.h_s).norm() / row.h_s.norm());
+                err_m = err_m.max((row.m_o_b[0] - expected).abs() / scale);
+                err_m = err_m.max(row.m_o_b.yz().norm() / scale);
+                let h_int = row.h_o_s_integrated.unwrap();
+                err_h = err_h.max((h_int - row.h_o_s).norm() / row.h_o_s.norm());
             }
             println!(
                 "tilt {tilt} deg {s}: M error {err_m:.2e}, H_s_int error {err_h:.2e} (bound {bound:.2e})"
@@ -863,7 +868,7 @@ fn zero_rate_stays_at_rest_with_every_method() {
             assert_eq!(rows.len(), 5);
             for r in &rows {
                 assert_eq!(*r.omega_b, Vector3::zeros(), "{s}");
-                assert_eq!(*r.h_s, Vector3::zeros(), "{s}");
+                assert_eq!(*r.h_o_s, Vector3::zeros(), "{s}");
                 assert_eq!(r.energy, 0.0, "{s}");
                 assert!(attitude_angle(&r.q, &scene.attitude0) <= 1e-15, "{s}");
             }
@@ -874,9 +879,13 @@ fn zero_rate_stays_at_rest_with_every_method() {
         .replace("rate = 10.0", "rate = 0.0");
     for s in every_method(1.0, [0.01, 0.01, 0.01], [1e-9, 1e-10]) {
         for r in rows(&scene_from(&text, &s.overrides())) {
-            assert_eq!(*r.m_b, Vector3::zeros(), "{s}");
+            assert_eq!(*r.m_o_b, Vector3::zeros(), "{s}");
             assert_eq!(r.theta, Some(0.0), "{s}");
-            assert_eq!(r.h_s_integrated.map(|h| *h), Some(Vector3::zeros()), "{s}");
+            assert_eq!(
+                r.h_o_s_integrated.map(|h| *h),
+                Some(Vector3::zeros()),
+                "{s}"
+            );
         }
     }
 }

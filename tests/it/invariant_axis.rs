@@ -59,14 +59,14 @@ pub(crate) fn assert_equilibrium(
         let u_s = &axis_s(s);
         let support = s.support.expect("support loads");
         let r = support.bearings.expect("bearing loads");
-        let scale = 1.0 + support.f_sup_s.norm() + s.m_s.norm();
+        let scale = 1.0 + support.f_sup_s.norm() + s.m_o_s.norm();
         let force = r.r_a_s + r.r_b_s - support.f_sup_s;
         assert!(
             force.norm() <= 1e-14 * scale,
             "t = {}: ΣR − F_sup = {force}",
             s.t
         );
-        let m_sup = *s.m_s - m_eff_s(s);
+        let m_sup = *s.m_o_s - m_eff_s(s);
         let m_perp = m_sup - u_s * m_sup.dot(u_s);
         let couple = (u_s * a).cross(&r.r_a_s) + (u_s * b).cross(&r.r_b_s);
         assert!(
@@ -314,7 +314,7 @@ fn the_hinge_forms_agree() {
             "t = {}",
             b.t
         );
-        assert!((b.h_s - s.h_s).norm() <= 1e-9, "t = {}", b.t);
+        assert!((b.h_o_s - s.h_o_s).norm() <= 1e-9, "t = {}", b.t);
     }
 }
 
@@ -604,7 +604,7 @@ fn attitudes_can_be_written_as_euler_angles_or_by_the_axis_in_space() {
     ]));
     for (a, b) in by_axis.iter().zip(&by_quaternion) {
         assert!(
-            a.q.angle_to(&b.q) <= 1e-15 && (a.h_s - b.h_s).norm() <= 1e-15,
+            a.q.angle_to(&b.q) <= 1e-15 && (a.h_o_s - b.h_o_s).norm() <= 1e-15,
             "t = {}",
             a.t
         );

@@ -61,9 +61,9 @@ fn a_motor_torque_exchanges_momentum_between_wheel_and_body() {
             );
             close(r.torque[0], tau, 0.0, "τ");
             assert!(
-                s.h_s.norm() <= 1e-12,
+                s.h_o_s.norm() <= 1e-12,
                 "{form:?}: H_s = {} at t = {t}",
-                s.h_s
+                s.h_o_s
             );
         }
     }
@@ -175,10 +175,10 @@ fn free_wheels_keep_h_s_and_the_energy_and_both_forms_agree() {
         .map(|&form| rows(&tight(spec.clone(), form)))
         .collect();
     for rows in &by_form {
-        let (h0, e0) = (rows[0].h_s, rows[0].energy);
+        let (h0, e0) = (rows[0].h_o_s, rows[0].energy);
         for s in rows {
             assert!(
-                (s.h_s - h0).norm() <= 1e-9 * h0.norm(),
+                (s.h_o_s - h0).norm() <= 1e-9 * h0.norm(),
                 "H_s at t = {}",
                 s.t
             );
@@ -206,9 +206,9 @@ fn about_a_pivot_free_wheels_keep_t_plus_v_and_the_vertical_momentum() {
         .with_effect(EffectSpec::gravity([0.0, 0.0, -9.81], [0.0, 0.0, -0.05]));
     for form in Form::ALL {
         let rows = rows(&tight(spec.clone(), form));
-        let (hz0, e0) = (rows[0].h_s.z, rows[0].energy + rows[0].potential.unwrap());
+        let (hz0, e0) = (rows[0].h_o_s.z, rows[0].energy + rows[0].potential.unwrap());
         for s in &rows {
-            close(s.h_s.z, hz0, 1e-9, "H_s,z");
+            close(s.h_o_s.z, hz0, 1e-9, "H_s,z");
             close(s.energy + s.potential.unwrap(), e0, 1e-9, "T + V");
         }
     }
@@ -331,10 +331,10 @@ fn an_imbalanced_wheel_turns_its_force_and_couple_with_it() {
                 let expected =
                     nalgebra::Vector3::z() * (r * scale * phi.sin()) + d * (u_d * spin * spin);
                 assert!(
-                    (*s.m_b - expected).norm() <= 1e-9 * expected.norm().max(r * scale),
+                    (*s.m_o_b - expected).norm() <= 1e-9 * expected.norm().max(r * scale),
                     "Ω₀ = {spin0}, α = {alpha}, t = {}: M_b = {} vs {expected}",
                     s.t,
-                    s.m_b
+                    s.m_o_b
                 );
                 close(s.rotors.unwrap().spin[0], spin, 1e-12, "Ω");
             }

@@ -31,7 +31,7 @@ fn largest_difference(a: &[Sample], b: &[Sample]) -> f64 {
             (x.omega_b - y.omega_b)
                 .norm()
                 .max(dq)
-                .max((x.h_s - y.h_s).norm())
+                .max((x.h_o_s - y.h_o_s).norm())
         })
         .fold(0.0, f64::max)
 }

@@ -124,7 +124,7 @@ fn the_turbine_in_a_3g_turn_carries_the_load_factor_and_the_gyroscopic_couple() 
             close(&support.f_sup_s, &f, 0.0, "F_sup", s.t);
             // 3 g along the apparent vertical: |a − g| = g √(1 + 8) to the numbers' 5 digits (693.67 m).
             assert!((support.f_sup_s.norm() / (m * G) - 3.0).abs() < 1e-5);
-            close(&s.m_s, &(toward_centre * couple), 0.0, "M_s", s.t);
+            close(&s.m_o_s, &(toward_centre * couple), 0.0, "M_s", s.t);
             let r = support.bearings.unwrap();
             let lift = Vector3::z() * (couple / 0.9);
             close(&r.r_a_s, &(f * 0.5 + lift), 0.0, "R_A", s.t);
@@ -144,8 +144,8 @@ fn the_turbine_in_a_3g_turn_carries_the_load_factor_and_the_gyroscopic_couple() 
 /// Body and space forms give the same moment and bearing loads to 1e-9 of their scale.
 fn assert_forms_agree(by_form: &[Vec<Sample>]) {
     for (b, s) in by_form[0].iter().zip(&by_form[1]) {
-        let scale = b.m_s.norm() + b.support.unwrap().f_sup_s.norm();
-        close(&b.m_s, &s.m_s, scale, "M_s, body vs space form", b.t);
+        let scale = b.m_o_s.norm() + b.support.unwrap().f_sup_s.norm();
+        close(&b.m_o_s, &s.m_o_s, scale, "M_s, body vs space form", b.t);
         let (rb, rs) = (
             b.support.unwrap().bearings.unwrap(),
             s.support.unwrap().bearings.unwrap(),
@@ -261,7 +261,7 @@ fn a_pendulum_in_an_accelerating_vehicle_swings_about_atan_a_over_g() {
                 "t = {}: θ = {theta}",
                 s.t
             );
-            assert!(s.support.unwrap().m_drive.abs() <= 1e-12 * (s.m_s.norm() + M * G * d));
+            assert!(s.support.unwrap().m_drive.abs() <= 1e-12 * (s.m_o_s.norm() + M * G * d));
         }
         let weight =
             |s: &Sample| (s.q * Vector3::new(0.0, 0.0, -d)).cross(&Vector3::new(0.0, 0.0, -G * M));

@@ -88,7 +88,7 @@ fn a_clipped_command_exchanges_momentum_at_the_limit() {
                 (tau_max, 1.0),
                 "applied and commanded"
             );
-            assert!(s.h_s.norm() <= 1e-12, "{form:?}: H_s = {}", s.h_s);
+            assert!(s.h_o_s.norm() <= 1e-12, "{form:?}: H_s = {}", s.h_o_s);
         }
     }
 }
@@ -254,7 +254,7 @@ fn a_pd_law_through_one_wheel_gives_the_second_order_step_response() {
                 r.torque[0], r.torque_cmd[0],
                 "no limit: applied = commanded"
             );
-            assert!(s.h_s.norm() <= 1e-12, "H_s = 0");
+            assert!(s.h_o_s.norm() <= 1e-12, "H_s = 0");
         }
     }
 }

@@ -169,7 +169,7 @@ impl Rotor {
             u_b,
             reference_b,
             reference_name,
-            origin_b: axis.point_b() + scene.center_b,
+            origin_b: *axis.point_b() + scene.center_b,
             body: spec.body.clone(),
         })
     }
@@ -178,6 +178,7 @@ impl Rotor {
     /// and the dynamic imbalance d: v_B = (d + z_A s)/(z_B − z_A), v_A = −s − v_B (module doc).
     pub fn plane_vectors(&self) -> [Vector3<f64>; 2] {
         let (s, d) = self.axis.imbalance();
+        let (s, d) = (s.into_inner(), d.into_inner());
         let Planes { a, b, .. } = self.planes;
         let v_b = (d + s * a) / (b - a);
         let v_a = -s - v_b;

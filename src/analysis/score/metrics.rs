@@ -12,6 +12,7 @@ use super::reference::Reference;
 use crate::analysis::compare::attitude_angle;
 use crate::effects::{AppliedMoment, EffectMoments};
 use crate::events::{Condition, Direction, Event, Extremum};
+use crate::frames::{BodyAxes, Vector};
 use crate::motion::free::free_sample;
 use crate::sample::Sample;
 use crate::scene::Scene;
@@ -91,10 +92,10 @@ pub fn their_samples(scene: &Scene, rows: &[TheirRow]) -> Option<Vec<Sample>> {
     let moments = EffectMoments::new(&scene.effects, scene.body.mass());
     rows.iter()
         .map(|r| {
-            let omega_b = r.omega_b?;
-            let h_b = body.inertia_b() * omega_b;
-            let m_b = moments.moment_b(r.t, &r.q, &omega_b);
-            let mut s = free_sample(r.t, r.q, omega_b, h_b, r.q * h_b, m_b);
+            let omega_b = Vector::<BodyAxes>::new(r.omega_b?);
+            let (h_b, _) = body.momentum_and_energy(&omega_b);
+            let m_b = Vector::new(moments.moment_b(r.t, &r.q, &omega_b));
+            let mut s = free_sample(r.t, r.q, omega_b, (h_b, h_b.in_space(&r.q)), m_b);
             s.potential = scene.gravity_potential(&r.q);
             Some(s)
         })
@@ -132,12 +133,12 @@ pub fn metrics(
         let omega_scale = scale(refs, |s| s.omega_b.norm());
         let energy = |s: &Sample| s.energy + s.potential.unwrap_or(0.0);
         let energy_scale = scale(refs, |s| s.energy + s.potential.unwrap_or(0.0).abs());
-        let h_scale = scale(refs, |s| s.h_s.norm());
+        let h_scale = scale(refs, |s| s.h_o_s.norm());
         let pairs = || theirs.iter().zip(refs);
         let omega = pairs().map(|(a, b)| (a.omega_b - b.omega_b).norm() / omega_scale);
         let energy = pairs().map(|(a, b)| (energy(a) - energy(b)).abs() / energy_scale);
-        let h_norm = pairs().map(|(a, b)| (a.h_s.norm() - b.h_s.norm()).abs() / h_scale);
-        let h_direction = pairs().map(|(a, b)| angle(&a.h_s, &b.h_s));
+        let h_norm = pairs().map(|(a, b)| (a.h_o_s.norm() - b.h_o_s.norm()).abs() / h_scale);
+        let h_direction = pairs().map(|(a, b)| angle(&a.h_o_s, &b.h_o_s));
         all.push((
             series("angular velocity error (relative)", omega.collect()),
             "omega",

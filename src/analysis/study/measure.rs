@@ -61,21 +61,21 @@ impl Errors {
         }
         self.energy = self.energy.max((s.energy - r.energy).abs());
         self.energy_scale = self.energy_scale.max(r.energy.abs());
-        self.h_norm = self.h_norm.max((s.h_s.norm() - r.h_norm).abs());
+        self.h_norm = self.h_norm.max((s.h_o_s.norm() - r.h_norm).abs());
         self.h_scale = self.h_scale.max(r.h_norm.abs());
         if let Some(h_s) = &r.h_s {
-            Self::max_into(&mut self.h_s, (*s.h_s - h_s).norm());
+            Self::max_into(&mut self.h_s, (*s.h_o_s - h_s).norm());
         }
     }
 
     /// Adds a row of prescribed fixed-axis motion: its integrated H_s against its closed-form H_s.
     pub fn add_fixed_axis(&mut self, s: &Sample) {
         self.attitude = Some(0.0);
-        if let Some(h_int) = &s.h_s_integrated {
-            Self::max_into(&mut self.h_s, (*h_int - s.h_s).norm());
+        if let Some(h_int) = &s.h_o_s_integrated {
+            Self::max_into(&mut self.h_s, (*h_int - s.h_o_s).norm());
         }
         self.energy_scale = self.energy_scale.max(s.energy.abs());
-        self.h_scale = self.h_scale.max(s.h_s.norm());
+        self.h_scale = self.h_scale.max(s.h_o_s.norm());
     }
 
     fn relative(abs: f64, scale: f64) -> f64 {

@@ -156,8 +156,8 @@ fn reference_run(
                 omega_b: *s.omega_b,
                 q: Some(s.q),
                 energy: s.energy,
-                h_norm: s.h_s.norm(),
-                h_s: Some(*s.h_s),
+                h_norm: s.h_o_s.norm(),
+                h_s: Some(*s.h_o_s),
             });
             Ok::<(), Infallible>(())
         })

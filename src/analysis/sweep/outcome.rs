@@ -131,9 +131,9 @@ impl Summarizer {
     /// Takes one row.
     pub fn add(&mut self, s: &Sample) {
         let r = &mut self.summary;
-        let h_norm = s.h_s.norm();
+        let h_norm = s.h_o_s.norm();
         let (energy0, h0) = *self.first.get_or_insert((s.energy, h_norm));
-        r.max_m_norm = r.max_m_norm.max(s.m_s.norm());
+        r.max_m_norm = r.max_m_norm.max(s.m_o_s.norm());
         if let Some(support) = &s.support {
             r.max_f_sup_norm = max_of(r.max_f_sup_norm, support.f_sup_s.norm());
             if let Some(b) = &support.bearings {

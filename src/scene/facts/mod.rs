@@ -3,6 +3,7 @@
 //! plot (its drift panel, the panels it draws by default) all read it instead of deciding again. This module
 //! holds the value; [`Facts::of`] (`of.rs`) computes it from a scene.
 
+mod numbers;
 mod of;
 
 use serde::{Deserialize, Serialize};
@@ -115,6 +116,89 @@ pub struct CheckNumbers {
     pub step_used: Option<f64>,
     /// Rows a run writes.
     pub rows: usize,
+    /// The moment center, the axis and the state at t = 0 (written from 0.6.0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub motion_numbers: Option<MotionNumbers>,
+}
+
+/// What `check` prints of the motion, at full precision.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct MotionNumbers {
+    /// Which point the moment center O is.
+    pub moment_center: MomentCenter,
+    /// The principal moments about O (kg·m²), in [`crate::body::Principal`]'s order.
+    pub principal_moments_o: [f64; 3],
+    /// The fixed axis or hinge.
+    pub axis: Option<AxisNumbers>,
+    /// The state at t = 0 (free motion and a prescribed axis; a hinge's follows from its angle and rate).
+    pub at_start: Option<StartNumbers>,
+}
+
+/// The point the moments of a scene are taken about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MomentCenter {
+    /// The mass center C (free motion, or C on the fixed axis).
+    MassCenter,
+    /// The fixed pivot of a gravity effect.
+    Pivot,
+    /// The fixed axis's point, off C.
+    AxisPoint,
+}
+
+/// A fixed axis or hinge: its tilt, rates, bearings and imbalance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct AxisNumbers {
+    /// The angle between the axis and the nearest principal direction about C (degrees).
+    pub tilt_deg: f64,
+    /// That principal axis (1-based), [`crate::body::Principal::tilt_of`].
+    pub nearest_principal: usize,
+    /// θ̇ at t = 0 (rad/s).
+    pub rate: f64,
+    /// θ̈ (rad/s²).
+    pub accel: f64,
+    /// I_uu = u·I_O u, the moment of inertia about the axis (kg·m²).
+    pub i_uu: f64,
+    /// A hinge's θ at t = 0 (rad).
+    pub theta0: Option<f64>,
+    /// The bearings, where the scene places them.
+    pub bearings: Option<BearingNumbers>,
+    /// The static imbalance m·e (kg·m).
+    pub imbalance_static_kgm: f64,
+    /// e, C's distance from the axis (m).
+    pub imbalance_offset_m: f64,
+    /// The dynamic imbalance |I_O u − (u·I_O u) u| (kg·m²).
+    pub imbalance_dynamic_kgm2: f64,
+}
+
+/// Where bearings A and B sit: along the axis from its point (m), and from the reference origin (m, body axes).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BearingNumbers {
+    /// A's position along the axis.
+    pub a: f64,
+    /// B's position along the axis.
+    pub b: f64,
+    /// A from the reference origin.
+    pub a_b: [f64; 3],
+    /// B from the reference origin.
+    pub b_b: [f64; 3],
+}
+
+/// The state at t = 0, about the moment center O.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StartNumbers {
+    /// ω (rad/s, body axes).
+    pub omega_b: [f64; 3],
+    /// H_O, the wheels' included (kg·m²/s, body axes).
+    pub h_o_b: [f64; 3],
+    /// H_O in space axes.
+    pub h_o_s: [f64; 3],
+    /// A prescribed axis: the moment M_O its support supplies (N·m, body axes).
+    pub m_o_b: Option<[f64; 3]>,
+    /// A prescribed axis with C off it: the force F = m a_C (N, space axes).
+    pub f_s: Option<[f64; 3]>,
+    /// The kinetic energy T, the wheels' included (J).
+    pub energy: f64,
 }
 
 impl Facts {
@@ -160,6 +244,36 @@ mod tests {
     /// The invariants of the bundled scenario `name`.
     fn of_scenario(name: &str) -> Vec<Invariant> {
         facts_of(name).invariants
+    }
+
+    /// The tilted disk (m = 2 kg, R = 0.3 m, ω = 10 rad/s, axis 30° from the symmetry axis): I₁ = ¼ m R² = 0.045,
+    /// I₃ = ½ m R² = 0.09 kg·m²; about the axis I_uu = I₁ sin²θ + I₃ cos²θ = 0.07875 kg·m²; the product of inertia
+    /// (dynamic imbalance) |d| = (I₃ − I₁) sin θ cos θ, and the bearings' moment |M| = |d| ω² = 1.9486 N·m (Rigid-body
+    /// dynamics, lecture notes: the tilted disk, M = ω × H with H = I ω).
+    #[test]
+    fn check_numbers_give_the_axis_and_the_state_at_the_start() {
+        let check = facts_of("tilted_disk").check.expect("numbers");
+        let motion = check.motion_numbers.expect("motion numbers");
+        let axis = motion.axis.expect("an axis");
+        let (i1, i3, theta, omega) = (0.045, 0.09, 30f64.to_radians(), 10.0);
+        let d = (i3 - i1) * theta.sin() * theta.cos();
+        assert_eq!(motion.moment_center, MomentCenter::MassCenter);
+        assert!((axis.tilt_deg - 30.0).abs() < 1e-9 && axis.nearest_principal == 3);
+        assert!((axis.i_uu - (i1 * theta.sin().powi(2) + i3 * theta.cos().powi(2))).abs() < 1e-15);
+        assert!((axis.imbalance_dynamic_kgm2 - d).abs() < 1e-15);
+        assert_eq!((axis.imbalance_static_kgm, axis.theta0), (0.0, None));
+        let start = motion.at_start.expect("a state at t = 0");
+        let m = start.m_o_b.expect("the bearings' moment");
+        let m_norm = (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt();
+        assert!((m_norm - d * omega * omega).abs() < 1e-13, "{m_norm}");
+        // The heavy top's moment center is its pivot, 5 cm below C.
+        let top = facts_of("heavy_top").check.expect("numbers");
+        let top_motion = top.motion_numbers.expect("motion numbers");
+        assert_eq!(top_motion.moment_center, MomentCenter::Pivot);
+        assert_eq!(top.moment_center_from_c_b, [0.0, 0.0, -0.05]);
+        assert!(
+            top_motion.axis.is_none() && top_motion.at_start.is_some_and(|s| s.m_o_b.is_none())
+        );
     }
 
     #[test]

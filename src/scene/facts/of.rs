@@ -10,8 +10,6 @@
 //! - nothing with torques, damping or a user's law, an accelerating prescribed axis, a turning carrier (which
 //!   does work on the body), or an imbalanced wheel (its turning moment changes H and T).
 
-use nalgebra::Matrix3;
-
 use super::{CheckNumbers, Facts, Invariant};
 use crate::effects::Effect;
 use crate::panel::Panel;
@@ -104,31 +102,4 @@ fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
         panels.extend(Panel::WHEELS);
     }
     panels
-}
-
-impl CheckNumbers {
-    /// The numbers of `scene`.
-    fn of(scene: &Scene) -> Self {
-        let inertia_c = scene.body.inertia_c();
-        let principal = scene.body.principal();
-        let (rho_c_b, inertia_o_b) = scene.motion.about_moment_center();
-        CheckNumbers {
-            mass: scene.body.mass(),
-            center_b: scene.center_b.into(),
-            inertia_c_b: rows_of(inertia_c),
-            principal_moments_c: principal.moments.into(),
-            principal_axes_b: rows_of(principal.axes_b.matrix()),
-            motion: scene.motion.kind(),
-            moment_center_from_c_b: (-rho_c_b).into(),
-            inertia_o_b: rows_of(&inertia_o_b),
-            axis_b: scene.motion.axis().map(|a| a.axis_b().into_inner().into()),
-            step_used: scene.fixed_step(),
-            rows: scene.schedule.len(),
-        }
-    }
-}
-
-/// The rows of `m`.
-fn rows_of(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
-    std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
 }

@@ -6,7 +6,7 @@ use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use super::Oracle;
 use crate::effects::Effect;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
-use crate::frames::Axes;
+use crate::frames::{Axes, Vector};
 use crate::profile::Profile;
 use crate::scene::model::{Motion, Scene};
 use crate::wheels::gyrostat::Gyrostat;
@@ -84,7 +84,7 @@ fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> O
         .map(|r| r.inertia * r.spin0 * r.axis_b.z)
         .sum();
     let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-    let energy = g.kinetic_energy(omega0_b, &spins);
+    let energy = g.kinetic_energy(&Vector::new(*omega0_b), &spins);
     SymmetricTorqueFree::gyrostat(
         inertia[(0, 0)],
         inertia[(2, 2)],

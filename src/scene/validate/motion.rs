@@ -8,6 +8,7 @@ use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
+use crate::frames::Vector;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
@@ -72,13 +73,13 @@ fn free_motion(
         Distribution::Shape(_) => "shape",
         Distribution::Inertia(_) => "inertia",
     };
-    let free_body = FreeBody::new(body, &center_b).map_err(|e| Invalid {
+    let free_body = FreeBody::new(body, &Vector::new(center_b)).map_err(|e| Invalid {
         key: KeyPath::root().key("body").key(body_key),
         problem: e.to_string(),
     })?;
     // H = I_A ω₀ and T = ½ ω₀·H must be numbers: every row reports them, and the divergence guard measures
     // the run by T.
-    let (h0_b, energy0) = free_body.momentum_and_energy(&omega0_b);
+    let (h0_b, energy0) = free_body.momentum_and_energy(&Vector::new(omega0_b));
     if !(energy0.is_finite() && h0_b.norm().is_finite()) {
         return invalid(
             KeyPath::root().key("initial").key("omega"),
@@ -124,12 +125,12 @@ fn axis_geometry(
         );
     }
     let point_b = vector(motion().key("point"), m.point, "m")? - center_b;
-    let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, attitude0);
+    let mut axis = FixedAxis::new(body, axis_b, rate, accel, Vector::new(point_b), attitude0);
     if let Some(g_s) = effects.iter().find_map(|e| match e {
         Effect::Gravity { g_s, .. } => Some(*g_s),
         _ => None,
     }) {
-        axis = axis.with_gravity(g_s);
+        axis = axis.with_gravity(Vector::new(g_s));
     }
     if let Some([a, b]) = m.bearings {
         let key = motion().key("bearings");
