@@ -2,25 +2,11 @@
 //! [`EffectKind`]), and [`EffectSpec`] as a [`Part`]: read from that table (its `type` and the keys that type
 //! takes) and written back. The scene registers it with one line, `list effect: EffectFile`.
 
-use serde::{Deserialize, Serialize};
-
 use super::spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 use super::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
-use crate::keys::{
-    Checked, KeyPath, Part, Table, file_table, invalid, key, only_keys, position, profile, required,
-};
+use crate::keys::{Checked, KeyPath, Part, Table, file_table, key, position, profile, required};
 use crate::profile::{Profile, ProfileKind, profile_keys};
-
-/// The `type` of an effect.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub(crate) enum EffectKind {
-    Torque,
-    Gravity,
-    Damping,
-    TorqueTable,
-}
 
 profile_keys!(EffectFile);
 
@@ -28,7 +14,7 @@ file_table! {
     /// One `[[effect]]`.
     pub(crate) struct EffectFile(pub(super)) "[[effect]]",
         "a moment on the body; any number, at most one gravity" {
-        opt kind as "type": EffectKind = key("\"torque\" | \"gravity\" | \"damping\" | \"torque_table\"", "–", "required", "", "the effect");
+        opt kind as "type": EffectKind = key(EffectKind::CHOICES, "–", "required", "", "the effect");
         opt frame: Axes = key("\"body\" | \"space\"", "–", "\"body\"", "", "torque and torque_table: the axes of the moment");
         arr value: [f64; 3] = key("[x, y, z]", "N·m", "required for `torque`", "", "the torque (amplitude for `sine`)");
         opt profile: ProfileKind = profile("torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off");
@@ -40,6 +26,15 @@ file_table! {
         opt file: std::path::PathBuf = key("path", "–", "required for `torque_table`", "", "CSV with header t,M_x,M_y,M_z (s, N·m), relative to the scene file; zero outside its rows");
         opt interpolation: Interpolation = key("\"linear\" | \"cubic\"", "–", "\"linear\"", "", "torque_table: between rows (cubic: the natural spline)");
     }
+    kinds {
+        /// The `type` of an effect.
+        pub(crate) enum EffectKind("effect type", "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\"") {
+            Torque = "torque": [frame, value, profile, freq_hz, phase_deg, t_on, t_off];
+            Gravity = "gravity": [g, pivot];
+            Damping = "damping": [c];
+            TorqueTable = "torque_table": [file, frame, interpolation];
+        }
+    }
 }
 
 impl Part for EffectSpec {
@@ -49,32 +44,7 @@ impl Part for EffectSpec {
     /// One `[[effect]]` (its table at `at`): its `type` and the keys that type takes.
     fn read(doc: &EffectFile, at: &KeyPath) -> Checked<Self> {
         let key = |name: &str| at.clone().key(name);
-        let Some(kind) = doc.kind else {
-            return invalid(
-                key("type"),
-                "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\"",
-            );
-        };
-        let (name, takes): (&str, &[&str]) = match kind {
-            EffectKind::Torque => (
-                "torque",
-                &[
-                    "frame",
-                    "value",
-                    "profile",
-                    "freq_hz",
-                    "phase_deg",
-                    "t_on",
-                    "t_off",
-                ],
-            ),
-            EffectKind::Gravity => ("gravity", &["g", "pivot"]),
-            EffectKind::Damping => ("damping", &["c"]),
-            EffectKind::TorqueTable => ("torque_table", &["file", "frame", "interpolation"]),
-        };
-        let kind_text = format!("effect type = \"{name}\"");
-        let given = doc.given();
-        only_keys(at, &kind_text, takes, &given)?;
+        let (kind, kind_text) = doc.kind_given(at)?;
         Ok(match kind {
             EffectKind::Torque => EffectSpec::Torque(TorqueSpec {
                 frame: doc.frame.unwrap_or(Axes::Body),

@@ -108,6 +108,15 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 ///     }
 ///     either { axis, tilt_deg: "…"; }
 ///     parts { #[derive(Debug, Clone, Copy, Default, PartialEq)] pub struct AxisParts; }
+///     kinds {
+///         /// The `type` of a motion.
+///         pub enum MotionKind("motion type", "missing: the motion needs `type` = …") {
+///             /// `free`.
+///             Free = "free": [];
+///             /// `fixed_axis`.
+///             FixedAxis = "fixed_axis": [axis, tilt_deg, rate, ..parts, accel];
+///         }
+///     }
 /// }
 /// ```
 ///
@@ -121,7 +130,11 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// both, naming `B`. An optional `parts { … struct NAME; }` makes the typed struct of the `part` keys (a field
 /// `Option<SPEC>` each) with `NAMES`, `read` and `write` (the file form and back), `refuse_unattached` and
 /// `attach` (each part [`Attach`](super::Attach)ed to the validated value, in order): a capability with its own
-/// table is registered by its one `part` line.
+/// table is registered by its one `part` line. An optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
+/// declares the table's `type` (its field `kind`) once: each variant, the name a file gives it and the keys it
+/// takes (`..parts`: the table's parts). It makes the enum (serde by those names), `KIND::CHOICES` (`"a" | "b"`, for
+/// the `type` key's reference), `name()`, and the table's `kind_given()`: the `type` (else `MISSING`, at `type`)
+/// with every key given checked against the ones it takes (`WHAT = "NAME" takes no …`).
 macro_rules! file_table {
     (@munch $head:tt [$($done:tt)*] [$($parts:tt)*]) => { file_table!(@emit $head [$($parts)*] $($done)*); };
     (@munch $head:tt [$($done:tt)*] $parts:tt @sine; $($rest:tt)*) => {
@@ -218,7 +231,61 @@ macro_rules! file_table {
             }
         }
     };
-    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt $partsdecl:tt}
+    (@kinds $name:ident $partsdecl:tt []) => {};
+    (@kinds $name:ident $partsdecl:tt [$(#[$km:meta])* $kvis:vis enum $kind:ident ($what:literal, $missing:literal) {
+        $($(#[$vm:meta])* $variant:ident = $vname:literal: [$($takes:tt)*];)+
+    }]) => {
+        $(#[$km])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+        $kvis enum $kind {
+            $($(#[$vm])* #[serde(rename = $vname)] $variant,)+
+        }
+
+        impl $kind {
+            /// The names a scene file gives, `"a" | "b" | …`, as the `type` key's reference lists them.
+            pub(crate) const CHOICES: &str = file_table!(@join $($vname)+);
+
+            /// The name a scene file gives this kind.
+            pub(crate) fn name(self) -> &'static str {
+                match self {
+                    $(Self::$variant => $vname,)+
+                }
+            }
+        }
+
+        impl $name {
+            /// The table's `type`, with every key given one that type takes (the table at `at`); with it the
+            /// text that messages about its keys begin with, `WHAT = "NAME"`.
+            pub(crate) fn kind_given(
+                &self,
+                at: &$crate::keys::KeyPath,
+            ) -> $crate::keys::Checked<($kind, String)> {
+                let Some(kind) = self.kind else {
+                    return $crate::keys::invalid(at.clone().key("type"), $missing);
+                };
+                let text = format!("{} = \"{}\"", $what, kind.name());
+                let takes: Vec<&str> = match kind {
+                    $($kind::$variant => file_table!(@takes takes $partsdecl [] $($takes)*),)+
+                };
+                $crate::keys::only_keys(at, &text, &takes, &self.given())?;
+                Ok((kind, text))
+            }
+        }
+    };
+    (@join $first:literal $($rest:literal)*) => { concat!("\"", $first, "\"", $(" | \"", $rest, "\""),*) };
+    (@takes $v:ident $parts:tt [$($acc:tt)*]) => {{
+        #[allow(unused_mut)]
+        let mut $v = Vec::new();
+        $($acc)*
+        $v
+    }};
+    (@takes $v:ident [$(#[$pm:meta])* $pvis:vis $pname:ident] [$($acc:tt)*] ..parts $(, $($rest:tt)*)?) => {
+        file_table!(@takes $v [$pname] [$($acc)* $v.extend_from_slice($pname::NAMES);] $($($rest)*)?)
+    };
+    (@takes $v:ident $parts:tt [$($acc:tt)*] $key:ident $(, $($rest:tt)*)?) => {
+        file_table!(@takes $v $parts [$($acc)* $v.push(stringify!($key));] $($($rest)*)?)
+    };
+    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt $partsdecl:tt $kindsdecl:tt}
         [$(($pm:tt $pfield:ident $pspec:ty))*]
         $(($store:ident [$($m:tt)*] [$($serde:tt)*] $field:ident [$($rename:literal)?] $ty:ty; $key:expr))*) => {
         $($meta)*
@@ -250,12 +317,14 @@ macro_rules! file_table {
 
         file_table!(@either $name $either);
         file_table!(@parts $vis $name $partsdecl [$(($pm $pfield $pspec))*]);
+        file_table!(@kinds $name $partsdecl $kindsdecl);
     };
     ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }
         $(either { $($a:ident, $b:ident: $message:literal;)+ })?
-        $(parts { $(#[$pmeta:meta])* $pvis:vis struct $pname:ident; })?) => {
+        $(parts { $(#[$pmeta:meta])* $pvis:vis struct $pname:ident; })?
+        $(kinds { $($kinds:tt)* })?) => {
         file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b $message))+)?]
-            [$($(#[$pmeta])* $pvis $pname)?]} [] [] $($body)*);
+            [$($(#[$pmeta])* $pvis $pname)?] [$($($kinds)*)?]} [] [] $($body)*);
     };
 }
 

@@ -9,6 +9,8 @@ pub mod exact_flow;
 pub mod fixed_axis;
 pub mod free;
 pub mod hinge;
+pub(crate) mod keys;
 pub mod lie_poisson;
 pub mod moving_support;
+pub mod spec;
 pub mod support;

@@ -110,16 +110,13 @@ fn the_wheels_are_registered_in_the_listed_lines_only() {
 fn the_carrier_is_named_only_in_its_folder_and_its_part_line() {
     let registrations = [
         ("motion/mod.rs", "pub mod carrier;"),
+        ("motion/keys.rs", "use super::carrier::spec::CarrierSpec;"),
+        ("motion/keys.rs", "part carrier: CarrierSpec"),
         (
-            "scene/spec/file_form.rs",
-            "use crate::motion::carrier::spec::CarrierSpec;",
+            "motion/spec.rs",
+            "pub use super::carrier::spec::{CarrierSpec, VehicleSpec};",
         ),
-        ("scene/spec/file_form.rs", "part carrier: CarrierSpec"),
-        (
-            "scene/spec/motion.rs",
-            "pub use crate::motion::carrier::spec::{CarrierSpec, VehicleSpec};",
-        ),
-        ("scene/spec/motion.rs", "CarrierSpec"),
+        ("motion/spec.rs", "CarrierSpec"),
         ("scene/spec/mod.rs", "CarrierSpec"),
         ("scene/spec/mod.rs", "VehicleSpec"),
         ("scene/mod.rs", "CarrierSpec"),
@@ -166,4 +163,22 @@ fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registratio
             outside.join("\n")
         );
     }
+}
+
+#[test]
+fn the_motion_table_is_named_only_in_its_folder_and_its_registration() {
+    let registrations = [
+        (
+            "scene/spec/file_form.rs",
+            "use crate::motion::keys::MotionFile;",
+        ),
+        ("scene/spec/file_form.rs", "opt motion: MotionFile"),
+        ("scene/reference/mod.rs", "MotionFile"),
+    ];
+    let outside = named_outside("motion/", &["MotionFile", "motion::keys"], &registrations);
+    assert!(
+        outside.is_empty(),
+        "outside src/motion/:\n{}",
+        outside.join("\n")
+    );
 }

@@ -10,9 +10,8 @@
 use crate::effects::EffectFile;
 use crate::events::EventFile;
 pub use crate::keys::{Key, Table};
-use crate::scene::spec::file_form::{
-    BodyFile, InitialFile, MotionFile, PointMassFile, SceneFile, ShapeFile,
-};
+use crate::motion::keys::MotionFile;
+use crate::scene::spec::file_form::{BodyFile, InitialFile, PointMassFile, SceneFile, ShapeFile};
 use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
 use crate::wheels::RotorFile;
 

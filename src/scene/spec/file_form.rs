@@ -4,15 +4,13 @@
 //! internally tagged enums. The typed [`super::SceneSpec`] is read and written through this form; `[solver]`,
 //! `[output]` and `[compare]` have no keys that depend on another, so their tables are their typed specs.
 
-use serde::{Deserialize, Serialize};
-
-use super::{InertiaSpec, MotionKind};
+use super::InertiaSpec;
 use crate::effects::EffectFile;
 use crate::events::EventFile;
 use crate::frames::Form;
 use crate::keys::{file_table, key, position};
 use crate::method::{Backend, Method};
-use crate::motion::carrier::spec::CarrierSpec;
+use crate::motion::keys::MotionFile;
 use crate::wheels::RotorFile;
 
 file_table! {
@@ -57,59 +55,28 @@ file_table! {
     }
 }
 
-/// The `type` of a shape.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub(super) enum ShapeKind {
-    ThinDisk,
-    Disk,
-    ThinRod,
-    Sphere,
-    Box,
-    Cylinder,
-}
-
 file_table! {
     /// `body.shape`. Disks and cylinders have their symmetry axis along body z; the thin rod lies along body x.
     #[derive(Copy)]
     pub(in crate::scene) struct ShapeFile(pub(super)) "[body.shape]",
         "a shape of uniform density (disks and cylinders: symmetry axis along body z; the thin rod along body x)" {
-        opt kind as "type": ShapeKind = key("\"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"", "–", "required", "", "the shape");
+        opt kind as "type": ShapeKind = key(ShapeKind::CHOICES, "–", "required", "", "the shape");
         opt radius: f64 = key("number", "m", "required for disks, cylinder, sphere", "", "> 0");
         opt thickness: f64 = key("number", "m", "required for `disk`", "", "≥ 0");
         opt length: f64 = key("number", "m", "required for `thin_rod`", "", "> 0");
         arr size: [f64; 3] = key("[a, b, c]", "m", "required for `box`", "", "edges along body x, y, z");
         opt height: f64 = key("number", "m", "required for `cylinder`", "", "> 0");
     }
-}
-
-file_table! {
-    /// `[motion]`.
-    #[derive(Copy)]
-    pub(in crate::scene) struct MotionFile(pub(super)) "[motion]",
-        "absent: free rotation" {
-        opt kind as "type": MotionKind = key("\"free\" | \"fixed_axis\" | \"hinge\"", "–", "required in the table", "", "free (no other keys), a prescribed rotation about a fixed axis, or a hinge (θ from the effects)");
-        arr axis: [f64; 3] = key("[x, y, z]", "–", "`axis` or `tilt_deg` required", "", "the fixed axis's direction in body axes, normalised; not zero");
-        opt tilt_deg: f64 = key("number", "deg", "none", "", "instead of `axis`: axis = (0, −sin tilt, cos tilt)");
-        opt rate: f64 = key("number", "rad/s", "0", "", "θ̇ at t = 0");
-        opt rate_rpm: f64 = key("number", "rpm", "none", "", "instead of `rate`: rate = rate_rpm · 2π/60");
-        opt accel: f64 = key("number", "rad/s²", "0", "", "constant θ̈; fixed axis only");
-        arr point: [f64; 3] = position("[0, 0, 0]", "a point of the axis: the moment center");
-        opt angle_deg: f64 = key("number", "deg", "0", "", "hinge only: θ at t = 0");
-        arr bearings: [f64; 2] = key("[a, b]", "m", "none", "from `point`, along the axis", "positions of bearings A and B, a ≠ b; adds the `R_*` columns");
-        arr axis_in_space: [f64; 3] = key("[x, y, z]", "–", "none", "", "the axis's direction in space axes: the attitude at t = 0 puts the body axis on it (instead of `initial.attitude`)");
-        /// `carrier`: the axis, its point and its bearings are fixed in a carrier turning in space.
-        part carrier: CarrierSpec = key("inline table", "–", "none", "", "the axis turns with a carrier: `[motion.carrier]`");
-    }
-    either {
-        axis, tilt_deg: "give either `axis` or `tilt_deg`, not both";
-        rate, rate_rpm: "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both";
-    }
-    parts {
-        /// The capabilities with a table of their own in `[motion]` that modify a fixed axis or hinge (each a
-        /// `keys::Part`, registered by its `part` line in `[motion]`'s declaration).
-        #[derive(Debug, Clone, Copy, Default, PartialEq)]
-        pub struct AxisParts;
+    kinds {
+        /// The `type` of a shape.
+        pub(in crate::scene) enum ShapeKind("shape type", "missing: the shape needs `type` = \"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"") {
+            ThinDisk = "thin_disk": [radius];
+            Disk = "disk": [radius, thickness];
+            ThinRod = "thin_rod": [length];
+            Sphere = "sphere": [radius];
+            Box = "box": [size];
+            Cylinder = "cylinder": [radius, height];
+        }
     }
 }
 

@@ -3,15 +3,12 @@
 //! requires; each failure names the key (the TOML front end adds its line). The values themselves (finite, in
 //! range) are validation's ([`SceneSpec::build`]).
 
-use super::file_form::{
-    BodyFile, InitialFile, MotionFile, PointMassFile, SceneFile, ShapeFile, ShapeKind,
-};
+use super::file_form::{BodyFile, InitialFile, PointMassFile, SceneFile, ShapeFile, ShapeKind};
 use super::{
-    AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, Distribution, EffectSpec,
-    EventSpec, FixedAxisSpec, HingeSpec, InitialSpec, MotionKind, MotionSpec, PointMassSpec,
-    RateSpec, RotorSpec, SceneSpec, ShapeSpec,
+    AttitudeSpec, BodySpec, Distribution, EffectSpec, EventSpec, InitialSpec, MotionSpec,
+    PointMassSpec, RotorSpec, SceneSpec, ShapeSpec,
 };
-use crate::keys::{Checked, Part, invalid, only_keys, required};
+use crate::keys::{Checked, Part, invalid, required};
 use crate::scene::source_map::KeyPath;
 
 impl SceneFile {
@@ -21,7 +18,9 @@ impl SceneFile {
             name: self.name,
             description: self.description,
             body: body(self.body)?,
-            motion: self.motion.as_ref().map(motion).transpose()?,
+            motion: (self.motion.as_ref())
+                .map(|m| MotionSpec::read(m, &KeyPath::root().key("motion")))
+                .transpose()?,
             initial: self.initial.map(initial).transpose()?,
             effect: (self.effect.iter().enumerate())
                 .map(|(i, e)| EffectSpec::read(e, &KeyPath::root().key("effect").index(i)))
@@ -72,23 +71,7 @@ fn body(doc: BodyFile) -> Checked<BodySpec> {
 /// `body.shape`: its `type` and the keys that type takes.
 fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
     let table = KeyPath::root().key("body").key("shape");
-    let Some(kind) = doc.kind else {
-        return invalid(
-            table.key("type"),
-            "missing: the shape needs `type` = \"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"",
-        );
-    };
-    let (name, takes): (&str, &[&str]) = match kind {
-        ShapeKind::ThinDisk => ("thin_disk", &["radius"]),
-        ShapeKind::Disk => ("disk", &["radius", "thickness"]),
-        ShapeKind::ThinRod => ("thin_rod", &["length"]),
-        ShapeKind::Sphere => ("sphere", &["radius"]),
-        ShapeKind::Box => ("box", &["size"]),
-        ShapeKind::Cylinder => ("cylinder", &["radius", "height"]),
-    };
-    let kind_text = format!("shape type = \"{name}\"");
-    let given = doc.given();
-    only_keys(&table, &kind_text, takes, &given)?;
+    let (kind, kind_text) = doc.kind_given(&table)?;
     let need = |name: &str, v: Option<f64>| required(table.clone().key(name), v, &kind_text);
     Ok(match kind {
         ShapeKind::ThinDisk => ShapeSpec::thin_disk(need("radius", doc.radius)?),
@@ -104,77 +87,6 @@ fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
         ShapeKind::Cylinder => {
             ShapeSpec::cylinder(need("radius", doc.radius)?, need("height", doc.height)?)
         }
-    })
-}
-
-/// `[motion]`: its `type` and the keys that type takes.
-fn motion(doc: &MotionFile) -> Checked<MotionSpec> {
-    let table = || KeyPath::root().key("motion");
-    let given = doc.given();
-    const AXIS_KEYS: [&str; 7] = [
-        "axis",
-        "tilt_deg",
-        "rate",
-        "rate_rpm",
-        "point",
-        "bearings",
-        "axis_in_space",
-    ];
-    let takes = |extra: &'static str| [&AXIS_KEYS[..], AxisParts::NAMES, &[extra]].concat();
-    match doc.kind {
-        None => invalid(
-            table().key("type"),
-            "missing: the motion needs `type` = \"free\", \"fixed_axis\" or \"hinge\"",
-        ),
-        Some(MotionKind::Free) => {
-            AxisParts::refuse_unattached(doc, &table())?;
-            only_keys(&table(), "motion type = \"free\"", &[], &given)?;
-            Ok(MotionSpec::Free)
-        }
-        Some(MotionKind::FixedAxis) => {
-            let kind = "motion type = \"fixed_axis\"";
-            only_keys(&table(), kind, &takes("accel"), &given)?;
-            Ok(MotionSpec::FixedAxis(FixedAxisSpec {
-                axis: axis(doc)?,
-                accel: doc.accel.unwrap_or(0.0),
-            }))
-        }
-        Some(MotionKind::Hinge) => {
-            let kind = "motion type = \"hinge\"";
-            only_keys(&table(), kind, &takes("angle_deg"), &given)?;
-            Ok(MotionSpec::Hinge(HingeSpec {
-                axis: axis(doc)?,
-                angle_deg: doc.angle_deg.unwrap_or(0.0),
-            }))
-        }
-    }
-}
-
-/// The keys of a fixed-axis or hinge motion's axis: `axis` or `tilt_deg`, `rate` or `rate_rpm`.
-fn axis(doc: &MotionFile) -> Checked<AxisSpec> {
-    let motion = || KeyPath::root().key("motion");
-    doc.exclusive(&motion())?;
-    let direction = match (doc.axis, doc.tilt_deg) {
-        (None, None) => {
-            return invalid(
-                motion(),
-                "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
-            );
-        }
-        (Some(a), _) => AxisDirection::Body(a),
-        (None, Some(tilt)) => AxisDirection::TiltDeg(tilt),
-    };
-    let rate = match (doc.rate, doc.rate_rpm) {
-        (None, Some(rpm)) => RateSpec::Rpm(rpm),
-        (rate, _) => RateSpec::RadPerSecond(rate.unwrap_or(0.0)),
-    };
-    Ok(AxisSpec {
-        direction,
-        rate,
-        point: doc.point.unwrap_or([0.0; 3]),
-        bearings: doc.bearings,
-        axis_in_space: doc.axis_in_space,
-        parts: AxisParts::read(doc, &motion())?,
     })
 }
 
@@ -200,7 +112,7 @@ impl From<&SceneSpec> for SceneFile {
             name: spec.name.clone(),
             description: spec.description.clone(),
             body: body_file(&spec.body),
-            motion: spec.motion.as_ref().map(motion_file),
+            motion: spec.motion.as_ref().map(Part::write),
             initial: spec.initial.map(|i| InitialFile {
                 omega: i.omega,
                 attitude: match i.attitude {
@@ -275,46 +187,6 @@ fn shape_file(shape: &ShapeSpec) -> ShapeFile {
     }
 }
 
-fn motion_file(motion: &MotionSpec) -> MotionFile {
-    let of_axis = |kind, axis: &AxisSpec| {
-        let (rate, rate_rpm) = match axis.rate {
-            RateSpec::RadPerSecond(rate) => (Some(rate), None),
-            RateSpec::Rpm(rpm) => (None, Some(rpm)),
-        };
-        let (axis_b, tilt_deg) = match axis.direction {
-            AxisDirection::Body(a) => (Some(a), None),
-            AxisDirection::TiltDeg(tilt) => (None, Some(tilt)),
-        };
-        let mut file = MotionFile {
-            kind: Some(kind),
-            axis: axis_b,
-            tilt_deg,
-            rate,
-            rate_rpm,
-            point: Some(axis.point),
-            bearings: axis.bearings,
-            axis_in_space: axis.axis_in_space,
-            ..MotionFile::default()
-        };
-        axis.parts.write(&mut file);
-        file
-    };
-    match motion {
-        MotionSpec::Free => MotionFile {
-            kind: Some(MotionKind::Free),
-            ..MotionFile::default()
-        },
-        MotionSpec::FixedAxis(m) => MotionFile {
-            accel: Some(m.accel),
-            ..of_axis(MotionKind::FixedAxis, &m.axis)
-        },
-        MotionSpec::Hinge(m) => MotionFile {
-            angle_deg: Some(m.angle_deg),
-            ..of_axis(MotionKind::Hinge, &m.axis)
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use std::path::Path;
@@ -323,7 +195,8 @@ mod tests {
     use crate::frames::Axes;
     use crate::profile::Profile;
     use crate::scene::{
-        CarrierSpec, InertiaSpec, RotorDrive, TorqueSpec, TorqueTableSpec, parse_spec,
+        CarrierSpec, FixedAxisSpec, HingeSpec, InertiaSpec, RateSpec, RotorDrive, TorqueSpec,
+        TorqueTableSpec, parse_spec,
     };
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,

@@ -9,7 +9,6 @@
 mod body;
 pub(in crate::scene) mod file_form;
 mod from_file;
-mod motion;
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -18,14 +17,14 @@ use crate::method::Method;
 
 pub use crate::effects::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use crate::events::{ConditionSpec, Direction, EventSpec, Extremum};
+pub use crate::motion::spec::{
+    AxisDirection, AxisParts, AxisSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
+    MotionSpec, RateSpec, VehicleSpec,
+};
 pub use crate::wheels::{RotorDrive, RotorSpec};
 pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
 pub(in crate::scene) use file_form::SceneFile;
 pub use file_form::{CompareSpec, OutputSpec, SolverSpec};
-pub use motion::{
-    AxisDirection, AxisParts, AxisSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
-    MotionSpec, RateSpec, VehicleSpec,
-};
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).
 #[derive(Debug, Clone, PartialEq)]

@@ -1,21 +1,8 @@
-//! `[motion]`: free rotation, a prescribed rotation about a fixed axis, or a hinge driven by the effects.
+//! `[motion]` as a typed value: free rotation, a prescribed rotation about a fixed axis, or a hinge driven by the
+//! effects (its keys: [`super::keys`]).
 
-use serde::{Deserialize, Serialize};
-
-pub use super::file_form::AxisParts;
-pub use crate::motion::carrier::spec::{CarrierSpec, VehicleSpec};
-
-/// A motion's `type`, as the scene file and the sidecar write it: `free`, `fixed_axis`, `hinge`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum MotionKind {
-    /// `free`.
-    Free,
-    /// `fixed_axis`.
-    FixedAxis,
-    /// `hinge`.
-    Hinge,
-}
+pub use super::carrier::spec::{CarrierSpec, VehicleSpec};
+pub use super::keys::{AxisParts, MotionKind};
 
 /// `[motion]`, by its `type`.
 #[derive(Debug, Clone, Copy, PartialEq)]
