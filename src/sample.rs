@@ -39,8 +39,10 @@ pub struct Sample {
     pub support: Option<SupportLoads>,
     /// With gravity: the potential energy V = −m g·r_C, r_C from the moment center in space axes (J).
     pub potential: Option<f64>,
-    /// With rotors: each wheel's relative spin, axial momentum and motor torque.
-    pub rotors: Option<RotorRows>,
+    /// What a capability with state of its own adds to the row (a body's wheels: each one's spin, momentum and
+    /// torques), in the order its column group reads them; its folder gives the typed view
+    /// (`wheels::RotorRows::of`).
+    pub capability_values: Option<CapabilityValues>,
 }
 
 impl Sample {
@@ -68,31 +70,45 @@ impl Sample {
             h_o_s_integrated: None,
             support: None,
             potential: None,
-            rotors: None,
+            capability_values: None,
         }
     }
 }
 
-/// The most rotors a body may carry (a reaction-wheel pyramid has four).
-pub const MAX_ROTORS: usize = 4;
+/// The values a capability with state of its own adds to one row: at most [`CapabilityValues::CAPACITY`] numbers,
+/// written by the capability's row and read back by its column group (a fixed-size array, so a row stays `Copy`
+/// and costs no allocation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CapabilityValues {
+    len: usize,
+    values: [f64; CapabilityValues::CAPACITY],
+}
 
-/// The rotors' values in one row, the first `n` entries used: relative spin Ω_k (rad/s), the wheel's axial moment
-/// of momentum J_k(a_k·ω + Ω_k) (N·m·s), the motor torque τ_k applied to the wheel (N·m), the torque commanded
-/// (before the limits) and the friction torque on the wheel (N·m).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct RotorRows {
-    /// The number of wheels.
-    pub n: usize,
-    /// Ω_k (rad/s).
-    pub spin: [f64; MAX_ROTORS],
-    /// J_k(a_k·ω + Ω_k) (N·m·s).
-    pub h: [f64; MAX_ROTORS],
-    /// τ_k applied (N·m).
-    pub torque: [f64; MAX_ROTORS],
-    /// τ_k commanded (N·m).
-    pub torque_cmd: [f64; MAX_ROTORS],
-    /// Friction torque on the wheel (N·m).
-    pub friction: [f64; MAX_ROTORS],
+impl CapabilityValues {
+    /// The most values a row holds (five for each of four wheels).
+    pub const CAPACITY: usize = 20;
+
+    /// The values `values`, or `None` when there are more than [`Self::CAPACITY`].
+    ///
+    /// ```
+    /// use eulerdyn::sample::CapabilityValues;
+    /// let v = CapabilityValues::new(&[1.0, 2.0]).unwrap();
+    /// assert_eq!(v.as_slice(), &[1.0, 2.0]);
+    /// assert!(CapabilityValues::new(&[0.0; 21]).is_none());
+    /// ```
+    pub fn new(values: &[f64]) -> Option<Self> {
+        let mut all = [0.0; Self::CAPACITY];
+        all.get_mut(..values.len())?.copy_from_slice(values);
+        Some(Self {
+            len: values.len(),
+            values: all,
+        })
+    }
+
+    /// The values, in the order they were given.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.values[..self.len]
+    }
 }
 
 /// What the support of a body turning about a fixed axis supplies: the force F_sup = m a_C − Σ F_effects, the

@@ -265,7 +265,7 @@ macro_rules! file_table {
                 };
                 let text = format!("{} = \"{}\"", $what, kind.name());
                 let takes: Vec<&str> = match kind {
-                    $($kind::$variant => file_table!(@takes takes $partsdecl [] $($takes)*),)+
+                    $($kind::$variant => file_table!(@takes $partsdecl [] $($takes)*),)+
                 };
                 $crate::keys::only_keys(at, &text, &takes, &self.given())?;
                 Ok((kind, text))
@@ -273,17 +273,15 @@ macro_rules! file_table {
         }
     };
     (@join $first:literal $($rest:literal)*) => { concat!("\"", $first, "\"", $(" | \"", $rest, "\""),*) };
-    (@takes $v:ident $parts:tt [$($acc:tt)*]) => {{
-        #[allow(unused_mut)]
-        let mut $v = Vec::new();
-        $($acc)*
-        $v
+    (@takes $parts:tt [$($acc:tt)*]) => {{
+        let slices: &[&[&str]] = &[$($acc)*];
+        slices.concat()
     }};
-    (@takes $v:ident [$(#[$pm:meta])* $pvis:vis $pname:ident] [$($acc:tt)*] ..parts $(, $($rest:tt)*)?) => {
-        file_table!(@takes $v [$pname] [$($acc)* $v.extend_from_slice($pname::NAMES);] $($($rest)*)?)
+    (@takes [$(#[$pm:meta])* $pvis:vis $pname:ident] [$($acc:tt)*] ..parts $(, $($rest:tt)*)?) => {
+        file_table!(@takes [$pname] [$($acc)* $pname::NAMES,] $($($rest)*)?)
     };
-    (@takes $v:ident $parts:tt [$($acc:tt)*] $key:ident $(, $($rest:tt)*)?) => {
-        file_table!(@takes $v $parts [$($acc)* $v.push(stringify!($key));] $($($rest)*)?)
+    (@takes $parts:tt [$($acc:tt)*] $key:ident $(, $($rest:tt)*)?) => {
+        file_table!(@takes $parts [$($acc)* &[stringify!($key)],] $($($rest)*)?)
     };
     (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt $partsdecl:tt $kindsdecl:tt}
         [$(($pm:tt $pfield:ident $pspec:ty))*]

@@ -533,7 +533,7 @@ impl FixedAxis {
             h_o_s_integrated: None,
             support: Some(self.support(&angle, rotation, &m_s, m_eff_s)),
             potential: None,
-            rotors: None,
+            capability_values: None,
         }
     }
 }

@@ -4,7 +4,8 @@
 use std::borrow::Cow;
 
 use super::gyrostat::Gyrostat;
-use crate::sample::{Column, ColumnGroup, MAX_ROTORS, Sample};
+use super::rows::PER_WHEEL;
+use crate::sample::{Column, ColumnGroup, Sample};
 
 /// The columns' suffixes, units and meanings: the first three for every rotor, all five under control.
 const SUFFIXES: [(&str, &str, &str); 5] = [
@@ -46,7 +47,8 @@ pub fn rotor_columns(names: &[String], controlled: bool) -> Vec<Column> {
         .collect()
 }
 
-/// The wheels' column group ([`rotor_columns`]), whose values come from each row's [`crate::sample::RotorRows`].
+/// The wheels' column group ([`rotor_columns`]), whose values come from each row's wheel values
+/// ([`super::RotorRows`]).
 ///
 /// ```
 /// let group = eulerdyn::wheels::columns(&["a".to_string(), "b".to_string()], false);
@@ -73,18 +75,17 @@ impl Gyrostat {
     }
 }
 
-/// `WIDTH` values for each wheel the columns name, NaN for a wheel the row lacks.
+/// `WIDTH` values for each wheel the columns name (the first `WIDTH` of its [`PER_WHEEL`]), NaN for a wheel the
+/// row lacks.
 fn wheel_values<const WIDTH: usize>(s: &Sample, columns: &[Column], out: &mut Vec<f64>) {
-    let rows = s.rotors.unwrap_or_default();
-    let fields: [&[f64; MAX_ROTORS]; 5] = [
-        &rows.spin,
-        &rows.h,
-        &rows.torque,
-        &rows.torque_cmd,
-        &rows.friction,
-    ];
+    let values = s
+        .capability_values
+        .as_ref()
+        .map_or(&[][..], |v| v.as_slice());
     for k in 0..columns.len() / WIDTH {
-        let value = |v: &&[f64; MAX_ROTORS]| if k < rows.n { v[k] } else { f64::NAN };
-        out.extend(fields[..WIDTH].iter().map(value));
+        match values.get(k * PER_WHEEL..k * PER_WHEEL + WIDTH) {
+            Some(wheel) => out.extend_from_slice(wheel),
+            None => out.extend([f64::NAN; WIDTH]),
+        }
     }
 }

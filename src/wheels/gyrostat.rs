@@ -29,12 +29,13 @@ use nalgebra::{Matrix3, Quaternion, SVector, SymmetricEigen, Unit, UnitQuaternio
 
 use std::sync::Arc;
 
+use super::{MAX_ROTORS, RotorRows};
 use super::{Wheel, WheelControl, WheelInputs, WheelSolve, WheelTorqueLaw};
 use crate::effects::{AppliedMoment, TorqueSum, TorqueTable};
 use crate::frames::{BodyAxes, Form, StateRotation, Vector};
 use crate::integrate::OdeSystem;
 use crate::motion::free::{self, FreeBody};
-use crate::sample::{MAX_ROTORS, RotorRows, Sample};
+use crate::sample::Sample;
 
 /// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4, φ_1, …, φ_4).
 pub type State = SVector<f64, 15>;
@@ -449,7 +450,7 @@ impl Gyrostat {
         let mut sample =
             free::free_sample(t, q, omega_b, (h_b, h_b.in_space(&q)), Vector::new(m_b));
         sample.energy = self.kinetic_energy(&omega_b, &y.as_slice()[7..ANGLES]);
-        sample.rotors = Some(rows);
+        sample.capability_values = Some(rows.values());
         sample
     }
 }

@@ -23,6 +23,7 @@ pub mod gyrostat;
 mod keys;
 mod law;
 mod limits;
+mod rows;
 mod solve;
 mod spec;
 mod table;
@@ -33,9 +34,13 @@ pub use columns::{columns, rotor_columns};
 pub(crate) use keys::RotorFile;
 pub use law::{AttitudePd, WheelInputs, WheelLaw, WheelTorqueLaw};
 pub use limits::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
+pub use rows::RotorRows;
 pub use solve::{STICK_SPEED, Wheel, WheelSolve, solve};
 pub use spec::{RotorDrive, RotorSpec};
 pub use table::{WHEEL_TABLE_HEADER, read_wheel_table};
+
+/// The most rotors a body may carry (a reaction-wheel pyramid has four).
+pub const MAX_ROTORS: usize = 4;
 pub(crate) use validate::validate_rotors;
 
 /// One rpm in rad/s.

@@ -11,8 +11,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::MAX_ROTORS;
 use super::WheelControl;
-use crate::sample::MAX_ROTORS;
 
 /// The relative spin (rad/s) at or below which a wheel with Coulomb friction is at rest: far above the round-off
 /// of a spin (1e-16 of hundreds of rad/s) and the overshoot that an adaptive step's error control lets through at

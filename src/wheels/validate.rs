@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use nalgebra::{Unit, Vector3};
 
+use super::MAX_ROTORS;
 use super::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use super::read_wheel_table;
 use super::spec::{RotorDrive, RotorSpec};
@@ -12,7 +13,6 @@ use crate::effects::TorqueSum;
 use crate::frames::Vector;
 use crate::keys::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
 use crate::motion::free::FreeBody;
-use crate::sample::MAX_ROTORS;
 
 /// The gyrostat of a free `body` about its moment center (at `center_b` from the reference origin, body axes)
 /// with the scene's rotors `specs` (`[[body.rotor]]`); `None` without rotors.

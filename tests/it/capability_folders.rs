@@ -70,6 +70,8 @@ fn the_wheels_control_is_named_only_in_its_folder() {
         ".control",
         "max_torque",
         "max_speed",
+        "RotorRows",
+        "MAX_ROTORS",
     ];
     let outside = named_outside("wheels/", &names, &[]);
     assert!(

@@ -8,6 +8,7 @@ use crate::common::{assert_refused_writing_nothing, eulerdyn, write_file};
 use eulerdyn::profile::Profile;
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::{BodySpec, EffectSpec, RotorDrive, RotorSpec, SceneSpec};
+use eulerdyn::wheels::RotorRows;
 use eulerdyn::{Form, Method, simulate};
 
 fn rows(spec: &SceneSpec) -> Vec<Sample> {
@@ -51,7 +52,7 @@ fn a_motor_torque_exchanges_momentum_between_wheel_and_body() {
             let t = s.t;
             close(s.omega_b.x, -tau * t / (i_xx - j), 1e-9, "ω_x");
             assert!(s.omega_b.yz().norm() <= 1e-15, "ω stays on x");
-            let r = s.rotors.expect("rotor columns");
+            let r = RotorRows::of(&s).expect("rotor columns");
             close(r.spin[0], tau * t * i_xx / (j * (i_xx - j)), 1e-9, "Ω");
             close(
                 r.h[0],
@@ -79,7 +80,7 @@ fn a_prescribed_spin_up_reports_the_motor_torque_it_takes() {
         let body = BodySpec::principal(10.0, [i_xx, 3.0, 4.0]).with_rotor(wheel.clone());
         for s in rows(&tight(SceneSpec::new(body, 5.0, 0.5), form)) {
             close(s.omega_b.x, -j * alpha * s.t / i_xx, 1e-9, "ω_x");
-            let r = s.rotors.unwrap();
+            let r = RotorRows::of(&s).unwrap();
             close(r.spin[0], alpha * s.t, 1e-9, "Ω");
             close(r.torque[0], j * alpha * (i_xx - j) / i_xx, 1e-9, "τ");
         }
@@ -336,7 +337,7 @@ fn an_imbalanced_wheel_turns_its_force_and_couple_with_it() {
                     s.t,
                     s.m_o_b
                 );
-                close(s.rotors.unwrap().spin[0], spin, 1e-12, "Ω");
+                close(RotorRows::of(s).unwrap().spin[0], spin, 1e-12, "Ω");
             }
             by_form.push(rows);
         }
@@ -438,5 +439,5 @@ fn a_body_without_rotors_writes_no_rotor_columns() {
         .with_omega([0.1, 0.2, 0.3]);
     let scene = spec.build().unwrap();
     assert!(simulate::columns(&scene).groups.is_empty());
-    assert!(rows(&spec).iter().all(|s| s.rotors.is_none()));
+    assert!(rows(&spec).iter().all(|s| RotorRows::of(s).is_none()));
 }

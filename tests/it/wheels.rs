@@ -10,7 +10,7 @@ use crate::common::{assert_refused_writing_nothing, eulerdyn, write_file};
 use eulerdyn::profile::Profile;
 use eulerdyn::sample::Sample;
 use eulerdyn::scene::{BodySpec, RotorDrive, RotorSpec, SceneSpec};
-use eulerdyn::wheels::{FrictionKeys, STICK_SPEED, WheelKeys};
+use eulerdyn::wheels::{FrictionKeys, RotorRows, STICK_SPEED, WheelKeys};
 use eulerdyn::{Form, Method, simulate};
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -76,7 +76,7 @@ fn a_clipped_command_exchanges_momentum_at_the_limit() {
     for form in Form::ALL {
         for s in rows(&scene(wheel.clone(), form, 10.0, 0.5)) {
             close(s.omega_b.x, -tau_max * s.t / (I_XX - J), 1e-9, "ω_x");
-            let r = s.rotors.expect("rotor columns");
+            let r = RotorRows::of(&s).expect("rotor columns");
             close(
                 r.spin[0],
                 tau_max * s.t * I_XX / (J * (I_XX - J)),
@@ -110,7 +110,7 @@ fn the_speed_limit_holds_the_spin_at_the_limit() {
             "the run passes the limit"
         );
         for s in samples {
-            let r = s.rotors.expect("rotor columns");
+            let r = RotorRows::of(&s).expect("rotor columns");
             let spin = (tau * s.t * I_XX / (J * (I_XX - J))).min(omega_max);
             // Reaching the limit inside a step: the step's error control keeps the overshoot to the local
             // tolerance, 1e-12 relative and 1e-14 absolute, far below 1e-9.
@@ -149,7 +149,7 @@ fn a_free_wheel_under_viscous_friction_decays_exponentially() {
         let samples = rows(&scene(wheel.clone(), form, 20.0, 0.5));
         let mut energy = f64::INFINITY;
         for s in samples {
-            let r = s.rotors.expect("rotor columns");
+            let r = RotorRows::of(&s).expect("rotor columns");
             let spin = spin0 * (-c * I_XX * s.t / (J * (I_XX - J))).exp();
             close(r.spin[0], spin, 1e-9, "Ω");
             close(
@@ -178,7 +178,7 @@ fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter()
     for form in Form::ALL {
         let samples = rows(&scene(wheel.clone(), form, 2.0 * t_stop, t_stop / 16.0));
         for s in &samples {
-            let r = s.rotors.expect("rotor columns");
+            let r = RotorRows::of(s).expect("rotor columns");
             let spin = (spin0 - c * I_XX * s.t / (J * (I_XX - J))).max(0.0);
             // The stop: the spin is taken as at rest below STICK_SPEED, so it may end up to that above zero.
             assert!(
@@ -203,7 +203,7 @@ fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter()
         }
         // Stopped exactly once: after the stop the spin no longer changes.
         let after: Vec<f64> = (samples.iter().filter(|s| s.t > t_stop * 1.01))
-            .map(|s| s.rotors.unwrap().spin[0])
+            .map(|s| RotorRows::of(s).unwrap().spin[0])
             .collect();
         assert!(
             after.len() > 4 && after.windows(2).all(|w| w[0] == w[1]),
@@ -249,7 +249,7 @@ fn a_pd_law_through_one_wheel_gives_the_second_order_step_response() {
             let expected =
                 theta_t * (1.0 - decay * ((wd * t).cos() + zeta * wn / wd * (wd * t).sin()));
             close(theta, expected, 1e-9, "θ");
-            let r = s.rotors.unwrap();
+            let r = RotorRows::of(&s).unwrap();
             assert_eq!(
                 r.torque[0], r.torque_cmd[0],
                 "no limit: applied = commanded"
@@ -436,7 +436,7 @@ fn wheel_keys_are_sweepable_and_the_plot_has_wheel_panels() {
     let plan = eulerdyn::analysis::sweep::Sweep::load(&sweep).unwrap_or_else(|e| panic!("{e}"));
     let run = plan.scene(&plan.values(0)).unwrap();
     for s in rows(&run) {
-        let r = s.rotors.unwrap();
+        let r = RotorRows::of(&s).unwrap();
         assert_eq!(r.torque[0], 0.02, "the swept limit");
         assert_eq!(
             r.friction[0],
