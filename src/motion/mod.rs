@@ -12,5 +12,6 @@ pub mod hinge;
 pub(crate) mod keys;
 pub mod lie_poisson;
 pub mod moving_support;
+mod part;
 pub mod spec;
 pub mod support;

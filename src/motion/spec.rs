@@ -1,5 +1,5 @@
 //! `[motion]` as a typed value: free rotation, a prescribed rotation about a fixed axis, or a hinge driven by the
-//! effects (its keys: [`super::keys`]).
+//! effects (its keys: `motion/keys.rs`).
 
 pub use super::carrier::spec::{CarrierSpec, VehicleSpec};
 pub use super::keys::{AxisParts, MotionKind};
