@@ -65,7 +65,7 @@ fn child_peak_memory() {
         .write(true)
         .open("/dev/null")
         .expect("/dev/null opens");
-    let mut writer = CsvWriter::new(sink, simulate::columns(&scene)).expect("header written");
+    let mut writer = CsvWriter::new(sink, scene.facts().columns().clone()).expect("header written");
     let report = simulate::run(&scene, |s| writer.write(s)).expect("the run succeeds");
     writer.finish().expect("flushed");
     let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
@@ -88,7 +88,7 @@ fn sample_rows() -> (Vec<Sample>, ColumnSet) {
         Ok::<(), Infallible>(())
     })
     .expect("the run succeeds");
-    (rows, simulate::columns(&scene))
+    (rows, scene.facts().columns().clone())
 }
 
 /// Rows per second writing `passes` times every row of `rows` into `out`, flushed.

@@ -170,11 +170,11 @@ pub fn run<'py>(
         for warning in simulate::warnings_before_run(&scene_model) {
             warn(py, format!("{}: {warning}", input.path.display()))?;
         }
-        let columns = simulate::columns(&scene_model);
+        let columns = scene_model.facts().columns();
         let names: Vec<String> = (columns.columns().into_iter())
             .map(|c| c.name.into_owned())
             .collect();
-        let (result, bytes) = py.detach(|| simulate_rows(&scene_model, &columns, rows));
+        let (result, bytes) = py.detach(|| simulate_rows(&scene_model, columns, rows));
         for (law, name, what) in &law {
             if let Some(failure) = law.failure() {
                 let what = format!("the {what} function {name}()");

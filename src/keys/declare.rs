@@ -106,7 +106,7 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 ///         /// `carrier`: …
 ///         part carrier: CarrierSpec = key("inline table", "–", "none", "", "…");
 ///     }
-///     either { axis, tilt_deg: "…"; }
+///     either { axis, tilt_deg => AxisDirection::{Body, TiltDeg}: "…"; }
 ///     parts { #[derive(Debug, Clone, Copy, Default, PartialEq)] pub struct AxisParts; }
 ///     kinds {
 ///         /// The `type` of a motion.
@@ -127,7 +127,8 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`],
 /// with its parts' tables), and `given()`: the names of the keys the file gives, in order. An optional
 /// `either { A, B: "message"; … }` after the keys declares keys that exclude each other: `exclusive()` refuses
-/// both, naming `B`. An optional `parts { … struct NAME; }` makes the typed struct of the `part` keys (a field
+/// both, naming `B`; `A, B => T::{VA, VB}: "message";` also reads the pair as the typed choice `T` (`VA(a)` or
+/// `VB(b)`) and writes it back ([`Either`](super::Either)). An optional `parts { … struct NAME; }` makes the typed struct of the `part` keys (a field
 /// `Option<SPEC>` each) with `NAMES`, `read` and `write` (the file form and back), `refuse_unattached` and
 /// `attach` (each part [`Attach`](super::Attach)ed to the validated value, in order): a capability with its own
 /// table is registered by its one `part` line. An optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
@@ -174,7 +175,7 @@ macro_rules! file_table {
     (@given $value:expr, $optional:ident) => { $value.is_some() };
     (@name $field:ident $rename:literal) => { $rename };
     (@either $name:ident []) => {};
-    (@either $name:ident [$(($a:ident $b:ident $message:literal))+]) => {
+    (@either $name:ident [$(($a:ident $b:ident [$($typed:tt)*] $message:literal))+]) => {
         impl $name {
             /// Refuses keys given together that exclude each other (the declaration's `either`), naming the second.
             pub(crate) fn exclusive(&self, table: &$crate::keys::KeyPath) -> $crate::keys::Checked<()> {
@@ -182,6 +183,27 @@ macro_rules! file_table {
                     return $crate::keys::invalid(table.clone().key(stringify!($b)), $message);
                 })+
                 Ok(())
+            }
+        }
+        $(file_table!(@either_typed $name $a $b [$($typed)*]);)+
+    };
+    (@either_typed $name:ident $a:ident $b:ident []) => {};
+    (@either_typed $name:ident $a:ident $b:ident [$ty:ident $va:ident $vb:ident]) => {
+        impl $crate::keys::Either<$ty> for $name {
+            fn either(&self) -> Option<$ty> {
+                match (self.$a, self.$b) {
+                    (Some(a), _) => Some($ty::$va(a)),
+                    (None, Some(b)) => Some($ty::$vb(b)),
+                    (None, None) => None,
+                }
+            }
+
+            fn set_either(&mut self, choice: Option<$ty>) {
+                match choice {
+                    Some($ty::$va(a)) => self.$a = Some(a),
+                    Some($ty::$vb(b)) => self.$b = Some(b),
+                    None => {}
+                }
             }
         }
     };
@@ -318,10 +340,10 @@ macro_rules! file_table {
         file_table!(@kinds $name $partsdecl $kindsdecl);
     };
     ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }
-        $(either { $($a:ident, $b:ident: $message:literal;)+ })?
+        $(either { $($a:ident, $b:ident $(=> $ty:ident::{$va:ident, $vb:ident})?: $message:literal;)+ })?
         $(parts { $(#[$pmeta:meta])* $pvis:vis struct $pname:ident; })?
         $(kinds { $($kinds:tt)* })?) => {
-        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b $message))+)?]
+        file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b [$($ty $va $vb)?] $message))+)?]
             [$($(#[$pmeta])* $pvis $pname)?] [$($($kinds)*)?]} [] [] $($body)*);
     };
 }

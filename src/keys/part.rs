@@ -27,3 +27,13 @@ pub(crate) trait Attach<T>: Part {
     /// `to` with this part (its table at `at`).
     fn attach(&self, to: T, at: &KeyPath) -> Checked<T>;
 }
+
+/// Two keys of a table that exclude each other, read as the typed choice between them (a table's `either` pair
+/// declared `A, B => T::{VA, VB}`).
+pub(crate) trait Either<T> {
+    /// The choice the file gives: `VA(a)` when `A` is given, else `VB(b)`, else `None` (`exclusive()` has
+    /// refused both).
+    fn either(&self) -> Option<T>;
+    /// `choice` written back into its key.
+    fn set_either(&mut self, choice: Option<T>);
+}

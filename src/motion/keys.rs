@@ -4,6 +4,7 @@
 //! one line, `opt motion: MotionFile`.
 
 use super::carrier::spec::CarrierSpec;
+use super::spec::{AxisDirection, RateSpec};
 use crate::keys::{file_table, key, position};
 
 file_table! {
@@ -25,8 +26,8 @@ file_table! {
         part carrier: CarrierSpec = key("inline table", "–", "none", "", "the axis turns with a carrier: `[motion.carrier]`");
     }
     either {
-        axis, tilt_deg: "give either `axis` or `tilt_deg`, not both";
-        rate, rate_rpm: "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both";
+        axis, tilt_deg => AxisDirection::{Body, TiltDeg}: "give either `axis` or `tilt_deg`, not both";
+        rate, rate_rpm => RateSpec::{RadPerSecond, Rpm}: "give either `rate` (rad/s) or `rate_rpm` (revolutions per minute), not both";
     }
     parts {
         /// The capabilities with a table of their own in `[motion]` that modify a fixed axis or hinge (each a

@@ -3,8 +3,8 @@
 //! written back.
 
 use super::keys::{AxisParts, MotionFile, MotionKind};
-use super::spec::{AxisDirection, AxisSpec, FixedAxisSpec, HingeSpec, MotionSpec, RateSpec};
-use crate::keys::{Checked, KeyPath, Part, Table, invalid};
+use super::spec::{AxisSpec, FixedAxisSpec, HingeSpec, MotionSpec, RateSpec};
+use crate::keys::{Checked, Either, KeyPath, Part, Table, invalid};
 
 impl Part for MotionSpec {
     type File = MotionFile;
@@ -51,23 +51,15 @@ impl Part for MotionSpec {
 /// `rate_rpm`, and the parts.
 fn axis(doc: &MotionFile, at: &KeyPath) -> Checked<AxisSpec> {
     doc.exclusive(at)?;
-    let direction = match (doc.axis, doc.tilt_deg) {
-        (None, None) => {
-            return invalid(
-                at.clone(),
-                "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
-            );
-        }
-        (Some(a), _) => AxisDirection::Body(a),
-        (None, Some(tilt)) => AxisDirection::TiltDeg(tilt),
-    };
-    let rate = match (doc.rate, doc.rate_rpm) {
-        (None, Some(rpm)) => RateSpec::Rpm(rpm),
-        (rate, _) => RateSpec::RadPerSecond(rate.unwrap_or(0.0)),
+    let Some(direction) = doc.either() else {
+        return invalid(
+            at.clone(),
+            "a fixed-axis motion needs `axis = [x, y, z]` (body axes) or `tilt_deg`",
+        );
     };
     Ok(AxisSpec {
         direction,
-        rate,
+        rate: doc.either().unwrap_or(RateSpec::RadPerSecond(0.0)),
         point: doc.point.unwrap_or([0.0; 3]),
         bearings: doc.bearings,
         axis_in_space: doc.axis_in_space,
@@ -77,25 +69,15 @@ fn axis(doc: &MotionFile, at: &KeyPath) -> Checked<AxisSpec> {
 
 /// The file form of an axis motion of type `kind`, its own keys (`accel`, `angle_deg`) left to the caller.
 fn axis_file(kind: MotionKind, axis: &AxisSpec) -> MotionFile {
-    let (rate, rate_rpm) = match axis.rate {
-        RateSpec::RadPerSecond(rate) => (Some(rate), None),
-        RateSpec::Rpm(rpm) => (None, Some(rpm)),
-    };
-    let (axis_b, tilt_deg) = match axis.direction {
-        AxisDirection::Body(a) => (Some(a), None),
-        AxisDirection::TiltDeg(tilt) => (None, Some(tilt)),
-    };
     let mut file = MotionFile {
         kind: Some(kind),
-        axis: axis_b,
-        tilt_deg,
-        rate,
-        rate_rpm,
         point: Some(axis.point),
         bearings: axis.bearings,
         axis_in_space: axis.axis_in_space,
         ..MotionFile::default()
     };
+    file.set_either(Some(axis.direction));
+    file.set_either(Some(axis.rate));
     axis.parts.write(&mut file);
     file
 }

@@ -78,7 +78,7 @@ pub fn write_run_with_events(
             problem: "the output would overwrite the scene file; give another path".into(),
         });
     }
-    let columns = simulate::columns(scene);
+    let columns = scene.facts().columns().clone();
     let mut csv_file = AtomicFile::create(path).map_err(|e| WriteRunError::Output {
         file: path.to_path_buf(),
         problem: format!("cannot create the output file: {e}"),

@@ -20,7 +20,7 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
 use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
-use crate::sample::{ColumnSet, Sample};
+use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
 use crate::wheels::gyrostat::{self, Gyrostat, GyrostatForm};
 
@@ -95,11 +95,6 @@ impl RunFailed {
             reason: e.to_string(),
         }
     }
-}
-
-/// The optional columns a scene's run writes ([`crate::scene::Facts::columns`]).
-pub fn columns(scene: &Scene) -> ColumnSet {
-    scene.facts().columns().clone()
 }
 
 /// How a scene's method runs: a splitting scheme or the closed form (the project's own methods, stepped here), or
@@ -211,8 +206,8 @@ pub fn run_with_events<E: std::error::Error + 'static>(
         }
         sink(s).map_err(Stop::Sink)
     };
-    let mut locator =
-        (!scene.events.is_empty()).then(|| Locator::new(&scene.events, columns(scene)));
+    let mut locator = (!scene.events.is_empty())
+        .then(|| Locator::new(&scene.events, scene.facts().columns().clone()));
     let events = locator.as_mut();
     let stats = match &scene.motion {
         Motion::FixedAxis(motion) => run_fixed_axis(scene, motion, deliver, events),

@@ -1123,7 +1123,7 @@ fn the_facts_name_the_panels_a_runs_header_shows_for_every_bundled_scenario() {
     for path in &scenes {
         let scene = scene::load(path, &Overrides::default()).unwrap();
         let facts = scene.facts().clone();
-        let columns: Vec<String> = (eulerdyn::simulate::columns(&scene).columns().iter())
+        let columns: Vec<String> = (scene.facts().columns().columns().iter())
             .map(|c| c.name.to_string())
             .collect();
         let has = |c: &str| columns.iter().any(|n| n == c);

@@ -438,6 +438,6 @@ fn a_body_without_rotors_writes_no_rotor_columns() {
     let spec = SceneSpec::new(BodySpec::principal(1.0, [1.0, 2.0, 3.0]), 1.0, 0.5)
         .with_omega([0.1, 0.2, 0.3]);
     let scene = spec.build().unwrap();
-    assert!(simulate::columns(&scene).groups.is_empty());
+    assert!(scene.facts().columns().groups.is_empty());
     assert!(rows(&spec).iter().all(|s| RotorRows::of(s).is_none()));
 }

@@ -16,7 +16,6 @@ use crate::frames::{BodyAxes, Vector};
 use crate::motion::free::free_sample;
 use crate::sample::Sample;
 use crate::scene::Scene;
-use crate::simulate;
 
 /// Attitude error (rad) allowed: 0.57°, what a viewer notices on a body across a screen.
 pub const ATTITUDE_MAX: f64 = 1e-2;
@@ -178,7 +177,7 @@ fn angle(a: &Vector3<f64>, b: &Vector3<f64>) -> f64 {
 /// Per event of the scene, the error of each occurrence's time on their rows against the reference's, matched
 /// in order.
 fn event_metrics(scene: &Scene, theirs: &[Sample], reference: &Reference) -> Vec<Metric> {
-    let columns = simulate::columns(scene);
+    let columns = scene.facts().columns();
     let mut row = Vec::new();
     let values: Vec<Vec<f64>> = (scene.events.iter())
         .map(|e| {

@@ -283,8 +283,8 @@ impl Sweep {
             Ok(scene) => scene,
             Err(message) => return outcome(Status::Invalid, message, None, (0, 0)),
         };
-        let columns = simulate::columns(&scene);
-        let mut summarizer = Summarizer::new(&columns, &self.layout.summary);
+        let columns = scene.facts().columns();
+        let mut summarizer = Summarizer::new(columns, &self.layout.summary);
         let mut rows: Vec<Sample> = Vec::new();
         let result = simulate::run_with_events(&scene, |s: &Sample| {
             summarizer.add(s);
@@ -301,7 +301,7 @@ impl Sweep {
             Err(e) => return outcome(Status::Failed, e.to_string(), None, (0, 0)),
         };
         if let Some(write) = series
-            && let Err(e) = write(run, columns, &rows)
+            && let Err(e) = write(run, columns.clone(), &rows)
         {
             return outcome(Status::Failed, format!("time series: {e}"), None, (0, 0));
         }
@@ -411,7 +411,9 @@ fn layout(
         .ok()
         .and_then(|spec| spec.build().ok())
         .or_else(|| base.build().ok())
-        .map_or_else(Scene::all_own_columns, |scene| simulate::columns(&scene));
+        .map_or_else(Scene::all_own_columns, |scene| {
+            scene.facts().columns().clone()
+        });
     let columns = columns.columns();
     let names: Vec<&str> = columns.iter().map(|c| c.name.as_ref()).collect();
     if let Some(unknown) = summary.iter().find(|c| !names.contains(&c.as_str())) {

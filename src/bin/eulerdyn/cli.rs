@@ -331,7 +331,7 @@ fn run(args: &RunArgs, quiet: bool) -> Result<(), Failure> {
     for warning in simulate::warnings_before_run(&scene_model) {
         eprintln!("{}: warning: {warning}", args.scene.display());
     }
-    let columns = simulate::columns(&scene_model);
+    let columns = scene_model.facts().columns().clone();
     let mut progress = Progress::bar(
         "run",
         "t",

@@ -4,7 +4,7 @@
 //! internally tagged enums. The typed [`super::SceneSpec`] is read and written through this form; `[solver]`,
 //! `[output]` and `[compare]` have no keys that depend on another, so their tables are their typed specs.
 
-use super::InertiaSpec;
+use super::{AttitudeSpec, InertiaSpec};
 use crate::effects::EffectFile;
 use crate::events::EventFile;
 use crate::frames::Form;
@@ -90,7 +90,7 @@ file_table! {
         arr attitude_euler_deg: [f64; 3] = key("[z, y, x]", "deg", "none", "", "instead of `attitude`: intrinsic z-y′-x″ angles, R = R_z R_y′ R_x″");
     }
     either {
-        attitude, attitude_euler_deg: "give either `attitude` or `attitude_euler_deg`, not both";
+        attitude, attitude_euler_deg => AttitudeSpec::{Quaternion, EulerDeg}: "give either `attitude` or `attitude_euler_deg`, not both";
     }
 }
 

@@ -5,10 +5,10 @@
 
 use super::file_form::{BodyFile, InitialFile, PointMassFile, SceneFile, ShapeFile, ShapeKind};
 use super::{
-    AttitudeSpec, BodySpec, Distribution, EffectSpec, EventSpec, InitialSpec, MotionSpec,
-    PointMassSpec, RotorSpec, SceneSpec, ShapeSpec,
+    BodySpec, Distribution, EffectSpec, EventSpec, InitialSpec, MotionSpec, PointMassSpec,
+    RotorSpec, SceneSpec, ShapeSpec,
 };
-use crate::keys::{Checked, Part, invalid, required};
+use crate::keys::{Checked, Either, Part, invalid, required};
 use crate::scene::source_map::KeyPath;
 
 impl SceneFile {
@@ -93,14 +93,9 @@ fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
 /// `[initial]`: `attitude` or `attitude_euler_deg`.
 fn initial(doc: InitialFile) -> Checked<InitialSpec> {
     doc.exclusive(&KeyPath::root().key("initial"))?;
-    let attitude = match (doc.attitude, doc.attitude_euler_deg) {
-        (Some(q), _) => Some(AttitudeSpec::Quaternion(q)),
-        (None, Some(angles)) => Some(AttitudeSpec::EulerDeg(angles)),
-        (None, None) => None,
-    };
     Ok(InitialSpec {
         omega: doc.omega,
-        attitude,
+        attitude: doc.either(),
     })
 }
 
@@ -113,16 +108,13 @@ impl From<&SceneSpec> for SceneFile {
             description: spec.description.clone(),
             body: body_file(&spec.body),
             motion: spec.motion.as_ref().map(Part::write),
-            initial: spec.initial.map(|i| InitialFile {
-                omega: i.omega,
-                attitude: match i.attitude {
-                    Some(AttitudeSpec::Quaternion(q)) => Some(q),
-                    _ => None,
-                },
-                attitude_euler_deg: match i.attitude {
-                    Some(AttitudeSpec::EulerDeg(angles)) => Some(angles),
-                    _ => None,
-                },
+            initial: spec.initial.map(|i| {
+                let mut file = InitialFile {
+                    omega: i.omega,
+                    ..InitialFile::default()
+                };
+                file.set_either(i.attitude);
+                file
             }),
             effect: spec.effect.iter().map(Part::write).collect(),
             event: spec.event.iter().map(Part::write).collect(),
@@ -195,8 +187,8 @@ mod tests {
     use crate::frames::Axes;
     use crate::profile::Profile;
     use crate::scene::{
-        CarrierSpec, FixedAxisSpec, HingeSpec, InertiaSpec, RateSpec, RotorDrive, TorqueSpec,
-        TorqueTableSpec, parse_spec,
+        AttitudeSpec, CarrierSpec, FixedAxisSpec, HingeSpec, InertiaSpec, RateSpec, RotorDrive,
+        TorqueSpec, TorqueTableSpec, parse_spec,
     };
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,
