@@ -21,6 +21,9 @@ pub struct Key {
     pub origin: &'static str,
     /// What it means, its bounds.
     pub doc: &'static str,
+    /// The table the key holds (a `[section]`, an inline table or an array of tables), listed after its table in
+    /// the reference.
+    pub table: Option<&'static Table>,
 }
 
 /// One table of a scene file and its keys.
@@ -51,6 +54,7 @@ pub(crate) const fn key(
         default,
         origin,
         doc,
+        table: None,
     }
 }
 
@@ -58,6 +62,14 @@ impl Key {
     /// The same key, named.
     pub(crate) const fn named(self, name: &'static str) -> Key {
         Key { name, ..self }
+    }
+
+    /// The same key, holding the table `table`: the one line that registers a table in the one holding it.
+    pub(crate) const fn holding(self, table: &'static Table) -> Key {
+        Key {
+            table: Some(table),
+            ..self
+        }
     }
 }
 

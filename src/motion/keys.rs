@@ -4,7 +4,7 @@
 //! one line, `opt motion: MotionFile`.
 
 use super::carrier::spec::CarrierSpec;
-use super::spec::{AxisDirection, RateSpec};
+use super::choices::{AxisDirection, RateSpec};
 use crate::keys::{file_table, key, position};
 
 file_table! {

@@ -5,6 +5,7 @@
 
 pub mod axis_columns;
 pub mod carrier;
+mod choices;
 pub mod exact_flow;
 pub mod fixed_axis;
 pub mod free;

@@ -2,6 +2,7 @@
 //! effects (its keys: `motion/keys.rs`).
 
 pub use super::carrier::spec::{CarrierSpec, VehicleSpec};
+pub use super::choices::{AxisDirection, RateSpec};
 pub use super::keys::{AxisParts, MotionKind};
 
 /// `[motion]`, by its `type`.
@@ -34,24 +35,6 @@ pub struct AxisSpec {
     pub parts: AxisParts,
 }
 
-/// The axis's direction in body axes.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum AxisDirection {
-    /// `axis = [x, y, z]` (normalised by validation).
-    Body([f64; 3]),
-    /// `tilt_deg`: the axis (0, −sin θ, cos θ), tilted θ degrees from body z about body x.
-    TiltDeg(f64),
-}
-
-/// θ̇ at t = 0.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum RateSpec {
-    /// `rate`, rad/s.
-    RadPerSecond(f64),
-    /// `rate_rpm`, revolutions per minute (rate = rate_rpm · 2π/60).
-    Rpm(f64),
-}
-
 /// `type = "fixed_axis"`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FixedAxisSpec {
@@ -68,16 +51,6 @@ pub struct HingeSpec {
     pub axis: AxisSpec,
     /// `angle_deg`: θ at t = 0 (degrees).
     pub angle_deg: f64,
-}
-
-impl RateSpec {
-    /// The rate in rad/s.
-    pub fn rad_per_second(&self) -> f64 {
-        match *self {
-            RateSpec::RadPerSecond(rate) => rate,
-            RateSpec::Rpm(rpm) => rpm * std::f64::consts::TAU / 60.0,
-        }
-    }
 }
 
 impl AxisSpec {

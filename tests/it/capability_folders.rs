@@ -87,7 +87,6 @@ fn the_wheels_are_registered_in_the_listed_lines_only() {
     let registrations = [
         ("scene/spec/file_form.rs", "use crate::wheels::RotorFile;"),
         ("scene/spec/file_form.rs", "list rotor: RotorFile"),
-        ("scene/reference/mod.rs", "RotorFile"),
         ("scene/spec/body.rs", "RotorSpec"),
         (
             "scene/spec/mod.rs",
@@ -143,8 +142,6 @@ fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registratio
         ("scene/spec/file_form.rs", "use crate::events::EventFile;"),
         ("scene/spec/file_form.rs", "list effect: EffectFile"),
         ("scene/spec/file_form.rs", "list event: EventFile"),
-        ("scene/reference/mod.rs", "EffectFile"),
-        ("scene/reference/mod.rs", "EventFile"),
         ("scene/validate/mod.rs", "crate::effects::validate_effects("),
         (
             "scene/validate/mod.rs",
@@ -175,7 +172,6 @@ fn the_motion_table_is_named_only_in_its_folder_and_its_registration() {
             "use crate::motion::keys::MotionFile;",
         ),
         ("scene/spec/file_form.rs", "opt motion: MotionFile"),
-        ("scene/reference/mod.rs", "MotionFile"),
     ];
     let outside = named_outside("motion/", &["MotionFile", "motion::keys"], &registrations);
     assert!(

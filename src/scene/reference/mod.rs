@@ -7,46 +7,26 @@
 //! Every position in body axes is measured from the *reference origin*: the shape's center, or the point the given
 //! `inertia` is about (C when there are no point masses).
 
-use crate::effects::EffectFile;
-use crate::events::EventFile;
 pub use crate::keys::{Key, Table};
-use crate::motion::keys::MotionFile;
-use crate::scene::spec::file_form::{BodyFile, InitialFile, PointMassFile, SceneFile, ShapeFile};
-use crate::scene::spec::{CompareSpec, OutputSpec, SolverSpec};
-use crate::wheels::RotorFile;
+use crate::scene::spec::file_form::SceneFile;
 
-/// The tables, in the file form's order: each one's declaration ([`crate::keys::file_table!`]); each lists its
-/// parts' tables, which [`keys`] puts after it.
-const TABLES: [Table; 12] = [
-    SceneFile::TABLE,
-    BodyFile::TABLE,
-    ShapeFile::TABLE,
-    PointMassFile::TABLE,
-    RotorFile::TABLE,
-    MotionFile::TABLE,
-    InitialFile::TABLE,
-    EffectFile::TABLE,
-    EventFile::TABLE,
-    SolverSpec::TABLE,
-    OutputSpec::TABLE,
-    CompareSpec::TABLE,
-];
-
-/// Every table of a scene file, in the order of the file form (a table's parts after it), with every key each
+/// Every table of a scene file, in the order of the file form: the top level, then each table a key holds after
+/// the table holding it (depth first, `keys::Key::holding`), a table's parts after it — with every key each
 /// accepts.
 pub fn keys() -> &'static [Table] {
-    fn with_parts(table: &Table, all: &mut Vec<Table>) {
+    fn walk(table: &Table, all: &mut Vec<Table>) {
         all.push(*table);
+        for held in table.keys.iter().filter_map(|k| k.table) {
+            walk(held, all);
+        }
         for part in table.parts {
-            with_parts(part, all);
+            walk(part, all);
         }
     }
     static ALL: std::sync::OnceLock<Vec<Table>> = std::sync::OnceLock::new();
     ALL.get_or_init(|| {
         let mut all = Vec::new();
-        for table in &TABLES {
-            with_parts(table, &mut all);
-        }
+        walk(&SceneFile::TABLE, &mut all);
         all
     })
 }

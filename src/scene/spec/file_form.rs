@@ -19,14 +19,14 @@ file_table! {
         "the top level of the file" {
         opt name: String = key("string", "–", "\"\"", "", "shown by `check` and in plot titles");
         opt description: String = key("string", "–", "\"\"", "", "one line, shown by `check`");
-        req body: BodyFile = key("table", "–", "required", "", "the body: `[body]`");
-        opt motion: MotionFile = key("table", "–", "free rotation", "", "the motion: `[motion]`");
-        opt initial: InitialFile = key("table", "–", "at rest, identity attitude", "", "the state at t = 0: `[initial]`");
-        list effect: EffectFile = key("array of tables", "–", "none: torque-free", "", "the moments applied: `[[effect]]`");
-        list event: EventFile = key("array of tables", "–", "none", "", "moments to locate between rows: `[[event]]`");
-        req solver: SolverSpec = key("table", "–", "required", "", "the integration: `[solver]`");
-        req output: OutputSpec = key("table", "–", "required", "", "the rows written: `[output]`");
-        opt compare: CompareSpec = key("table", "–", "tolerance 1e-8", "", "what `eulerdyn compare` accepts: `[compare]`");
+        req body: BodyFile = key("table", "–", "required", "", "the body: `[body]`").holding(&BodyFile::TABLE);
+        opt motion: MotionFile = key("table", "–", "free rotation", "", "the motion: `[motion]`").holding(&MotionFile::TABLE);
+        opt initial: InitialFile = key("table", "–", "at rest, identity attitude", "", "the state at t = 0: `[initial]`").holding(&InitialFile::TABLE);
+        list effect: EffectFile = key("array of tables", "–", "none: torque-free", "", "the moments applied: `[[effect]]`").holding(&EffectFile::TABLE);
+        list event: EventFile = key("array of tables", "–", "none", "", "moments to locate between rows: `[[event]]`").holding(&EventFile::TABLE);
+        req solver: SolverSpec = key("table", "–", "required", "", "the integration: `[solver]`").holding(&SolverSpec::TABLE);
+        req output: OutputSpec = key("table", "–", "required", "", "the rows written: `[output]`").holding(&OutputSpec::TABLE);
+        opt compare: CompareSpec = key("table", "–", "tolerance 1e-8", "", "what `eulerdyn compare` accepts: `[compare]`").holding(&CompareSpec::TABLE);
     }
 }
 
@@ -35,10 +35,10 @@ file_table! {
     pub(in crate::scene) struct BodyFile(pub(super)) "[body]",
         "the rigid body: its mass and either a shape or an inertia tensor" {
         req mass: f64 = key("number", "kg", "required", "", "> 0");
-        opt shape: ShapeFile = key("inline table", "–", "one of `shape` / `inertia`", "", "a homogeneous shape: `[body.shape]`");
+        opt shape: ShapeFile = key("inline table", "–", "one of `shape` / `inertia`", "", "a homogeneous shape: `[body.shape]`").holding(&ShapeFile::TABLE);
         opt inertia: InertiaSpec = key("[I1, I2, I3] or 3×3 array", "kg·m²", "one of `shape` / `inertia`", "", "about C in body axes: principal moments, or the symmetric tensor with I_xy = −∫xy dm; positive semi-definite, triangle inequality");
-        list point_mass: PointMassFile = key("array of tables", "–", "none", "", "point masses rigidly attached: `[[body.point_mass]]`");
-        list rotor: RotorFile = key("array of tables", "–", "none", "", "wheels spinning inside the body (at most 4): `[[body.rotor]]`");
+        list point_mass: PointMassFile = key("array of tables", "–", "none", "", "point masses rigidly attached: `[[body.point_mass]]`").holding(&PointMassFile::TABLE);
+        list rotor: RotorFile = key("array of tables", "–", "none", "", "wheels spinning inside the body (at most 4): `[[body.rotor]]`").holding(&RotorFile::TABLE);
     }
     either {
         shape, inertia: "give either `shape` or `inertia`, not both";
