@@ -63,13 +63,13 @@ impl FixedAxis {
     /// `axis_b` must be nonzero (the scene validates it); it is normalised here.
     pub fn new(
         body: &RigidBody,
-        axis_b: Vector3<f64>,
+        axis_b: Vector<BodyAxes>,
         rate: f64,
         accel: f64,
         point_b: Vector<BodyAxes>,
         q0: UnitQuaternion<f64>,
     ) -> Self {
-        let axis_b = Unit::new_normalize(axis_b);
+        let axis_b = Unit::new_normalize(axis_b.into_inner());
         let rho_c_b = -point_b;
         Self {
             mass: body.mass(),
@@ -113,7 +113,7 @@ impl FixedAxis {
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // A rotor (I_x = 2 kg·m²) spinning at 10 rad/s about x in a carrier yawing at 0.5 rad/s about z.
     /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
-    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
+    /// let rotor = FixedAxis::new(&body, Vector::new(Vector3::x()), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
     ///     .with_support(Carrier::new(Vector3::new(0.0, 0.0, 0.5), Profile::Constant));
     /// assert!(rotor.moving_support().is_some());
     /// // The gyroscopic couple Ω_c × H = I_x θ̇ Ω_c = 10 N·m about y.
@@ -141,7 +141,7 @@ impl FixedAxis {
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // 2 kg spinning about an axis through C: C does not accelerate, so the support force is −m g.
     /// let body = RigidBody::from_principal(2.0, [2.0, 1.0, 1.0])?;
-    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
+    /// let rotor = FixedAxis::new(&body, Vector::new(Vector3::x()), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
     ///     .with_gravity(Vector::new(Vector3::new(0.0, 0.0, -9.81)));
     /// let support = rotor.sample(0.3, Form::Body).support.unwrap();
     /// assert!((*support.f_sup_s - Vector3::new(0.0, 0.0, 19.62)).norm() < 1e-12);
@@ -163,7 +163,7 @@ impl FixedAxis {
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// // A balanced rotor of 10 N weight between bearings at −1 m and +3 m: the lever rule, 7.5 N and 2.5 N.
     /// let body = RigidBody::from_principal(1.0, [2.0, 1.0, 1.0])?;
-    /// let rotor = FixedAxis::new(&body, Vector3::x(), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
+    /// let rotor = FixedAxis::new(&body, Vector::new(Vector3::x()), 10.0, 0.0, Vector::zeros(), UnitQuaternion::identity())
     ///     .with_gravity(Vector::new(Vector3::new(0.0, 0.0, -10.0)))
     ///     .with_bearings(Bearings { a: -1.0, b: 3.0 });
     /// let loads = rotor.sample(0.3, Form::Body).support.unwrap().bearings.unwrap();

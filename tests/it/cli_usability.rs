@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use crate::common::{FREE_SCENE, eulerdyn, repo_path, write_file};
+use crate::common::{FREE_SCENE, bundled_scenarios, eulerdyn, repo_path, write_file};
 
 fn scenario(name: &str) -> String {
     repo_path(&format!("scenarios/{name}.toml"))
@@ -304,26 +304,23 @@ fn a_fixed_step_too_coarse_for_the_motion_is_reported_and_warned() {
 
 #[test]
 fn no_bundled_scenario_is_warned_of_but_the_tennis_racket() {
-    for entry in std::fs::read_dir(repo_path("scenarios")).unwrap() {
-        let path = entry.unwrap().path();
-        if path.extension().is_some_and(|e| e == "toml") {
-            let out = eulerdyn(["check", text(&path)]);
-            out.expect_code(0);
-            // Only the tennis racket is warned of, by design: it starts near the separatrix.
-            let warnings: Vec<&str> = out
-                .stdout
-                .lines()
-                .filter(|l| l.starts_with("warning"))
-                .collect();
-            let expected = usize::from(path.ends_with("tennis_racket.toml"));
-            assert_eq!(
-                warnings.len(),
-                expected,
-                "{}:\n{}",
-                path.display(),
-                out.stdout
-            );
-        }
+    for path in bundled_scenarios() {
+        let out = eulerdyn(["check", text(&path)]);
+        out.expect_code(0);
+        // Only the tennis racket is warned of, by design: it starts near the separatrix.
+        let warnings: Vec<&str> = out
+            .stdout
+            .lines()
+            .filter(|l| l.starts_with("warning"))
+            .collect();
+        let expected = usize::from(path.ends_with("tennis_racket.toml"));
+        assert_eq!(
+            warnings.len(),
+            expected,
+            "{}:\n{}",
+            path.display(),
+            out.stdout
+        );
     }
 }
 

@@ -36,7 +36,7 @@ fn tilted_axis(theta: f64) -> Vector3<f64> {
 fn disk_motion(theta: f64) -> FixedAxis {
     FixedAxis::new(
         &disk(),
-        tilted_axis(theta),
+        Vector::new(tilted_axis(theta)),
         OMEGA,
         0.0,
         Vector::zeros(),
@@ -88,7 +88,7 @@ fn disk_part_b_inertia_and_moment_of_momentum_in_axes_along_the_spin_axis() {
         let attitude = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), -theta);
         let motion = FixedAxis::new(
             &disk(),
-            tilted_axis(theta),
+            Vector::new(tilted_axis(theta)),
             OMEGA,
             0.0,
             Vector::zeros(),
@@ -138,7 +138,7 @@ fn thin_rod_inertia_depends_on_the_angle_as_in_the_notes() {
     let rod = RigidBody::from_shape(m, Shape::ThinRod { length: l }).unwrap();
     let motion = FixedAxis::new(
         &rod,
-        -Vector3::z(),
+        Vector::new(-Vector3::z()),
         3.0,
         0.0,
         Vector::zeros(),
@@ -214,7 +214,14 @@ fn required_moment_is_the_rate_of_change_of_h_s() {
     .unwrap();
     let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 1.1);
     for point in [Vector3::zeros(), Vector3::new(0.1, 0.2, -0.05)] {
-        let motion = FixedAxis::new(&body, axis, 2.0, 3.0, Vector::new(point), attitude);
+        let motion = FixedAxis::new(
+            &body,
+            Vector::new(axis),
+            2.0,
+            3.0,
+            Vector::new(point),
+            attitude,
+        );
         let h_s = |t: f64| motion.sample(t, Form::Body).h_o_s;
         let h = 1e-3;
         for t in [0.0, 0.4, 1.3] {

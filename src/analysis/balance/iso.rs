@@ -96,6 +96,14 @@ impl TolerancePlanes {
     }
 }
 
+impl crate::named::Named for TolerancePlanes {
+    const ALL: &'static [Self] = &[Self::Bearings, Self::Correction];
+
+    fn name(&self) -> &'static str {
+        TolerancePlanes::name(*self)
+    }
+}
+
 /// A verdict against the grade asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Verdict {

@@ -43,6 +43,14 @@ impl Readings {
     }
 }
 
+impl crate::named::Named for Readings {
+    const ALL: &'static [Self] = &[Self::Force, Self::Other];
+
+    fn name(&self) -> &'static str {
+        Readings::name(*self)
+    }
+}
+
 /// A fitted coefficient column more than this factor above or below the model's is a warning.
 pub const AMPLITUDE_LIMIT: f64 = 3.0;
 

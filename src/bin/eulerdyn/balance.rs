@@ -6,12 +6,21 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::Args;
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 
 use eulerdyn::analysis::balance::{
     Planes, Readings, Report, Request, TolerancePlanes, balance_report, check_options, table,
 };
+use eulerdyn::named::Named;
 use eulerdyn::output::{AtomicFile, same_file};
 use eulerdyn::scene::{self, Overrides};
+
+/// The values of a `Named` enum as clap's choices: listed by name in the help and in clap's message for another
+/// word, parsed into the value.
+fn named<T: Named + Send + Sync>() -> impl TypedValueParser<Value = T> {
+    PossibleValuesParser::new(T::ALL.iter().map(Named::name))
+        .map(|name| T::parse(&name).expect("clap accepts only the names"))
+}
 
 #[derive(Debug, Args)]
 #[command(
@@ -39,12 +48,12 @@ pub struct BalanceArgs {
     pub service_rpm: Option<f64>,
     /// Where U_per is allotted: the bearing planes (ISO 21940-11; the correction planes when the scene has no
     /// bearings) or the correction planes.
-    #[arg(long, value_name = "PLANES", default_value = "bearings", value_parser = ["bearings", "correction"])]
-    pub tolerance_planes: String,
+    #[arg(long, value_name = "PLANES", default_value = "bearings", value_parser = named::<TolerancePlanes>())]
+    pub tolerance_planes: TolerancePlanes,
     /// What the table's readings are: bearing forces in N (compared with the rigid-rotor model), or vibration in
     /// any unit.
-    #[arg(long, value_name = "KIND", default_value = "force", value_parser = ["force", "other"])]
-    pub readings: String,
+    #[arg(long, value_name = "KIND", default_value = "force", value_parser = named::<Readings>())]
+    pub readings: Readings,
     /// Balance from measured 1× phasors (CSV: run,trial_plane,trial_mass_g,trial_angle_deg,A_amp,A_phase_deg,
     /// B_amp,B_phase_deg) by influence coefficients; only an initial row: one-shot, with the model's coefficients.
     #[arg(long, value_name = "PHASORS.csv")]
@@ -95,16 +104,8 @@ pub fn balance_command(args: &BalanceArgs) -> Result<String, String> {
         grade: args.grade,
         rpm: args.rpm,
         service_rpm: args.service_rpm,
-        tolerance_planes: if args.tolerance_planes == "correction" {
-            TolerancePlanes::Correction
-        } else {
-            TolerancePlanes::Bearings
-        },
-        readings: if args.readings == "other" {
-            Readings::Other
-        } else {
-            Readings::Force
-        },
+        tolerance_planes: args.tolerance_planes,
+        readings: args.readings,
         measured,
     };
     let scene = scene::parse(path, &text, &Overrides::default()).map_err(|e| e.to_string())?;

@@ -125,7 +125,8 @@ fn axis_geometry(
         );
     }
     let point_b = vector(motion().key("point"), m.point, "m")? - center_b;
-    let mut axis = FixedAxis::new(body, axis_b, rate, accel, Vector::new(point_b), attitude0);
+    let (axis_b, point_b) = (Vector::new(axis_b), Vector::new(point_b));
+    let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, attitude0);
     if let Some(g_s) = effects.iter().find_map(|e| match e {
         Effect::Gravity { g_s, .. } => Some(*g_s),
         _ => None,
