@@ -140,10 +140,10 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// with its parts' tables), and `given()`: the names of the keys the file gives, in order. An optional
 /// `either { A, B: "message"; … }` after the keys declares keys that exclude each other: `exclusive()` refuses
 /// both, naming `B`; `A, B => T::{VA, VB}: "message";` also reads the pair as the typed choice `T` (`VA(a)` or
-/// `VB(b)`) and writes it back ([`Either`](super::Either)). An optional `parts { … struct NAME; }` makes the typed struct of the `part` keys (a field
-/// `Option<SPEC>` each) with `NAMES`, `read` and `write` (the file form and back), `refuse_unattached` and
-/// `attach` (each part [`Attach`](super::Attach)ed to the validated value, in order): a capability with its own
-/// table is registered by its one `part` line. An optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
+/// `VB(b)`) and writes it back ([`Either`](super::Either)). An optional `parts { … struct NAME; }` makes the
+/// typed struct of the `part` keys (a field `Option<SPEC>` each) with `NAMES`, `read` and `write` (the file form
+/// and back), `refuse_unattached` and `attach` (each part [`Attach`](super::Attach)ed to the validated value, in
+/// order): a capability with its own table is registered by its one `part` line. An optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
 /// declares the table's `type` (its field `kind`) once: each variant, the name a file gives it and the keys it
 /// takes (`..parts`: the table's parts). It makes the enum (serde by those names), `KIND::CHOICES` (`"a" | "b"`, for
 /// the `type` key's reference), `name()`, and the table's `kind_given()`: the `type` (else `MISSING`, at `type`)
