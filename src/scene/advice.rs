@@ -119,7 +119,7 @@ fn imbalance_slips(spec: &SceneSpec) -> Vec<String> {
 /// equal principal moments (to 1e-9).
 pub fn separatrix_distance(scene: &Scene) -> Option<f64> {
     let (omega0_b, body) = scene.motion.rigid_free()?;
-    let omega_p = body.principal_axes_b().transpose() * omega0_b;
+    let omega_p = body.principal_axes_b().transpose() * **omega0_b;
     let mut pairs: Vec<(f64, f64)> = (0..3)
         .map(|k| (body.principal_moments()[k], omega_p[k]))
         .collect();

@@ -5,7 +5,7 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::events::Event;
-use crate::frames::Form;
+use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::Schedule;
 use crate::method::{Backend, Method};
 use crate::motion::fixed_axis::FixedAxis;
@@ -45,7 +45,7 @@ pub enum Motion {
     /// (C, or the pivot of a gravity effect).
     Free {
         /// ω at t = 0, body axes (rad/s).
-        omega0_b: Vector3<f64>,
+        omega0_b: Vector<BodyAxes>,
         /// The body about its moment center.
         body: FreeBody,
         /// The body with its rotors (`[[body.rotor]]`), when it has any.
@@ -124,7 +124,7 @@ impl Motion {
     }
 
     /// A free rigid body without rotors: its ω₀ (body axes) and the body about its moment center.
-    pub fn rigid_free(&self) -> Option<(&Vector3<f64>, &FreeBody)> {
+    pub fn rigid_free(&self) -> Option<(&Vector<BodyAxes>, &FreeBody)> {
         match self {
             Motion::Free {
                 omega0_b,

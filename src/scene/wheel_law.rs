@@ -44,7 +44,7 @@ impl Scene {
                 format!("the wheel law \"{name}\" needs a free body with wheels ([[body.rotor]])"),
             );
         };
-        let start = (&self.attitude0, &*omega0_b);
+        let start = (&self.attitude0, &**omega0_b);
         **g = g.take_law(&self.spec.body.rotor, name, law, start)?;
         Ok(self)
     }

@@ -6,7 +6,6 @@ use std::fmt;
 use nalgebra::Vector3;
 
 use crate::effects::{Effect, EffectMoments};
-use crate::frames::Vector;
 use crate::method::Method;
 use crate::sample::Sample;
 use crate::scene::{Invariant, Scene};
@@ -149,7 +148,7 @@ impl DivergenceGuard {
             return None;
         }
         let facts = scene.facts();
-        let (h0_b, e0) = body.momentum_and_energy(&Vector::new(*omega0_b));
+        let (h0_b, e0) = body.momentum_and_energy(omega0_b);
         let h0_s = *h0_b.in_space(&scene.attitude0);
         let moments = EffectMoments::new(&scene.effects, body.mass());
         let i_min = body.principal_moments().min();

@@ -12,7 +12,7 @@ use nalgebra::{SVector, Vector3};
 
 use crate::effects::{EffectMoments, TorqueFree};
 use crate::events::{Locator, Occurrence};
-use crate::frames::{Form, Vector};
+use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::Method;
 use crate::motion::exact_flow::ExactFlow;
@@ -266,7 +266,7 @@ fn split_error<E: std::error::Error + 'static>(e: IntegrateError<Stop<E>>) -> Ru
 /// Free rotation with the scene's method, in the form the scene's frame selects, streaming each row.
 fn run_free<M: KickMoment + Clone, E>(
     scene: &Scene,
-    (body, omega0_b): (&FreeBody, &Vector3<f64>),
+    (body, omega0_b): (&FreeBody, &Vector<BodyAxes>),
     moment: M,
     mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
     locator: Option<&mut Locator>,
@@ -276,7 +276,7 @@ fn run_free<M: KickMoment + Clone, E>(
         Runner::Splitting(scheme) => {
             let mut split = LiePoisson::new(body, form, scheme, moment);
             let sampler = split.clone();
-            let y0 = split.initial_state(body, &Vector::new(*omega0_b), &scene.attitude0);
+            let y0 = split.initial_state(body, omega0_b, &scene.attitude0);
             return run_fixed_step(
                 &mut split,
                 y0,
@@ -312,7 +312,7 @@ fn run_free<M: KickMoment + Clone, E>(
         }
         Runner::RungeKutta(settings) => settings,
     };
-    let y0 = free::initial_state(body, form, &Vector::new(*omega0_b), &scene.attitude0);
+    let y0 = free::initial_state(body, form, omega0_b, &scene.attitude0);
     let row = |t: f64, y: &free::State| free::sample(body, &moment, form, t, y);
     let on_row = |t: f64, y: &free::State| sink(&row(t, y));
     let run = events::Integration {
@@ -343,7 +343,7 @@ fn run_free<M: KickMoment + Clone, E>(
 fn run_gyrostat<E>(
     scene: &Scene,
     gyrostat: &Gyrostat,
-    omega0_b: &Vector3<f64>,
+    omega0_b: &Vector<BodyAxes>,
     moment: EffectMoments,
     mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
     locator: Option<&mut Locator>,
@@ -357,7 +357,7 @@ fn run_gyrostat<E>(
         });
     };
     let form = scene.solver.form;
-    let y0 = gyrostat.initial_state(form, &Vector::new(*omega0_b), &scene.attitude0);
+    let y0 = gyrostat.initial_state(form, omega0_b, &scene.attitude0);
     let row = |t: f64, y: &gyrostat::State| gyrostat.sample(&moment, form, t, y);
     let on_row = |t: f64, y: &gyrostat::State| sink(&row(t, y));
     let mut system = GyrostatForm {

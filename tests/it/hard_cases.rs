@@ -914,7 +914,7 @@ fn t_end_zero_gives_the_initial_row_with_every_method() {
             assert!(attitude_angle(&rows[0].q, &scene.attitude0) <= 1e-15, "{s}");
             if let eulerdyn::scene::Motion::Free { omega0_b, .. } = &scene.motion {
                 assert!(
-                    (*rows[0].omega_b - omega0_b).norm() <= 1e-15 * omega0_b.norm(),
+                    (rows[0].omega_b - *omega0_b).norm() <= 1e-15 * omega0_b.norm(),
                     "{s}"
                 );
             }

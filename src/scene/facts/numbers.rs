@@ -7,7 +7,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::{AxisNumbers, BearingNumbers, CheckNumbers, MomentCenter, MotionNumbers, StartNumbers};
 use crate::body::Principal;
 use crate::effects::Effect;
-use crate::frames::Vector;
+use crate::frames::{BodyAxes, Vector};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::scene::model::{Motion, Scene};
@@ -110,18 +110,18 @@ impl StartNumbers {
     /// ([`Gyrostat::kinetic_energy`]).
     fn free(
         scene: &Scene,
-        omega0_b: &Vector3<f64>,
+        omega0_b: &Vector<BodyAxes>,
         free: &FreeBody,
         gyrostat: Option<&Gyrostat>,
     ) -> Self {
         let h_rotors_b = gyrostat.map_or(Vector3::zeros(), |g| *g.initial_rotor_momentum_b());
-        let h_b = free.inertia_b() * omega0_b + h_rotors_b;
+        let h_b = free.inertia_b() * **omega0_b + h_rotors_b;
         let energy = gyrostat.map_or(0.5 * omega0_b.dot(&h_b), |g| {
             let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-            g.kinetic_energy(&Vector::new(*omega0_b), &spins)
+            g.kinetic_energy(omega0_b, &spins)
         });
         StartNumbers {
-            omega_b: (*omega0_b).into(),
+            omega_b: omega0_b.into_inner().into(),
             h_o_b: h_b.into(),
             h_o_s: (scene.attitude0 * h_b).into(),
             m_o_b: None,

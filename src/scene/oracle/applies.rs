@@ -1,12 +1,12 @@
 //! Which closed form applies to a scene ([`Oracle::for_scene`]): the conditions under which the exact solutions of
 //! [`crate::exact`] hold for it, and their setting from the scene (principal axes, initial state, the wheels' h).
 
-use nalgebra::{Rotation3, UnitQuaternion, Vector3};
+use nalgebra::{Rotation3, UnitQuaternion};
 
 use super::Oracle;
 use crate::effects::Effect;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
-use crate::frames::{Axes, Vector};
+use crate::frames::{Axes, BodyAxes, Vector};
 use crate::profile::Profile;
 use crate::scene::model::{Motion, Scene};
 use crate::wheels::gyrostat::Gyrostat;
@@ -22,7 +22,7 @@ impl Oracle {
                 gyrostat: Some(g),
                 ..
             } => return symmetric_gyrostat(scene, omega0_b, g),
-            Motion::Free { omega0_b, .. } => *omega0_b,
+            Motion::Free { omega0_b, .. } => omega0_b.into_inner(),
         };
         let principal = scene.body.principal();
         let r_bp = principal_to_body(&principal.axes_b);
@@ -69,7 +69,7 @@ impl Oracle {
 /// The symmetric gyrostat's closed form, where it applies: no effects, body axes principal with I₁ = I₂, and
 /// every wheel balanced, on body ±z, at a constant relative spin (prescribed, or free: with ω₃ constant a free
 /// wheel keeps its spin too).
-fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> Option<Oracle> {
+fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector<BodyAxes>, g: &Gyrostat) -> Option<Oracle> {
     let inertia = g.body().inertia_b();
     let diagonal = (0..3).all(|i| (0..3).all(|j| i == j || inertia[(i, j)] == 0.0));
     let applies = scene.effects.is_empty()
@@ -84,12 +84,12 @@ fn symmetric_gyrostat(scene: &Scene, omega0_b: &Vector3<f64>, g: &Gyrostat) -> O
         .map(|r| r.inertia * r.spin0 * r.axis_b.z)
         .sum();
     let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-    let energy = g.kinetic_energy(&Vector::new(*omega0_b), &spins);
+    let energy = g.kinetic_energy(omega0_b, &spins);
     SymmetricTorqueFree::gyrostat(
         inertia[(0, 0)],
         inertia[(2, 2)],
         h_rotor,
-        *omega0_b,
+        omega0_b.into_inner(),
         scene.attitude0,
     )
     .ok()
@@ -109,7 +109,7 @@ fn principal_to_body(axes_b: &Rotation3<f64>) -> UnitQuaternion<f64> {
 mod tests {
     use super::*;
     use crate::body::Principal;
-    use nalgebra::Matrix3;
+    use nalgebra::{Matrix3, Vector3};
 
     #[test]
     fn r_bp_maps_principal_to_body_axes() {

@@ -58,10 +58,10 @@ fn free_motion(
     effects: &[Effect],
     c_b: &Vector3<f64>,
 ) -> Checked<Motion> {
-    let omega0_b = match initial_omega {
+    let omega0_b = Vector::new(match initial_omega {
         None => Vector3::zeros(),
         Some(w) => vector(KeyPath::root().key("initial").key("omega"), w, "rad/s")?,
-    };
+    });
     let center_b = effects
         .iter()
         .find_map(|e| match e {
@@ -79,7 +79,7 @@ fn free_motion(
     })?;
     // H = I_A ω₀ and T = ½ ω₀·H must be numbers: every row reports them, and the divergence guard measures
     // the run by T.
-    let (h0_b, energy0) = free_body.momentum_and_energy(&Vector::new(omega0_b));
+    let (h0_b, energy0) = free_body.momentum_and_energy(&omega0_b);
     if !(energy0.is_finite() && h0_b.norm().is_finite()) {
         return invalid(
             KeyPath::root().key("initial").key("omega"),
