@@ -1,6 +1,8 @@
 //! `[[effect]]`'s keys, declared once ([`EffectFile`]: the file form and the reference's table; its `type`,
 //! [`EffectKind`]), and [`EffectSpec`] as a [`Part`]: read from that table (its `type` and the keys that type
-//! takes) and written back. The scene registers it with one line, `list effect: EffectFile`.
+//! takes) and written back. The scene registers it with one line, `each effect: EffectSpec`.
+
+use std::path::Path;
 
 use super::spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 use super::{DEFAULT_GRAVITY, Interpolation};
@@ -96,6 +98,13 @@ impl Part for EffectSpec {
                 interpolation: Some(table.interpolation),
                 ..EffectFile::default()
             },
+        }
+    }
+
+    /// Its torque table's relative path taken relative to `dir` (a scene file's directory).
+    fn take_files_in(&mut self, dir: &Path) {
+        if let EffectSpec::TorqueTable(table) = self {
+            table.file = dir.join(&table.file);
         }
     }
 }

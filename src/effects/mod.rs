@@ -15,7 +15,6 @@ mod validate;
 
 pub use columns::potential_columns;
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
-pub(crate) use keys::EffectFile;
 pub use spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
 pub use user::{MomentLaw, UserMoment};

@@ -149,13 +149,6 @@ impl EffectSpec {
             EffectSpec::TorqueTable(_) => "torque_table",
         }
     }
-
-    /// Its torque table's relative path taken relative to `dir` (a scene file's directory).
-    pub(crate) fn take_files_in(&mut self, dir: &Path) {
-        if let EffectSpec::TorqueTable(table) = self {
-            table.file = dir.join(&table.file);
-        }
-    }
 }
 
 impl From<TorqueSpec> for EffectSpec {

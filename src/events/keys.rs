@@ -1,6 +1,6 @@
 //! `[[event]]`'s keys, declared once ([`EventFile`]: the file form and the reference's table), and [`EventSpec`]
 //! as a [`Part`]: read from that table (`name` and `when`, exactly one of `crosses`, with its optional
-//! `direction`, and `extremum`) and written back. The scene registers it with one line, `list event: EventFile`.
+//! `direction`, and `extremum`) and written back. The scene registers it with one line, `each event: EventSpec`.
 
 use super::spec::{ConditionSpec, EventSpec};
 use super::{Direction, Extremum};

@@ -23,7 +23,6 @@ mod spec;
 mod validate;
 
 pub use brent::brent;
-pub(crate) use keys::EventFile;
 pub use spec::{ConditionSpec, EventSpec};
 pub(crate) use validate::validate_events;
 

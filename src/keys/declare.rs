@@ -134,8 +134,10 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 ///
 /// Each key is `STORAGE FIELD [as "NAME"]: TYPE = KEY;` — `opt` (an `Option<TYPE>`, left out when absent), `arr`
 /// (an `Option` of an array of exactly N numbers), `req` (a plain `TYPE` serde requires), `list` (a `Vec<TYPE>`,
-/// an array of tables), `part` (a capability's inline table: `TYPE` is its typed spec, a [`Part`](super::Part)) —
-/// or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
+/// an array of tables), `part` (a capability's inline table: `TYPE` is its typed spec, a [`Part`](super::Part)),
+/// `one`, `maybe`, `each` (a [`Part`](super::Part)'s table: required, optional, an array of them; the key holds
+/// its table) — or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
+/// `group FIELD: TYPE { keys }` declares keys that the typed spec reads together as one [`Group`](super::Group).
 /// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`],
 /// with its parts' tables), and `given()`: the names of the keys the file gives, in order. An optional
 /// `either { A, B: "message"; … }` after the keys declares keys that exclude each other: `exclusive()` refuses
@@ -143,43 +145,70 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// `VB(b)`) and writes it back ([`Either`](super::Either)). An optional `parts { … struct NAME; }` makes the
 /// typed struct of the `part` keys (a field `Option<SPEC>` each) with `NAMES`, `read` and `write` (the file form
 /// and back), `refuse_unattached` and `attach` (each part [`Attach`](super::Attach)ed to the validated value, in
-/// order): a capability with its own table is registered by its one `part` line. An optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
+/// order): a capability with its own table is registered by its one `part` line. An optional
+/// `spec { … struct NAME; }` makes the table's typed spec and its [`Part`](super::Part) impl: a `pub` field per key
+/// (of the key's type; a `one`/`maybe`/`each` key's typed `Part`, read at `KEY`/`KEY[i]`; a group's type), read in
+/// the declaration's order after `exclusive()`, written back, its parts' files taken relative to a directory. An
+/// optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
 /// declares the table's `type` (its field `kind`) once: each variant, the name a file gives it and the keys it
 /// takes (`..parts`: the table's parts). It makes the enum (serde by those names), `KIND::CHOICES` (`"a" | "b"`, for
 /// the `type` key's reference), `name()`, and the table's `kind_given()`: the `type` (else `MISSING`, at `type`)
 /// with every key given checked against the ones it takes (`WHAT = "NAME" takes no …`).
 macro_rules! file_table {
-    (@munch $head:tt [$($done:tt)*] [$($parts:tt)*]) => { file_table!(@emit $head [$($parts)*] $($done)*); };
-    (@munch $head:tt [$($done:tt)*] $parts:tt @sine; $($rest:tt)*) => {
-        file_table!(@munch $head [$($done)*] $parts
+    (@munch $head:tt [$($done:tt)*] $parts:tt $specs:tt) => { file_table!(@emit $head $parts $specs $($done)*); };
+    (@munch $head:tt $done:tt $parts:tt $specs:tt @sine; $($rest:tt)*) => {
+        file_table!(@munch $head $done $parts $specs
             opt freq_hz: f64 = $crate::keys::key("number", "Hz", "required for `sine`", "", "≥ 0");
             opt phase_deg: f64 = $crate::keys::key("number", "deg", "0", "", "`sine` only");
             $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $parts:tt @step; $($rest:tt)*) => {
-        file_table!(@munch $head [$($done)*] $parts
+    (@munch $head:tt $done:tt $parts:tt $specs:tt @step; $($rest:tt)*) => {
+        file_table!(@munch $head $done $parts $specs
             opt t_on: f64 = $crate::keys::key("number", "s", "0", "", "`step` only");
             opt t_off: f64 = $crate::keys::key("number", "s", "never", "", "`step` only; > t_on");
             $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt $done:tt $parts:tt [$($specs:tt)*] @end; $($rest:tt)*) => {
+        file_table!(@munch $head $done $parts [$($specs)* (end)] $($rest)*);
+    };
+    (@munch $head:tt $done:tt $parts:tt [$($specs:tt)*] $(#[$m:meta])* group $field:ident: $ty:ty { $($inner:tt)* } $($rest:tt)*) => {
+        file_table!(@munch $head $done $parts [$($specs)* (group [$(#[$m])*] $field $ty)] $($inner)* @end; $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [$(rename = $rename,)? skip_serializing_if = "Option::is_none"]
-            $field [$($rename)?] Option<$ty>; $key)] $parts $($rest)*);
+            $field [$($rename)?] Option<$ty>; $key)] $parts [$($specs)* (same [$(#[$m])*] $field Option<$ty>)] $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* arr $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* arr $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (arr [$(#[$m])*] [$(rename = $rename,)? default, deserialize_with = "crate::keys::exactly_n",
-            skip_serializing_if = "Option::is_none"] $field [$($rename)?] Option<$ty>; $key)] $parts $($rest)*);
+            skip_serializing_if = "Option::is_none"] $field [$($rename)?] Option<$ty>; $key)] $parts
+            [$($specs)* (same [$(#[$m])*] $field Option<$ty>)] $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* req $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
-        file_table!(@munch $head [$($done)* (req [$(#[$m])*] [$(rename = $rename)?] $field [$($rename)?] $ty; $key)] $parts $($rest)*);
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* req $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (req [$(#[$m])*] [$(rename = $rename)?] $field [$($rename)?] $ty; $key)] $parts
+            [$($specs)* (same [$(#[$m])*] $field $ty)] $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] $parts:tt $(#[$m:meta])* list $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* list $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (list [$(#[$m])*] [$(rename = $rename,)? default, skip_serializing_if = "Vec::is_empty"]
-            $field [$($rename)?] Vec<$ty>; $key)] $parts $($rest)*);
+            $field [$($rename)?] Vec<$ty>; $key)] $parts [$($specs)* (same [$(#[$m])*] $field Vec<$ty>)] $($rest)*);
     };
-    (@munch $head:tt [$($done:tt)*] [$($parts:tt)*] $(#[$m:meta])* part $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
+    (@munch $head:tt [$($done:tt)*] [$($parts:tt)*] [$($specs:tt)*] $(#[$m:meta])* part $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (part [$(#[$m])*] [default, skip_serializing_if = "Option::is_none"]
-            $field [] Option<<$spec as $crate::keys::Part>::File>; $key)] [$($parts)* ([$(#[$m])*] $field $spec)] $($rest)*);
+            $field [] Option<<$spec as $crate::keys::Part>::File>; $key)] [$($parts)* ([$(#[$m])*] $field $spec)]
+            [$($specs)* (maybe [$(#[$m])*] $field $spec)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* one $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (req [$(#[$m])*] [] $field [] <$spec as $crate::keys::Part>::File;
+            $key.holding(&<$spec as $crate::keys::Part>::TABLE))] $parts [$($specs)* (one [$(#[$m])*] $field $spec)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* maybe $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [default, skip_serializing_if = "Option::is_none"] $field []
+            Option<<$spec as $crate::keys::Part>::File>; $key.holding(&<$spec as $crate::keys::Part>::TABLE))] $parts
+            [$($specs)* (maybe [$(#[$m])*] $field $spec)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* each $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (list [$(#[$m])*] [default, skip_serializing_if = "Vec::is_empty"] $field []
+            Vec<<$spec as $crate::keys::Part>::File>; $key.holding(&<$spec as $crate::keys::Part>::TABLE))] $parts
+            [$($specs)* (each [$(#[$m])*] $field $spec)] $($rest)*);
     };
     (@name $field:ident) => { stringify!($field) };
     (@given $value:expr, req) => { true };
@@ -317,8 +346,82 @@ macro_rules! file_table {
     (@takes $parts:tt [$($acc:tt)*] $key:ident $(, $($rest:tt)*)?) => {
         file_table!(@takes $parts [$($acc)* &[stringify!($key)],] $($($rest)*)?)
     };
-    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt $partsdecl:tt $kindsdecl:tt}
-        [$(($pm:tt $pfield:ident $pspec:ty))*]
+    (@spec $name:ident $either:tt [] $specs:tt) => {};
+    (@spec $name:ident $either:tt [$(#[$sm:meta])* $svis:vis $sname:ident] [$($specs:tt)*]) => {
+        file_table!(@spec_walk {$name $either [$(#[$sm])*] $svis $sname } [file at self dir] [] [] [] [] $($specs)*);
+    };
+    (@spec_walk $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt) => { file_table!(@spec_emit $head $ids $fields $reads $writes $files); };
+    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (same [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+            [$($reads)* $field: ::core::clone::Clone::clone(&$file.$field),]
+            [$($writes)* $file.$field = ::core::clone::Clone::clone(&$me.$field);] $files $($rest)*);
+    };
+    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (maybe [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: Option<$spec>,]
+            [$($reads)* $field: ($file.$field.as_ref())
+                .map(|f| <$spec as $crate::keys::Part>::read(f, &$at.clone().key(stringify!($field))))
+                .transpose()?,]
+            [$($writes)* $file.$field = $me.$field.as_ref().map($crate::keys::Part::write);]
+            [$($files)* if let Some(part) = &mut $me.$field { $crate::keys::Part::take_files_in(part, $dir); }] $($rest)*);
+    };
+    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (each [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: Vec<$spec>,]
+            [$($reads)* $field: ($file.$field.iter().enumerate())
+                .map(|(i, f)| <$spec as $crate::keys::Part>::read(f, &$at.clone().key(stringify!($field)).index(i)))
+                .collect::<$crate::keys::Checked<_>>()?,]
+            [$($writes)* $file.$field = $me.$field.iter().map($crate::keys::Part::write).collect();]
+            [$($files)* for part in &mut $me.$field { $crate::keys::Part::take_files_in(part, $dir); }] $($rest)*);
+    };
+    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (one [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $spec,]
+            [$($reads)* $field: <$spec as $crate::keys::Part>::read(&$file.$field, &$at.clone().key(stringify!($field)))?,]
+            [$($writes)* $file.$field = $crate::keys::Part::write(&$me.$field);]
+            [$($files)* $crate::keys::Part::take_files_in(&mut $me.$field, $dir);] $($rest)*);
+    };
+    (@spec_walk {$name:ident $($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (group [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_skip {$name $($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+            [$($reads)* $field: <$ty as $crate::keys::Group<$name>>::read($file, $at)?,]
+            [$($writes)* $crate::keys::Group::write(&$me.$field, &mut $file);] $files $($rest)*);
+    };
+    (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt (end) $($rest:tt)*) => {
+        file_table!(@spec_walk $head $ids $fields $reads $writes $files $($rest)*);
+    };
+    (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt $skipped:tt $($rest:tt)*) => {
+        file_table!(@spec_skip $head $ids $fields $reads $writes $files $($rest)*);
+    };
+    (@spec_emit {$name:ident $either:tt [$($sm:tt)*] $svis:vis $sname:ident} [$file:ident $at:ident $me:tt $dir:ident]
+        [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*]) => {
+        $($sm)*
+        $svis struct $sname {
+            $($fields)*
+        }
+
+        impl $crate::keys::Part for $sname {
+            type File = $name;
+            const TABLE: $crate::keys::Table = $name::TABLE;
+
+            fn read($file: &$name, $at: &$crate::keys::KeyPath) -> $crate::keys::Checked<Self> {
+                file_table!(@exclusive $either $file $at);
+                Ok(Self { $($reads)* })
+            }
+
+            #[allow(clippy::field_reassign_with_default)]
+            fn write(&$me) -> $name {
+                let mut $file = $name::default();
+                $($writes)*
+                $file
+            }
+
+            fn take_files_in(&mut $me, $dir: &::std::path::Path) {
+                let _ = $dir;
+                $($files)*
+            }
+        }
+    };
+    (@exclusive [] $file:ident $at:ident) => {};
+    (@exclusive [$($either:tt)+] $file:ident $at:ident) => { $file.exclusive($at)?; };
+    (@emit {[$($meta:tt)*] $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal $either:tt $partsdecl:tt $specdecl:tt $kindsdecl:tt}
+        [$(($pm:tt $pfield:ident $pspec:ty))*] $specs:tt
         $(($store:ident [$($m:tt)*] [$($serde:tt)*] $field:ident [$($rename:literal)?] $ty:ty; $key:expr))*) => {
         $($meta)*
         #[derive(Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -350,13 +453,15 @@ macro_rules! file_table {
         file_table!(@either $name $either);
         file_table!(@parts $vis $name $partsdecl [$(($pm $pfield $pspec))*]);
         file_table!(@kinds $name $partsdecl $kindsdecl);
+        file_table!(@spec $name $either $specdecl $specs);
     };
     ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }
         $(either { $($a:ident, $b:ident $(=> $ty:ident::{$va:ident, $vb:ident})?: $message:literal;)+ })?
         $(parts { $(#[$pmeta:meta])* $pvis:vis struct $pname:ident; })?
+        $(spec { $(#[$smeta:meta])* $svis:vis struct $sname:ident; })?
         $(kinds { $($kinds:tt)* })?) => {
         file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b [$($ty $va $vb)?] $message))+)?]
-            [$($(#[$pmeta])* $pvis $pname)?] [$($($kinds)*)?]} [] [] $($body)*);
+            [$($(#[$pmeta])* $pvis $pname)?] [$($(#[$smeta])* $svis $sname)?] [$($($kinds)*)?]} [] [] [] $($body)*);
     };
 }
 

@@ -11,6 +11,6 @@ pub use checks::InvalidScene;
 pub(crate) use checks::{Checked, Invalid, finite, invalid, only_keys, positive, required, vector};
 pub use declare::{Key, Table};
 pub(crate) use declare::{exactly_n, file_table, key, position, profile};
-pub(crate) use part::{Attach, Either, Part};
+pub(crate) use part::{Attach, Either, Group, Part};
 pub use path::KeyPath;
 pub(crate) use path::Segment;

@@ -3,6 +3,8 @@
 //! [`file_table!`](super::file_table): the file field, the reference's table, the typed parts struct, reading,
 //! writing and attaching come from that line and these two traits.
 
+use std::path::Path;
+
 use super::{Checked, KeyPath, Table};
 
 /// A part's keys: its declared file form, read into its typed spec and written back.
@@ -20,6 +22,8 @@ pub(crate) trait Part: Sized {
     fn refuse_unattached(_file: &Self::File, _at: &KeyPath) -> Checked<()> {
         Ok(())
     }
+    /// The part with each file it names (a torque table) taken relative to `dir`, a scene file's directory.
+    fn take_files_in(&mut self, _dir: &Path) {}
 }
 
 /// A part attached to the validated value it modifies (a carrier to a fixed axis or hinge): its values checked.
@@ -36,4 +40,24 @@ pub(crate) trait Either<T> {
     fn either(&self) -> Option<T>;
     /// `choice` written back into its key.
     fn set_either(&mut self, choice: Option<T>);
+}
+
+/// Keys of a table read together into one value of its typed spec (`group NAME: T { keys }` in a `file_table!`
+/// with a `spec`): the body's `shape` or `inertia` as its `Distribution`.
+pub(crate) trait Group<F>: Sized {
+    /// The value the keys of `file` (the table at `at`) give.
+    fn read(file: &F, at: &KeyPath) -> Checked<Self>;
+    /// The value written back into its keys.
+    fn write(&self, file: &mut F);
+}
+
+/// An `either` pair declared with its typed choice is a group: the choice, or `None` when neither key is given.
+impl<F: Either<T>, T: Copy> Group<F> for Option<T> {
+    fn read(file: &F, _at: &KeyPath) -> Checked<Self> {
+        Ok(file.either())
+    }
+
+    fn write(&self, file: &mut F) {
+        file.set_either(*self);
+    }
 }

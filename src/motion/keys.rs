@@ -1,7 +1,7 @@
 //! `[motion]`'s keys, declared once ([`MotionFile`]: the file form, the reference's table, its `type`
 //! [`MotionKind`] with the keys each type takes, the either/or pairs and the parts a capability adds — a carrier).
 //! The typed [`super::spec::MotionSpec`] is read from it and written back in `part.rs`. The scene registers it with
-//! one line, `opt motion: MotionFile`.
+//! one line, `maybe motion: MotionSpec`.
 
 use super::carrier::spec::CarrierSpec;
 use super::choices::{AxisDirection, RateSpec};

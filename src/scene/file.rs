@@ -9,6 +9,7 @@ use super::model::{Scene, SceneSource};
 use super::source_map::{KeyPath, SourceMap};
 use super::spec::{SceneFile, SceneSpec};
 use super::validate::{InvalidScene, Overrides};
+use crate::keys::Part;
 use crate::named::Named;
 
 /// A scene that could not be read or is not valid.
@@ -113,7 +114,7 @@ pub fn parse_spec(path: &Path, text: &str) -> Result<SceneSpec, SceneError> {
         });
     }
     let file: SceneFile = parse_toml(path, text)?;
-    let spec = file.into_spec().map_err(|inv| located(path, text, inv))?;
+    let spec = SceneSpec::read(&file, &KeyPath::root()).map_err(|inv| located(path, text, inv))?;
     // A table's file is relative to the scene file.
     Ok(spec.with_files_in(path.parent().unwrap_or(Path::new(""))))
 }

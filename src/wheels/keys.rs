@@ -1,6 +1,8 @@
 //! `[[body.rotor]]`'s keys, declared once ([`RotorFile`]: the file form and the reference's table), and
 //! [`RotorSpec`] as a [`Part`]: read from that table (its required keys, at most one drive, the motor's profile
-//! keys only with `torque`) and written back. `[body]` registers it with one line, `list rotor: RotorFile`.
+//! keys only with `torque`) and written back. `[body]` registers it with one line, `each rotor: RotorSpec`.
+
+use std::path::Path;
 
 use super::limits::WheelMode;
 use super::spec::{RotorDrive, RotorSpec};
@@ -99,6 +101,13 @@ impl Part for RotorSpec {
             }
         }
         file
+    }
+
+    /// Its torque table's relative path taken relative to `dir` (a scene file's directory).
+    fn take_files_in(&mut self, dir: &Path) {
+        if let RotorDrive::Table(file) = &mut self.drive {
+            *file = dir.join(&*file);
+        }
     }
 }
 

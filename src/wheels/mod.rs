@@ -31,7 +31,6 @@ mod take_law;
 mod validate;
 
 pub use columns::{columns, rotor_columns};
-pub(crate) use keys::RotorFile;
 pub use law::{AttitudePd, WheelInputs, WheelLaw, WheelTorqueLaw};
 pub use limits::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
 pub use rows::RotorRows;

@@ -142,11 +142,4 @@ impl RotorSpec {
         self.name = Some(name.to_string());
         self
     }
-
-    /// Its torque table's relative path taken relative to `dir` (a scene file's directory).
-    pub(crate) fn take_files_in(&mut self, dir: &std::path::Path) {
-        if let RotorDrive::Table(file) = &mut self.drive {
-            *file = dir.join(&*file);
-        }
-    }
 }

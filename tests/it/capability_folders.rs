@@ -85,15 +85,18 @@ fn the_wheels_control_is_named_only_in_its_folder() {
 fn the_wheels_are_registered_in_the_listed_lines_only() {
     let names = ["RotorFile", "RotorSpec", "validate_rotors"];
     let registrations = [
-        ("scene/spec/file_form.rs", "use crate::wheels::RotorFile;"),
-        ("scene/spec/file_form.rs", "list rotor: RotorFile"),
-        ("scene/spec/body.rs", "RotorSpec"),
+        ("scene/spec/file_form.rs", "use crate::wheels::RotorSpec;"),
+        ("scene/spec/file_form.rs", "each rotor: RotorSpec"),
+        ("scene/spec/body.rs", "use crate::wheels::RotorSpec;"),
+        (
+            "scene/spec/body.rs",
+            "pub fn with_rotor(mut self, rotor: RotorSpec)",
+        ),
         (
             "scene/spec/mod.rs",
             "pub use crate::wheels::{RotorDrive, RotorSpec};",
         ),
         ("scene/mod.rs", "RotorSpec"),
-        ("scene/spec/from_file.rs", "RotorSpec"),
         (
             "scene/validate/motion.rs",
             "crate::wheels::validate_rotors(&doc.body.rotor",
@@ -138,10 +141,25 @@ fn the_carrier_is_named_only_in_its_folder_and_its_part_line() {
 #[test]
 fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registrations() {
     let registrations = [
-        ("scene/spec/file_form.rs", "use crate::effects::EffectFile;"),
-        ("scene/spec/file_form.rs", "use crate::events::EventFile;"),
-        ("scene/spec/file_form.rs", "list effect: EffectFile"),
-        ("scene/spec/file_form.rs", "list event: EventFile"),
+        ("scene/spec/file_form.rs", "use crate::effects::EffectSpec;"),
+        ("scene/spec/file_form.rs", "use crate::events::EventSpec;"),
+        ("scene/spec/file_form.rs", "each effect: EffectSpec"),
+        ("scene/spec/file_form.rs", "each event: EventSpec"),
+        ("scene/spec/mod.rs", "pub use crate::effects::{EffectSpec,"),
+        (
+            "scene/spec/mod.rs",
+            "pub use crate::events::{ConditionSpec, Direction, EventSpec,",
+        ),
+        (
+            "scene/spec/mod.rs",
+            "pub fn with_effect(mut self, effect: impl Into<EffectSpec>)",
+        ),
+        (
+            "scene/spec/mod.rs",
+            "pub fn with_event(mut self, event: EventSpec)",
+        ),
+        ("scene/mod.rs", "EffectSpec, EventSpec,"),
+        ("lib.rs", "EffectSpec,"),
         ("scene/validate/mod.rs", "crate::effects::validate_effects("),
         (
             "scene/validate/mod.rs",
@@ -149,10 +167,18 @@ fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registratio
         ),
     ];
     for (folder, names) in [
-        ("effects/", ["EffectFile", "EffectKind", "validate_effects"]),
+        (
+            "effects/",
+            ["EffectFile", "EffectKind", "EffectSpec", "validate_effects"],
+        ),
         (
             "events/",
-            ["EventFile", "Quantity::parse", "validate_events"],
+            [
+                "EventFile",
+                "EventSpec",
+                "Quantity::parse",
+                "validate_events",
+            ],
         ),
     ] {
         let outside = named_outside(folder, &names, &registrations);

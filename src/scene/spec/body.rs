@@ -2,24 +2,11 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::BodySpec;
 use crate::wheels::RotorSpec;
 
 /// `body.shape`: a homogeneous shape, `type` and its dimensions (the vocabulary type [`crate::body::Shape`]).
 pub type ShapeSpec = crate::body::Shape;
-
-/// `[body]`: the mass, its distribution and the point masses attached.
-#[derive(Debug, Clone, PartialEq)]
-pub struct BodySpec {
-    /// `mass`: kg, > 0 (the shape's or tensor's; point masses add theirs).
-    pub mass: f64,
-    /// `shape` or `inertia`.
-    pub distribution: Distribution,
-    /// `[[body.point_mass]]`: point masses rigidly attached.
-    pub point_mass: Vec<PointMassSpec>,
-    /// `[[body.rotor]]`: wheels spinning inside the body about axes fixed in it. `mass` and the inertia are the
-    /// whole body with its wheels locked; a rotor adds only its spin relative to the body.
-    pub rotor: Vec<RotorSpec>,
-}
 
 /// How the body's mass is distributed: `shape` or `inertia` (exactly one of them).
 #[derive(Debug, Clone, Copy, PartialEq)]

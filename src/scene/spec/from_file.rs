@@ -1,181 +1,114 @@
-//! The scene file's form ([`SceneFile`]) into the typed [`SceneSpec`] and back. Reading checks what the types
-//! cannot hold: a table's `type` and the keys that type takes, keys that exclude each other and keys a type
-//! requires; each failure names the key (the TOML front end adds its line). The values themselves (finite, in
-//! range) are validation's ([`SceneSpec::build`]).
+//! The body's keys the declarations cannot read by themselves (`file_form.rs` reads and writes the rest): a
+//! point mass's required `at`, `body.shape`'s `type` and the keys that type takes, and `shape` or `inertia` as the
+//! body's [`Distribution`]. Each failure names the key (the TOML front end adds its line); the values themselves
+//! (finite, in range) are validation's ([`SceneSpec::build`](super::SceneSpec::build)).
 
-use super::file_form::{BodyFile, InitialFile, PointMassFile, SceneFile, ShapeFile, ShapeKind};
-use super::{
-    BodySpec, Distribution, EffectSpec, EventSpec, InitialSpec, MotionSpec, PointMassSpec,
-    RotorSpec, SceneSpec, ShapeSpec,
-};
-use crate::keys::{Checked, Either, Part, invalid, required};
-use crate::scene::source_map::KeyPath;
+use super::file_form::{BodyFile, PointMassFile, ShapeFile, ShapeKind};
+use super::{Distribution, PointMassSpec, ShapeSpec};
+use crate::keys::{Checked, Group, KeyPath, Part, Table, invalid, required};
 
-impl SceneFile {
-    /// The typed scene, or the first key at fault.
-    pub(in crate::scene) fn into_spec(self) -> Checked<SceneSpec> {
-        Ok(SceneSpec {
-            name: self.name,
-            description: self.description,
-            body: body(self.body)?,
-            motion: (self.motion.as_ref())
-                .map(|m| MotionSpec::read(m, &KeyPath::root().key("motion")))
-                .transpose()?,
-            initial: self.initial.map(initial).transpose()?,
-            effect: (self.effect.iter().enumerate())
-                .map(|(i, e)| EffectSpec::read(e, &KeyPath::root().key("effect").index(i)))
-                .collect::<Checked<_>>()?,
-            event: (self.event.iter().enumerate())
-                .map(|(i, e)| EventSpec::read(e, &KeyPath::root().key("event").index(i)))
-                .collect::<Checked<_>>()?,
-            solver: self.solver,
-            output: self.output,
-            compare: self.compare,
+impl Part for PointMassSpec {
+    type File = PointMassFile;
+    const TABLE: Table = PointMassFile::TABLE;
+
+    /// One `[[body.point_mass]]`: its `mass` and the `at` it requires.
+    fn read(file: &PointMassFile, at: &KeyPath) -> Checked<Self> {
+        Ok(PointMassSpec {
+            mass: file.mass,
+            at: required(at.clone().key("at"), file.at, "a point mass")?,
         })
+    }
+
+    fn write(&self) -> PointMassFile {
+        PointMassFile {
+            mass: self.mass,
+            at: Some(self.at),
+        }
     }
 }
 
-fn body(doc: BodyFile) -> Checked<BodySpec> {
-    let key = || KeyPath::root().key("body");
-    doc.exclusive(&key())?;
-    let distribution = match (doc.shape, doc.inertia) {
-        (None, None) => {
-            return invalid(
-                key(),
+/// `shape` (read as a [`ShapeSpec`]) or `inertia`; one of them is required.
+impl Group<BodyFile> for Distribution {
+    fn read(file: &BodyFile, at: &KeyPath) -> Checked<Self> {
+        match (&file.shape, file.inertia) {
+            (None, None) => invalid(
+                at.clone(),
                 "the body needs `shape` (e.g. { type = \"thin_disk\", radius = 0.3 }) or `inertia` ([I1, I2, I3] or a 3x3 tensor)",
-            );
+            ),
+            (Some(s), _) => Ok(Distribution::Shape(ShapeSpec::read(
+                s,
+                &at.clone().key("shape"),
+            )?)),
+            (None, Some(inertia)) => Ok(Distribution::Inertia(inertia)),
         }
-        (Some(s), _) => Distribution::Shape(shape(&s)?),
-        (None, Some(inertia)) => Distribution::Inertia(inertia),
-    };
-    let point_mass = (doc.point_mass.iter().enumerate())
-        .map(|(index, p)| {
-            let at = key().key("point_mass").index(index).key("at");
-            Ok(PointMassSpec {
-                mass: p.mass,
-                at: required(at, p.at, "a point mass")?,
-            })
+    }
+
+    fn write(&self, file: &mut BodyFile) {
+        match *self {
+            Distribution::Shape(shape) => file.shape = Some(shape.write()),
+            Distribution::Inertia(inertia) => file.inertia = Some(inertia),
+        }
+    }
+}
+
+impl Part for ShapeSpec {
+    type File = ShapeFile;
+    const TABLE: Table = ShapeFile::TABLE;
+
+    /// `body.shape`: its `type` and the keys that type takes.
+    fn read(doc: &ShapeFile, table: &KeyPath) -> Checked<Self> {
+        let (kind, kind_text) = doc.kind_given(table)?;
+        let need = |name: &str, v: Option<f64>| required(table.clone().key(name), v, &kind_text);
+        Ok(match kind {
+            ShapeKind::ThinDisk => ShapeSpec::thin_disk(need("radius", doc.radius)?),
+            ShapeKind::Disk => ShapeSpec::disk(
+                need("radius", doc.radius)?,
+                need("thickness", doc.thickness)?,
+            ),
+            ShapeKind::ThinRod => ShapeSpec::thin_rod(need("length", doc.length)?),
+            ShapeKind::Sphere => ShapeSpec::sphere(need("radius", doc.radius)?),
+            ShapeKind::Box => {
+                ShapeSpec::cuboid(required(table.clone().key("size"), doc.size, &kind_text)?)
+            }
+            ShapeKind::Cylinder => {
+                ShapeSpec::cylinder(need("radius", doc.radius)?, need("height", doc.height)?)
+            }
         })
-        .collect::<Checked<_>>()?;
-    let rotor = (doc.rotor.iter().enumerate())
-        .map(|(index, r)| RotorSpec::read(r, &key().key("rotor").index(index)))
-        .collect::<Checked<_>>()?;
-    Ok(BodySpec {
-        mass: doc.mass,
-        distribution,
-        point_mass,
-        rotor,
-    })
-}
-
-/// `body.shape`: its `type` and the keys that type takes.
-fn shape(doc: &ShapeFile) -> Checked<ShapeSpec> {
-    let table = KeyPath::root().key("body").key("shape");
-    let (kind, kind_text) = doc.kind_given(&table)?;
-    let need = |name: &str, v: Option<f64>| required(table.clone().key(name), v, &kind_text);
-    Ok(match kind {
-        ShapeKind::ThinDisk => ShapeSpec::thin_disk(need("radius", doc.radius)?),
-        ShapeKind::Disk => ShapeSpec::disk(
-            need("radius", doc.radius)?,
-            need("thickness", doc.thickness)?,
-        ),
-        ShapeKind::ThinRod => ShapeSpec::thin_rod(need("length", doc.length)?),
-        ShapeKind::Sphere => ShapeSpec::sphere(need("radius", doc.radius)?),
-        ShapeKind::Box => {
-            ShapeSpec::cuboid(required(table.clone().key("size"), doc.size, &kind_text)?)
-        }
-        ShapeKind::Cylinder => {
-            ShapeSpec::cylinder(need("radius", doc.radius)?, need("height", doc.height)?)
-        }
-    })
-}
-
-/// `[initial]`: `attitude` or `attitude_euler_deg`.
-fn initial(doc: InitialFile) -> Checked<InitialSpec> {
-    doc.exclusive(&KeyPath::root().key("initial"))?;
-    Ok(InitialSpec {
-        omega: doc.omega,
-        attitude: doc.either(),
-    })
-}
-
-impl From<&SceneSpec> for SceneFile {
-    /// The scene written key for key: every value the typed scene holds (defaults it filled in included); an
-    /// absent `t_off` (+∞) and `None`s are left out.
-    fn from(spec: &SceneSpec) -> Self {
-        SceneFile {
-            name: spec.name.clone(),
-            description: spec.description.clone(),
-            body: body_file(&spec.body),
-            motion: spec.motion.as_ref().map(Part::write),
-            initial: spec.initial.map(|i| {
-                let mut file = InitialFile {
-                    omega: i.omega,
-                    ..InitialFile::default()
-                };
-                file.set_either(i.attitude);
-                file
-            }),
-            effect: spec.effect.iter().map(Part::write).collect(),
-            event: spec.event.iter().map(Part::write).collect(),
-            solver: spec.solver,
-            output: spec.output,
-            compare: spec.compare,
-        }
     }
-}
 
-fn body_file(body: &BodySpec) -> BodyFile {
-    let (shape, inertia) = match body.distribution {
-        Distribution::Shape(shape) => (Some(shape_file(&shape)), None),
-        Distribution::Inertia(inertia) => (None, Some(inertia)),
-    };
-    BodyFile {
-        mass: body.mass,
-        shape,
-        inertia,
-        point_mass: (body.point_mass.iter())
-            .map(|p| PointMassFile {
-                mass: p.mass,
-                at: Some(p.at),
-            })
-            .collect(),
-        rotor: body.rotor.iter().map(Part::write).collect(),
-    }
-}
-
-fn shape_file(shape: &ShapeSpec) -> ShapeFile {
-    let of = |kind| ShapeFile {
-        kind: Some(kind),
-        ..ShapeFile::default()
-    };
-    match *shape {
-        ShapeSpec::ThinDisk { radius } => ShapeFile {
-            radius: Some(radius),
-            ..of(ShapeKind::ThinDisk)
-        },
-        ShapeSpec::Disk { radius, thickness } => ShapeFile {
-            radius: Some(radius),
-            thickness: Some(thickness),
-            ..of(ShapeKind::Disk)
-        },
-        ShapeSpec::ThinRod { length } => ShapeFile {
-            length: Some(length),
-            ..of(ShapeKind::ThinRod)
-        },
-        ShapeSpec::Sphere { radius } => ShapeFile {
-            radius: Some(radius),
-            ..of(ShapeKind::Sphere)
-        },
-        ShapeSpec::Box { size } => ShapeFile {
-            size: Some(size),
-            ..of(ShapeKind::Box)
-        },
-        ShapeSpec::Cylinder { radius, height } => ShapeFile {
-            radius: Some(radius),
-            height: Some(height),
-            ..of(ShapeKind::Cylinder)
-        },
+    fn write(&self) -> ShapeFile {
+        let of = |kind| ShapeFile {
+            kind: Some(kind),
+            ..ShapeFile::default()
+        };
+        match *self {
+            ShapeSpec::ThinDisk { radius } => ShapeFile {
+                radius: Some(radius),
+                ..of(ShapeKind::ThinDisk)
+            },
+            ShapeSpec::Disk { radius, thickness } => ShapeFile {
+                radius: Some(radius),
+                thickness: Some(thickness),
+                ..of(ShapeKind::Disk)
+            },
+            ShapeSpec::ThinRod { length } => ShapeFile {
+                length: Some(length),
+                ..of(ShapeKind::ThinRod)
+            },
+            ShapeSpec::Sphere { radius } => ShapeFile {
+                radius: Some(radius),
+                ..of(ShapeKind::Sphere)
+            },
+            ShapeSpec::Box { size } => ShapeFile {
+                size: Some(size),
+                ..of(ShapeKind::Box)
+            },
+            ShapeSpec::Cylinder { radius, height } => ShapeFile {
+                radius: Some(radius),
+                height: Some(height),
+                ..of(ShapeKind::Cylinder)
+            },
+        }
     }
 }
 
@@ -187,8 +120,9 @@ mod tests {
     use crate::frames::Axes;
     use crate::profile::Profile;
     use crate::scene::{
-        AttitudeSpec, CarrierSpec, FixedAxisSpec, HingeSpec, InertiaSpec, RateSpec, RotorDrive,
-        TorqueSpec, TorqueTableSpec, parse_spec,
+        AttitudeSpec, BodySpec, CarrierSpec, EffectSpec, FixedAxisSpec, HingeSpec, InertiaSpec,
+        InitialSpec, MotionSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, TorqueSpec,
+        TorqueTableSpec, parse_spec,
     };
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,

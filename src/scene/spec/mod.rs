@@ -4,7 +4,8 @@
 //! [`SceneSpec::build`] runs the validation that every front end shares and gives a [`Scene`](crate::scene::Scene).
 //!
 //! Serde reads and writes a `SceneSpec` in the scene file's form (`file_form.rs`: one flat table per `[section]`,
-//! key for key), converted by `from_file.rs`, which names the key at fault when a table is not one of its type's.
+//! key for key, which declares `SceneSpec`, `BodySpec` and `InitialSpec` with it), read and written as a
+//! `keys::Part`; a reading names the key at fault when a table is not one of its type's.
 
 mod body;
 pub(in crate::scene) mod file_form;
@@ -13,6 +14,7 @@ mod from_file;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::frames::Form;
+use crate::keys::{KeyPath, Part};
 use crate::method::Method;
 
 pub use crate::effects::{EffectSpec, TorqueSpec, TorqueTableSpec};
@@ -22,43 +24,9 @@ pub use crate::motion::spec::{
     MotionSpec, RateSpec, VehicleSpec,
 };
 pub use crate::wheels::{RotorDrive, RotorSpec};
-pub use body::{BodySpec, Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
+pub use body::{Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
 pub(in crate::scene) use file_form::SceneFile;
-pub use file_form::{CompareSpec, OutputSpec, SolverSpec};
-
-/// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SceneSpec {
-    /// `name`.
-    pub name: Option<String>,
-    /// `description`.
-    pub description: Option<String>,
-    /// `[body]`.
-    pub body: BodySpec,
-    /// `[motion]`; absent: free rotation.
-    pub motion: Option<MotionSpec>,
-    /// `[initial]`.
-    pub initial: Option<InitialSpec>,
-    /// `[[effect]]`, in order; none: torque-free.
-    pub effect: Vec<EffectSpec>,
-    /// `[[event]]`, in order; none: no events are located.
-    pub event: Vec<EventSpec>,
-    /// `[solver]`.
-    pub solver: SolverSpec,
-    /// `[output]`.
-    pub output: OutputSpec,
-    /// `[compare]`.
-    pub compare: Option<CompareSpec>,
-}
-
-/// `[initial]`.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct InitialSpec {
-    /// `omega`: rad/s, body axes.
-    pub omega: Option<[f64; 3]>,
-    /// `attitude` or `attitude_euler_deg`; absent: the identity (or what the motion's `axis_in_space` sets).
-    pub attitude: Option<AttitudeSpec>,
-}
+pub use file_form::{BodySpec, CompareSpec, InitialSpec, OutputSpec, SceneSpec, SolverSpec};
 
 /// The attitude at t = 0, body → space.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,7 +39,7 @@ pub enum AttitudeSpec {
 
 impl Serialize for SceneSpec {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        SceneFile::from(self).serialize(serializer)
+        self.write().serialize(serializer)
     }
 }
 
@@ -79,9 +47,8 @@ impl<'de> Deserialize<'de> for SceneSpec {
     /// Reads the scene file's form; a table that is not one of its type's is an error naming the key
     /// ("key `effect[0].c`: effect type = \"torque\" takes no `c`; …").
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        SceneFile::deserialize(deserializer)?
-            .into_spec()
-            .map_err(serde::de::Error::custom)
+        let file = SceneFile::deserialize(deserializer)?;
+        SceneSpec::read(&file, &KeyPath::root()).map_err(serde::de::Error::custom)
     }
 }
 
@@ -247,12 +214,7 @@ impl SceneSpec {
     /// The scene with each torque table's relative `file` (an effect's, a wheel's) taken relative to `dir` (a scene
     /// file's directory).
     pub(in crate::scene) fn with_files_in(mut self, dir: &std::path::Path) -> Self {
-        for effect in &mut self.effect {
-            effect.take_files_in(dir);
-        }
-        for rotor in &mut self.body.rotor {
-            rotor.take_files_in(dir);
-        }
+        self.take_files_in(dir);
         self
     }
 }
