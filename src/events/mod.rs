@@ -23,7 +23,8 @@ mod spec;
 mod validate;
 
 pub use brent::brent;
-pub use spec::{ConditionSpec, EventSpec};
+pub use keys::EventSpec;
+pub use spec::ConditionSpec;
 pub(crate) use validate::validate_events;
 
 /// Subintervals of each interval at which the quantity is sampled for sign changes: two roots closer than

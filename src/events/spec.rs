@@ -1,20 +1,7 @@
 //! One `[[event]]` as Rust code gives it: a moment between the rows to locate — a quantity crossing a value, or
 //! its local extrema (read from and written to its file form in `keys.rs`, validated in `validate.rs`).
 
-use super::{Direction, Extremum};
-
-/// One `[[event]]`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct EventSpec {
-    /// `name`: letters, digits and `_`, unique in the scene.
-    pub name: String,
-    /// `when`: a CSV column of the run, or `|X|` for the norm of X_s_x..z.
-    pub when: String,
-    /// `crosses` (with `direction`) or `extremum`.
-    pub condition: ConditionSpec,
-    /// `stop`: the run ends at the first occurrence (absent: false).
-    pub stop: bool,
-}
+use super::{Direction, EventSpec, Extremum};
 
 /// What an `[[event]]` looks for: exactly one of `crosses` and `extremum`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,7 +1,8 @@
 //! `[[event]]` validated: the names (letters, digits, `_`; unique), the quantity against the run's columns and a
 //! finite `crosses`.
 
-use super::spec::{ConditionSpec, EventSpec};
+use super::EventSpec;
+use super::spec::ConditionSpec;
 use super::{Condition, Event, Quantity};
 use crate::keys::{Checked, KeyPath, finite, invalid};
 use crate::sample::Column;

@@ -174,6 +174,24 @@ macro_rules! file_table {
     (@munch $head:tt $done:tt $parts:tt [$($specs:tt)*] $(#[$m:meta])* group $field:ident: $ty:ty { $($inner:tt)* } $($rest:tt)*) => {
         file_table!(@munch $head $done $parts [$($specs)* (group [$(#[$m])*] $field $ty)] $($inner)* @end; $($rest)*);
     };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* opt(required) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [skip_serializing_if = "Option::is_none"]
+            $field [] Option<$ty>; $key)] $parts [$($specs)* (need [$(#[$m])*] $field $ty)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* opt($default:expr) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [skip_serializing_if = "Option::is_none"]
+            $field [] Option<$ty>; $key)] $parts [$($specs)* (dflt [$(#[$m])*] $field ($default) $ty)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* arr(required) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (arr [$(#[$m])*] [default, deserialize_with = "crate::keys::exactly_n",
+            skip_serializing_if = "Option::is_none"] $field [] Option<$ty>; $key)] $parts
+            [$($specs)* (need [$(#[$m])*] $field $ty)] $($rest)*);
+    };
+    (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* arr($default:expr) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
+        file_table!(@munch $head [$($done)* (arr [$(#[$m])*] [default, deserialize_with = "crate::keys::exactly_n",
+            skip_serializing_if = "Option::is_none"] $field [] Option<$ty>; $key)] $parts
+            [$($specs)* (dflt [$(#[$m])*] $field ($default) $ty)] $($rest)*);
+    };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* opt $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [$(rename = $rename,)? skip_serializing_if = "Option::is_none"]
             $field [$($rename)?] Option<$ty>; $key)] $parts [$($specs)* (same [$(#[$m])*] $field Option<$ty>)] $($rest)*);
@@ -347,14 +365,24 @@ macro_rules! file_table {
         file_table!(@takes $parts [$($acc)* &[stringify!($key)],] $($($rest)*)?)
     };
     (@spec $name:ident $either:tt [] $specs:tt) => {};
-    (@spec $name:ident $either:tt [$(#[$sm:meta])* $svis:vis $sname:ident] [$($specs:tt)*]) => {
-        file_table!(@spec_walk {$name $either [$(#[$sm])*] $svis $sname } [file at self dir] [] [] [] [] $($specs)*);
+    (@spec $name:ident $either:tt [$(#[$sm:meta])* $svis:vis $sname:ident $what:tt] [$($specs:tt)*]) => {
+        file_table!(@spec_walk {$name $either [$(#[$sm])*] $svis $sname $what} [file at self dir] [] [] [] [] $($specs)*);
     };
     (@spec_walk $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt) => { file_table!(@spec_emit $head $ids $fields $reads $writes $files); };
     (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (same [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
         file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
             [$($reads)* $field: ::core::clone::Clone::clone(&$file.$field),]
             [$($writes)* $file.$field = ::core::clone::Clone::clone(&$me.$field);] $files $($rest)*);
+    };
+    (@spec_walk {$name:ident $either:tt $sm:tt $svis:vis $sname:ident [$what:literal]} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (need [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk {$name $either $sm $svis $sname [$what]} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+            [$($reads)* $field: $crate::keys::required($at.clone().key(stringify!($field)), ::core::clone::Clone::clone(&$file.$field), $what)?,]
+            [$($writes)* $file.$field = Some(::core::clone::Clone::clone(&$me.$field));] $files $($rest)*);
+    };
+    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (dflt [$($m:tt)*] $field:ident ($default:expr) $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+            [$($reads)* $field: ::core::clone::Clone::clone(&$file.$field).unwrap_or($default),]
+            [$($writes)* $file.$field = Some(::core::clone::Clone::clone(&$me.$field));] $files $($rest)*);
     };
     (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (maybe [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
         file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: Option<$spec>,]
@@ -389,7 +417,7 @@ macro_rules! file_table {
     (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt $skipped:tt $($rest:tt)*) => {
         file_table!(@spec_skip $head $ids $fields $reads $writes $files $($rest)*);
     };
-    (@spec_emit {$name:ident $either:tt [$($sm:tt)*] $svis:vis $sname:ident} [$file:ident $at:ident $me:tt $dir:ident]
+    (@spec_emit {$name:ident $either:tt [$($sm:tt)*] $svis:vis $sname:ident $what:tt} [$file:ident $at:ident $me:tt $dir:ident]
         [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*]) => {
         $($sm)*
         $svis struct $sname {
@@ -458,10 +486,10 @@ macro_rules! file_table {
     ($(#[$meta:meta])* $vis:vis struct $name:ident ($fvis:vis) $header:literal, $about:literal { $($body:tt)* }
         $(either { $($a:ident, $b:ident $(=> $ty:ident::{$va:ident, $vb:ident})?: $message:literal;)+ })?
         $(parts { $(#[$pmeta:meta])* $pvis:vis struct $pname:ident; })?
-        $(spec { $(#[$smeta:meta])* $svis:vis struct $sname:ident; })?
+        $(spec { $(#[$smeta:meta])* $svis:vis struct $sname:ident $(($what:literal))?; })?
         $(kinds { $($kinds:tt)* })?) => {
         file_table!(@munch {[$(#[$meta])*] $vis struct $name ($fvis) $header, $about [$($(($a $b [$($ty $va $vb)?] $message))+)?]
-            [$($(#[$pmeta])* $pvis $pname)?] [$($(#[$smeta])* $svis $sname)?] [$($($kinds)*)?]} [] [] [] $($body)*);
+            [$($(#[$pmeta])* $pvis $pname)?] [$($(#[$smeta])* $svis $sname [$($what)?])?] [$($($kinds)*)?]} [] [] [] $($body)*);
     };
 }
 

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::BodySpec;
+use super::{BodySpec, PointMassSpec};
 use crate::wheels::RotorSpec;
 
 /// `body.shape`: a homogeneous shape, `type` and its dimensions (the vocabulary type [`crate::body::Shape`]).
@@ -29,16 +29,6 @@ pub enum InertiaSpec {
     /// [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]]: the products of inertia with their minus sign,
     /// I_xy = −∫xy dm.
     Full([[f64; 3]; 3]),
-}
-
-/// One `[[body.point_mass]]`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PointMassSpec {
-    /// kg, > 0.
-    pub mass: f64,
-    /// Position from the reference origin (the shape's center, or the point the given inertia is about), body
-    /// axes (m).
-    pub at: [f64; 3],
 }
 
 impl BodySpec {

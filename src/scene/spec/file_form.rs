@@ -6,7 +6,7 @@
 //! `from_file.rs` has the rest); `[solver]`, `[output]` and `[compare]` have no keys that depend on another, so
 //! their tables are their typed specs.
 
-use super::{AttitudeSpec, Distribution, InertiaSpec, PointMassSpec};
+use super::{AttitudeSpec, Distribution, InertiaSpec};
 use crate::effects::EffectSpec;
 use crate::events::EventSpec;
 use crate::frames::Form;
@@ -79,8 +79,16 @@ file_table! {
     #[derive(Copy)]
     pub(crate) struct PointMassFile(pub(super)) "[[body.point_mass]]",
         "a point mass rigidly attached; mass, C and the inertia are then the whole body's (parallel axes)" {
+        /// kg, > 0.
         req mass: f64 = key("number", "kg", "required", "", "> 0");
-        arr at: [f64; 3] = position("[0, 0, 0]", "where the mass sits");
+        /// Position from the reference origin (the shape's center, or the point the given inertia is about), body
+        /// axes (m).
+        arr(required) at: [f64; 3] = position("[0, 0, 0]", "where the mass sits");
+    }
+    spec {
+        /// One `[[body.point_mass]]`.
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct PointMassSpec("a point mass");
     }
 }
 

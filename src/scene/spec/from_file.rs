@@ -1,31 +1,10 @@
-//! The body's keys the declarations cannot read by themselves (`file_form.rs` reads and writes the rest): a
-//! point mass's required `at`, `body.shape`'s `type` and the keys that type takes, and `shape` or `inertia` as the
-//! body's [`Distribution`]. Each failure names the key (the TOML front end adds its line); the values themselves
+//! The body's keys the declarations cannot read by themselves (`file_form.rs` reads and writes the rest):
+//! `body.shape`'s `type` and the keys that type takes, and `shape` or `inertia` as the body's [`Distribution`]. Each failure names the key (the TOML front end adds its line); the values themselves
 //! (finite, in range) are validation's ([`SceneSpec::build`](super::SceneSpec::build)).
 
-use super::file_form::{BodyFile, PointMassFile, ShapeFile, ShapeKind};
-use super::{Distribution, PointMassSpec, ShapeSpec};
+use super::file_form::{BodyFile, ShapeFile, ShapeKind};
+use super::{Distribution, ShapeSpec};
 use crate::keys::{Checked, Group, KeyPath, Part, Table, invalid, required};
-
-impl Part for PointMassSpec {
-    type File = PointMassFile;
-    const TABLE: Table = PointMassFile::TABLE;
-
-    /// One `[[body.point_mass]]`: its `mass` and the `at` it requires.
-    fn read(file: &PointMassFile, at: &KeyPath) -> Checked<Self> {
-        Ok(PointMassSpec {
-            mass: file.mass,
-            at: required(at.clone().key("at"), file.at, "a point mass")?,
-        })
-    }
-
-    fn write(&self) -> PointMassFile {
-        PointMassFile {
-            mass: self.mass,
-            at: Some(self.at),
-        }
-    }
-}
 
 /// `shape` (read as a [`ShapeSpec`]) or `inertia`; one of them is required.
 impl Group<BodyFile> for Distribution {

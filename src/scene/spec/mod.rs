@@ -24,9 +24,11 @@ pub use crate::motion::spec::{
     MotionSpec, RateSpec, VehicleSpec,
 };
 pub use crate::wheels::{RotorDrive, RotorSpec};
-pub use body::{Distribution, InertiaSpec, PointMassSpec, ShapeSpec};
+pub use body::{Distribution, InertiaSpec, ShapeSpec};
 pub(in crate::scene) use file_form::SceneFile;
-pub use file_form::{BodySpec, CompareSpec, InitialSpec, OutputSpec, SceneSpec, SolverSpec};
+pub use file_form::{
+    BodySpec, CompareSpec, InitialSpec, OutputSpec, PointMassSpec, SceneSpec, SolverSpec,
+};
 
 /// The attitude at t = 0, body → space.
 #[derive(Debug, Clone, Copy, PartialEq)]
