@@ -1,5 +1,6 @@
 //! One `[[event]]` as Rust code gives it: a moment between the rows to locate — a quantity crossing a value, or
-//! its local extrema (read from and written to its file form in `keys.rs`, validated in `validate.rs`).
+//! its local extrema — built by [`EventSpec`]'s constructors (the spec is declared with its table in `keys.rs`,
+//! validated in `validate.rs`).
 
 use super::{Direction, EventSpec, Extremum};
 

@@ -406,10 +406,11 @@ macro_rules! file_table {
             [$($writes)* $file.$field = $crate::keys::Part::write(&$me.$field);]
             [$($files)* $crate::keys::Part::take_files_in(&mut $me.$field, $dir);] $($rest)*);
     };
-    (@spec_walk {$name:ident $($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (group [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+    (@spec_walk {$name:ident $($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (group [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
         file_table!(@spec_skip {$name $($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
             [$($reads)* $field: <$ty as $crate::keys::Group<$name>>::read($file, $at)?,]
-            [$($writes)* $crate::keys::Group::write(&$me.$field, &mut $file);] $files $($rest)*);
+            [$($writes)* $crate::keys::Group::write(&$me.$field, &mut $file);]
+            [$($files)* $crate::keys::Group::<$name>::take_files_in(&mut $me.$field, $dir);] $($rest)*);
     };
     (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt (end) $($rest:tt)*) => {
         file_table!(@spec_walk $head $ids $fields $reads $writes $files $($rest)*);

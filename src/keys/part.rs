@@ -49,6 +49,8 @@ pub(crate) trait Group<F>: Sized {
     fn read(file: &F, at: &KeyPath) -> Checked<Self>;
     /// The value written back into its keys.
     fn write(&self, file: &mut F);
+    /// The value with each file it names (a torque table) taken relative to `dir`, a scene file's directory.
+    fn take_files_in(&mut self, _dir: &Path) {}
 }
 
 /// An `either` pair declared with its typed choice is a group: the choice, or `None` when neither key is given.

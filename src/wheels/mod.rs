@@ -31,11 +31,12 @@ mod take_law;
 mod validate;
 
 pub use columns::{columns, rotor_columns};
+pub use keys::RotorSpec;
 pub use law::{AttitudePd, WheelInputs, WheelLaw, WheelTorqueLaw};
 pub use limits::{FrictionKeys, StribeckKeys, WheelKeys, WheelMode};
 pub use rows::RotorRows;
 pub use solve::{STICK_SPEED, Wheel, WheelSolve, solve};
-pub use spec::{RotorDrive, RotorSpec};
+pub use spec::RotorDrive;
 pub use table::{WHEEL_TABLE_HEADER, read_wheel_table};
 
 /// The most rotors a body may carry (a reaction-wheel pyramid has four).

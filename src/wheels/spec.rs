@@ -1,32 +1,8 @@
-//! One `[[body.rotor]]` as Rust code gives it: the typed spec of a wheel (read from and written to its file form
-//! in [`keys`](super::keys), validated in [`validate`](super::validate)).
+//! One `[[body.rotor]]` as Rust code gives it: the builders of a wheel's typed spec ([`RotorSpec`], declared with
+//! its table in [`keys`](super::keys), validated in [`validate`](super::validate)) and its drive.
 
 use crate::profile::Profile;
-use crate::wheels::WheelKeys;
-
-/// One `[[body.rotor]]`: a wheel of moment of inertia J about its axis a (fixed in the body), spinning at Ω
-/// relative to the body; its momentum adds J Ω a to H (H = I ω + Σ J_k Ω_k a_k).
-#[derive(Debug, Clone, PartialEq)]
-pub struct RotorSpec {
-    /// `name`: the prefix of its columns (absent: `rotor0`, `rotor1`, … in order).
-    pub name: Option<String>,
-    /// `axis`: spin axis, body axes (normalised by validation).
-    pub axis: [f64; 3],
-    /// `inertia`: J, kg·m², > 0.
-    pub inertia: f64,
-    /// `spin`: Ω at t = 0 relative to the body (rad/s; absent: 0).
-    pub spin: f64,
-    /// What drives it.
-    pub drive: RotorDrive,
-    /// `at`: the wheel's centre from the reference origin, body axes (m; absent: the origin).
-    pub at: [f64; 3],
-    /// `imbalance_static_gmm`: the static imbalance m·e (g·mm, ≥ 0; absent: 0).
-    pub imbalance_static_gmm: f64,
-    /// `imbalance_dynamic_gmm2`: the dynamic imbalance (g·mm², ≥ 0; absent: 0).
-    pub imbalance_dynamic_gmm2: f64,
-    /// `max_torque`, `max_speed_rpm`, `friction`: the wheel's limits and friction ([`crate::wheels`]).
-    pub wheel: WheelKeys,
-}
+use crate::wheels::{RotorSpec, WheelKeys};
 
 /// What drives a rotor's relative spin.
 #[derive(Debug, Clone, PartialEq)]

@@ -3,8 +3,8 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::RotorSpec;
 use super::gyrostat::Gyrostat;
-use super::spec::RotorSpec;
 use super::{WheelInputs, WheelLaw, WheelTorqueLaw};
 use crate::keys::{Checked, Invalid, KeyPath, invalid};
 

@@ -6,9 +6,10 @@ use std::sync::Arc;
 use nalgebra::{Unit, Vector3};
 
 use super::MAX_ROTORS;
+use super::RotorSpec;
 use super::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use super::read_wheel_table;
-use super::spec::{RotorDrive, RotorSpec};
+use super::spec::RotorDrive;
 use crate::effects::TorqueSum;
 use crate::frames::Vector;
 use crate::keys::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};

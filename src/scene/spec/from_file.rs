@@ -99,10 +99,11 @@ mod tests {
     use crate::frames::Axes;
     use crate::profile::Profile;
     use crate::scene::{
-        AttitudeSpec, BodySpec, CarrierSpec, EffectSpec, FixedAxisSpec, HingeSpec, InertiaSpec,
-        InitialSpec, MotionSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, TorqueSpec,
-        TorqueTableSpec, parse_spec,
+        AttitudeSpec, BodySpec, CarrierSpec, Direction, EffectSpec, EventSpec, Extremum,
+        FixedAxisSpec, HingeSpec, InertiaSpec, InitialSpec, MotionSpec, RateSpec, RotorDrive,
+        RotorSpec, SceneSpec, TorqueSpec, TorqueTableSpec, parse_spec,
     };
+    use crate::wheels::WheelKeys;
 
     /// Every variant of the typed scene, written as TOML by serde and read back by the scene file's reader,
     /// is the same value.
@@ -150,13 +151,25 @@ mod tests {
                 .clone()
                 .with_name("w")
                 .with_drive(RotorDrive::SpinAccel(2.0)),
-            wheel.with_drive(RotorDrive::Torque {
+            wheel.clone().with_drive(RotorDrive::Torque {
                 value: 0.1,
                 profile: Profile::Sine {
                     freq_hz: 1.0,
                     phase_deg: 10.0,
                 },
             }),
+            (wheel.clone())
+                .with_drive(RotorDrive::Table("w.csv".into()))
+                .with_wheel(WheelKeys {
+                    max_torque: Some(0.05),
+                    max_speed_rpm: Some(6000.0),
+                    friction: None,
+                }),
+            wheel.with_drive(RotorDrive::Free),
+        ];
+        let events = [
+            EventSpec::crossing("flip", "omega_b_y", 0.0, Direction::Down),
+            EventSpec::extremum("peak", "|H_s|", Extremum::Max).stopping(),
         ];
         for (i, shape) in shapes.into_iter().enumerate() {
             let body = BodySpec::shape(1.0, shape)
@@ -164,7 +177,8 @@ mod tests {
                 .with_rotor(rotors[i % rotors.len()].clone());
             let mut spec = SceneSpec::new(body, 1.0, 0.1)
                 .with_effect(effects[i % effects.len()].clone())
-                .with_effect(effects[(i + 3) % effects.len()].clone());
+                .with_effect(effects[(i + 3) % effects.len()].clone())
+                .with_event(events[i % events.len()].clone());
             spec.motion = Some(motions[i % motions.len()]);
             spec.initial = Some(InitialSpec {
                 omega: Some([0.1, 0.2, 0.3]),
@@ -182,5 +196,24 @@ mod tests {
             Distribution::Inertia(InertiaSpec::Full(tensor))
         );
         assert_eq!(back, spec);
+    }
+
+    /// A torque table's relative `file` (an effect's, a wheel's drive's) is relative to the scene file's directory:
+    /// the generated reading walks the scene's parts and groups to each of them.
+    #[test]
+    fn relative_table_files_are_taken_in_the_scene_files_directory() {
+        let text = "[body]\nmass = 1.0\ninertia = [1.0, 2.0, 3.0]\n\
+                    [[body.rotor]]\naxis = [0.0, 0.0, 1.0]\ninertia = 0.01\ntorque_table = \"w.csv\"\n\
+                    [[effect]]\ntype = \"torque_table\"\nfile = \"t.csv\"\n\
+                    [solver]\nt_end = 1.0\n[output]\nevery = 0.1\n";
+        let spec = parse_spec(Path::new("runs/x.toml"), text).unwrap();
+        assert_eq!(
+            spec.body.rotor[0].drive,
+            RotorDrive::Table(Path::new("runs").join("w.csv"))
+        );
+        let EffectSpec::TorqueTable(table) = &spec.effect[0] else {
+            panic!("{:?}", spec.effect[0]);
+        };
+        assert_eq!(table.file, Path::new("runs").join("t.csv"));
     }
 }
