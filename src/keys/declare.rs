@@ -153,7 +153,9 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// declares the table's `type` (its field `kind`) once: each variant, the name a file gives it and the keys it
 /// takes (`..parts`: the table's parts). It makes the enum (serde by those names), `KIND::CHOICES` (`"a" | "b"`, for
 /// the `type` key's reference), `name()`, and the table's `kind_given()`: the `type` (else `MISSING`, at `type`)
-/// with every key given checked against the ones it takes (`WHAT = "NAME" takes no …`).
+/// with every key given checked against the ones it takes (`WHAT = "NAME" takes no …`). `enum KIND(…) for SPEC`
+/// also reads and writes the enum `SPEC` whose variant of each kind holds exactly the keys it takes, each required
+/// (`body.shape`'s `ShapeSpec`).
 macro_rules! file_table {
     (@munch $head:tt [$($done:tt)*] $parts:tt $specs:tt) => { file_table!(@emit $head $parts $specs $($done)*); };
     (@munch $head:tt $done:tt $parts:tt $specs:tt @sine; $($rest:tt)*) => {
@@ -313,6 +315,37 @@ macro_rules! file_table {
         }
     };
     (@kinds $name:ident $partsdecl:tt []) => {};
+    (@kinds $name:ident $partsdecl:tt [$(#[$km:meta])* $kvis:vis enum $kind:ident ($what:literal, $missing:literal) for $spec:ident {
+        $($(#[$vm:meta])* $variant:ident = $vname:literal: [$($key:ident),*];)+
+    }]) => {
+        file_table!(@kinds $name $partsdecl [$(#[$km])* $kvis enum $kind ($what, $missing) {
+            $($(#[$vm])* $variant = $vname: [$($key),*];)+
+        }]);
+
+        impl $crate::keys::Part for $spec {
+            type File = $name;
+            const TABLE: $crate::keys::Table = $name::TABLE;
+
+            fn read(file: &$name, at: &$crate::keys::KeyPath) -> $crate::keys::Checked<Self> {
+                let (kind, text) = file.kind_given(at)?;
+                Ok(match kind {
+                    $($kind::$variant => $spec::$variant {
+                        $($key: $crate::keys::required(at.clone().key(stringify!($key)), file.$key, &text)?,)*
+                    },)+
+                })
+            }
+
+            fn write(&self) -> $name {
+                match *self {
+                    $($spec::$variant { $($key),* } => $name {
+                        kind: Some($kind::$variant),
+                        $($key: Some($key),)*
+                        ..$name::default()
+                    },)+
+                }
+            }
+        }
+    };
     (@kinds $name:ident $partsdecl:tt [$(#[$km:meta])* $kvis:vis enum $kind:ident ($what:literal, $missing:literal) {
         $($(#[$vm:meta])* $variant:ident = $vname:literal: [$($takes:tt)*];)+
     }]) => {

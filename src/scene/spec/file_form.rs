@@ -6,7 +6,7 @@
 //! `from_file.rs` has the rest); `[solver]`, `[output]` and `[compare]` have no keys that depend on another, so
 //! their tables are their typed specs.
 
-use super::{AttitudeSpec, Distribution, InertiaSpec};
+use super::{AttitudeSpec, Distribution, InertiaSpec, ShapeSpec};
 use crate::effects::EffectSpec;
 use crate::events::EventSpec;
 use crate::frames::Form;
@@ -106,7 +106,7 @@ file_table! {
     }
     kinds {
         /// The `type` of a shape.
-        pub(crate) enum ShapeKind("shape type", "missing: the shape needs `type` = \"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"") {
+        pub(crate) enum ShapeKind("shape type", "missing: the shape needs `type` = \"thin_disk\" | \"disk\" | \"thin_rod\" | \"sphere\" | \"box\" | \"cylinder\"") for ShapeSpec {
             ThinDisk = "thin_disk": [radius];
             Disk = "disk": [radius, thickness];
             ThinRod = "thin_rod": [length];

@@ -1,10 +1,10 @@
-//! The body's keys the declarations cannot read by themselves (`file_form.rs` reads and writes the rest):
-//! `body.shape`'s `type` and the keys that type takes, and `shape` or `inertia` as the body's [`Distribution`]. Each failure names the key (the TOML front end adds its line); the values themselves
+//! The body's keys its declaration cannot read by itself (`file_form.rs` reads and writes the rest): `shape` or
+//! `inertia` as the body's [`Distribution`], one of them required. Each failure names the key (the TOML front end adds its line); the values themselves
 //! (finite, in range) are validation's ([`SceneSpec::build`](super::SceneSpec::build)).
 
-use super::file_form::{BodyFile, ShapeFile, ShapeKind};
+use super::file_form::BodyFile;
 use super::{Distribution, ShapeSpec};
-use crate::keys::{Checked, Group, KeyPath, Part, Table, invalid, required};
+use crate::keys::{Checked, Group, KeyPath, Part, invalid};
 
 /// `shape` (read as a [`ShapeSpec`]) or `inertia`; one of them is required.
 impl Group<BodyFile> for Distribution {
@@ -26,67 +26,6 @@ impl Group<BodyFile> for Distribution {
         match *self {
             Distribution::Shape(shape) => file.shape = Some(shape.write()),
             Distribution::Inertia(inertia) => file.inertia = Some(inertia),
-        }
-    }
-}
-
-impl Part for ShapeSpec {
-    type File = ShapeFile;
-    const TABLE: Table = ShapeFile::TABLE;
-
-    /// `body.shape`: its `type` and the keys that type takes.
-    fn read(doc: &ShapeFile, table: &KeyPath) -> Checked<Self> {
-        let (kind, kind_text) = doc.kind_given(table)?;
-        let need = |name: &str, v: Option<f64>| required(table.clone().key(name), v, &kind_text);
-        Ok(match kind {
-            ShapeKind::ThinDisk => ShapeSpec::thin_disk(need("radius", doc.radius)?),
-            ShapeKind::Disk => ShapeSpec::disk(
-                need("radius", doc.radius)?,
-                need("thickness", doc.thickness)?,
-            ),
-            ShapeKind::ThinRod => ShapeSpec::thin_rod(need("length", doc.length)?),
-            ShapeKind::Sphere => ShapeSpec::sphere(need("radius", doc.radius)?),
-            ShapeKind::Box => {
-                ShapeSpec::cuboid(required(table.clone().key("size"), doc.size, &kind_text)?)
-            }
-            ShapeKind::Cylinder => {
-                ShapeSpec::cylinder(need("radius", doc.radius)?, need("height", doc.height)?)
-            }
-        })
-    }
-
-    fn write(&self) -> ShapeFile {
-        let of = |kind| ShapeFile {
-            kind: Some(kind),
-            ..ShapeFile::default()
-        };
-        match *self {
-            ShapeSpec::ThinDisk { radius } => ShapeFile {
-                radius: Some(radius),
-                ..of(ShapeKind::ThinDisk)
-            },
-            ShapeSpec::Disk { radius, thickness } => ShapeFile {
-                radius: Some(radius),
-                thickness: Some(thickness),
-                ..of(ShapeKind::Disk)
-            },
-            ShapeSpec::ThinRod { length } => ShapeFile {
-                length: Some(length),
-                ..of(ShapeKind::ThinRod)
-            },
-            ShapeSpec::Sphere { radius } => ShapeFile {
-                radius: Some(radius),
-                ..of(ShapeKind::Sphere)
-            },
-            ShapeSpec::Box { size } => ShapeFile {
-                size: Some(size),
-                ..of(ShapeKind::Box)
-            },
-            ShapeSpec::Cylinder { radius, height } => ShapeFile {
-                radius: Some(radius),
-                height: Some(height),
-                ..of(ShapeKind::Cylinder)
-            },
         }
     }
 }
