@@ -1,7 +1,8 @@
-//! A capability's own inline table inside a table of the scene (`carrier = { … }` in `[motion]`), declared in the
-//! capability's folder. The enclosing table registers it with one line, `part NAME: SPEC = KEY;` in its
-//! [`file_table!`](super::file_table): the file field, the reference's table, the typed parts struct, reading,
-//! writing and attaching come from that line and these two traits.
+//! A capability's own table inside a table of the scene (`carrier = { … }` in `[motion]`, each `[[effect]]`),
+//! declared in the capability's folder. The enclosing table registers it with one line in its
+//! [`file_table!`](super::file_table) (`part NAME: SPEC = KEY;`, or `one`/`maybe`/`each` in a table that declares
+//! its typed spec): the file field, the reference's table, the typed field, reading, writing and attaching come
+//! from that line and [`Part`] (with [`Attach`]); [`Either`] and [`Group`] read keys of one table together.
 
 use std::path::Path;
 

@@ -4,7 +4,7 @@
 //! [`SceneSpec::build`] runs the validation that every front end shares and gives a [`Scene`](crate::scene::Scene).
 //!
 //! Serde reads and writes a `SceneSpec` in the scene file's form (`file_form.rs`: one flat table per `[section]`,
-//! key for key, which declares `SceneSpec`, `BodySpec` and `InitialSpec` with it), read and written as a
+//! key for key, which declares `SceneSpec`, `BodySpec`, `InitialSpec` and `PointMassSpec` with it), read and written as a
 //! `keys::Part`; a reading names the key at fault when a table is not one of its type's.
 
 mod body;
