@@ -27,12 +27,11 @@ impl EventSpec {
     /// assert!(!flip.stop);
     /// ```
     pub fn crossing(name: &str, when: &str, value: f64, direction: Direction) -> Self {
-        Self {
-            name: name.into(),
-            when: when.into(),
-            condition: ConditionSpec::Crosses { value, direction },
-            stop: false,
-        }
+        Self::of(
+            name.into(),
+            when.into(),
+            ConditionSpec::Crosses { value, direction },
+        )
     }
 
     /// The event `name`: every local extremum of `when` of the kind `extremum`.
@@ -43,12 +42,7 @@ impl EventSpec {
     /// assert_eq!(peak.condition, ConditionSpec::Extremum(Extremum::Max));
     /// ```
     pub fn extremum(name: &str, when: &str, extremum: Extremum) -> Self {
-        Self {
-            name: name.into(),
-            when: when.into(),
-            condition: ConditionSpec::Extremum(extremum),
-            stop: false,
-        }
+        Self::of(name.into(), when.into(), ConditionSpec::Extremum(extremum))
     }
 
     /// The same event, ending the run at its first occurrence.

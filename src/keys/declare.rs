@@ -148,8 +148,9 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// order): a capability with its own table is registered by its one `part` line. An optional
 /// `spec { … struct NAME; }` makes the table's typed spec and its [`Part`](super::Part) impl: a `pub` field per key
 /// (of the key's type; a `one`/`maybe`/`each` key's typed `Part`, read at `KEY`/`KEY[i]`; a group's type), read in
-/// the declaration's order after `exclusive()`, written back, its parts' files taken relative to a directory. An
-/// optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
+/// the declaration's order after `exclusive()`, written back, its parts' files taken relative to a directory —
+/// and `S::of(…)`, the spec of the values a table must give (in order), every other key at its default, so that a
+/// key added to the table needs no constructor changed. An optional `kinds { … enum KIND("WHAT", "MISSING") { … } }`
 /// declares the table's `type` (its field `kind`) once: each variant, the name a file gives it and the keys it
 /// takes (`..parts`: the table's parts). It makes the enum (serde by those names), `KIND::CHOICES` (`"a" | "b"`, for
 /// the `type` key's reference), `name()`, and the table's `kind_given()`: the `type` (else `MISSING`, at `type`)
@@ -205,7 +206,7 @@ macro_rules! file_table {
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* req $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (req [$(#[$m])*] [$(rename = $rename)?] $field [$($rename)?] $ty; $key)] $parts
-            [$($specs)* (same [$(#[$m])*] $field $ty)] $($rest)*);
+            [$($specs)* (plain [$(#[$m])*] $field $ty)] $($rest)*);
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* list $field:ident $(as $rename:literal)?: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (list [$(#[$m])*] [$(rename = $rename,)? default, skip_serializing_if = "Vec::is_empty"]
@@ -399,63 +400,95 @@ macro_rules! file_table {
     };
     (@spec $name:ident $either:tt [] $specs:tt) => {};
     (@spec $name:ident $either:tt [$(#[$sm:meta])* $svis:vis $sname:ident $what:tt] [$($specs:tt)*]) => {
-        file_table!(@spec_walk {$name $either [$(#[$sm])*] $svis $sname $what} [file at self dir] [] [] [] [] $($specs)*);
+        file_table!(@spec_walk {$name $either [$(#[$sm])*] $svis $sname $what} [file at self dir] [] [] [] [] [] [] $($specs)*);
     };
-    (@spec_walk $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt) => { file_table!(@spec_emit $head $ids $fields $reads $writes $files); };
-    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (same [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
-        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+    (@spec_walk $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt $params:tt $inits:tt) => {
+        file_table!(@spec_emit $head $ids $fields $reads $writes $files $params $inits);
+    };
+    (@spec_walk $head:tt [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt $params:tt [$($inits:tt)*]
+        (same [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk $head [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
             [$($reads)* $field: ::core::clone::Clone::clone(&$file.$field),]
-            [$($writes)* $file.$field = ::core::clone::Clone::clone(&$me.$field);] $files $($rest)*);
+            [$($writes)* $file.$field = ::core::clone::Clone::clone(&$me.$field);] $files $params
+            [$($inits)* $field: ::core::default::Default::default(),] $($rest)*);
     };
-    (@spec_walk {$name:ident $either:tt $sm:tt $svis:vis $sname:ident [$what:literal]} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (need [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+    (@spec_walk $head:tt [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt [$($params:tt)*] [$($inits:tt)*]
+        (plain [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk $head [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+            [$($reads)* $field: ::core::clone::Clone::clone(&$file.$field),]
+            [$($writes)* $file.$field = ::core::clone::Clone::clone(&$me.$field);] $files
+            [$($params)* $field: $ty,] [$($inits)* $field,] $($rest)*);
+    };
+    (@spec_walk {$name:ident $either:tt $sm:tt $svis:vis $sname:ident [$what:literal]} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt [$($params:tt)*] [$($inits:tt)*]
+        (need [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
         file_table!(@spec_walk {$name $either $sm $svis $sname [$what]} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
             [$($reads)* $field: $crate::keys::required($at.clone().key(stringify!($field)), ::core::clone::Clone::clone(&$file.$field), $what)?,]
-            [$($writes)* $file.$field = Some(::core::clone::Clone::clone(&$me.$field));] $files $($rest)*);
+            [$($writes)* $file.$field = Some(::core::clone::Clone::clone(&$me.$field));] $files
+            [$($params)* $field: $ty,] [$($inits)* $field,] $($rest)*);
     };
-    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt (dflt [$($m:tt)*] $field:ident ($default:expr) $ty:ty) $($rest:tt)*) => {
-        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
+    (@spec_walk $head:tt [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] $files:tt $params:tt [$($inits:tt)*]
+        (dflt [$($m:tt)*] $field:ident ($default:expr) $ty:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk $head [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
             [$($reads)* $field: ::core::clone::Clone::clone(&$file.$field).unwrap_or($default),]
-            [$($writes)* $file.$field = Some(::core::clone::Clone::clone(&$me.$field));] $files $($rest)*);
+            [$($writes)* $file.$field = Some(::core::clone::Clone::clone(&$me.$field));] $files $params
+            [$($inits)* $field: $default,] $($rest)*);
     };
-    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (maybe [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
-        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: Option<$spec>,]
+    (@spec_walk $head:tt [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] $params:tt [$($inits:tt)*]
+        (maybe [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk $head [$file $at $me $dir] [$($fields)* $($m)* pub $field: Option<$spec>,]
             [$($reads)* $field: ($file.$field.as_ref())
                 .map(|f| <$spec as $crate::keys::Part>::read(f, &$at.clone().key(stringify!($field))))
                 .transpose()?,]
             [$($writes)* $file.$field = $me.$field.as_ref().map($crate::keys::Part::write);]
-            [$($files)* if let Some(part) = &mut $me.$field { $crate::keys::Part::take_files_in(part, $dir); }] $($rest)*);
+            [$($files)* if let Some(part) = &mut $me.$field { $crate::keys::Part::take_files_in(part, $dir); }] $params
+            [$($inits)* $field: None,] $($rest)*);
     };
-    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (each [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
-        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: Vec<$spec>,]
+    (@spec_walk $head:tt [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] $params:tt [$($inits:tt)*]
+        (each [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk $head [$file $at $me $dir] [$($fields)* $($m)* pub $field: Vec<$spec>,]
             [$($reads)* $field: ($file.$field.iter().enumerate())
                 .map(|(i, f)| <$spec as $crate::keys::Part>::read(f, &$at.clone().key(stringify!($field)).index(i)))
                 .collect::<$crate::keys::Checked<_>>()?,]
             [$($writes)* $file.$field = $me.$field.iter().map($crate::keys::Part::write).collect();]
-            [$($files)* for part in &mut $me.$field { $crate::keys::Part::take_files_in(part, $dir); }] $($rest)*);
+            [$($files)* for part in &mut $me.$field { $crate::keys::Part::take_files_in(part, $dir); }] $params
+            [$($inits)* $field: Vec::new(),] $($rest)*);
     };
-    (@spec_walk {$($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (one [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
-        file_table!(@spec_walk {$($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $spec,]
+    (@spec_walk $head:tt [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] [$($params:tt)*] [$($inits:tt)*]
+        (one [$($m:tt)*] $field:ident $spec:ty) $($rest:tt)*) => {
+        file_table!(@spec_walk $head [$file $at $me $dir] [$($fields)* $($m)* pub $field: $spec,]
             [$($reads)* $field: <$spec as $crate::keys::Part>::read(&$file.$field, &$at.clone().key(stringify!($field)))?,]
             [$($writes)* $file.$field = $crate::keys::Part::write(&$me.$field);]
-            [$($files)* $crate::keys::Part::take_files_in(&mut $me.$field, $dir);] $($rest)*);
+            [$($files)* $crate::keys::Part::take_files_in(&mut $me.$field, $dir);]
+            [$($params)* $field: $spec,] [$($inits)* $field,] $($rest)*);
     };
-    (@spec_walk {$name:ident $($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] (group [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
+    (@spec_walk {$name:ident $($head:tt)*} [$file:ident $at:ident $me:tt $dir:ident] [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] [$($params:tt)*] [$($inits:tt)*]
+        (group [$($m:tt)*] $field:ident $ty:ty) $($rest:tt)*) => {
         file_table!(@spec_skip {$name $($head)*} [$file $at $me $dir] [$($fields)* $($m)* pub $field: $ty,]
             [$($reads)* $field: <$ty as $crate::keys::Group<$name>>::read($file, $at)?,]
             [$($writes)* $crate::keys::Group::write(&$me.$field, &mut $file);]
-            [$($files)* $crate::keys::Group::<$name>::take_files_in(&mut $me.$field, $dir);] $($rest)*);
+            [$($files)* $crate::keys::Group::<$name>::take_files_in(&mut $me.$field, $dir);]
+            [$($params)* $field: $ty,] [$($inits)* $field,] $($rest)*);
     };
-    (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt (end) $($rest:tt)*) => {
-        file_table!(@spec_walk $head $ids $fields $reads $writes $files $($rest)*);
+    (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt $params:tt $inits:tt (end) $($rest:tt)*) => {
+        file_table!(@spec_walk $head $ids $fields $reads $writes $files $params $inits $($rest)*);
     };
-    (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt $skipped:tt $($rest:tt)*) => {
-        file_table!(@spec_skip $head $ids $fields $reads $writes $files $($rest)*);
+    (@spec_skip $head:tt $ids:tt $fields:tt $reads:tt $writes:tt $files:tt $params:tt $inits:tt $skipped:tt $($rest:tt)*) => {
+        file_table!(@spec_skip $head $ids $fields $reads $writes $files $params $inits $($rest)*);
     };
     (@spec_emit {$name:ident $either:tt [$($sm:tt)*] $svis:vis $sname:ident $what:tt} [$file:ident $at:ident $me:tt $dir:ident]
-        [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*]) => {
+        [$($fields:tt)*] [$($reads:tt)*] [$($writes:tt)*] [$($files:tt)*] [$($params:tt)*] [$($inits:tt)*]) => {
         $($sm)*
         $svis struct $sname {
             $($fields)*
+        }
+
+        impl $sname {
+            /// The spec of the values a table must give (each key the reading requires, each group of keys), every
+            /// other key at its default.
+            #[allow(dead_code)]
+            pub(crate) fn of($($params)*) -> Self {
+                Self { $($inits)* }
+            }
         }
 
         impl $crate::keys::Part for $sname {

@@ -54,15 +54,13 @@ impl RotorSpec {
     /// ```
     pub fn new(axis_b: [f64; 3], inertia: f64, spin: f64) -> Self {
         Self {
-            name: None,
-            axis: axis_b,
-            inertia,
             spin,
-            drive: RotorDrive::ConstantSpin,
-            at: [0.0; 3],
-            imbalance_static_gmm: 0.0,
-            imbalance_dynamic_gmm2: 0.0,
-            wheel: WheelKeys::default(),
+            ..Self::of(
+                axis_b,
+                inertia,
+                RotorDrive::ConstantSpin,
+                WheelKeys::default(),
+            )
         }
     }
 

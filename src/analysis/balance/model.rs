@@ -232,10 +232,7 @@ impl Rotor {
     ) -> Result<Balance, BalanceError> {
         let mut balanced = spec.clone();
         for c in corrections.iter().filter(|c| c.mass > 0.0) {
-            balanced.body.point_mass.push(PointMassSpec {
-                mass: c.mass,
-                at: c.at_b.into(),
-            });
+            (balanced.body.point_mass).push(PointMassSpec::of(c.mass, c.at_b.into()));
         }
         let bearings = self.axis.bearings().copied().unwrap_or(Bearings {
             a: self.planes.a,

@@ -40,12 +40,7 @@ impl BodySpec {
     /// assert_eq!(disk.distribution, Distribution::Shape(ShapeSpec::ThinDisk { radius: 0.3 }));
     /// ```
     pub fn shape(mass: f64, shape: ShapeSpec) -> Self {
-        Self {
-            mass,
-            distribution: Distribution::Shape(shape),
-            point_mass: Vec::new(),
-            rotor: Vec::new(),
-        }
+        Self::of(mass, Distribution::Shape(shape))
     }
 
     /// A body of `mass` (kg) whose body axes are principal, with moments [I1, I2, I3] (kg·m²) about C.
@@ -56,12 +51,7 @@ impl BodySpec {
     /// assert_eq!(body.distribution, Distribution::Inertia(InertiaSpec::Principal([1.0, 2.0, 3.0])));
     /// ```
     pub fn principal(mass: f64, moments: [f64; 3]) -> Self {
-        Self {
-            mass,
-            distribution: Distribution::Inertia(InertiaSpec::Principal(moments)),
-            point_mass: Vec::new(),
-            rotor: Vec::new(),
-        }
+        Self::of(mass, Distribution::Inertia(InertiaSpec::Principal(moments)))
     }
 
     /// A body of `mass` (kg) with the full inertia tensor about C in body axes (kg·m²), products of inertia
@@ -73,12 +63,7 @@ impl BodySpec {
     /// assert!(SceneSpec::new(body, 1.0, 0.5).build().is_ok());
     /// ```
     pub fn tensor(mass: f64, inertia_c_b: [[f64; 3]; 3]) -> Self {
-        Self {
-            mass,
-            distribution: Distribution::Inertia(InertiaSpec::Full(inertia_c_b)),
-            point_mass: Vec::new(),
-            rotor: Vec::new(),
-        }
+        Self::of(mass, Distribution::Inertia(InertiaSpec::Full(inertia_c_b)))
     }
 
     /// With a point mass of `mass` (kg) at `at` (m, body axes, from the reference origin).
@@ -89,7 +74,7 @@ impl BodySpec {
     /// assert_eq!(body.point_mass[0].at, [0.1, 0.0, 0.0]);
     /// ```
     pub fn with_point_mass(mut self, mass: f64, at: [f64; 3]) -> Self {
-        self.point_mass.push(PointMassSpec { mass, at });
+        self.point_mass.push(PointMassSpec::of(mass, at));
         self
     }
 

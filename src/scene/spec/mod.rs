@@ -66,21 +66,11 @@ impl SceneSpec {
     /// assert_eq!(scene.schedule.len(), 101);
     /// ```
     pub fn new(body: BodySpec, t_end: f64, every: f64) -> Self {
-        Self {
-            name: None,
-            description: None,
-            body,
-            motion: None,
-            initial: None,
-            effect: Vec::new(),
-            event: Vec::new(),
-            solver: SolverSpec {
-                t_end,
-                ..SolverSpec::default()
-            },
-            output: OutputSpec { every },
-            compare: None,
-        }
+        let solver = SolverSpec {
+            t_end,
+            ..SolverSpec::default()
+        };
+        Self::of(body, solver, OutputSpec { every })
     }
 
     /// With `name`.
