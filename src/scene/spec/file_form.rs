@@ -83,7 +83,7 @@ file_table! {
         req mass: f64 = key("number", "kg", "required", "", "> 0");
         /// Position from the reference origin (the shape's center, or the point the given inertia is about), body
         /// axes (m).
-        arr(required) at: [f64; 3] = position("[0, 0, 0]", "where the mass sits");
+        arr(required) at: [f64; 3] = position("required", "where the mass sits");
     }
     spec {
         /// One `[[body.point_mass]]`.
