@@ -64,6 +64,23 @@ impl Key {
         Key { name, ..self }
     }
 
+    /// The same key, which the reading requires: its declared default must say `required` (checked when the table
+    /// is compiled).
+    pub(crate) const fn required_by_reading(self) -> Key {
+        let (given, want) = (self.default.as_bytes(), b"required");
+        let mut same = given.len() == want.len();
+        let mut i = 0;
+        while same && i < want.len() {
+            same = given[i] == want[i];
+            i += 1;
+        }
+        assert!(
+            same,
+            "a key the reading requires must give `required` as its default"
+        );
+        self
+    }
+
     /// The same key, holding the table `table`: the one line that registers a table in the one holding it.
     pub(crate) const fn holding(self, table: &'static Table) -> Key {
         Key {
@@ -136,7 +153,8 @@ pub(crate) fn exactly_n<'de, D: Deserializer<'de>, const N: usize>(
 /// (an `Option` of an array of exactly N numbers), `req` (a plain `TYPE` serde requires), `list` (a `Vec<TYPE>`,
 /// an array of tables), `part` (a capability's inline table: `TYPE` is its typed spec, a [`Part`](super::Part)),
 /// `one`, `maybe`, `each` (a [`Part`](super::Part)'s table: required, optional, an array of them; the key holds
-/// its table) — or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
+/// its table), `opt(required)`/`arr(required)` (a value the typed spec requires; `one` and these must declare
+/// `required` as their default, a compile-time check), `opt(DEFAULT)`/`arr(DEFAULT)` (a value with its default) — or a splice of shared keys: `@sine` (`freq_hz`, `phase_deg`), `@step` (`t_on`, `t_off`).
 /// `group FIELD: TYPE { keys }` declares keys that the typed spec reads together as one [`Group`](super::Group).
 /// It makes the struct (`Debug, Clone, Default, PartialEq`, serde, unknown keys refused), its `TABLE` ([`Table`],
 /// with its parts' tables), and `given()`: the names of the keys the file gives, in order. An optional
@@ -179,7 +197,7 @@ macro_rules! file_table {
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* opt(required) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [skip_serializing_if = "Option::is_none"]
-            $field [] Option<$ty>; $key)] $parts [$($specs)* (need [$(#[$m])*] $field $ty)] $($rest)*);
+            $field [] Option<$ty>; $key.required_by_reading())] $parts [$($specs)* (need [$(#[$m])*] $field $ty)] $($rest)*);
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* opt($default:expr) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [skip_serializing_if = "Option::is_none"]
@@ -187,7 +205,7 @@ macro_rules! file_table {
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* arr(required) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (arr [$(#[$m])*] [default, deserialize_with = "crate::keys::exactly_n",
-            skip_serializing_if = "Option::is_none"] $field [] Option<$ty>; $key)] $parts
+            skip_serializing_if = "Option::is_none"] $field [] Option<$ty>; $key.required_by_reading())] $parts
             [$($specs)* (need [$(#[$m])*] $field $ty)] $($rest)*);
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* arr($default:expr) $field:ident: $ty:ty = $key:expr; $($rest:tt)*) => {
@@ -219,7 +237,8 @@ macro_rules! file_table {
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* one $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (req [$(#[$m])*] [] $field [] <$spec as $crate::keys::Part>::File;
-            $key.holding(&<$spec as $crate::keys::Part>::TABLE))] $parts [$($specs)* (one [$(#[$m])*] $field $spec)] $($rest)*);
+            $key.required_by_reading().holding(&<$spec as $crate::keys::Part>::TABLE))] $parts
+            [$($specs)* (one [$(#[$m])*] $field $spec)] $($rest)*);
     };
     (@munch $head:tt [$($done:tt)*] $parts:tt [$($specs:tt)*] $(#[$m:meta])* maybe $field:ident: $spec:ty = $key:expr; $($rest:tt)*) => {
         file_table!(@munch $head [$($done)* (opt [$(#[$m])*] [default, skip_serializing_if = "Option::is_none"] $field []
