@@ -174,13 +174,41 @@ pub fn run_with_events<E: std::error::Error + 'static>(
     scene: &Scene,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<(RunReport, Vec<Occurrence>), RunError<E>> {
+    // The drivers below are compiled once, for a sink behind `dyn` that only says it refused: the error itself
+    // waits here. (Generic over the caller's sink, they were compiled again for every caller, in every crate.)
+    let mut refusal = None;
+    let outcome = run_rows(scene, &mut |s: &Sample| {
+        sink(s).map_err(|e| {
+            refusal = Some(e);
+            Refused
+        })
+    });
+    outcome.map_err(|e| match e {
+        RunError::Integrate(e) => RunError::Integrate(e),
+        RunError::Diverged(d) => RunError::Diverged(d),
+        RunError::Sink(Refused) => {
+            RunError::Sink(refusal.expect("a sink that refused a row left its error"))
+        }
+    })
+}
+
+/// The caller's sink refused a row; its error is kept by [`run_with_events`].
+#[derive(Debug, thiserror::Error)]
+#[error("the sink refused a row")]
+struct Refused;
+
+/// [`run_with_events`] for a sink whose error [`run_with_events`] keeps.
+fn run_rows(
+    scene: &Scene,
+    sink: &mut dyn FnMut(&Sample) -> Result<(), Refused>,
+) -> Result<(RunReport, Vec<Occurrence>), RunError<Refused>> {
     let start = Instant::now();
     let guard = DivergenceGuard::new(scene);
     let mut rows = 0u64;
     let with_potential = scene.gravity_potential(&scene.attitude0).is_some();
     let mut watch = EnergyWatch::of(scene);
     let mut last_t = f64::NEG_INFINITY;
-    let deliver = |s: &Sample| -> Result<(), Stop<E>> {
+    let deliver = |s: &Sample| -> Result<(), Stop<Refused>> {
         // A stop event located exactly on a row already delivered ends the run there: no second row at its time.
         if s.t == last_t {
             return Ok(());
