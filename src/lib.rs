@@ -45,7 +45,7 @@
 //!
 //! All on by default; with `default-features = false` only the core compiles (no clap, indicatif, ctrlc, plotters,
 //! resvg, rayon or rand, and no embedded assets):
-//! - `plot`: figures of a run's CSV (`output::plot`) and the work-precision figure;
+//! - `plot`: figures of a run's CSV (`output::plot`) and the work-precision figure (`analysis::study::figure`);
 //! - `view`: the 3D page (`output::view`, with the embedded three.js);
 //! - `sweep`: sweeps and Monte Carlo over many scenes (`analysis::sweep`, every core through rayon);
 //! - `cli`: the command line (needs the three above).

@@ -2,8 +2,6 @@
 //! pending temporary files, the metadata sidecar, and (features `plot` and `view`) SVG plots of a run's CSV and its 3D
 //! page.
 
-#[cfg(feature = "plot")]
-pub mod accuracy;
 pub mod atomic;
 pub mod csv_writer;
 pub mod events_file;
@@ -17,8 +15,6 @@ pub mod sidecar;
 mod ticks;
 #[cfg(feature = "view")]
 pub mod view;
-#[cfg(feature = "plot")]
-pub mod work_precision;
 
 pub use atomic::{AtomicFile, same_file};
 pub use csv_writer::CsvWriter;

@@ -1,4 +1,4 @@
-//! The `eulerdyn` binary end to end, against the outside contract (docs: /work/shared/CONTRACT.md): CSV layout and
+//! The `eulerdyn` binary end to end, against the outside contract (the book's developers/contract.md): CSV layout and
 //! row times, number round-trips, the `-o` file and its sidecar, command-line overrides, output safety, `check`.
 
 use std::path::Path;

@@ -4,10 +4,10 @@
 
 use std::path::Path;
 
+use eulerdyn::analysis::study::run_accuracy_command;
 use eulerdyn::analysis::study::{self, Measure, StudyError, StudyOptions, TABLE_COLUMNS, TARGETS};
 use eulerdyn::frames::Form;
 use eulerdyn::method::{Backend, Method};
-use eulerdyn::output::accuracy::run_accuracy_command;
 
 /// The benchmark body, torque-free, 20 s with a row every 2 s (steps not limited by the rows).
 const FREE: &str = r#"name = "short-free"

@@ -13,9 +13,15 @@
 //! - `sweep`: one curve of runs, and one run: its scene, its errors, its timing;
 //! - `measure`: the errors of one run against the reference, row by row;
 //! - `timing`: the timed repeats of a run;
-//! - `table`, `summary`: the study as CSV and in words.
+//! - `table`, `summary`: the study as CSV and in words;
+//! - `figure` (feature `plot`): the work-precision figure; `files`: [`run_accuracy_command`], the study of a scene
+//!   file with its table and figure written atomically (`eulerdyn accuracy`).
 
 pub mod convergence;
+#[cfg(feature = "plot")]
+pub mod figure;
+#[cfg(feature = "plot")]
+mod files;
 mod measure;
 mod reference;
 mod summary;
@@ -31,6 +37,8 @@ use crate::frames::Form;
 use crate::method::{Backend, Method};
 use crate::scene::{Scene, SceneError};
 
+#[cfg(feature = "plot")]
+pub use files::run_accuracy_command;
 pub use measure::Measure;
 pub use summary::{CurveCost, format_seconds};
 pub use table::TABLE_COLUMNS;

@@ -442,7 +442,7 @@ fn run_failure(scene: &Path, out: &Path, e: RunError<io::Error>) -> Failure {
 fn accuracy_command(args: &AccuracyArgs, quiet: bool) -> Result<(), Failure> {
     let table = args.output.as_deref().filter(|p| p.as_os_str() != "-");
     let mut progress = None;
-    let result = eulerdyn::output::accuracy::run_accuracy_command(
+    let result = eulerdyn::analysis::study::run_accuracy_command(
         &args.scene,
         table,
         args.plot.as_deref(),

@@ -9,12 +9,12 @@
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::plot::{
+use super::{Study, TARGETS};
+use crate::frames::Form;
+use crate::output::plot::{
     Area, Curve, DrawResult, FONT, PALETTE, decade_label, decade_range, draw_curve,
     draw_legend_entry, svg_text,
 };
-use crate::analysis::study::{Study, TARGETS};
-use crate::frames::Form;
 
 /// The smallest error drawn; smaller values (an exact 0) are drawn at it.
 pub const ERROR_FLOOR: f64 = 1e-17;

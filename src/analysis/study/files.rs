@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
-use super::atomic::{AtomicFile, same_file};
-use super::work_precision;
+use super::figure;
 use crate::analysis::study::{self, Study, StudyError, StudyOptions};
+use crate::output::{AtomicFile, same_file};
 use crate::scene::{self, Overrides};
 
 /// Opens an output file atomically, refusing the scene file itself.
@@ -59,15 +59,13 @@ pub fn run_accuracy_command(
     let plot_file = plot.map(|p| create_output(scene_path, p)).transpose()?;
     let study = study::accuracy(&scene, options, progress)?;
     let svg = match &plot_file {
-        Some(f) => {
-            Some(
-                work_precision::render_svg(&study).map_err(|problem| StudyError::Output {
-                    file: f.path().to_path_buf(),
-                    problem,
-                    input: false,
-                })?,
-            )
-        }
+        Some(f) => Some(
+            figure::render_svg(&study).map_err(|problem| StudyError::Output {
+                file: f.path().to_path_buf(),
+                problem,
+                input: false,
+            })?,
+        ),
         None => None,
     };
     if let Some(f) = table_file {
