@@ -174,8 +174,7 @@ pub fn run_with_events<E: std::error::Error + 'static>(
     scene: &Scene,
     mut sink: impl FnMut(&Sample) -> Result<(), E>,
 ) -> Result<(RunReport, Vec<Occurrence>), RunError<E>> {
-    // The drivers below are compiled once, for a sink behind `dyn` that only says it refused: the error itself
-    // waits here. (Generic over the caller's sink, they were compiled again for every caller, in every crate.)
+    // The drivers are compiled once, for a sink behind `dyn` that only says it refused; the caller's error waits here.
     let mut refusal = None;
     let outcome = run_rows(scene, &mut |s: &Sample| {
         sink(s).map_err(|e| {
