@@ -14,7 +14,7 @@
 //! - `measure`: the errors of one run against the reference, row by row;
 //! - `timing`: the timed repeats of a run;
 //! - `table`, `summary`: the study as CSV and in words;
-//! - `figure` (feature `plot`): the work-precision figure; `files`: [`run_accuracy_command`], the study of a scene
+//! - `figure` (feature `plot`): the work-precision figure; `files`: `run_accuracy_command`, the study of a scene
 //!   file with its table and figure written atomically (`eulerdyn accuracy`).
 
 pub mod convergence;
