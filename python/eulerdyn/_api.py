@@ -386,8 +386,9 @@ def balance(
         ``largest_reaction_after`` (N), ``unbalance_gmm`` (``before``/``after``, per plane ``amp`` g·mm,
         ``phase_deg``, ``re``, ``im``), ``grade`` (None without a speed; ``shares``, ``met_before``, ``met_after``,
         ``target`` with ``u_per_gmm``, ``u_per_planes_gmm``, ``pass_before``, ``pass``) and ``influence`` (None
-        without ``measured``; ``coefficients``, ``condition_number``, ``condition_warning``, ``corrections_g``,
-        ``initial_readings``, ``predicted_residual_readings``) — and ``scene`` (the balanced scene as a dict, ready
+        without ``measured``; ``table``, ``source``, ``runs``, ``trial_runs``, ``coefficients``,
+        ``condition_number``, ``condition_warning``, ``initial_readings``, ``fitted_initial_readings``,
+        ``predicted_residual_readings``) — and ``scene`` (the balanced scene as a dict, ready
         for :func:`run`), ``toml`` (it as a scene file) and ``text`` (what the command prints).
 
     Raises:
