@@ -12,14 +12,16 @@
 //! value (in time order), so that peaks, flips and spikes stay visible.
 //!
 //! The figure is drawn with plotters' SVG backend (pure Rust, no font libraries: the SVG names the font family and
-//! the viewer renders the text). PNG is that SVG rasterised by resvg (pure Rust) with the font embedded in the
-//! program (Liberation Sans, `assets/fonts/`), so it needs no system fonts.
+//! the viewer renders the text). PNG is that SVG, its text set as outlines of the font embedded in the program
+//! (DejaVu Sans, `assets/fonts/`), rasterised by resvg (pure Rust), so it needs no system fonts.
 //!
 //! Files: `series` reads the CSV and sidecar, `decimator` bounds the points, `panels` says what each panel
-//! shows, `layout` sizes the figure and its grid, `draw` draws the SVG, `png` rasterises it.
+//! shows, `layout` sizes the figure and its grid, `draw` draws the SVG, `glyphs` sets its text as
+//! outlines, `png` rasterises it.
 
 mod decimator;
 mod draw;
+mod glyphs;
 pub mod layout;
 mod panels;
 pub mod png;

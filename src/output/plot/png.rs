@@ -1,6 +1,7 @@
 //! PNG output: the figure's SVG rasterised by resvg (pure Rust: usvg parses, tiny-skia paints) on a white
-//! background. Text is set in DejaVu Sans, embedded in the program (`assets/fonts/`, Bitstream Vera licence), which
-//! stands for the SVG's `sans-serif`: no system font is looked up, so the PNG is the same on every machine.
+//! background. Its text is first set as outlines of DejaVu Sans ([`super::glyphs`]), embedded in the program
+//! (`assets/fonts/`, Bitstream Vera licence), which stands for the SVG's `sans-serif`: no system font is looked up,
+//! so the PNG is the same on every machine.
 //!
 //! A PNG at `dpi` pixels per inch of a figure W cm wide is round(W / 2.54 · dpi) pixels wide: a 16 cm figure at
 //! 300 dpi is 1890 px wide.
@@ -9,6 +10,7 @@ use resvg::tiny_skia::{Color, Pixmap, Transform};
 use resvg::usvg;
 
 use super::FigureSize;
+use super::glyphs;
 
 /// The resolution of a PNG unless asked otherwise (pixels per inch): print quality.
 pub const DEFAULT_DPI: f64 = 300.0;
@@ -18,7 +20,6 @@ pub const DPI_RANGE: (f64, f64) = (24.0, 1200.0);
 
 /// The font every text of a PNG is set in.
 const FONT_DATA: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
-const FONT_FAMILY: &str = "DejaVu Sans";
 
 /// A PNG file's bytes and its size in pixels.
 pub(super) struct PngImage {
@@ -28,14 +29,8 @@ pub(super) struct PngImage {
 
 /// The PNG, `pixels` wide and high, of the SVG text `svg` (scaled to fill it).
 pub(super) fn rasterise(svg: &str, pixels: (u32, u32)) -> Result<PngImage, String> {
-    let mut options = usvg::Options {
-        font_family: FONT_FAMILY.into(),
-        ..usvg::Options::default()
-    };
-    let fonts = options.fontdb_mut();
-    fonts.load_font_data(FONT_DATA.to_vec());
-    fonts.set_sans_serif_family(FONT_FAMILY);
-    let tree = usvg::Tree::from_str(svg, &options)
+    let svg = glyphs::outline_text(svg, FONT_DATA)?;
+    let tree = usvg::Tree::from_str(&svg, &usvg::Options::default())
         .map_err(|e| format!("cannot read the figure's SVG for the PNG: {e}"))?;
     let size = tree.size();
     let mut pixmap = Pixmap::new(pixels.0, pixels.1).ok_or_else(|| {
