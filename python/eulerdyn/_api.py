@@ -372,7 +372,8 @@ def balance(
         radius: distance of the correction masses from the axis, m.
         grade: the balance grade G (mm/s, ISO 21940-11) to judge the rotor against.
         rpm: the speed of the measured runs (r/min), for the one-shot coefficients.
-        service_rpm: the maximum service speed (r/min) the grade is judged at (default: the scene's rate).
+        service_rpm: the maximum service speed (r/min) the grade is judged at (default: the scene's rate; with
+            ``measured``, a grade judged at the scene's rate is a warning and reads ``unverified``).
         tolerance_planes: ``"bearings"`` (ISO 21940-11's) or ``"correction"``.
         readings: ``"force"`` (bearing forces in N, checked against the model) or ``"other"``.
         measured: the path of a table of measured 1x phasors (``run,trial_plane,trial_mass_g,trial_angle_deg,

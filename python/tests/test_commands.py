@@ -178,8 +178,8 @@ def test_balance_to_a_grade_from_measurements_is_what_the_cli_prints(scenario):
     import json
 
     path, table = scenario("fan_rotor_g63.toml"), scenario("fan_rotor_measured.csv")
-    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, measured=table)
-    flags = (*FAN_ARGS, "--grade", "6.3", "--measured", str(table))
+    result = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, service_rpm=1500, measured=table)
+    flags = (*FAN_ARGS, "--grade", "6.3", "--service-rpm", "1500", "--measured", str(table))
     assert result["text"] == run_cli("balance", str(path), *flags).stdout
     report = json.loads(run_cli("balance", str(path), *flags, "--json").stdout)
     for key in ("mode", "unbalance_gmm", "grade", "influence", "planes", "corrections", "warnings"):
@@ -191,6 +191,10 @@ def test_balance_to_a_grade_from_measurements_is_what_the_cli_prints(scenario):
     assert "corrections_g" not in result["influence"]
     assert all(0.0 <= c["angle_deg"] < 360.0 for c in result["corrections"])
     assert result["warnings"] == [] and result["grade"]["tolerance_planes"] == "bearings"
+    # Issue 57: without the service speed a grade from measurements is judged at the scene's rate, and says so.
+    unserved = eulerdyn.balance(path, planes=(-0.1, 0.08), radius=0.25, grade=6.3, measured=table)
+    assert unserved["grade"]["target"]["verdict"] == "unverified"
+    assert any("--service-rpm" in w for w in unserved["warnings"])
 
 
 def test_balance_one_shot_and_at_another_speed(scenario):

@@ -556,6 +556,8 @@ fn the_fan_balanced_from_its_measured_table_meets_g63_and_a_check_run_confirms_i
         &[
             "--grade",
             "6.3",
+            "--service-rpm",
+            "1500",
             "--measured",
             table.to_str().unwrap(),
             "-o",
@@ -615,6 +617,8 @@ fn the_json_report_carries_every_printed_figure() {
     let args = [
         "--grade",
         "6.3",
+        "--service-rpm",
+        "1500",
         "--measured",
         table.to_str().unwrap(),
         "--tolerance-planes",

@@ -54,7 +54,14 @@ fn trial_masses_in_kg_are_caught_and_no_verdict_is_given() {
     let dir = tempfile::tempdir().unwrap();
     let table = write_file(dir.path(), "kg.csv", fan_table_in_kg());
     let scene = repo_path(FAN);
-    let measured = ["--grade", "6.3", "--measured", table.to_str().unwrap()];
+    let measured = [
+        "--grade",
+        "6.3",
+        "--service-rpm",
+        "1500",
+        "--measured",
+        table.to_str().unwrap(),
+    ];
     let text = balance_text(&scene, "-0.1,0.08", "0.25", &measured);
     // α = ΔV/T with T 1000 × too small: the fitted coefficients are 1000 × the model's, the corrections 1000 ×
     // too small, and the rotor seems finer than G 0.4.
@@ -149,6 +156,8 @@ fn a_clean_table_gets_no_warning_and_a_verdict() {
         let extra = [
             "--grade",
             "6.3",
+            "--service-rpm",
+            "1500",
             "--measured",
             table.to_str().unwrap(),
             "--readings",
@@ -232,10 +241,15 @@ fn a_fan_balanced_at_600_rpm_that_runs_at_2950_rpm_is_judged_at_2950() {
         "--measured",
         table.to_str().unwrap(),
     ];
-    let out = balance_text(&scene, "-0.1,0.08", "0.25", &measured);
+    let out = balance_text(
+        &scene,
+        "-0.1,0.08",
+        "0.25",
+        &[&measured[..], &["--service-rpm", "2950"]].concat(),
+    );
     for expect in [
         "measured runs at 600.000 rpm (62.8319 rad/s, --rpm); readings: bearing forces in N",
-        "at the service speed 2950.00 rpm (308.923 rad/s, the scene's rate)",
+        "at the service speed 2950.00 rpm (308.923 rad/s, --service-rpm)",
         "tolerance planes: the bearings, A at -0.4 m and B at 0.3 m",
     ] {
         assert!(out.contains(expect), "`{expect}` is not in\n{out}");
@@ -244,7 +258,12 @@ fn a_fan_balanced_at_600_rpm_that_runs_at_2950_rpm_is_judged_at_2950() {
         !out.contains("warning:"),
         "the runs at 600 rpm match the model at --rpm\n{out}"
     );
-    let at_service = balance_json(&scene, "-0.1,0.08", "0.25", &measured);
+    let at_service = balance_json(
+        &scene,
+        "-0.1,0.08",
+        "0.25",
+        &[&measured[..], &["--service-rpm", "2950"]].concat(),
+    );
     let judged_at_600 = balance_json(
         &scene,
         "-0.1,0.08",
@@ -263,6 +282,49 @@ fn a_fan_balanced_at_600_rpm_that_runs_at_2950_rpm_is_judged_at_2950() {
         f(&model["grade"]["met_before"]),
         1e-9,
         "G from the readings",
+    );
+}
+
+/// Issue 57: a rotor measured at 600 rpm that serves at 6000 rpm, graded without `--service-rpm`, was judged at the
+/// scene's 600 rpm and given a confident "pass". With a measured table the grade now asks for the service speed
+/// (a warning, the verdict `unverified`); without one it says where it was judged. G ∝ Ω (ISO 21940-11, 6.3.3):
+/// at 6000 rpm the same unbalance meets a grade 10 × coarser.
+#[test]
+fn a_grade_without_the_service_speed_is_never_a_bare_pass() {
+    let dir = tempfile::tempdir().unwrap();
+    let at_600 = iso::rpm_to_rad_s(600.0);
+    let text = fan_text().replace("rate = 157.07963267948966", &format!("rate = {at_600}"));
+    let scene = write_file(dir.path(), "fan600.toml", text);
+    let table = write_file(dir.path(), "at600.csv", fan_table_at(at_600));
+    let measured = ["--grade", "63", "--measured", table.to_str().unwrap()];
+    let out = balance_text(&scene, "-0.1,0.08", "0.25", &measured);
+    for expect in [
+        "warning: the grade was judged at the scene's rate, 600.000 rpm, for want of --service-rpm",
+        "give --service-rpm N for a verdict",
+        "unverified against G 63 (see the warnings)",
+    ] {
+        assert!(out.contains(expect), "`{expect}` is not in\n{out}");
+    }
+    assert!(!out.contains("pass against"), "{out}");
+    let json = balance_json(&scene, "-0.1,0.08", "0.25", &measured);
+    assert_eq!(json["grade"]["target"]["verdict"], "unverified");
+    assert_eq!(json["grade"]["target"]["pass"], false);
+    assert_eq!(json["grade"]["speed_from"], "scene");
+    // The service speed given: no warning, a verdict, and the grade 10 × that judged at 600 rpm.
+    let at_6000 = [&measured[..], &["--service-rpm", "6000"]].concat();
+    let served = balance_json(&scene, "-0.1,0.08", "0.25", &at_6000);
+    assert_eq!(served["warnings"].as_array().unwrap().len(), 0, "{served}");
+    assert_eq!(
+        served["grade"]["target"]["verdict_before"], "fail",
+        "G 98.3 at 6000 rpm"
+    );
+    let ratio = f(&served["grade"]["met_before"]) / f(&json["grade"]["met_before"]);
+    close(ratio, 10.0, 1e-12, "G ∝ Ω");
+    // Without a measured table (the model's unbalance) the verdict names the speed it was judged at.
+    let model = balance_text(&scene, "-0.1,0.08", "0.25", &["--grade", "63"]);
+    assert!(
+        model.contains("against G 63 at the scene's rate (--service-rpm N: at the rotor's maximum service speed)"),
+        "{model}"
     );
 }
 

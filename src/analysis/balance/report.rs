@@ -270,7 +270,13 @@ fn grade_text(grade: &Assessment, warned: bool) -> String {
     }
     for (k, when) in ["before", "after"].iter().enumerate() {
         let verdict = grade.target.as_ref().map_or(String::new(), |t| {
-            let why = if warned { " (see the warnings)" } else { "" };
+            let why = match (warned, grade.from_service_rpm) {
+                (true, _) => " (see the warnings)",
+                (false, false) => {
+                    " at the scene's rate (--service-rpm N: at the rotor's maximum service speed)"
+                }
+                (false, true) => "",
+            };
             format!(": {} against G {}{why}", t.verdict[k].word(), t.grade)
         });
         let met = if k == 1 && grade.met[1] <= ROUND_OFF * grade.met[0] {

@@ -11,6 +11,9 @@
 //!   service speed, 6.3.1 Table 1), whatever the readings are.
 //! - A correction plane outside the bearings by more than their span, or a radius beyond the rotor's reach from
 //!   the axis.
+//! - A grade asked for with a measured table but no `--service-rpm`: the grade was judged at the scene's rate, and a
+//!   rotor measured at one speed (often a balancing machine's) is graded at its maximum service speed. U_per ∝ 1/Ω
+//!   (ISO 21940-11, 6.3.3), so at ten times the speed the same unbalance meets a grade ten times coarser.
 
 use nalgebra::{Matrix2, Vector3};
 
@@ -79,8 +82,22 @@ pub(crate) fn warnings(
     }
     if let (Some(_), Some(grade)) = (found, grade) {
         out.extend(grade_slip(grade));
+        out.extend(service_speed_slip(request, grade));
     }
     out
+}
+
+/// The warning when a grade asked for with a measured table was judged at the scene's rate (module doc).
+fn service_speed_slip(request: &Request, grade: &Assessment) -> Option<String> {
+    if grade.from_service_rpm || request.grade.is_none() || request.measured.is_none() {
+        return None;
+    }
+    Some(format!(
+        "the grade was judged at the scene's rate, {} rpm, for want of --service-rpm: a rotor measured at one speed \
+         is graded at its maximum service speed, and at ten times the speed the same unbalance meets a grade ten \
+         times coarser; give --service-rpm N for a verdict",
+        sig(grade.omega * 30.0 / std::f64::consts::PI, 6)
+    ))
 }
 
 /// Per plane, the fitted column against the model's: the amplitude ratio |α_j|/|α̂_j| and the phase

@@ -149,3 +149,81 @@ fn ids_are_made_as_mdbook_makes_them() {
     let want = ["two-forms-of-eulers-equation-and-iθ", "run--o", "a", "a-1"];
     assert_eq!(ids, want.iter().map(|s| s.to_string()).collect());
 }
+
+/// The repository paths (`tests/…`, `src/…`, `scenarios/…`, `benches/…`, `python/…`, `examples/…`, `engines/…`)
+/// that `text` cites outside fenced blocks, with their line numbers; a pattern (`*`, `{`, `<`) or a placeholder
+/// (`src/motion/NAME.rs`) is not one.
+fn cited_paths(text: &str) -> Vec<(usize, String)> {
+    const ROOTS: [&str; 7] = [
+        "tests/",
+        "src/",
+        "scenarios/",
+        "benches/",
+        "python/",
+        "examples/",
+        "engines/",
+    ];
+    let in_path = |c: char| c.is_ascii_alphanumeric() || "_./-".contains(c);
+    let mut out = Vec::new();
+    let mut fenced = false;
+    for (n, line) in text.lines().enumerate() {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+            continue;
+        }
+        if fenced {
+            continue;
+        }
+        for root in ROOTS {
+            for (i, _) in line.match_indices(root) {
+                if line[..i].chars().next_back().is_some_and(in_path) {
+                    continue; // part of a longer path, e.g. docs/book/src/…
+                }
+                let rest = &line[i..];
+                let end = rest.find(|c: char| !in_path(c)).unwrap_or(rest.len());
+                let path = rest[..end].trim_end_matches(['.', ',', ':', '/']);
+                let placeholder = path.split('/').any(|part| {
+                    let stem = part.split('.').next().unwrap_or("");
+                    !stem.is_empty() && stem.chars().all(|c| c.is_ascii_uppercase() || c == '_')
+                });
+                let pattern = placeholder || rest[end..].starts_with(['*', '{', '<']);
+                if !pattern && path.len() > root.len() {
+                    out.push((n + 1, path.to_string()));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Issue 57: the book cited test files by paths they had left. Every repository path it cites exists.
+#[test]
+fn every_repository_path_the_book_cites_exists() {
+    let mut files = book_files();
+    files.push(repo_path("README.md"));
+    files.push(repo_path("ARCHITECTURE.md"));
+    let mut bad = Vec::new();
+    for path in &files {
+        let text = std::fs::read_to_string(path).unwrap();
+        for (line, cited) in cited_paths(&text) {
+            // From the repository's root, or from the book's (`src/SUMMARY.md`).
+            let book = repo_path("docs/book").join(&cited);
+            if !repo_path(&cited).exists() && !book.exists() {
+                bad.push(format!("{}:{line}: {cited}", shown(path)));
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "paths that do not exist:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn cited_paths_are_found_whole_and_patterns_left_out() {
+    let text = "see tests/it/book.rs, and `scenarios/tilted_disk.toml`.\n```sh\neulerdyn run src/nothing.rs\n```\n\
+                docs/book/src/x.md and scenarios/sweeps/*.toml, src/motion/NAME.rs";
+    let cited: Vec<String> = cited_paths(text).into_iter().map(|(_, p)| p).collect();
+    assert_eq!(cited, ["tests/it/book.rs", "scenarios/tilted_disk.toml"]);
+}
