@@ -28,6 +28,14 @@ fn balance_json(scene: &Path, planes: &str, radius: &str, extra: &[&str]) -> Val
     serde_json::from_str(&text).unwrap()
 }
 
+/// Asserts that the report `text` says each of `expect` and gives no confident "pass".
+fn assert_warned_without_a_pass(text: &str, expect: &[&str]) {
+    for expect in expect {
+        assert!(text.contains(expect), "`{expect}` is not in\n{text}");
+    }
+    assert!(!text.contains("pass against"), "{text}");
+}
+
 fn f(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
 }
@@ -65,17 +73,17 @@ fn trial_masses_in_kg_are_caught_and_no_verdict_is_given() {
     let text = balance_text(&scene, "-0.1,0.08", "0.25", &measured);
     // α = ΔV/T with T 1000 × too small: the fitted coefficients are 1000 × the model's, the corrections 1000 ×
     // too small, and the rotor seems finer than G 0.4.
-    for expect in [
-        "warning: the influence coefficients fitted to the table are not the rigid-rotor model's",
-        "plane A 1003 × at 0.1 deg, plane B 1000 × at 0.0 deg",
-        "in kg instead of g",
-        "finer than G 0.4",
-        "before: meets G",
-        "unverified against G 6.3 (see the warnings)",
-    ] {
-        assert!(text.contains(expect), "`{expect}` is not in\n{text}");
-    }
-    assert!(!text.contains("pass against"), "{text}");
+    assert_warned_without_a_pass(
+        &text,
+        &[
+            "warning: the influence coefficients fitted to the table are not the rigid-rotor model's",
+            "plane A 1003 × at 0.1 deg, plane B 1000 × at 0.0 deg",
+            "in kg instead of g",
+            "finer than G 0.4",
+            "before: meets G",
+            "unverified against G 6.3 (see the warnings)",
+        ],
+    );
     let json = balance_json(&scene, "-0.1,0.08", "0.25", &measured);
     assert_eq!(json["warnings"].as_array().unwrap().len(), 2);
     let target = &json["grade"]["target"];
@@ -298,14 +306,14 @@ fn a_grade_without_the_service_speed_is_never_a_bare_pass() {
     let table = write_file(dir.path(), "at600.csv", fan_table_at(at_600));
     let measured = ["--grade", "63", "--measured", table.to_str().unwrap()];
     let out = balance_text(&scene, "-0.1,0.08", "0.25", &measured);
-    for expect in [
-        "warning: the grade was judged at the scene's rate, 600.000 rpm, for want of --service-rpm",
-        "give --service-rpm N for a verdict",
-        "unverified against G 63 (see the warnings)",
-    ] {
-        assert!(out.contains(expect), "`{expect}` is not in\n{out}");
-    }
-    assert!(!out.contains("pass against"), "{out}");
+    assert_warned_without_a_pass(
+        &out,
+        &[
+            "warning: the grade was judged at the scene's rate, 600.000 rpm, for want of --service-rpm",
+            "give --service-rpm N for a verdict",
+            "unverified against G 63 (see the warnings)",
+        ],
+    );
     let json = balance_json(&scene, "-0.1,0.08", "0.25", &measured);
     assert_eq!(json["grade"]["target"]["verdict"], "unverified");
     assert_eq!(json["grade"]["target"]["pass"], false);
