@@ -467,3 +467,128 @@ fn the_plot_is_written_atomically() {
     let svg = std::fs::read_to_string(&fig).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("attitude error angle"));
 }
+
+/// Issue 57: one exit code for an output that cannot be created (2, as `run -o`), a PNG for `--plot FIG.png` (as
+/// `plot`), the legend beside the curves and the thresholds drawn.
+#[test]
+fn score_outputs_follow_the_output_policy() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let theirs = write_file(
+        dir.path(),
+        "euler.csv",
+        csv(&semi_implicit_euler(1.0 / 60.0, true), true),
+    );
+    let score_to = |plot: &Path| {
+        eulerdyn([
+            "score",
+            theirs.to_str().unwrap(),
+            "--scene",
+            scene.to_str().unwrap(),
+            "--plot",
+            plot.to_str().unwrap(),
+        ])
+    };
+    let out = score_to(&dir.path().join("nodir/x.svg"));
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(out.stderr.contains("nodir"), "{}", out.stderr);
+    let png = dir.path().join("errors.png");
+    let out = score_to(&png);
+    assert!(out.code == Some(0) || out.code == Some(1), "{}", out.stderr);
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(
+        bytes.starts_with(b"\x89PNG\r\n\x1a\n"),
+        "a PNG, not SVG text"
+    );
+    // 1000 × 600 px at 300 dpi.
+    let size = |at: usize| u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap());
+    assert_eq!((size(16), size(20)), (3125, 1875));
+    let svg_path = dir.path().join("errors.svg");
+    score_to(&svg_path);
+    let svg = std::fs::read_to_string(&svg_path).unwrap();
+    // The legend's labels stand right of the chart, which ends 270 px before the figure's right edge.
+    for label in [
+        "attitude error angle (rad)",
+        "dashed: each metric&apos;s threshold",
+    ] {
+        let at = svg
+            .find(label)
+            .unwrap_or_else(|| panic!("{label} not in the figure"));
+        let head = &svg[svg[..at].rfind("<text").unwrap()..at];
+        let x: f64 = head
+            .split("x=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(x > 730.0, "{label} at x = {x}");
+    }
+    // Each metric's threshold is a dashed line of its colour: the five curves and their legend samples are ten
+    // polylines, each dashed threshold across ~600 px in 4 px dashes and 5 px gaps dozens more.
+    assert!(svg.matches("<polyline").count() > 10 + 5 * 20, "{svg}");
+}
+
+/// Issue 57: `suite --out` onto a file is bad input (exit 2), and a card with one scene's output missing scores the
+/// rest and marks it (exit 1: not everything passes).
+#[test]
+fn a_suite_missing_a_scene_is_scored_and_marked() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_file(dir.path(), "a_file", "x");
+    let out = eulerdyn(["suite", "--out", file.to_str().unwrap()]);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(out.stderr.contains("a_file"), "{}", out.stderr);
+    let suite_dir = dir.path().join("suite");
+    eulerdyn(["suite", "--out", suite_dir.to_str().unwrap()]).expect_code(0);
+    let own = suite_dir.join("self");
+    std::fs::create_dir(&own).unwrap();
+    let (missing, _) = suite::SCENES[1];
+    for (name, _) in suite::SCENES.iter().filter(|(n, _)| *n != missing) {
+        std::fs::copy(
+            suite_dir.join(format!("{name}.csv")),
+            own.join(format!("{name}.csv")),
+        )
+        .unwrap();
+    }
+    let args = [
+        "score",
+        "--suite",
+        suite_dir.to_str().unwrap(),
+        "--engine",
+        "self",
+    ];
+    let card = eulerdyn(args);
+    assert_eq!(card.code, Some(1), "{}", card.stderr);
+    let lines: Vec<&str> = card.stdout.lines().collect();
+    assert_eq!(
+        lines.iter().filter(|l| l.ends_with("pass")).count(),
+        5,
+        "{}",
+        card.stdout
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with(missing) && l.contains("missing: no ")),
+        "{}",
+        card.stdout
+    );
+    let json = eulerdyn([&args[..], &["--json"]].concat());
+    let scores: serde_json::Value = serde_json::from_str(&json.stdout).unwrap();
+    let marked: Vec<&serde_json::Value> = (scores.as_array().unwrap().iter())
+        .filter(|s| s["missing"] == true)
+        .collect();
+    assert_eq!(marked.len(), 1);
+    assert_eq!(marked[0]["scene"], missing);
+    // No output at all is bad input.
+    let none = eulerdyn([
+        "score",
+        "--suite",
+        suite_dir.to_str().unwrap(),
+        "--engine",
+        "nobody",
+    ]);
+    assert_eq!(none.code, Some(2), "{}", none.stderr);
+}

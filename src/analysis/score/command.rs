@@ -8,7 +8,7 @@ use clap::{Args, Subcommand, ValueEnum};
 use super::{QuaternionOrder, ReadOptions, Score, ScoreError, Series, figure, report, suite};
 use crate::command::{Command, CommandError};
 use crate::frames::Axes;
-use crate::output::AtomicFile;
+use crate::output::{AtomicFile, plot};
 use crate::scene::{self, Overrides};
 
 /// The commands of scoring.
@@ -122,13 +122,21 @@ fn options(args: &ScoreArgs) -> Result<ReadOptions, ScoreError> {
     })
 }
 
-/// Writes the figure of `series` to `path`.
+/// Writes the figure of `series` to `path`: PNG when its name ends in `.png`, else SVG. A path that cannot be
+/// created (a missing folder) is bad input (exit 2), as for every other output; a failed write is exit 1.
 fn write_plot(path: &Path, title: &str, series: &[Series]) -> Result<(), ScoreError> {
     let svg = figure::render_svg(title, series).map_err(ScoreError::Run)?;
-    let fail = |e: String| ScoreError::Run(format!("{}: cannot write: {e}", path.display()));
-    let file = AtomicFile::create(path).map_err(|e| fail(e.to_string()))?;
-    file.write_and_commit(svg.as_bytes())
-        .map_err(|e| fail(e.to_string()))
+    let fail = |e: String| format!("{}: cannot write the figure: {e}", path.display());
+    let bytes =
+        plot::figure_bytes(svg, figure::PIXELS, path).map_err(|e| ScoreError::Run(fail(e)))?;
+    let file = AtomicFile::create(path).map_err(|e| {
+        ScoreError::Input(format!(
+            "{}: cannot create the output file: {e}",
+            path.display()
+        ))
+    })?;
+    file.write_and_commit(&bytes)
+        .map_err(|e| ScoreError::Run(fail(e.to_string())))
 }
 
 /// `eulerdyn score`: prints the score (or the suite's report card); `Err(Run)` when a verdict fails (exit 1).
@@ -138,7 +146,7 @@ fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
         (Some(dir), _, _) => {
             let engine = args.engine.as_deref().unwrap_or_default();
             let scores = suite::score_suite(dir, engine, &options)?;
-            let series: Vec<Series> = (scores.iter())
+            let series: Vec<Series> = (scores.iter().filter(|s| !s.missing))
                 .map(|s| Series {
                     name: s.scene.clone(),
                     ..s.series[0].clone()

@@ -1,16 +1,25 @@
 //! The errors against time on a log scale: one curve per metric of a score (`score --plot`), or the attitude
-//! error of each scene of a suite (`score --suite … --plot`). Drawn with plotters' SVG backend through the
-//! figures' shared `draw_curve`; values below [`FLOOR`] (an exact 0) are drawn at it.
+//! error of each scene of a suite (`score --suite … --plot`), each with its threshold as a dashed line of its
+//! colour. Drawn with plotters' SVG backend through the figures' shared `draw_curve`; values below [`FLOOR`] (an
+//! exact 0) are drawn at it. The legend stands beside the chart, so that it never covers a curve.
 
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::Series;
 use crate::output::plot::{
-    Area, Curve, DrawResult, FONT, PALETTE, decade_label, decade_range, draw_curve, svg_text,
+    Area, Curve, DrawResult, FONT, PALETTE, decade_label, decade_range, draw_curve,
+    draw_legend_entry, svg_text,
 };
 
 /// The smallest value drawn.
 pub const FLOOR: f64 = 1e-17;
+
+/// The figure's size in pixels (1/96 inch).
+pub const PIXELS: (u32, u32) = (1000, 600);
+
+/// The width of the legend's column (px).
+const LEGEND_WIDTH: u32 = 270;
 
 /// The figure of `series` (their names label the curves) under `title`, as SVG text.
 pub fn render_svg(title: &str, series: &[Series]) -> Result<String, String> {
@@ -25,23 +34,30 @@ pub fn render_svg(title: &str, series: &[Series]) -> Result<String, String> {
                 .collect(),
         })
         .collect();
-    svg_text((1000, 600), |root| draw(root, title, &curves))
+    let thresholds: Vec<f64> = series
+        .iter()
+        .map(|s| s.threshold.max(FLOOR).log10())
+        .collect();
+    svg_text(PIXELS, |root| draw(root, title, &curves, &thresholds))
 }
 
-fn draw(root: &Area<'_>, title: &str, curves: &[Curve]) -> DrawResult {
+fn draw(root: &Area<'_>, title: &str, curves: &[Curve], thresholds: &[f64]) -> DrawResult {
     root.fill(&WHITE)?;
     let body = root.titled(title, (FONT, 20).into_font().color(&BLACK))?;
+    let (w, _) = body.dim_in_pixel();
+    let (chart_area, legend_area) = body.split_horizontally(w.saturating_sub(LEGEND_WIDTH));
     let points = || curves.iter().flat_map(|c| c.points.iter());
     let t1 = points().map(|p| p.0).fold(f64::MIN_POSITIVE, f64::max);
-    let lo = points().map(|p| p.1).fold(f64::INFINITY, f64::min);
-    let hi = points().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+    let levels = || points().map(|p| p.1).chain(thresholds.iter().copied());
+    let lo = levels().fold(f64::INFINITY, f64::min);
+    let hi = levels().fold(f64::NEG_INFINITY, f64::max);
     let (y0, y1) = if lo.is_finite() {
         decade_range(lo, hi)
     } else {
         (-17.0, 0.0)
     };
     let y_fmt = |v: &f64| decade_label(*v);
-    let mut chart = ChartBuilder::on(&body)
+    let mut chart = ChartBuilder::on(&chart_area)
         .margin(12)
         .margin_right(20)
         .x_label_area_size(44)
@@ -59,20 +75,35 @@ fn draw(root: &Area<'_>, title: &str, curves: &[Curve]) -> DrawResult {
         .axis_desc_style((FONT, 15))
         .label_style((FONT, 13))
         .draw()?;
-    for curve in curves {
+    for (curve, &level) in curves.iter().zip(thresholds) {
         draw_curve(&mut chart, curve, 8, 1)?;
-        let style = ShapeStyle::from(&curve.color).stroke_width(2);
-        chart
-            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
-            .label(curve.label.as_str())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        let threshold = Curve {
+            label: String::new(),
+            color: curve.color,
+            dashed: true,
+            marker: None,
+            points: vec![(0.0, level), (t1, level)],
+        };
+        draw_curve(&mut chart, &threshold, 4, 1)?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.3))
-        .label_font((FONT, 14))
-        .draw()?;
+    draw_legend(&legend_area, curves)
+}
+
+/// The legend's column: one line per curve, then what the dashed lines are.
+fn draw_legend(area: &Area<'_>, curves: &[Curve]) -> DrawResult {
+    let text = TextStyle::from((FONT, 14).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    let line = 22;
+    let mut y = 40;
+    for curve in curves {
+        draw_legend_entry(area, curve, (8, y), &text, 1)?;
+        y += line;
+    }
+    let note = TextStyle::from((FONT, 13).into_font().color(&RGBColor(0x55, 0x55, 0x55)))
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    area.draw(&Text::new(
+        "dashed: each metric's threshold",
+        (8, y + line / 2),
+        note,
+    ))?;
     Ok(())
 }

@@ -62,6 +62,8 @@ pub struct Series {
     pub t: Vec<f64>,
     /// The metric at those times.
     pub values: Vec<f64>,
+    /// The metric's stated threshold (drawn as a dashed line).
+    pub threshold: f64,
 }
 
 impl Series {
@@ -115,16 +117,17 @@ pub fn metrics(
 ) -> (Vec<Metric>, Vec<Series>) {
     let refs = &reference.samples;
     let t: Vec<f64> = rows.iter().map(|r| r.t).collect();
-    let series = |name: &str, values: Vec<f64>| Series {
+    let series = |name: &str, values: Vec<f64>, threshold: f64| Series {
         name: name.into(),
         t: t.clone(),
         values,
+        threshold,
     };
     let attitude = (rows.iter().zip(refs))
         .map(|(r, s)| attitude_angle(&r.q, &s.q))
         .collect();
     let mut all = vec![(
-        series("attitude error angle (rad)", attitude),
+        series("attitude error angle (rad)", attitude, ATTITUDE_MAX),
         "attitude",
         ATTITUDE_MAX,
     )];
@@ -139,22 +142,30 @@ pub fn metrics(
         let h_norm = pairs().map(|(a, b)| (a.h_o_s.norm() - b.h_o_s.norm()).abs() / h_scale);
         let h_direction = pairs().map(|(a, b)| angle(&a.h_o_s, &b.h_o_s));
         all.push((
-            series("angular velocity error (relative)", omega.collect()),
+            series(
+                "angular velocity error (relative)",
+                omega.collect(),
+                OMEGA_MAX,
+            ),
             "omega",
             OMEGA_MAX,
         ));
         all.push((
-            series("energy drift (relative)", energy.collect()),
+            series("energy drift (relative)", energy.collect(), ENERGY_MAX),
             "energy",
             ENERGY_MAX,
         ));
         all.push((
-            series("|H| drift (relative)", h_norm.collect()),
+            series("|H| drift (relative)", h_norm.collect(), H_NORM_MAX),
             "h_norm",
             H_NORM_MAX,
         ));
         all.push((
-            series("H direction drift in space (rad)", h_direction.collect()),
+            series(
+                "H direction drift in space (rad)",
+                h_direction.collect(),
+                H_DIRECTION_MAX,
+            ),
             "h_direction",
             H_DIRECTION_MAX,
         ));

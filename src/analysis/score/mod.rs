@@ -65,12 +65,36 @@ pub struct Score {
     /// The metrics' values against time (the figure's curves).
     #[serde(skip)]
     pub series: Vec<Series>,
+    /// A suite's scene whose output the engine did not write: not scored, and not a pass.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub missing: bool,
 }
 
 impl Score {
-    /// Whether every metric is within its threshold.
+    /// Whether every metric is within its threshold (a missing output never passes).
     pub fn passes(&self) -> bool {
-        self.metrics.iter().all(|m| m.passes)
+        !self.missing && self.metrics.iter().all(|m| m.passes)
+    }
+
+    /// The entry of a suite's scene `scene` whose output `file` is missing.
+    pub fn missing(file: &Path, scene: &str) -> Self {
+        Score {
+            file: file.display().to_string(),
+            scene: scene.to_string(),
+            rows: 0,
+            t_last: 0.0,
+            reference: String::new(),
+            reference_error: None,
+            referee_adequate: true,
+            metrics: Vec::new(),
+            warnings: Vec::new(),
+            notes: vec![format!(
+                "{}: no such file: the engine's output for this scene (run its adapter first)",
+                file.display()
+            )],
+            series: Vec::new(),
+            missing: true,
+        }
     }
 
     /// The metric with this key.
@@ -114,5 +138,6 @@ pub fn score(path: &Path, scene: &Scene, options: &ReadOptions) -> Result<Score,
         warnings: trajectory.warnings,
         notes,
         series,
+        missing: false,
     })
 }

@@ -92,6 +92,10 @@ pub fn card(engine: &str, scores: &[Score]) -> String {
     out.push_str("  verdict\n");
     for s in scores {
         out.push_str(&format!("{:<24}", s.scene));
+        if s.missing {
+            out.push_str(&format!("  missing: no {} (not scored)\n", s.file));
+            continue;
+        }
         for (key, _) in CARD {
             let worst = (s.metrics.iter())
                 .filter(|m| m.key == key || (key == "event" && m.key.starts_with("event:")))

@@ -131,7 +131,17 @@ pub fn write_suite(dir: &Path) -> Result<Vec<PathBuf>, ScoreError> {
     let output = |p: &Path, e: std::io::Error| {
         ScoreError::Run(format!("{}: cannot write: {e}", p.display()))
     };
-    std::fs::create_dir_all(dir).map_err(|e| output(dir, e))?;
+    // A folder that cannot be made or a file that cannot be created is bad input (exit 2), as for every output.
+    let refused = |p: &Path, e: std::io::Error| {
+        ScoreError::Input(format!("{}: cannot create: {e}", p.display()))
+    };
+    if dir.exists() && !dir.is_dir() {
+        return Err(ScoreError::Input(format!(
+            "{}: --out names a file; give a folder (new or existing) for the suite",
+            dir.display()
+        )));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| refused(dir, e))?;
     let mut contents: Vec<(PathBuf, String)> = Vec::new();
     let mut readme = String::from(
         "# eulerdyn conformance suite\n\nEach scene: `NAME.toml` (the scene), `NAME.csv` (eulerdyn's reference at \
@@ -151,14 +161,15 @@ pub fn write_suite(dir: &Path) -> Result<Vec<PathBuf>, ScoreError> {
     contents.push((dir.join("README.md"), readme));
     let mut files = Vec::new();
     for (path, text) in &contents {
-        let file = AtomicFile::create(path).map_err(|e| output(path, e))?;
+        let file = AtomicFile::create(path).map_err(|e| refused(path, e))?;
         files.push(file.write(text.as_bytes()).map_err(|e| output(path, e))?);
     }
     AtomicFile::commit_all(files).map_err(|(i, e)| output(&contents[i].0, e))?;
     Ok(contents.into_iter().map(|(p, _)| p).collect())
 }
 
-/// Scores the outputs of `engine` in `DIR/ENGINE/<scene>.csv` against the suite's scenes in `dir`.
+/// Scores the outputs of `engine` in `DIR/ENGINE/<scene>.csv` against the suite's scenes in `dir`; a scene whose
+/// output is missing is marked ([`Score::missing`]) and the others scored. No output at all is bad input.
 pub fn score_suite(
     dir: &Path,
     engine: &str,
@@ -170,13 +181,17 @@ pub fn score_suite(
         let scene = scene::load(&scene_path, &Overrides::default())
             .map_err(|e| ScoreError::Input(e.to_string()))?;
         let theirs = dir.join(engine).join(format!("{name}.csv"));
-        if !theirs.is_file() {
-            return Err(ScoreError::Input(format!(
-                "{}: no such file: the engine's output for scene {name} (run its adapter first)",
-                theirs.display()
-            )));
+        if theirs.is_file() {
+            scores.push(super::score(&theirs, &scene, options)?);
+        } else {
+            scores.push(Score::missing(&theirs, name));
         }
-        scores.push(super::score(&theirs, &scene, options)?);
+    }
+    if scores.iter().all(|s| s.missing) {
+        return Err(ScoreError::Input(format!(
+            "{}: no output of the engine for any scene of the suite (run its adapter first)",
+            dir.join(engine).display()
+        )));
     }
     Ok(scores)
 }

@@ -121,6 +121,19 @@ impl FigureFormat {
     }
 }
 
+/// The bytes of the figure `svg`, drawn `pixels` wide and high (1/96 inch each), in the format `out`'s name asks
+/// for: the SVG text, or its PNG at [`png::DEFAULT_DPI`] (for figures without a `--dpi` of their own).
+pub fn figure_bytes(svg: String, pixels: (u32, u32), out: &Path) -> Result<Vec<u8>, String> {
+    match FigureFormat::of(out) {
+        FigureFormat::Svg => Ok(svg.into_bytes()),
+        FigureFormat::Png => {
+            let scale = png::DEFAULT_DPI / 96.0;
+            let px = |p: u32| (f64::from(p) * scale).round() as u32;
+            png::rasterise(&svg, (px(pixels.0), px(pixels.1))).map(|image| image.bytes)
+        }
+    }
+}
+
 /// A `--title` that is one line of printable text.
 fn check_title(title: &str) -> Result<(), PlotError> {
     if title.chars().any(char::is_control) {
