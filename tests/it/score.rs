@@ -276,7 +276,7 @@ fn the_suite_s_own_references_score_at_round_off() {
 
 /// Scores `text` as their CSV with `extra` arguments and a --plot path; asserts exit 2, a message naming the file
 /// and `expect`, and that nothing was written.
-fn refused(text: &[u8], extra: &[&str], expect: &[&str]) {
+fn refused(text: &[u8], extra: &[&str], expect: &[&str]) -> String {
     let dir = tempfile::tempdir().unwrap();
     let scene = write_file(dir.path(), "free.toml", FREE);
     let theirs = write_file(dir.path(), "theirs.csv", text);
@@ -302,6 +302,7 @@ fn refused(text: &[u8], extra: &[&str], expect: &[&str]) {
         ["free.toml", "theirs.csv"],
         "nothing written"
     );
+    out.stderr.clone()
 }
 
 /// The exact CSV of [`FREE`] with row `row` (1-based) changed by `f`.
@@ -352,9 +353,13 @@ fn bad_input_is_refused_naming_file_row_and_column() {
         &[
             "theirs.csv",
             "row 302, column `t`",
-            "past the scene's t_end = 5",
+            "past the scene's t_end = 5 (if the times are in milliseconds, give them in seconds)",
         ],
     );
+    // Times in milliseconds: the first past t_end says so; a time beyond 1000 × t_end does not suggest it.
+    let far = format!("{}5001,1,0,0,0,0,0,2\n", text);
+    let out = refused(far.as_bytes(), &[], &["past the scene's t_end = 5"]);
+    assert!(!out.contains("milliseconds"), "{out}");
     refused(
         text.as_bytes(),
         &["--map", "w=q_w"],
@@ -591,4 +596,92 @@ fn a_suite_missing_a_scene_is_scored_and_marked() {
         "nobody",
     ]);
     assert_eq!(none.code, Some(2), "{}", none.stderr);
+}
+
+/// Issue 57: the two likeliest export slips — the quaternion written x, y, z, w and ω in space axes — failed loudly
+/// with no hint, though the first row is not the scene's q₀ and ω₀. Now each is named, in the text and the JSON,
+/// and the flags it names make the same file score at round-off.
+#[test]
+fn an_xyzw_quaternion_and_space_omega_are_named_from_the_first_row() {
+    let dir = tempfile::tempdir().unwrap();
+    // FREE tilted by 20° about x at t = 0, so that space and body axes differ.
+    let q0 = UnitQuaternion::from_euler_angles(20f64.to_radians(), 0.0, 0.0);
+    let c = q0.quaternion();
+    let tilted = FREE.replace(
+        "omega = [0.4, 0.2, 2.0]",
+        &format!(
+            "omega = [0.4, 0.2, 2.0]\nattitude = [{}, {}, {}, {}]",
+            c.w, c.i, c.j, c.k
+        ),
+    );
+    let scene = write_file(dir.path(), "tilted.toml", &tilted);
+    let body =
+        TorqueFreeBody::new(Vector3::new(1.0, 2.0, 3.0), Vector3::new(0.4, 0.2, 2.0), q0).unwrap();
+    // Written x, y, z, w in the generic columns q_0..q_3 (read w, x, y, z without --quaternion); ω in space axes.
+    let rows = |header: &str| {
+        let mut text = format!("t,{header},omega_x,omega_y,omega_z\n");
+        for t in frames(5.0) {
+            let (q, w_s) = (body.attitude(t), body.attitude(t) * body.omega_p(t));
+            let c = q.quaternion();
+            text += &format!(
+                "{t},{},{},{},{},{},{},{}\n",
+                c.i, c.j, c.k, c.w, w_s.x, w_s.y, w_s.z
+            );
+        }
+        text
+    };
+    let theirs = write_file(dir.path(), "slips.csv", rows("q_0,q_1,q_2,q_3"));
+    let args = [
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ];
+    let out = eulerdyn(args);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    for hint in [
+        "hint: the first row's attitude is the scene's q0 with its components in the other order: give --quaternion xyzw",
+        "hint: the first row's omega",
+    ] {
+        assert!(
+            out.stdout.contains(hint),
+            "`{hint}` is not in\n{}",
+            out.stdout
+        );
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&eulerdyn([&args[..], &["--json"]].concat()).stdout).unwrap();
+    assert_eq!(
+        json["hints"].as_array().unwrap().len(),
+        2,
+        "{}",
+        json["hints"]
+    );
+    // With the quaternion read in its order, the ω hint is exact: it names --omega space.
+    let xyzw = [&args[..], &["--quaternion", "xyzw"]].concat();
+    let out = eulerdyn(&xyzw);
+    assert!(
+        out.stdout.contains("hint: the first row's omega is the scene's omega0 in the other axes: give --omega space"),
+        "{}",
+        out.stdout
+    );
+    // Columns named q_w..q_z say their order themselves: the hint is about the header.
+    let named = write_file(dir.path(), "named.csv", rows("q_w,q_x,q_y,q_z"));
+    let out = eulerdyn([
+        "score",
+        named.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+    ]);
+    assert!(
+        out.stdout.contains(
+            "the columns q_w, q_x, q_y, q_z hold x, y, z, w; name them for what they hold"
+        ),
+        "{}",
+        out.stdout
+    );
+    let fixed = eulerdyn([&xyzw[..], &["--omega", "space", "--json"]].concat());
+    assert_eq!(fixed.code, Some(0), "{}", fixed.stdout);
+    let json: serde_json::Value = serde_json::from_str(&fixed.stdout).unwrap();
+    assert_eq!(json["hints"].as_array().unwrap().len(), 0);
 }

@@ -98,7 +98,9 @@ fn draw_legend(area: &Area<'_>, curves: &[Curve]) -> DrawResult {
         draw_legend_entry(area, curve, (8, y), &text, 1)?;
         y += line;
     }
-    let note = TextStyle::from((FONT, 13).into_font().color(&RGBColor(0x55, 0x55, 0x55)))
+    let note = (FONT, 13)
+        .into_font()
+        .color(&RGBColor(0x55, 0x55, 0x55))
         .pos(Pos::new(HPos::Left, VPos::Center));
     area.draw(&Text::new(
         "dashed: each metric's threshold",

@@ -3,7 +3,8 @@
 //!
 //! [`reader`] reads their CSV, [`reference`](mod@reference) computes the referee at their times (the closed form where one
 //! applies, else dop853 at rtol 1e-13 with its error estimated), [`metrics`] compares row by row — attitude
-//! angle, ω, energy, |H|, H's direction in space, event times — [`report`] prints, [`suite`] is the conformance
+//! angle, ω, energy, |H|, H's direction in space, event times — [`hints`] names the likely export slip when their
+//! first row is not the scene's initial state, [`report`] prints, [`suite`] is the conformance
 //! suite (`eulerdyn suite`, `eulerdyn score --suite`), `figure` (feature `plot`) draws the errors against time, `command` (feature `cli`) is
 //! `eulerdyn score` and `eulerdyn suite`.
 
@@ -11,6 +12,7 @@
 pub mod command;
 #[cfg(feature = "plot")]
 pub mod figure;
+pub mod hints;
 pub mod metrics;
 pub mod reader;
 pub mod reference;
@@ -23,6 +25,7 @@ pub use metrics::{Metric, Series};
 pub use reader::{QuaternionOrder, ReadOptions};
 pub use reference::ErrorEstimate;
 
+use crate::frames::Axes;
 use crate::scene::Scene;
 
 /// The referee must be at least this many times more accurate than the errors it reports.
@@ -60,6 +63,8 @@ pub struct Score {
     pub metrics: Vec<Metric>,
     /// Warnings from reading their file.
     pub warnings: Vec<String>,
+    /// The likely export slip when their first row is not the scene's initial state ([`hints`]).
+    pub hints: Vec<String>,
     /// What was not measured, and why.
     pub notes: Vec<String>,
     /// The metrics' values against time (the figure's curves).
@@ -88,6 +93,7 @@ impl Score {
             referee_adequate: true,
             metrics: Vec::new(),
             warnings: Vec::new(),
+            hints: Vec::new(),
             notes: vec![format!(
                 "{}: no such file: the engine's output for this scene (run its adapter first)",
                 file.display()
@@ -121,6 +127,12 @@ pub fn score(path: &Path, scene: &Scene, options: &ReadOptions) -> Result<Score,
         });
     }
     let (metrics, series) = metrics::metrics(scene, rows, samples.as_deref(), &reference);
+    let hints = hints::hints(
+        &rows[0],
+        &reference.samples[0],
+        trajectory.columns,
+        options.omega.unwrap_or(Axes::Body),
+    );
     let referee_adequate = reference.estimate.is_none_or(|e| {
         let reported = |key: &str| metrics.iter().find(|m| m.key == key).map(|m| m.largest);
         let ok = |est: f64, key: &str| reported(key).is_none_or(|v| REFEREE_MARGIN * est <= v);
@@ -136,6 +148,7 @@ pub fn score(path: &Path, scene: &Scene, options: &ReadOptions) -> Result<Score,
         referee_adequate,
         metrics,
         warnings: trajectory.warnings,
+        hints,
         notes,
         series,
         missing: false,

@@ -67,6 +67,19 @@ pub struct Trajectory {
     pub rows: Vec<TheirRow>,
     /// What reading it warned of (e.g. quaternions normalised).
     pub warnings: Vec<String>,
+    /// The columns the attitude was read from.
+    pub columns: AttitudeColumns,
+}
+
+/// Which columns gave the attitude.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AttitudeColumns {
+    /// `q_w..q_z`, named for their components.
+    Named,
+    /// `q_0..q_3`, in this order (`--quaternion`).
+    Generic(QuaternionOrder),
+    /// `R_11..R_33`.
+    Matrix,
 }
 
 /// How the attitude is given.
@@ -134,7 +147,12 @@ pub fn read_trajectory(
     {
         reading.add(csv.rows(), &values, &attitude, omega.is_some())?;
     }
-    reading.finish()
+    let columns = match &attitude {
+        Attitude::Quaternion(_, names) if names[0] == "q_w" => AttitudeColumns::Named,
+        Attitude::Quaternion(..) => AttitudeColumns::Generic(options.quaternion),
+        Attitude::Matrix(_) => AttitudeColumns::Matrix,
+    };
+    reading.finish(columns)
 }
 
 /// The attitude's columns: q_w..q_z, else q_0..q_3 in `order`, else R_11..R_33.
@@ -259,7 +277,15 @@ impl<'p> Reading<'p> {
             return Err(self.refuse(
                 row,
                 "t",
-                format!("time {t} is past the scene's t_end = {}", self.t_end),
+                format!(
+                    "time {t} is past the scene's t_end = {}{}",
+                    self.t_end,
+                    if t / 1000.0 <= self.t_end {
+                        " (if the times are in milliseconds, give them in seconds)"
+                    } else {
+                        ""
+                    }
+                ),
             ));
         }
         let (q, off) = match attitude {
@@ -308,7 +334,7 @@ impl<'p> Reading<'p> {
         Ok(())
     }
 
-    fn finish(self) -> Result<Trajectory, ScoreError> {
+    fn finish(self, columns: AttitudeColumns) -> Result<Trajectory, ScoreError> {
         if self.rows.len() < 2 {
             return Err(ScoreError::Input(format!(
                 "{}: {} data rows; a trajectory needs at least 2",
@@ -328,6 +354,7 @@ impl<'p> Reading<'p> {
         Ok(Trajectory {
             rows: self.rows,
             warnings,
+            columns,
         })
     }
 }

@@ -30,10 +30,8 @@ pub fn text(score: &Score) -> String {
             }
         )),
     }
-    for line in score
-        .warnings
-        .iter()
-        .map(|w| format!("warning: {w}"))
+    for line in (score.warnings.iter().map(|w| format!("warning: {w}")))
+        .chain(score.hints.iter().map(|h| format!("hint: {h}")))
         .chain(score.notes.iter().cloned())
     {
         out.push_str(&line);
