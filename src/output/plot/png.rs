@@ -1,5 +1,5 @@
 //! PNG output: the figure's SVG rasterised by resvg (pure Rust: usvg parses, tiny-skia paints) on a white
-//! background. Its text is first set as outlines of DejaVu Sans ([`super::glyphs`]), embedded in the program
+//! background. Its text is first set as outlines of DejaVu Sans (`glyphs`), embedded in the program
 //! (`assets/fonts/`, Bitstream Vera licence), which stands for the SVG's `sans-serif`: no system font is looked up,
 //! so the PNG is the same on every machine.
 //!
