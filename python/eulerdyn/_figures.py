@@ -82,6 +82,12 @@ def plot(
     Raises:
         SceneError: the scene, the CSV or an option cannot be used (the message names the file, row and column).
         RunError: the scene's run failed, or the figure could not be drawn.
+
+    Example:
+        >>> import eulerdyn
+        >>> figure = eulerdyn.plot("scenarios/tilted_disk.toml", ["h_space", "drift"])
+        >>> str(figure).startswith("<svg")
+        True
     """
     if panels is not None and not isinstance(panels, str):
         panels = ",".join(panels)
@@ -102,6 +108,13 @@ def view(source: RunLike, path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any
     Raises:
         SceneError: the scene or the CSV cannot be used, or ``path`` cannot be created.
         RunError: the scene's run failed, or the page could not be written.
+
+    Example:
+        >>> import eulerdyn, os, tempfile
+        >>> page = os.path.join(tempfile.mkdtemp(), "disk.html")
+        >>> drawn = eulerdyn.view("scenarios/tilted_disk.toml", page)
+        >>> drawn["rows_drawn"] > 0 and os.path.getsize(page) == drawn["bytes"]
+        True
     """
     out = os.fspath(path)
     return dict(_with_csv(source, lambda csv: _eulerdyn.view(csv, out)))

@@ -17,6 +17,7 @@ REPO = Path(__file__).resolve().parents[2]
 BOOK = REPO / "docs" / "book" / "src"
 REFERENCE = BOOK / "reference" / "python.md"
 API = REPO / "python" / "eulerdyn" / "_api.py"
+FIGURES = REPO / "python" / "eulerdyn" / "_figures.py"
 INIT = REPO / "python" / "eulerdyn" / "__init__.py"
 
 
@@ -52,10 +53,19 @@ def test_every_python_block_of_the_book_runs():
 
 
 def public_functions():
-    """The functions ``eulerdyn`` exports (``__all__``), with their ast nodes in ``_api.py``."""
+    """The functions ``eulerdyn`` exports (``__all__``), with their ast nodes in ``_api.py`` and ``_figures.py``."""
     exported = set(ast.literal_eval(_assigned(ast.parse(INIT.read_text(encoding="utf-8")), "__all__")))
-    tree = ast.parse(API.read_text(encoding="utf-8"))
-    return [n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name in exported]
+    nodes = [n for f in (API, FIGURES) for n in ast.parse(f.read_text(encoding="utf-8")).body]
+    return [n for n in nodes if isinstance(n, ast.FunctionDef) and n.name in exported]
+
+
+def test_every_exported_function_is_in_the_reference():
+    import inspect
+
+    import eulerdyn
+
+    functions = {n for n in eulerdyn.__all__ if inspect.isfunction(getattr(eulerdyn, n))}
+    assert functions == {fn.name for fn in public_functions()}
 
 
 def _assigned(tree, name):
