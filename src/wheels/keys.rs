@@ -35,7 +35,7 @@ file_table! {
         /// `max_torque`, `max_speed_rpm`, `friction`: the wheel's limits and friction ([`crate::wheels`]).
         group wheel: WheelKeys {
             opt max_torque: f64 = key("number", "N·m", "none", "", "> 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)");
-            opt max_speed_rpm: f64 = key("number", "rpm", "none", "", "> 0: the relative spin's limit; at it the motor can only slow the wheel");
+            opt max_speed_rpm: f64 = key("number", "rpm", "none", "", "> 0: the relative spin's limit (the initial spin must be within it); at it the motor can only slow the wheel");
             opt friction: FrictionKeys = key("{ coulomb, viscous, stribeck = { torque, speed } }", "N·m, N·m·s, (N·m, rad/s)", "none", "", "friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω");
         }
         /// `at`: the wheel's centre from the reference origin, body axes (m; absent: the origin).

@@ -5,11 +5,11 @@ use std::sync::Arc;
 
 use nalgebra::{Unit, Vector3};
 
-use super::MAX_ROTORS;
 use super::RotorSpec;
 use super::gyrostat::{Drive, Gyrostat, Imbalance, Rotor};
 use super::read_wheel_table;
 use super::spec::RotorDrive;
+use super::{MAX_ROTORS, RPM};
 use crate::effects::TorqueSum;
 use crate::frames::Vector;
 use crate::keys::{Checked, Invalid, KeyPath, finite, invalid, positive, vector};
@@ -99,13 +99,27 @@ fn validate_rotor(index: usize, spec: &RotorSpec, center_b: &Vector3<f64>) -> Ch
             &axis_b,
         )
     });
+    let spin0 = finite(key("spin"), spec.spin, "rad/s")?;
+    let control = spec.wheel.validate(&table, motorless(&spec.drive))?;
+    if spin0.abs() > control.max_speed * (1.0 + 1e-12) {
+        // The limit holds the spin at ±max_speed; a wheel that starts beyond it would be kept there silently.
+        return invalid(
+            key("spin"),
+            format!(
+                "the initial spin {spin0} rad/s ({:.1} rpm) is beyond max_speed_rpm = {}: start the wheel within \
+                 its limit",
+                spin0 / RPM,
+                spec.wheel.max_speed_rpm.unwrap_or(f64::INFINITY)
+            ),
+        );
+    }
     Ok(Rotor {
         name,
         axis_b,
         imbalance,
         inertia: positive(key("inertia"), spec.inertia, "kg*m^2")?,
-        spin0: finite(key("spin"), spec.spin, "rad/s")?,
-        control: spec.wheel.validate(&table, motorless(&spec.drive))?,
+        spin0,
+        control,
         drive: match spec.drive {
             RotorDrive::ConstantSpin => Drive::Accel(0.0),
             RotorDrive::Free => Drive::Free,

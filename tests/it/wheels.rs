@@ -393,6 +393,14 @@ fn bad_wheel_keys_are_refused_naming_the_key() {
             WHEEL_SCENE.replace("cmd.csv", "missing.csv"),
             "body.rotor[0].torque_table",
         ),
+        (
+            // Issue 57: the limit held a wheel that started beyond it there, silently.
+            "an initial spin beyond the speed limit (200 rad/s, 1910 rpm, against 1000 rpm)",
+            untabled(
+                "[[body.rotor]]\naxis = [0.0, 1.0, 0.0]\ninertia = 0.05\nspin = 200.0\ntorque = 0.0\nmax_speed_rpm = 1000.0",
+            ),
+            "body.rotor[1].spin",
+        ),
     ];
     assert_refused_writing_nothing(&cases);
 }
