@@ -30,27 +30,29 @@ pub fn hints(
 ) -> Vec<String> {
     let mut out = Vec::new();
     let q_ref = reference.q;
-    if first.q.angle_to(&q_ref) > AGREE {
+    let off = first.q.angle_to(&q_ref);
+    if off > AGREE {
         let reordered = reordering(&first.q, columns);
-        if let Some((_, fix)) = reordered.filter(|(q, _)| q.angle_to(&q_ref) <= AGREE) {
-            out.push(format!(
-                "the first row's attitude is the scene's q0 with its components in the other order: {fix}"
-            ));
-        } else if first.q.inverse().angle_to(&q_ref) <= AGREE {
-            out.push(format!(
-                "the first row's attitude is the inverse of the scene's q0: the file's {} turn space into body \
-                 axes; export their {} (eulerdyn reads body → space)",
-                if columns == AttitudeColumns::Matrix { "matrices" } else { "quaternions" },
-                if columns == AttitudeColumns::Matrix { "transposes" } else { "conjugates" },
-            ));
-        } else {
-            out.push(format!(
-                "the first row's attitude is {:.3e} rad from the scene's q0 at t = {}: check the scene, the \
-                 quaternion's order (--quaternion) and its direction (body → space)",
-                first.q.angle_to(&q_ref),
-                first.t
-            ));
-        }
+        let (what, inverse) = match columns {
+            AttitudeColumns::Matrix => ("matrices", "transposes"),
+            _ => ("quaternions", "conjugates"),
+        };
+        out.push(
+            if let Some((_, fix)) = reordered.filter(|(q, _)| q.angle_to(&q_ref) <= AGREE) {
+                format!("the first row's attitude is the scene's q0 with its components in the other order: {fix}")
+            } else if first.q.inverse().angle_to(&q_ref) <= AGREE {
+                format!(
+                    "the first row's attitude is the inverse of the scene's q0: the file's {what} turn space into \
+                     body axes; export their {inverse} (eulerdyn reads body → space)"
+                )
+            } else {
+                format!(
+                    "the first row's attitude is {off:.3e} rad from the scene's q0 at t = {}: check the scene, the \
+                     quaternion's order (--quaternion) and its direction (body → space)",
+                    first.t
+                )
+            },
+        );
     }
     if let Some(omega_b) = first.omega_b {
         out.extend(omega_hint(
