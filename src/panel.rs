@@ -32,12 +32,16 @@ pub enum Panel {
     Theta,
     /// Each wheel's spin relative to the body (runs with `[[body.rotor]]`; its columns are the run's).
     WheelSpin,
-    /// Each wheel's motor torque applied (solid) and commanded (dashed, wheels under control).
+    /// Each wheel's axial moment of momentum J (a·ω + Ω) (runs with `[[body.rotor]]`).
+    WheelMomentum,
+    /// Each wheel's motor torque applied (solid), commanded and its friction torque (dashed, wheels under control).
     WheelTorque,
+    /// Each wheel's friction torque (runs whose wheels are under control: a law, a table, a limit or friction).
+    WheelFriction,
 }
 
 impl Panel {
-    /// The panels every run has, in the order they are drawn by default (`--panels all`).
+    /// The panels every run has, in the order they are drawn by default.
     pub const ALL: [Panel; 6] = [
         Panel::HBody,
         Panel::HSpace,
@@ -54,22 +58,52 @@ impl Panel {
     /// The panels a run has, read from its header (`has`) where no sidecar says them
     /// ([`crate::scene::Facts::panels`]): every panel of [`Panel::ALL`], then those of [`Panel::AXIS_ONLY`] whose
     /// columns the header has (the bearings in space axes when the support moves, `moving_support`), then
-    /// [`Panel::WHEELS`] when the run has wheels.
+    /// [`Panel::WHEELS`] when the run has `wheels` (their names), with [`Panel::WheelFriction`] when each has its
+    /// `<name>_friction` column (wheels under control).
     ///
     /// ```
     /// use eulerdyn::panel::Panel;
-    /// let free = Panel::of_run(|c| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup"), false, false);
+    /// let free = Panel::of_run(|c| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup"), false, &[]);
     /// assert_eq!(free, Panel::ALL);
+    /// let wheel = Panel::of_run(|c| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup"), false,
+    ///     &["rw".to_string()]);
+    /// assert_eq!(wheel.last(), Some(&Panel::WheelFriction));
     /// ```
-    pub fn of_run(has: impl Fn(&str) -> bool, moving_support: bool, wheels: bool) -> Vec<Panel> {
+    pub fn of_run(
+        has: impl Fn(&str) -> bool,
+        moving_support: bool,
+        wheels: &[String],
+    ) -> Vec<Panel> {
         let axis = (Panel::AXIS_ONLY.into_iter())
             .filter(|p| p.columns().iter().all(|c| has(c)))
             .map(|p| match p {
                 Panel::Bearings if moving_support => Panel::BearingsSpace,
                 p => p,
             });
-        let wheels = Panel::WHEELS.into_iter().filter(|_| wheels);
-        Panel::ALL.into_iter().chain(axis).chain(wheels).collect()
+        let friction = wheels.iter().all(|n| has(&format!("{n}_friction")));
+        let wheel_panels = Panel::wheel_panels(!wheels.is_empty(), friction);
+        Panel::ALL
+            .into_iter()
+            .chain(axis)
+            .chain(wheel_panels)
+            .collect()
+    }
+
+    /// The wheel panels a run has: none without `wheels`, else [`Panel::WHEELS`], then [`Panel::WheelFriction`]
+    /// with the wheels' `friction` columns.
+    pub fn wheel_panels(wheels: bool, friction: bool) -> Vec<Panel> {
+        let friction = [Panel::WheelFriction].into_iter().filter(|_| friction);
+        (Panel::WHEELS.into_iter().chain(friction))
+            .filter(|_| wheels)
+            .collect()
+    }
+
+    /// Whether the panel draws the wheels' columns (named by the wheels).
+    pub fn is_wheel(self) -> bool {
+        matches!(
+            self,
+            Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction
+        )
     }
 
     /// The name used with `--panels`.
@@ -86,13 +120,16 @@ impl Panel {
             Panel::Support => "support",
             Panel::Theta => "theta",
             Panel::WheelSpin => "wheel_spin",
+            Panel::WheelMomentum => "wheel_h",
             Panel::WheelTorque => "wheel_torque",
+            Panel::WheelFriction => "wheel_friction",
         }
     }
 
     /// The panels of rotor runs, drawn after the others by default when the run has wheel columns; their columns
-    /// are named by the wheels (`<name>_spin`, `<name>_torque`, `<name>_torque_cmd`).
-    pub const WHEELS: [Panel; 2] = [Panel::WheelSpin, Panel::WheelTorque];
+    /// are named by the wheels (`<name>_spin`, `<name>_h`, `<name>_torque`, `<name>_torque_cmd`,
+    /// `<name>_friction`). [`Panel::WheelFriction`] follows them when the wheels are under control.
+    pub const WHEELS: [Panel; 3] = [Panel::WheelSpin, Panel::WheelMomentum, Panel::WheelTorque];
 
     /// The CSV columns the panel needs (besides `t`).
     pub fn columns(self) -> &'static [&'static str] {
@@ -118,7 +155,9 @@ impl Panel {
             ],
             Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
             Panel::Theta => &["theta"],
-            Panel::WheelSpin | Panel::WheelTorque => &[],
+            Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
+                &[]
+            }
         }
     }
 
@@ -141,9 +180,13 @@ impl Panel {
                 Some("only runs of scenes with `bearings` have the bearing forces")
             }
             Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
-            Panel::WheelSpin | Panel::WheelTorque => {
+            Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque => {
                 Some("only runs of scenes with [[body.rotor]] have the wheels' columns")
             }
+            Panel::WheelFriction => Some(
+                "only runs whose wheels are under control (a law, a table, mode = \"free\", a limit or friction) \
+                 have the wheels' friction columns",
+            ),
             _ => None,
         }
     }
@@ -171,8 +214,26 @@ impl Panel {
     }
 
     /// A comma-separated list of panel names (`h_body,h_space`), in the order given; a name given twice is drawn
-    /// once. `all` stands for the six panels every run has ([`Panel::ALL`]).
+    /// once. `all` alone stands for every panel the run has (an empty list, as when none is given: the run's
+    /// wheel and axis panels too).
+    ///
+    /// ```
+    /// use eulerdyn::panel::Panel;
+    /// assert_eq!(Panel::parse_list("omega, wheel_h").unwrap(), [Panel::Omega, Panel::WheelMomentum]);
+    /// assert!(Panel::parse_list("all").unwrap().is_empty());
+    /// assert!(Panel::parse_list("all,theta").is_err());
+    /// ```
     pub fn parse_list(text: &str) -> Result<Vec<Panel>, String> {
+        if text.split(',').any(|name| name.trim() == "all") {
+            return match text.trim() {
+                "all" => Ok(Vec::new()),
+                _ => Err(format!(
+                    "\"all\" stands alone (every panel the run has) in \"{text}\"; to choose, name the panels \
+                     (panels: {})",
+                    Self::names()
+                )),
+            };
+        }
         let mut panels = Vec::new();
         for name in text.split(',').map(str::trim) {
             if name.is_empty() {
@@ -181,15 +242,9 @@ impl Panel {
                     Self::names()
                 ));
             }
-            let chosen = if name == "all" {
-                Panel::ALL.to_vec()
-            } else {
-                vec![name.parse::<Panel>()?]
-            };
-            for panel in chosen {
-                if !panels.contains(&panel) {
-                    panels.push(panel);
-                }
+            let panel = name.parse::<Panel>()?;
+            if !panels.contains(&panel) {
+                panels.push(panel);
             }
         }
         Ok(panels)
@@ -199,7 +254,8 @@ impl Panel {
     pub fn names() -> String {
         Panel::ALL.map(Panel::name).join(", ")
             + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
-               (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_torque"
+               (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_h, \
+               wheel_torque, wheel_friction (wheels under control)"
     }
 }
 
@@ -218,6 +274,7 @@ impl FromStr for Panel {
             .chain(Panel::AXIS_ONLY)
             .chain([Panel::BearingsSpace])
             .chain(Panel::WHEELS)
+            .chain([Panel::WheelFriction])
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }

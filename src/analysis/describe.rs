@@ -406,9 +406,22 @@ fn effect_lines(w: &mut Description, scene: &Scene) {
 /// The equation and the method with its step or tolerances; returns the estimate of the steps (one line or more).
 fn method_lines(w: &mut Description, scene: &Scene) -> String {
     let s = &scene.solver;
-    let form = match s.form {
-        Form::Body => "body axes: I*omega' + omega x I*omega = M",
-        Form::Space => "space axes: dH_s/dt = M_s with I_s(theta)",
+    let wheels = matches!(
+        &scene.motion,
+        Motion::Free {
+            gyrostat: Some(_),
+            ..
+        }
+    );
+    let form = match (s.form, wheels) {
+        (Form::Body, false) => "body axes: I*omega' + omega x I*omega = M",
+        (Form::Space, false) => "space axes: dH_s/dt = M_s with I_s(theta)",
+        (Form::Body, true) => {
+            "body axes: I*omega' + sum J Omega' a + omega x H = M, H = I*omega + sum J Omega a (the wheels' momentum)"
+        }
+        (Form::Space, true) => {
+            "space axes: dH_s/dt = M_s, H = I*omega + sum J Omega a (the wheels' momentum) with I_s(theta)"
+        }
     };
     line(w, "equation", form);
     let runge_kutta = matches!(s.method, Method::Rk4 | Method::Dopri5 | Method::Dop853);

@@ -35,6 +35,7 @@ use crate::effects::{AppliedMoment, TorqueSum, TorqueTable};
 use crate::frames::{BodyAxes, Form, StateRotation, Vector};
 use crate::integrate::OdeSystem;
 use crate::motion::free::{self, FreeBody};
+use crate::panel::Panel;
 use crate::sample::Sample;
 
 /// State of both forms: (ω_b or H_s, q_w, q_x, q_y, q_z, Ω_1, …, Ω_4, φ_1, …, φ_4).
@@ -290,6 +291,12 @@ impl Gyrostat {
         })
     }
 
+    /// The plot panels of its runs: spin, momentum and torque, and friction when the wheels are under control
+    /// ([`Panel::wheel_panels`]).
+    pub fn panels(&self) -> Vec<Panel> {
+        Panel::wheel_panels(true, self.controlled())
+    }
+
     /// Whether some wheel has friction (which dissipates kinetic energy and keeps H).
     pub fn has_friction(&self) -> bool {
         (self.rotors.iter()).any(|r| r.control.friction.is_some())
@@ -423,6 +430,29 @@ impl Gyrostat {
         }
     }
 
+    /// Sets to exactly 0 the relative spin of each wheel with Coulomb or Stribeck friction that has come to rest
+    /// (0 < |Ω_k| ≤ [`super::STICK_SPEED`], not prescribed), keeping H = I ω + Σ J Ω a: in the body form ω_b
+    /// gains I⁻¹ J_k Ω_k a_k, in the space form H_s is the state and stays. A wheel that slips on (its holding
+    /// torque beyond breakaway) leaves the band at once, from 0 instead of from within 1e-8 rad/s of it.
+    fn stop_stuck_wheels(&self, form: Form, y: &mut State) {
+        for (k, r) in self.rotors.iter().enumerate() {
+            let spin = y[7 + k];
+            let stuck = spin != 0.0 && spin.abs() <= super::STICK_SPEED;
+            if !stuck || matches!(r.drive, Drive::Accel(_)) || r.control.friction.breakaway() == 0.0
+            {
+                continue;
+            }
+            if form == Form::Body {
+                let h_b = Vector::<BodyAxes>::new(r.axis_b.into_inner() * (r.inertia * spin));
+                let d_omega_b = self.body.omega_b_of(&h_b);
+                for i in 0..3 {
+                    y[i] += d_omega_b[i];
+                }
+            }
+            y[7 + k] = 0.0;
+        }
+    }
+
     /// The row of a state of the form `form` at time t under the external moment `moment`.
     pub fn sample<M: AppliedMoment>(&self, moment: &M, form: Form, t: f64, y: &State) -> Sample {
         let q = UnitQuaternion::new_normalize(Quaternion::new(y[3], y[4], y[5], y[6]));
@@ -509,6 +539,7 @@ impl<M: AppliedMoment> OdeSystem<15> for GyrostatForm<'_, M> {
 
     fn project(&self, y: &mut State) {
         normalise_quaternion(y);
+        self.gyrostat.stop_stuck_wheels(self.form, y);
     }
 
     /// The moment's next corner, or a wheel's torque table's next row.

@@ -32,6 +32,16 @@ fn code(path: &Path) -> Vec<String> {
         .collect()
 }
 
+/// Whether `line` names `name`: where `name` is an identifier, where no identifier character comes before it (the
+/// type `Friction`, not the panel `WheelFriction`); else wherever it appears (`Drive::`, `.control`).
+fn names_in(line: &str, name: &str) -> bool {
+    let ident = |c: char| c.is_alphanumeric() || c == '_';
+    if !name.chars().all(ident) {
+        return line.contains(name);
+    }
+    (line.match_indices(name)).any(|(at, _)| !line[..at].chars().next_back().is_some_and(ident))
+}
+
 /// The places (`file:line: text`) outside `folder` whose code names one of `names`, except the lines of
 /// `registrations` (a file, and a text its line contains).
 fn named_outside(folder: &str, names: &[&str], registrations: &[(&str, &str)]) -> Vec<String> {
@@ -46,7 +56,7 @@ fn named_outside(folder: &str, names: &[&str], registrations: &[(&str, &str)]) -
         for (n, line) in code(&path).iter().enumerate() {
             let registered =
                 (registrations.iter()).any(|(file, text)| relative == *file && line.contains(text));
-            if !registered && names.iter().any(|name| line.contains(name)) {
+            if !registered && names.iter().any(|name| names_in(line, name)) {
                 found.push(format!("src/{relative}:{}: {}", n + 1, line.trim()));
             }
         }

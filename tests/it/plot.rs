@@ -492,6 +492,9 @@ fn a_long_run_is_reduced_to_a_bounded_number_of_points_keeping_its_extremes() {
     );
 }
 
+/// The six panels every run has.
+const SIX: &str = "h_body,h_space,moment,omega,energy,drift";
+
 /// Plots `csv` with `args` after `-o out` and returns the SVG text (expects exit 0).
 fn plot_svg(csv: &Path, out: &Path, args: &[&str]) -> String {
     let mut all = vec!["plot", text(csv), "-o", text(out)];
@@ -504,8 +507,8 @@ fn plot_svg(csv: &Path, out: &Path, args: &[&str]) -> String {
 fn panels_are_laid_out_in_a_grid_of_two_columns_sixteen_centimetres_wide() {
     let dir = tempfile::tempdir().unwrap();
     let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
-    // `all`: the six panels every run has (the disk's default adds θ and the support).
-    let svg = plot_svg(&csv, &dir.path().join("disk.svg"), &["--panels", "all"]);
+    // The six panels every run has (the disk's default adds θ and the support).
+    let svg = plot_svg(&csv, &dir.path().join("disk.svg"), &["--panels", SIX]);
     check_svg(&svg);
     // 16 cm at 96 px per inch: 605 px; three rows of 7 cm and the 0.9 cm title: 21.9 cm = 828 px.
     assert_eq!(attributes(&svg, "width")[0], "605");
@@ -562,13 +565,13 @@ fn size_and_title_are_honoured() {
     let dir = tempfile::tempdir().unwrap();
     let csv = run_scenario(dir.path(), "tilted_disk", "disk", &["--t-end", "0.5"]);
     let out = dir.path().join("disk.svg");
-    // `all`: the six panels every run has (the disk's default adds θ and the support).
+    // The six panels every run has (the disk's default adds θ and the support).
     let svg = plot_svg(
         &csv,
         &out,
         &[
             "--panels",
-            "all",
+            SIX,
             "--size",
             "24,18",
             "--title",
@@ -606,8 +609,8 @@ fn bad_sizes_titles_and_resolutions_are_refused_naming_the_flag() {
         (vec!["--title", "two\nlines"], "--title", "one line"),
         (vec!["--dpi", "300"], "--dpi", "only a PNG"),
     ] {
-        // `all`: the six panels every run has (the disk's default adds θ and the support).
-        let mut all = vec!["plot", text(&csv), "-o", text(&svg), "--panels", "all"];
+        // The six panels every run has (the disk's default adds θ and the support).
+        let mut all = vec!["plot", text(&csv), "-o", text(&svg), "--panels", SIX];
         all.extend(&args);
         let out = eulerdyn(&all);
         out.expect_code(2);
@@ -1127,8 +1130,14 @@ fn the_facts_name_the_panels_a_runs_header_shows_for_every_bundled_scenario() {
             .map(|c| c.name.to_string())
             .collect();
         let has = |c: &str| columns.iter().any(|n| n == c);
-        let wheels = !scene.spec.body.rotor.is_empty();
-        let from_header = Panel::of_run(has, facts.moving_support, wheels);
+        // The wheels' names, as the plot reads them from a header: the prefixes of `<name>_spin` and `<name>_h`.
+        let wheels: Vec<String> = (columns.iter())
+            .filter_map(|c| c.strip_suffix("_spin"))
+            .filter(|n| has(&format!("{n}_h")))
+            .map(str::to_string)
+            .collect();
+        assert_eq!(wheels.len(), scene.spec.body.rotor.len());
+        let from_header = Panel::of_run(has, facts.moving_support, &wheels);
         assert_eq!(facts.panels, from_header, "{}", path.display());
         seen.extend(facts.panels);
     }
@@ -1137,6 +1146,7 @@ fn the_facts_name_the_panels_a_runs_header_shows_for_every_bundled_scenario() {
         Panel::Bearings,
         Panel::BearingsSpace,
         Panel::WheelSpin,
+        Panel::WheelFriction,
     ] {
         assert!(
             seen.contains(&kind),

@@ -169,7 +169,8 @@ fn a_free_wheel_under_viscous_friction_decays_exponentially() {
 #[test]
 fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter() {
     // τ_f = −c sign(Ω): Ω = Ω₀ − c I t / (J (I − J)) until t_stop = Ω₀ J (I − J) / (c I); then the wheel sticks
-    // (the torque that holds it, J ω̇ = 0, is within c) and ω = J Ω₀ / I.
+    // (the torque that holds it, J ω̇ = 0, is within c) at Ω = 0 exactly and ω = J Ω₀ / I; H_s = J Ω₀ throughout
+    // (the stop moves the last ≤ STICK_SPEED of Ω into ω, keeping H: 1e-15 relative is a few roundings of H).
     let (c, spin0) = (2e-3, 10.0);
     let t_stop = spin0 * J * (I_XX - J) / (c * I_XX);
     let wheel = RotorSpec::new([1.0, 0.0, 0.0], J, spin0)
@@ -192,7 +193,9 @@ fn coulomb_friction_stops_a_free_wheel_at_the_closed_form_time_without_chatter()
                 "no chatter through zero: Ω = {}",
                 r.spin[0]
             );
+            close(s.h_o_s.x, J * spin0, 1e-15, "H_s, kept by the stop");
             if s.t > t_stop {
+                assert_eq!(r.spin[0], 0.0, "a stuck wheel rests at exactly 0");
                 assert!(
                     r.friction[0].abs() <= 1e-12,
                     "stuck, no torque needed: {}",
@@ -471,14 +474,29 @@ fn wheel_keys_are_sweepable_and_the_plot_has_wheel_panels() {
     let text = std::fs::read_to_string(&svg).unwrap();
     for title in [
         "Wheel spins relative to the body",
-        "Wheel motor torques, applied and commanded",
+        "Wheel axial momentum J (a·ω + Ω)",
+        "Wheel torques: τ, τ_cmd, τ_f",
         "τ_cmd wx",
+        "τ_f wx",
+        "Wheel friction torques",
     ] {
         assert!(
             text.contains(title),
             "the default figure of a rotor run draws `{title}`"
         );
     }
+    // `--panels all` is every panel the run has: the same figure as the default.
+    let all = dir.path().join("all.svg");
+    let out = eulerdyn([
+        "plot",
+        out_csv.to_str().unwrap(),
+        "-o",
+        all.to_str().unwrap(),
+        "--panels",
+        "all",
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert_eq!(std::fs::read_to_string(&all).unwrap(), text);
 }
 
 #[test]
@@ -509,4 +527,70 @@ fn the_sidecar_names_the_wheel_law_that_commanded_the_wheels() {
         let json: serde_json::Value = serde_json::from_str(&sidecar).unwrap();
         assert_eq!(json["scene"]["wheel_law"].as_str(), expected, "{name}");
     }
+}
+
+/// Issue 57: `check`'s equation line for a wheel scene is the gyrostat's (src/wheels/gyrostat.rs, Hughes §3.5),
+/// with the wheels' momentum in H, in each form.
+#[test]
+fn check_states_the_gyrostat_equation_with_the_wheels_momentum() {
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "cmd.csv", "t,torque\n0,1\n10,1\n");
+    for (form, equation) in [
+        (
+            "body",
+            "body axes: I*omega' + sum J Omega' a + omega x H = M, H = I*omega + sum J Omega a",
+        ),
+        (
+            "space",
+            "space axes: dH_s/dt = M_s, H = I*omega + sum J Omega a",
+        ),
+    ] {
+        let text = WHEEL_SCENE.replace("[solver]\n", &format!("[solver]\nframe = \"{form}\"\n"));
+        let scene = write_file(dir.path(), "scene.toml", &text);
+        let out = eulerdyn(["check", scene.to_str().unwrap()]);
+        assert_eq!(out.code, Some(0), "{}", out.stderr);
+        let line = (out.stdout.lines())
+            .find(|l| l.trim_start().starts_with("equation"))
+            .unwrap_or_else(|| panic!("no equation line:\n{}", out.stdout));
+        assert!(line.contains(equation), "{form}: {line}");
+    }
+}
+
+/// Issue 57: the friction panel of a run whose wheels have no friction columns, and `all` beside other names, are
+/// refused naming the panel (exit 2, nothing written); a held wheel's default figure has no friction panel.
+#[test]
+fn the_friction_panel_is_refused_where_the_run_has_no_friction_columns() {
+    let dir = tempfile::tempdir().unwrap();
+    let held = WHEEL_SCENE.replace(
+        "torque_table = \"cmd.csv\"\nmax_torque = 0.1\nfriction = { viscous = 1e-4 }\n",
+        "spin = 10.0\n",
+    );
+    let scene = write_file(dir.path(), "scene.toml", &held);
+    let csv = dir.path().join("held.csv");
+    let out = eulerdyn(["run", scene.to_str().unwrap(), "-o", csv.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let svg = dir.path().join("held.svg");
+    let plot = |panels: &str| {
+        eulerdyn([
+            "plot",
+            csv.to_str().unwrap(),
+            "-o",
+            svg.to_str().unwrap(),
+            "--panels",
+            panels,
+        ])
+    };
+    for (panels, says) in [
+        ("wheel_friction", "no wheel friction columns"),
+        ("all,wheel_h", "stands alone"),
+    ] {
+        let out = plot(panels);
+        assert_eq!(out.code, Some(2), "{panels}: {}", out.stderr);
+        assert!(out.stderr.contains(says), "{panels}: {}", out.stderr);
+        assert!(!svg.exists(), "{panels}: a figure was written");
+    }
+    let out = plot("all");
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("Wheel motor torques τ") && !text.contains("Wheel friction torques"));
 }

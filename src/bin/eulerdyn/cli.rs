@@ -117,7 +117,7 @@ pub struct AccuracyArgs {
 
 #[derive(Debug, Args)]
 #[command(
-    after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (`all`: these six, which every run has); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings; bearings_space draws them in space axes); for runs\nwith wheels wheel_spin and wheel_torque. Default: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
+    after_help = "Examples:\n  eulerdyn run scenarios/tilted_disk.toml -o disk.csv\n  eulerdyn plot disk.csv -o disk.svg\n  eulerdyn plot disk.csv -o disk_h.svg --panels h_body,h_space\n  eulerdyn plot disk.csv -o disk.png --panels h_body,h_space --size 16,10 --title \"Tilted disk\"   PNG, 300 dpi\n  eulerdyn run scenarios/motor_runup.toml -o m.csv && eulerdyn plot m.csv -o m.svg --panels omega,theta,support,bearings\n  eulerdyn run scenarios/tennis_racket.toml | eulerdyn plot - -o racket.svg --panels omega,drift\n\nPanels: h_body, h_space, moment, omega, energy, drift (every run has these six); for fixed_axis\nand hinge runs also theta, support and bearings (with bearings; bearings_space draws them in space axes); for runs\nwith wheels wheel_spin, wheel_h, wheel_torque and, under control, wheel_friction. Default and `all`: the panels the run has. The energy panel adds V and T + V when the run has them (gravity).\nPanels are laid out in a grid (two columns from three panels on), 16 cm wide by default; sizes are in\ncentimetres at 96 pixels per inch, and every text is at least 9 pt (12 px) at that size.\nThe output's extension chooses the format: FIG.png is PNG (text in the embedded DejaVu Sans), else SVG."
 )]
 pub struct PlotArgs {
     /// CSV written by `eulerdyn run` (columns are found by their header names); `-`: stdin.
@@ -127,12 +127,14 @@ pub struct PlotArgs {
     /// .png; `-`: SVG to stdout.
     #[arg(short = 'o', long = "output", value_name = "FIG.svg")]
     pub output: Option<PathBuf>,
-    /// Panels to draw, comma-separated, in the order given: h_body, h_space, moment, omega, energy, drift (`all`:
-    /// these six, which every run has); theta, support, bearings (and bearings_space, the same in space axes) for
-    /// fixed_axis and hinge runs; wheel_spin, wheel_torque for runs with wheels ([[body.rotor]]).
+    /// Panels to draw, comma-separated, in the order given: h_body, h_space, moment, omega, energy, drift (every
+    /// run has these six); theta, support, bearings (and bearings_space, the same in space axes) for fixed_axis
+    /// and hinge runs; wheel_spin, wheel_h, wheel_torque (with the friction dashed) for runs with wheels
+    /// ([[body.rotor]]) and wheel_friction for wheels under control. `all`, alone: every panel the run has.
     ///
-    /// Default: the panels the run has: the six, then theta and support for a fixed_axis or hinge run, bearings
-    /// when it has bearings, and wheel_spin and wheel_torque when it has wheels.
+    /// Default: the panels the run has (and `all`): the six, then theta and support for a fixed_axis or hinge
+    /// run, bearings when it has bearings, and wheel_spin, wheel_h and wheel_torque when it has wheels, with
+    /// wheel_friction when they are under control.
     #[arg(long, value_name = "LIST")]
     pub panels: Option<String>,
     /// Figure width and height in centimetres (at 96 pixels per inch), e.g. 16,12. Default: 16 cm wide, as

@@ -253,7 +253,10 @@ mod tests {
             Panel::parse_list("h_body, h_space,h_body").unwrap(),
             vec![Panel::HBody, Panel::HSpace]
         );
-        assert_eq!(Panel::parse_list("all").unwrap(), Panel::ALL.to_vec());
+        // `all`: every panel the run has, as when no list is given.
+        assert_eq!(Panel::parse_list(" all ").unwrap(), Vec::new());
+        let e = Panel::parse_list("all,bearings_space").unwrap_err();
+        assert!(e.contains("stands alone"), "{e}");
         assert_eq!(
             Panel::parse_list("theta,support").unwrap(),
             vec![Panel::Theta, Panel::Support]

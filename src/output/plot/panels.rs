@@ -179,51 +179,57 @@ fn curves_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
             "θ (rad)",
             vec![single(run, "theta", "θ", BLUE)],
         ),
-        Panel::WheelSpin | Panel::WheelTorque => wheels_panel(run, panel),
+        Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
+            wheels_panel(run, panel)
+        }
     }
 }
 
-/// The wheels' spins Ω (rad/s), or their motor torques applied (solid) and commanded (dashed), one colour per
-/// wheel in the order of the run's columns.
+/// The wheels' spins Ω (rad/s), axial momenta J (a·ω + Ω) (N·m·s), friction torques, or their motor torques
+/// applied (solid), commanded (dashed, circles) and their friction (dashed, squares): one colour per wheel in the
+/// order of the run's columns.
 fn wheels_panel(run: &RunSeries, panel: Panel) -> PanelPlot {
     const COLORS: [RGBColor; 4] = [RED, GREEN, BLUE, PURPLE];
-    let names = run.wheel_names();
     let mut curves = Vec::new();
-    for (name, color) in names.iter().zip(COLORS.iter().cycle()) {
-        if panel == Panel::WheelSpin {
-            curves.push(single(
-                run,
-                &format!("{name}_spin"),
-                &format!("Ω {name}"),
-                *color,
-            ));
-            continue;
-        }
+    for (name, color) in run.wheel_names().iter().zip(COLORS.iter().cycle()) {
+        let (suffix, symbol) = match panel {
+            Panel::WheelSpin => ("spin", "Ω"),
+            Panel::WheelMomentum => ("h", "h"),
+            Panel::WheelFriction => ("friction", "τ_f"),
+            _ => ("torque", "τ"),
+        };
         curves.push(single(
             run,
-            &format!("{name}_torque"),
-            &format!("τ {name}"),
+            &format!("{name}_{suffix}"),
+            &format!("{symbol} {name}"),
             *color,
         ));
-        let command = format!("{name}_torque_cmd");
-        if run.has(&command) {
-            curves.push(Curve {
-                dashed: true,
-                marker: Some(Marker::Circle),
-                ..single(run, &command, &format!("τ_cmd {name}"), *color)
-            });
+        if panel != Panel::WheelTorque {
+            continue;
+        }
+        let dashed = [
+            ("torque_cmd", "τ_cmd", Marker::Circle),
+            ("friction", "τ_f", Marker::Square),
+        ];
+        for (suffix, symbol, marker) in dashed {
+            let column = format!("{name}_{suffix}");
+            if run.has(&column) {
+                curves.push(Curve {
+                    dashed: true,
+                    marker: Some(marker),
+                    ..single(run, &column, &format!("{symbol} {name}"), *color)
+                });
+            }
         }
     }
-    match panel {
-        Panel::WheelSpin => {
-            PanelPlot::linear("Wheel spins relative to the body", "Ω (rad/s)", curves)
-        }
-        _ => PanelPlot::linear(
-            "Wheel motor torques, applied and commanded",
-            "τ (N·m)",
-            curves,
-        ),
-    }
+    let (title, unit) = match panel {
+        Panel::WheelSpin => ("Wheel spins relative to the body", "Ω (rad/s)"),
+        Panel::WheelMomentum => ("Wheel axial momentum J (a·ω + Ω)", "h (N·m·s)"),
+        Panel::WheelFriction => ("Wheel friction torques", "τ_f (N·m)"),
+        _ if curves.len() > run.wheel_names().len() => ("Wheel torques: τ, τ_cmd, τ_f", "τ (N·m)"),
+        _ => ("Wheel motor torques τ", "τ (N·m)"),
+    };
+    PanelPlot::linear(title, unit, curves)
 }
 
 /// The kinetic energy T; with the columns `potential` and `energy_total` (gravity scenes), also V and T + V.

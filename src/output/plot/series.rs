@@ -251,27 +251,32 @@ fn read_rows(
             let has = |c: &str| csv.index_of(c).is_some();
             let carried = facts.is_some_and(|f| f.moving_support);
             let space = carried && Panel::BearingsSpace.columns().iter().all(|c| has(c));
-            Panel::of_run(has, space, !wheels.is_empty())
+            Panel::of_run(has, space, &wheels)
         }
     };
-    let wheel_panels = panels.iter().any(|p| Panel::WHEELS.contains(p));
+    let wheel_panels = panels.iter().any(|p| p.is_wheel());
     if wheel_panels && wheels.is_empty() {
         return Err(PlotError::input(
             &file,
-            "no wheels (only runs of scenes with [[body.rotor]] have the columns <name>_spin and <name>_torque that \
-             the wheel_spin and wheel_torque panels draw)",
+            "no wheels (only runs of scenes with [[body.rotor]] have the columns <name>_spin, <name>_h and \
+             <name>_torque that the wheel panels draw)",
         ));
     }
     let controlled = (wheels.iter()).all(|n| csv.index_of(&format!("{n}_torque_cmd")).is_some());
+    if panels.contains(&Panel::WheelFriction) && !controlled {
+        return Err(PlotError::input(
+            &file,
+            "no wheel friction columns (<name>_friction): only runs whose wheels are under control (a law, a \
+             table, mode = \"free\", a limit or friction) have them",
+        ));
+    }
     let wheel_columns = if wheel_panels {
         rotor_columns(&wheels, controlled)
     } else {
         Vec::new()
     };
     let mut wanted: Vec<&str> = wanted_columns(&panels, |c| csv.index_of(c).is_some());
-    (wheel_columns.iter())
-        .filter(|c| !c.name.ends_with("_h") && !c.name.ends_with("_friction"))
-        .for_each(|c| wanted.push(&c.name));
+    wanted.extend(wheel_columns.iter().map(|c| c.name.as_ref()));
     let index = column_indices(&csv, &wanted, &panels)?;
     let mut series = RunSeries::new(&file, &wanted, &panels);
     series.wheels = wheels;
@@ -387,7 +392,7 @@ fn absent_axis_panels(
         .filter(|p| missing.iter().any(|(name, _)| p.columns().contains(name)))
         .map(|p| p.absence())
         .collect::<Option<_>>()?;
-    let has: Vec<&str> = Panel::of_run(|c| csv.index_of(c).is_some(), false, false)
+    let has: Vec<&str> = Panel::of_run(|c| csv.index_of(c).is_some(), false, &[])
         .iter()
         .map(|p| p.name())
         .collect();

@@ -96,10 +96,10 @@ fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
         }
     }
     if let Motion::Free {
-        gyrostat: Some(_), ..
+        gyrostat: Some(g), ..
     } = motion
     {
-        panels.extend(Panel::WHEELS);
+        panels.extend(g.panels());
     }
     panels
 }
