@@ -39,7 +39,10 @@
 //! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`panel`], [`body`], [`kinetics`],
 //! [`effects`], [`events`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions
 //! ([`motion`]) and the body's wheels ([`wheels`]) → the validated [`scene`] → [`simulate`] → [`analysis`] and
-//! [`output`]. The command line is a binary over the library (feature `cli`, on by default).
+//! [`output`]. The command line is a binary over the library (feature `cli`, on by default). The modules from
+//! [`simulate`] down are the workspace's crate `eulerdyn-core` (core/src/), re-exported here under the same paths:
+//! cargo compiles it as one code-generation unit, which its run-time figures need, while analysis and output
+//! compile beside it.
 //!
 //! # Features
 //!
@@ -60,28 +63,16 @@
 pub struct BookRustExamples;
 
 pub mod analysis;
-pub mod body;
 #[cfg(feature = "cli")]
 pub mod command;
-pub mod effects;
-pub mod events;
-pub mod exact;
-pub mod frames;
-pub mod integrate;
-pub mod keys;
-pub mod kinetics;
-pub mod method;
-pub mod motion;
-pub mod named;
 pub mod output;
-pub mod panel;
-pub mod profile;
-pub mod sample;
-pub mod scene;
-pub mod simulate;
-pub mod text;
-pub mod trig;
-pub mod wheels;
+
+// The numerical core (core/src/, the crate eulerdyn-core), under the same paths.
+#[doc(inline)]
+pub use eulerdyn_core::{
+    body, effects, events, exact, frames, integrate, keys, kinetics, method, motion, named, panel,
+    profile, sample, scene, simulate, text, trig, wheels,
+};
 
 pub use frames::{Axes, Form};
 pub use method::{Backend, Method};

@@ -1,6 +1,6 @@
-//! A capability lives in its folder (ARCHITECTURE.md, "Where a new thing goes"): outside it, the code of src/ does
-//! not name what only the capability knows, except in the registration lines listed here. Comments and test
-//! modules are not code for this purpose (a doc comment may say "carrier"; a test may build one).
+//! A capability lives in its folder (ARCHITECTURE.md, "Where a new thing goes"): outside it, the code of src/ and
+//! core/src/ does not name what only the capability knows, except in the registration lines listed here. Comments
+//! and test modules are not code for this purpose (a doc comment may say "carrier"; a test may build one).
 
 use std::path::{Path, PathBuf};
 
@@ -45,19 +45,21 @@ fn names_in(line: &str, name: &str) -> bool {
 /// The places (`file:line: text`) outside `folder` whose code names one of `names`, except the lines of
 /// `registrations` (a file, and a text its line contains).
 fn named_outside(folder: &str, names: &[&str], registrations: &[(&str, &str)]) -> Vec<String> {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut found = Vec::new();
-    for path in rust_files(&src) {
-        let relative = path.strip_prefix(&src).expect("under src/");
-        let relative = relative.to_string_lossy().replace('\\', "/");
-        if relative.starts_with(folder) {
-            continue;
-        }
-        for (n, line) in code(&path).iter().enumerate() {
-            let registered =
-                (registrations.iter()).any(|(file, text)| relative == *file && line.contains(text));
-            if !registered && names.iter().any(|name| names_in(line, name)) {
-                found.push(format!("src/{relative}:{}: {}", n + 1, line.trim()));
+    for root in ["src", "core/src"] {
+        let src = Path::new(env!("CARGO_MANIFEST_DIR")).join(root);
+        for path in rust_files(&src) {
+            let relative = path.strip_prefix(&src).expect("under the root");
+            let relative = relative.to_string_lossy().replace('\\', "/");
+            if relative.starts_with(folder) {
+                continue;
+            }
+            for (n, line) in code(&path).iter().enumerate() {
+                let registered = (registrations.iter())
+                    .any(|(file, text)| relative == *file && line.contains(text));
+                if !registered && names.iter().any(|name| names_in(line, name)) {
+                    found.push(format!("{root}/{relative}:{}: {}", n + 1, line.trim()));
+                }
             }
         }
     }
@@ -86,7 +88,7 @@ fn the_wheels_control_is_named_only_in_its_folder() {
     let outside = named_outside("wheels/", &names, &[]);
     assert!(
         outside.is_empty(),
-        "outside src/wheels/:\n{}",
+        "outside core/src/wheels/:\n{}",
         outside.join("\n")
     );
 }
@@ -115,7 +117,7 @@ fn the_wheels_are_registered_in_the_listed_lines_only() {
     let outside = named_outside("wheels/", &names, &registrations);
     assert!(
         outside.is_empty(),
-        "outside src/wheels/:\n{}",
+        "outside core/src/wheels/:\n{}",
         outside.join("\n")
     );
 }
@@ -143,7 +145,7 @@ fn the_carrier_is_named_only_in_its_folder_and_its_part_line() {
     );
     assert!(
         outside.is_empty(),
-        "outside src/motion/carrier/:\n{}",
+        "outside core/src/motion/carrier/:\n{}",
         outside.join("\n")
     );
 }
@@ -194,7 +196,7 @@ fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registratio
         let outside = named_outside(folder, &names, &registrations);
         assert!(
             outside.is_empty(),
-            "outside src/{folder}:\n{}",
+            "outside {folder}:\n{}",
             outside.join("\n")
         );
     }
@@ -212,7 +214,7 @@ fn the_motion_table_is_named_only_in_its_folder_and_its_registration() {
     let outside = named_outside("motion/", &["MotionFile", "motion::keys"], &registrations);
     assert!(
         outside.is_empty(),
-        "outside src/motion/:\n{}",
+        "outside core/src/motion/:\n{}",
         outside.join("\n")
     );
 }

@@ -135,7 +135,7 @@ every = 0.05
 #[test]
 fn dzhanibekov_flips_are_2k_over_lambda_apart() {
     // The intermediate component ∝ sn τ changes sign every 2K(k)/λ (Landau & Lifshitz, *Mechanics*, §37, eq.
-    // (37.10) and after: the period of sn is 4K); src/exact/torque_free.rs's flip_interval.
+    // (37.10) and after: the period of sn is 4K); core/src/exact/torque_free.rs's flip_interval.
     let exact = TorqueFreeBody::new(
         Vector3::new(1.0, 2.0, 3.0),
         Vector3::new(0.2, 2.0, 0.2),

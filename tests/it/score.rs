@@ -87,7 +87,7 @@ fn the_exact_solution_scores_round_off() {
     let dir = tempfile::tempdir().unwrap();
     let s = score_text(dir.path(), "exact.csv", &csv(&exact_rows(), true), FREE);
     // The referee is the same closed form (Landau & Lifshitz §37) stepped on the equal grid with re-anchoring,
-    // within 1e-13 of the direct evaluation (src/exact/equal_grid.rs); 1e-12 leaves a decade for the printed
+    // within 1e-13 of the direct evaluation (core/src/exact/equal_grid.rs); 1e-12 leaves a decade for the printed
     // CSV's round trip (shortest representation: exact).
     for key in ["attitude", "omega", "energy", "h_norm", "h_direction"] {
         let m = s.metric(key).unwrap();

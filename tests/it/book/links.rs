@@ -150,13 +150,14 @@ fn ids_are_made_as_mdbook_makes_them() {
     assert_eq!(ids, want.iter().map(|s| s.to_string()).collect());
 }
 
-/// The repository paths (`tests/…`, `src/…`, `scenarios/…`, `benches/…`, `python/…`, `examples/…`, `engines/…`)
+/// The repository paths (`tests/…`, `src/…`, `core/…`, `scenarios/…`, `benches/…`, `python/…`, `examples/…`, `engines/…`)
 /// that `text` cites outside fenced blocks, with their line numbers; a pattern (`*`, `{`, `<`) or a placeholder
-/// (`src/motion/NAME.rs`) is not one.
+/// (`core/src/motion/NAME.rs`) is not one.
 fn cited_paths(text: &str) -> Vec<(usize, String)> {
-    const ROOTS: [&str; 7] = [
+    const ROOTS: [&str; 8] = [
         "tests/",
         "src/",
+        "core/",
         "scenarios/",
         "benches/",
         "python/",
@@ -223,7 +224,7 @@ fn every_repository_path_the_book_cites_exists() {
 #[test]
 fn cited_paths_are_found_whole_and_patterns_left_out() {
     let text = "see tests/it/book.rs, and `scenarios/tilted_disk.toml`.\n```sh\neulerdyn run src/nothing.rs\n```\n\
-                docs/book/src/x.md and scenarios/sweeps/*.toml, src/motion/NAME.rs";
+                docs/book/src/x.md and scenarios/sweeps/*.toml, core/src/motion/NAME.rs";
     let cited: Vec<String> = cited_paths(text).into_iter().map(|(_, p)| p).collect();
     assert_eq!(cited, ["tests/it/book.rs", "scenarios/tilted_disk.toml"]);
 }

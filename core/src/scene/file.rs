@@ -131,7 +131,7 @@ fn located(path: &Path, text: &str, inv: InvalidScene) -> SceneError {
 
 /// Parses TOML text into any typed value with the scene file's messages (file, key, line and column, in plain
 /// words); for input files that are not scenes, e.g. a sweep file.
-pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(
+pub fn parse_toml<T: serde::de::DeserializeOwned>(
     path: &Path,
     text: &str,
 ) -> Result<T, SceneError> {

@@ -505,7 +505,7 @@ macro_rules! file_table {
             /// The spec of the values a table must give (each key the reading requires, each group of keys), every
             /// other key at its default.
             #[allow(dead_code)]
-            pub(crate) fn of($($params)*) -> Self {
+            pub fn of($($params)*) -> Self {
                 Self { $($inits)* }
             }
         }

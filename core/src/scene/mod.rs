@@ -18,8 +18,7 @@ pub use facts::{
     AxisNumbers, BearingNumbers, CheckNumbers, Facts, Invariant, MomentCenter, MotionNumbers,
     StartNumbers,
 };
-#[cfg(feature = "sweep")]
-pub(crate) use file::parse_toml;
+pub use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
 pub use model::{Motion, Scene, SceneSource, SolverConfig};
 pub use oracle::{ClosedForm, Exact, Oracle};

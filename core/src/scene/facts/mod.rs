@@ -233,9 +233,12 @@ mod tests {
     use super::*;
     use crate::scene::{Overrides, parse};
 
+    /// The repository's bundled scenarios (this crate is core/ in the workspace).
+    const SCENARIOS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenarios");
+
     /// The facts of the bundled scenario `name` (scenarios/NAME.toml).
     fn facts_of(name: &str) -> Facts {
-        let path = std::path::PathBuf::from(format!("scenarios/{name}.toml"));
+        let path = std::path::Path::new(SCENARIOS).join(format!("{name}.toml"));
         let text = std::fs::read_to_string(&path).expect("a bundled scenario");
         let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
         scene.facts().clone()
@@ -341,7 +344,7 @@ mod tests {
     fn a_users_moment_recomputes_the_facts() {
         use crate::frames::Axes;
         use nalgebra::{UnitQuaternion, Vector3};
-        let path = std::path::PathBuf::from("scenarios/tennis_racket.toml");
+        let path = std::path::Path::new(SCENARIOS).join("tennis_racket.toml");
         let text = std::fs::read_to_string(&path).expect("a bundled scenario");
         let scene = parse(&path, &text, &Overrides::default()).expect("a valid scene");
         assert!(scene.facts().oracle().is_some());
