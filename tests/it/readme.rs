@@ -110,3 +110,21 @@ fn the_readme_shows_what_the_commands_print() {
         stale.join("\n")
     );
 }
+
+/// Issue 57: pip said nothing for minutes while it compiled Rust. The README and the install page each say that pip
+/// compiles Rust silently and show `pip install -v ./python`, which prints cargo's progress.
+#[test]
+fn the_set_up_pages_say_pip_compiles_rust_and_show_its_verbose_form() {
+    for page in ["README.md", "docs/book/src/getting-started/install.md"] {
+        let text = std::fs::read_to_string(repo_path(page)).unwrap();
+        let flat = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(
+            flat.contains("pip install -v ./python") && flat.contains("cargo's progress"),
+            "{page} does not show `pip install -v ./python` and what it prints"
+        );
+        assert!(
+            flat.contains("while Rust compiles") || flat.contains("while it compiles Rust"),
+            "{page} does not say that pip is silent while it compiles Rust"
+        );
+    }
+}
