@@ -44,7 +44,7 @@ impl SceneTemplate {
         }
         let mut table = self.table.clone();
         set_number(&mut table, key, probe)?;
-        match table.try_into::<SceneSpec>() {
+        match spec_of(&table) {
             Ok(_) => Ok(()),
             Err(e) => {
                 let message = e.message().trim().to_string();
@@ -66,12 +66,7 @@ impl SceneTemplate {
         let absent = first_absent(&self.table, key)?;
         let mut table = self.table.clone();
         set_number(&mut table, &truncated(key, absent + 1), probe).ok()?;
-        let message = table
-            .try_into::<SceneSpec>()
-            .err()?
-            .message()
-            .trim()
-            .to_string();
+        let message = spec_of(&table).err()?.message().trim().to_string();
         let (wrong, valid) = unknown_field(&message)?;
         let Some(Segment::Key(name)) = key.segments().get(absent) else {
             return None;
@@ -107,10 +102,15 @@ impl SceneTemplate {
         for (key, value) in values {
             set_number(&mut table, key, *value)?;
         }
-        table
-            .try_into::<SceneSpec>()
-            .map_err(|e| e.message().trim().to_string())
+        spec_of(&table).map_err(|e| e.message().trim().to_string())
     }
+}
+
+/// Reads `table` as a scene through the scene file's own reader: written out as TOML text and parsed, so that every
+/// table's deserialiser is compiled once, for text, and not a second time for `toml::Value`.
+fn spec_of(table: &Table) -> Result<SceneSpec, toml::de::Error> {
+    let text = toml::to_string(table).map_err(|e| serde::de::Error::custom(e.to_string()))?;
+    toml::from_str(&text)
 }
 
 /// Sets the number at `key`, creating the tables on its way that the base scene leaves out. An array element
