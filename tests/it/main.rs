@@ -10,6 +10,7 @@ mod carriers;
 mod cli_end_to_end;
 mod cli_usability;
 mod common;
+mod diagnose;
 mod events;
 mod exact_closed_forms;
 mod exact_grid;

@@ -237,7 +237,7 @@ fn the_suite_s_own_references_score_at_round_off() {
         )
         .unwrap();
     }
-    let scores = suite::score_suite(dir.path(), "self", &ReadOptions::default()).unwrap();
+    let scores = suite::score_suite(dir.path(), "self", &ReadOptions::default(), false).unwrap();
     for s in &scores {
         for m in &s.metrics {
             // The reference read back from its CSV (shortest round-trip digits): the same rows exactly, so

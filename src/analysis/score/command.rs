@@ -18,7 +18,7 @@ pub enum Commands {
     /// attitude, omega, energy, |H|, H's direction and event times, each against a stated threshold; exit 1 when
     /// one fails. With --suite DIR --engine NAME: an engine's report card on the conformance suite.
     #[command(
-        after_help = "Examples:\n  eulerdyn score theirs.csv --scene scenarios/tennis_racket.toml\n  eulerdyn score rapier.csv --scene s.toml --quaternion xyzw --omega space --map q_0=qx --map q_1=qy --map q_2=qz --map q_3=qw\n  eulerdyn suite --out suite && eulerdyn score --suite suite --engine mujoco_rk4"
+        after_help = "Examples:\n  eulerdyn score theirs.csv --scene scenarios/tennis_racket.toml\n  eulerdyn score rapier.csv --scene s.toml --quaternion xyzw --omega space --map q_0=qx --map q_1=qy --map q_2=qz --map q_3=qw\n  eulerdyn suite --out suite && eulerdyn score --suite suite --engine mujoco_rk4\n  eulerdyn score theirs.csv --scene scenarios/tennis_racket.toml --diagnose"
     )]
     Score(ScoreArgs),
     /// Write the conformance suite: six scenes, each with its reference trajectory at 60 Hz, its adapter setup
@@ -87,6 +87,10 @@ pub struct ScoreArgs {
     /// Print the score as JSON instead of the table.
     #[arg(long)]
     pub json: bool,
+    /// Name the engine model the trajectory is consistent with: explicit or semi-implicit Euler or RK4, ω held in
+    /// world or body axes, the gyroscopic term full, left out or flipped, 1, 2, 4 or 8 substeps a row.
+    #[arg(long)]
+    pub diagnose: bool,
     /// Draw the errors against time (log scale) into this SVG file.
     #[arg(long, value_name = "FIG.svg")]
     pub plot: Option<PathBuf>,
@@ -145,7 +149,7 @@ fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
     let (text, json, passes, figure) = match (&args.suite, &args.theirs, &args.scene) {
         (Some(dir), _, _) => {
             let engine = args.engine.as_deref().unwrap_or_default();
-            let scores = suite::score_suite(dir, engine, &options)?;
+            let scores = suite::score_suite(dir, engine, &options, args.diagnose)?;
             let series: Vec<Series> = (scores.iter().filter(|s| !s.missing))
                 .map(|s| Series {
                     name: s.scene.clone(),
@@ -163,7 +167,7 @@ fn score_command(args: &ScoreArgs, quiet: bool) -> Result<(), ScoreError> {
         (None, Some(theirs), Some(scene_path)) => {
             let scene = scene::load(scene_path, &Overrides::default())
                 .map_err(|e| ScoreError::Input(e.to_string()))?;
-            let s = super::score(theirs, &scene, &options)?;
+            let s = super::score_with(theirs, &scene, &options, args.diagnose)?;
             let title = format!("{}: errors against the referee", theirs.display());
             (
                 report::text(&s),

@@ -4,12 +4,14 @@
 //! [`reader`] reads their CSV, [`reference`](mod@reference) computes the referee at their times (the closed form where one
 //! applies, else dop853 at rtol 1e-13 with its error estimated), [`metrics`] compares row by row — attitude
 //! angle, ω, energy, |H|, H's direction in space, event times — [`hints`] names the likely export slip when their
-//! first row is not the scene's initial state, [`report`] prints, [`suite`] is the conformance
+//! first row is not the scene's initial state, [`diagnose`] names the engine model the trajectory is consistent with
+//! (`--diagnose`), [`report`] prints, [`suite`] is the conformance
 //! suite (`eulerdyn suite`, `eulerdyn score --suite`), `figure` (feature `plot`) draws the errors against time, `command` (feature `cli`) is
 //! `eulerdyn score` and `eulerdyn suite`.
 
 #[cfg(feature = "cli")]
 pub mod command;
+pub mod diagnose;
 #[cfg(feature = "plot")]
 pub mod figure;
 pub mod hints;
@@ -67,6 +69,9 @@ pub struct Score {
     pub hints: Vec<String>,
     /// What was not measured, and why.
     pub notes: Vec<String>,
+    /// The engine model the trajectory is consistent with (`--diagnose`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub diagnosis: Option<diagnose::Diagnosis>,
     /// The metrics' values against time (the figure's curves).
     #[serde(skip)]
     pub series: Vec<Series>,
@@ -98,6 +103,7 @@ impl Score {
                 "{}: no such file: the engine's output for this scene (run its adapter first)",
                 file.display()
             )],
+            diagnosis: None,
             series: Vec::new(),
             missing: true,
         }
@@ -111,12 +117,30 @@ impl Score {
 
 /// Scores the trajectory in `path` against `scene`.
 pub fn score(path: &Path, scene: &Scene, options: &ReadOptions) -> Result<Score, ScoreError> {
+    score_with(path, scene, options, false)
+}
+
+/// [`score`], with the diagnosis ([`diagnose`]) when `diagnose`.
+pub fn score_with(
+    path: &Path,
+    scene: &Scene,
+    options: &ReadOptions,
+    diagnose: bool,
+) -> Result<Score, ScoreError> {
     let t_end = scene.schedule.t_end();
     let trajectory = reader::read_trajectory(path, options, t_end)?;
     let rows = &trajectory.rows;
     let shown = path.display().to_string();
     let times: Vec<f64> = rows.iter().map(|r| r.t).collect();
     let reference = reference::reference(scene, &shown, &times)?;
+    let diagnosis = match diagnose {
+        true => Some(diagnose::diagnose(
+            scene,
+            rows,
+            reference::grid(&shown, &times)?.0,
+        )?),
+        false => None,
+    };
     let samples = metrics::their_samples(scene, rows);
     let mut notes = Vec::new();
     if samples.is_none() {
@@ -150,6 +174,7 @@ pub fn score(path: &Path, scene: &Scene, options: &ReadOptions) -> Result<Score,
         warnings: trajectory.warnings,
         hints,
         notes,
+        diagnosis,
         series,
         missing: false,
     })

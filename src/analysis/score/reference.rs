@@ -46,7 +46,7 @@ pub struct Reference {
 }
 
 /// The grid Δt their times lie on and the largest distance of a time from it (s).
-fn grid(path: &str, times: &[f64]) -> Result<(f64, f64), ScoreError> {
+pub(super) fn grid(path: &str, times: &[f64]) -> Result<(f64, f64), ScoreError> {
     let first_step = times[1] - times[0];
     let last = times[times.len() - 1];
     let every = last / (last / first_step).round().max(1.0);

@@ -33,6 +33,7 @@ pub fn text(score: &Score) -> String {
     for line in (score.warnings.iter().map(|w| format!("warning: {w}")))
         .chain(score.hints.iter().map(|h| format!("hint: {h}")))
         .chain(score.notes.iter().cloned())
+        .chain(score.diagnosis.iter().map(|d| d.line()))
     {
         out.push_str(&line);
         out.push('\n');
@@ -104,6 +105,9 @@ pub fn card(engine: &str, scores: &[Score]) -> String {
             out.push_str(&format!(" {cell:>13}"));
         }
         out.push_str(&format!("  {}\n", verdict(s.passes())));
+        if let Some(d) = &s.diagnosis {
+            out.push_str(&format!("{:<24}{}\n", "", d.line()));
+        }
     }
     out.push_str(&format!(
         "thresholds: attitude {ATTITUDE_MAX:e} rad, omega {OMEGA_MAX:e}, energy {ENERGY_MAX:e}, |H| {H_NORM_MAX:e}, \

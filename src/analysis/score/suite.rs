@@ -169,11 +169,13 @@ pub fn write_suite(dir: &Path) -> Result<Vec<PathBuf>, ScoreError> {
 }
 
 /// Scores the outputs of `engine` in `DIR/ENGINE/<scene>.csv` against the suite's scenes in `dir`; a scene whose
-/// output is missing is marked ([`Score::missing`]) and the others scored. No output at all is bad input.
+/// output is missing is marked ([`Score::missing`]) and the others scored, each diagnosed when `diagnose`. No
+/// output at all is bad input.
 pub fn score_suite(
     dir: &Path,
     engine: &str,
     options: &ReadOptions,
+    diagnose: bool,
 ) -> Result<Vec<Score>, ScoreError> {
     let mut scores = Vec::new();
     for (name, _) in SCENES {
@@ -182,7 +184,7 @@ pub fn score_suite(
             .map_err(|e| ScoreError::Input(e.to_string()))?;
         let theirs = dir.join(engine).join(format!("{name}.csv"));
         if theirs.is_file() {
-            scores.push(super::score(&theirs, &scene, options)?);
+            scores.push(super::score_with(&theirs, &scene, options, diagnose)?);
         } else {
             scores.push(Score::missing(&theirs, name));
         }
