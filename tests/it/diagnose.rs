@@ -1,4 +1,5 @@
-//! `eulerdyn score --diagnose`: a trajectory made by each engine model of the contract (CONTRACT.md, fifth round,
+//! `eulerdyn score --diagnose`: a trajectory made by each engine model of the contract (and of its extension, the
+//! Euler methods turning q by the exponential map) (CONTRACT.md, fifth round,
 //! "Scoring: what an engine's error is consistent with") is named by the diagnosis as a `match`. The trajectories are
 //! made here by a second, plain implementation of the models' update formulas as the contract states them
 //! (written apart from src/analysis/score/diagnose.rs: arrays and explicit products), so that a slip in either
@@ -10,7 +11,7 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 use crate::common::{eulerdyn, scene_from, write_file};
 use eulerdyn::analysis::score::diagnose::{
-    Gyroscopic, HeldAxes, MATCH_RAD, Model, Stepper, Verdict,
+    AttitudeUpdate, Gyroscopic, HeldAxes, MATCH_RAD, Model, Stepper, Verdict,
 };
 use eulerdyn::analysis::score::{self, ReadOptions};
 use eulerdyn::scene::Overrides;
@@ -89,8 +90,8 @@ fn rates(q: [f64; 4], w: [f64; 3], world: bool, g: f64) -> ([f64; 4], [f64; 3]) 
     (dq, if world { apply(&r, dw_b) } else { dw_b })
 }
 
-/// One step of the model (contract: the Euler methods' q ← normalise(q + h/2·(0, ω_world) ⊗ q); rk4 on (q, ω)
-/// with q normalised after the step only).
+/// One step of the model (contract: the Euler methods' q ← normalise(q + h/2·(0, ω_world) ⊗ q), or the turn by
+/// |ω| h about ω; rk4 on (q, ω) with q normalised after the step only).
 fn step(model: &Model, q: [f64; 4], w: [f64; 3], h: f64) -> ([f64; 4], [f64; 3]) {
     let world = model.axes == HeldAxes::World;
     let g = match model.gyroscopic {
@@ -129,6 +130,14 @@ fn step(model: &Model, q: [f64; 4], w: [f64; 3], h: f64) -> ([f64; 4], [f64; 3])
     } else {
         apply(&rotation(q), turning)
     };
+    if model.attitude_update == AttitudeUpdate::Exponential {
+        // exp(h/2 (0, ω_w)) = (cos(|ω| h / 2), sin(|ω| h / 2) ω/|ω|), then ⊗ q.
+        let speed = w_world.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let half = 0.5 * speed * h;
+        let s = if speed > 0.0 { half.sin() / speed } else { 0.0 };
+        let turn = [half.cos(), s * w_world[0], s * w_world[1], s * w_world[2]];
+        return (product(turn, q), w_new);
+    }
     let dq = product([0.0, w_world[0], w_world[1], w_world[2]], q);
     (normalised(add4(q, dq, h / 2.0)), w_new)
 }
@@ -247,7 +256,7 @@ fn the_exact_solution_is_nearest_to_a_fine_rk4_and_matched_by_none() {
         (Stepper::Rk4, Gyroscopic::Full, 8)
     );
     assert_eq!(d.verdict == Verdict::Match, d.distance_rad <= MATCH_RAD);
-    assert_eq!(d.candidates.len(), 72);
+    assert_eq!(d.candidates.len(), 120);
     assert!(
         d.candidates
             .windows(2)
@@ -263,6 +272,7 @@ fn the_command_prints_the_diagnosis_and_its_json() {
         axes: HeldAxes::Body,
         gyroscopic: Gyroscopic::Flipped,
         substeps: 2,
+        attitude_update: AttitudeUpdate::Normalised,
     };
     let theirs = write_file(dir.path(), "theirs.csv", trajectory(&model));
     let scene = write_file(dir.path(), "tumble.toml", TUMBLE);
@@ -293,7 +303,8 @@ fn the_command_prints_the_diagnosis_and_its_json() {
     assert_eq!(d["closest"]["substeps"], 2);
     assert_eq!(d["verdict"], "match");
     assert!(d["distance_rad"].as_f64().unwrap() <= 1e-12);
-    assert_eq!(d["candidates"].as_array().unwrap().len(), 72);
+    assert_eq!(d["candidates"].as_array().unwrap().len(), 120);
+    assert_eq!(d["closest"]["attitude_update"], "normalised");
 }
 
 #[test]

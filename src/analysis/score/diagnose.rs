@@ -12,6 +12,8 @@
 //!   axes                 body: ω_b held, ω̇_b = f(ω_b);   world: ω_w held, ω̇_w = R f(Rᵀ ω_w)
 //! ```
 //!
+//! The Euler models also turn q by the exponential map, q⁺ = exp(h/2 (0, ω_w)) ⊗ q (the turn by |ω| h about ω, as
+//! MuJoCo's `mju_quatIntegrate` does), which the contract's normalised update approximates to O((|ω| h)³) a step.
 //! (0, ω_w) ⊗ q = q ⊗ (0, ω_b). Semi-implicit Euler takes the same steps in both axes: q turns about the new ω, which
 //! the turn leaves unchanged; either may be named for it.
 
@@ -64,6 +66,16 @@ pub enum Gyroscopic {
     Flipped,
 }
 
+/// How an Euler model turns its attitude by ω over a step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AttitudeUpdate {
+    /// q ← normalise(q + h/2 (0, ω_w) ⊗ q), the contract's (and RK4's: q normalised after its step).
+    Normalised,
+    /// q ← exp(h/2 (0, ω_w)) ⊗ q: the turn by the angle |ω| h about ω (MuJoCo's `mju_quatIntegrate`).
+    Exponential,
+}
+
 /// One model of an engine's step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub struct Model {
@@ -75,13 +87,16 @@ pub struct Model {
     pub gyroscopic: Gyroscopic,
     /// Steps a row.
     pub substeps: u32,
+    /// How the attitude turns (an Euler model's; RK4's is `normalised`).
+    pub attitude_update: AttitudeUpdate,
 }
 
 impl Model {
-    /// Every model of the family, 3 methods × 2 axes × 3 gyroscopic terms × [`SUBSTEPS`].
+    /// Every model of the family: 3 methods × 2 axes × 3 gyroscopic terms × [`SUBSTEPS`], the two Euler methods
+    /// with either attitude update.
     ///
     /// ```
-    /// assert_eq!(eulerdyn::analysis::score::diagnose::Model::all().len(), 72);
+    /// assert_eq!(eulerdyn::analysis::score::diagnose::Model::all().len(), 120);
     /// ```
     pub fn all() -> Vec<Model> {
         let methods = [
@@ -95,12 +110,17 @@ impl Model {
             for axes in [HeldAxes::World, HeldAxes::Body] {
                 for gyroscopic in terms {
                     for substeps in SUBSTEPS {
-                        all.push(Model {
+                        let updates: &[AttitudeUpdate] = match method {
+                            Stepper::Rk4 => &[AttitudeUpdate::Normalised],
+                            _ => &[AttitudeUpdate::Normalised, AttitudeUpdate::Exponential],
+                        };
+                        all.extend(updates.iter().map(|&attitude_update| Model {
                             method,
                             axes,
                             gyroscopic,
                             substeps,
-                        });
+                            attitude_update,
+                        }));
                     }
                 }
             }
@@ -125,8 +145,12 @@ impl Model {
             Gyroscopic::Flipped => "gyroscopic term with its sign flipped",
         };
         let plural = if self.substeps == 1 { "" } else { "s" };
+        let update = match self.attitude_update {
+            AttitudeUpdate::Normalised => "",
+            AttitudeUpdate::Exponential => ", attitude turned by the exponential map",
+        };
         format!(
-            "{method} in {axes} axes, {term}, {} substep{plural}",
+            "{method} in {axes} axes, {term}, {} substep{plural}{update}",
             self.substeps
         )
     }
@@ -276,7 +300,14 @@ impl Body {
             HeldAxes::World => turning,
             HeldAxes::Body => unit.transform_vector(&turning),
         };
-        let q = (y.q + Quaternion::from_imag(omega_w) * y.q * (h / 2.0)).normalize();
+        let q = match model.attitude_update {
+            AttitudeUpdate::Normalised => {
+                (y.q + Quaternion::from_imag(omega_w) * y.q * (h / 2.0)).normalize()
+            }
+            AttitudeUpdate::Exponential => {
+                *(UnitQuaternion::from_scaled_axis(omega_w * h) * unit).quaternion()
+            }
+        };
         State { q, omega }
     }
 
