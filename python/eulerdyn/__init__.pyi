@@ -20,6 +20,7 @@ __all__ = [
     "events",
     "plot",
     "run",
+    "score",
     "sweep",
     "view",
 ]
@@ -83,6 +84,17 @@ def balance(
     measured: Optional[Union[str, "os.PathLike[str]"]] = None,
 ) -> Dict[str, Any]:
     """Two-plane balancing (``eulerdyn balance``)."""
+
+def score(
+    theirs: Union[str, "os.PathLike[str]", pd.DataFrame],
+    scene: SceneLike,
+    *,
+    diagnose: bool = False,
+    quaternion: str = "wxyz",
+    omega: str = "body",
+    map: Optional[Mapping[str, str]] = None,
+) -> Dict[str, Any]:
+    """Another program's trajectory against the referee (``eulerdyn score --json``)."""
 
 def sweep(
     sweep_file: Union[str, "os.PathLike[str]", Mapping[str, Any]],

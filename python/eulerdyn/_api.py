@@ -15,6 +15,7 @@ import csv
 import io
 import math
 import os
+import tempfile
 from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -349,6 +350,58 @@ def _counts(name: str, cells: "list[str]") -> Any:
     if not all(cells):
         raise _eulerdyn.RunError(f"internal error in eulerdyn (please report it): the column `{name}` has an empty count")
     return np.array([int(c) for c in cells], dtype=np.int64)
+
+
+def score(
+    theirs: Union[str, "os.PathLike[str]", pd.DataFrame],
+    scene: SceneLike,
+    *,
+    diagnose: bool = False,
+    quaternion: str = "wxyz",
+    omega: str = "body",
+    map: Optional[Mapping[str, str]] = None,
+) -> Dict[str, Any]:
+    """Another program's trajectory of a scene against eulerdyn's solution of it, as ``eulerdyn score THEIRS.csv
+    --scene SCENE --json`` (with ``--diagnose``, ``--quaternion``, ``--omega`` and ``--map`` for the keywords).
+
+    Args:
+        theirs: the path of their CSV, or a DataFrame with its columns (``t``, the attitude as ``q_w..q_z``,
+            ``q_0..q_3`` or ``R_11..R_33``, optionally ``omega_x..omega_z``); a DataFrame is written out at full
+            precision (17 significant digits) and read as the file would be.
+        scene: the path of the scene file their trajectory simulates, or a dict of its keys.
+        diagnose: also name the engine model the trajectory is consistent with (``diagnosis``).
+        quaternion: the order of the generic columns ``q_0..q_3``, ``"wxyz"`` or ``"xyzw"``.
+        omega: the axes of ``omega_x..z``, ``"body"`` or ``"space"``.
+        map: eulerdyn's column name → their column name, e.g. ``{"q_w": "qw"}``.
+
+    Returns:
+        The score as the command's ``--json`` prints it: ``file`` (``"<DataFrame>"`` for a DataFrame), ``scene``,
+        ``rows``, ``t_last``, ``reference``, ``reference_error``, ``referee_adequate``, ``metrics`` (each with
+        ``key``, ``name``, ``largest``, ``at``, ``last``, ``threshold``, ``passes``), ``warnings``, ``hints``,
+        ``notes`` and, with ``diagnose``, ``diagnosis`` (``closest``, ``distance_rad``, ``verdict``, ``candidates``).
+
+    Raises:
+        SceneError: bad input, as the command's exit 2 (a missing column, times not on a grid, a quaternion off unit
+            norm, a scene the models cannot step with ``diagnose``); the message names the row and column.
+        RunError: the referee's own run failed.
+
+    Example:
+        >>> import eulerdyn, pandas as pd
+        >>> exact = eulerdyn.run("scenarios/tennis_racket.toml", every=1 / 60, t_end=2.0)
+        >>> result = eulerdyn.score(exact, "scenarios/tennis_racket.toml")
+        >>> all(m["passes"] for m in result["metrics"])
+        True
+    """
+    pairs = sorted((map or {}).items())
+    options = dict(diagnose=diagnose, quaternion=quaternion, omega=omega, map=pairs)
+    if isinstance(theirs, pd.DataFrame):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "theirs.csv")
+            theirs.to_csv(path, index=False, float_format="%.17g")
+            result = dict(_eulerdyn.score(path, _scene(scene), **options))
+        result["file"] = "<DataFrame>"
+        return result
+    return dict(_eulerdyn.score(os.fspath(theirs), _scene(scene), **options))
 
 
 def balance(

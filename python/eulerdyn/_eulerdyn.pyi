@@ -62,6 +62,17 @@ def balance(
 ) -> Dict[str, Any]:
     """The correction masses and the balanced scene, as a dict."""
 
+def score(
+    theirs: str,
+    scene: _Scene,
+    *,
+    diagnose: bool = False,
+    quaternion: str = "wxyz",
+    omega: str = "body",
+    map: Optional[Sequence[Tuple[str, str]]] = None,
+) -> Dict[str, Any]:
+    """The score as ``eulerdyn score --json`` prints it."""
+
 def sweep(
     sweep: _Scene,
     *,

@@ -1,5 +1,5 @@
 //! `eulerdyn._eulerdyn`: the eulerdyn library for Python, one function per command of the command line (`run`,
-//! `check`, `compare`, `accuracy`, `balance`, `sweep`, `plot`, `view`). Each takes a scene file's path or a dict of the same keys, calls the
+//! `check`, `compare`, `accuracy`, `balance`, `score`, `sweep`, `plot`, `view`). Each takes a scene file's path or a dict of the same keys, calls the
 //! library (nothing is computed here), and returns plain Python data that `eulerdyn/__init__.py` turns into pandas
 //! DataFrames.
 //!
@@ -15,6 +15,7 @@ mod figures;
 mod input;
 mod moment;
 mod run;
+mod score;
 mod sweep;
 mod wheel_law;
 
@@ -32,6 +33,7 @@ fn _eulerdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::compare, m)?)?;
     m.add_function(wrap_pyfunction!(commands::accuracy, m)?)?;
     m.add_function(wrap_pyfunction!(commands::balance, m)?)?;
+    m.add_function(wrap_pyfunction!(score::score, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     m.add_function(wrap_pyfunction!(figures::plot, m)?)?;
     m.add_function(wrap_pyfunction!(figures::view, m)?)?;

@@ -29,7 +29,7 @@ def test_dir_shows_the_modules_names_only():
     assert public == set(eulerdyn.__all__)
     assert public == {
         "RunError", "SceneError", "SceneLike", "Svg", "accuracy", "balance", "check", "compare", "events", "plot",
-        "run", "sweep", "view",
+        "run", "score", "sweep", "view",
     }
     # What the implementation imports stays out of it (issue 27).
     for name in ("np", "pd", "os", "csv", "io", "math", "Dict", "Any", "Mapping", "Optional", "annotations"):

@@ -685,3 +685,37 @@ fn an_xyzw_quaternion_and_space_omega_are_named_from_the_first_row() {
     let json: serde_json::Value = serde_json::from_str(&fixed.stdout).unwrap();
     assert_eq!(json["hints"].as_array().unwrap().len(), 0);
 }
+
+/// Issue 55: eulerdyn's own CSV (`omega_b_x..z`) is read as body-axis ω without `--map`, and a `--map` to a column the
+/// file lacks is refused naming that column.
+#[test]
+fn eulerdyns_own_omega_columns_are_read_and_a_map_to_a_missing_column_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let own = csv(&exact_rows(), true).replacen(
+        "omega_x,omega_y,omega_z",
+        "omega_b_x,omega_b_y,omega_b_z",
+        1,
+    );
+    assert!(own.starts_with("t,q_w,q_x,q_y,q_z,omega_b_x"), "{own}");
+    let s = score_text(dir.path(), "own.csv", &own, FREE);
+    // The same rows as the_exact_solution_scores_round_off, so ω is measured and at round-off (1e-12, as there).
+    let omega = s.metric("omega").expect("ω measured from omega_b_*");
+    assert!(omega.largest < 1e-12, "{omega:?}");
+    let theirs = write_file(dir.path(), "theirs.csv", csv(&exact_rows(), true));
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let out = eulerdyn([
+        "score",
+        theirs.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+        "--map",
+        "omega_x=wx",
+    ]);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(
+        out.stderr
+            .contains("--map omega_x=wx: the file has no column `wx`"),
+        "{}",
+        out.stderr
+    );
+}

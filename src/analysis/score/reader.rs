@@ -106,8 +106,17 @@ pub fn read_trajectory(
         }
     }
     let mut csv = RunCsvReader::open(path).map_err(|e| ScoreError::Input(e.to_string()))?;
+    for (name, their) in &options.map {
+        if csv.index_of(their).is_none() {
+            return Err(input(format!(
+                "--map {name}={their}: the file has no column `{their}`; its columns are {}",
+                csv.header_shown()
+            )));
+        }
+    }
+    let (map, omega_axes) = with_own_omega(&csv, options);
     let column = |name: &str| -> String {
-        (options.map.iter().rev())
+        (map.iter().rev())
             .find(|(n, _)| n == name)
             .map_or(name.to_string(), |(_, c)| c.clone())
     };
@@ -137,7 +146,7 @@ pub fn read_trajectory(
             )));
         }
     };
-    let mut reading = Reading::new(path, t_end, options.omega.unwrap_or(Axes::Body));
+    let mut reading = Reading::new(path, t_end, omega_axes);
     let (index, names) = reading.columns(t_index, &attitude, omega, &column);
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let mut values = vec![0.0; index.len()];
@@ -153,6 +162,23 @@ pub fn read_trajectory(
         Attitude::Matrix(_) => AttitudeColumns::Matrix,
     };
     reading.finish(columns)
+}
+
+/// The column map and ω's axes: the options', except that a file of eulerdyn's own (`omega_b_x..z`, no
+/// `omega_x..z`, none mapped) has its body-axis ω read from `omega_b_x..z`.
+fn with_own_omega<R: std::io::Read>(
+    csv: &RunCsvReader<R>,
+    options: &ReadOptions,
+) -> (Vec<(String, String)>, Axes) {
+    const OWN: [&str; 3] = ["omega_b_x", "omega_b_y", "omega_b_z"];
+    let mut map = options.map.clone();
+    let has = |c: &str| csv.index_of(c).is_some();
+    let mapped = map.iter().any(|(n, _)| OMEGA.contains(&n.as_str()));
+    if !mapped && !OMEGA.iter().any(|n| has(n)) && OWN.iter().all(|c| has(c)) {
+        map.extend((OMEGA.iter().zip(OWN)).map(|(n, c)| (n.to_string(), c.to_string())));
+        return (map, Axes::Body);
+    }
+    (map, options.omega.unwrap_or(Axes::Body))
 }
 
 /// The attitude's columns: q_w..q_z, else q_0..q_3 in `order`, else R_11..R_33.
