@@ -1,6 +1,6 @@
 //! Rotors inside the body (gyrostats), against closed forms. H = I ω + Σ J_k Ω_k a_k with I the body with its
 //! wheels locked; I ω̇ + Σ J_k Ω̇_k a_k = M − ω × H; J_k (a_k·ω̇ + Ω̇_k) = τ_k (Hughes, *Spacecraft Attitude
-//! Dynamics*, 1986, the gyrostat's equations of motion; core/src/motion/gyrostat.rs). Each closed form below follows from
+//! Dynamics*, 1986, the gyrostat's equations of motion; core/src/wheels/gyrostat.rs). Each closed form below follows from
 //! these in a line, written beside it. Tolerances: dop853 at rtol 1e-12 reaches 1e-11 relative on these smooth,
 //! slow motions; the criterion 1e-9 is asserted.
 

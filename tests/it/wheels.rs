@@ -1,6 +1,6 @@
 //! Wheels under control (core/src/wheels): torque and speed limits, friction, free wheels, wheel laws and tables,
 //! against closed forms. Every closed form follows in a line from the gyrostat's equations about one axis x with
-//! no external moment (Hughes, *Spacecraft Attitude Dynamics*, 1986, the gyrostat; core/src/motion/gyrostat.rs):
+//! no external moment (Hughes, *Spacecraft Attitude Dynamics*, 1986, the gyrostat; core/src/wheels/gyrostat.rs):
 //! I ω̇ + J Ω̇ = 0 (H_s conserved) and J (ω̇ + Ω̇) = τ_m + τ_f, hence (I − J) ω̇ = −(τ_m + τ_f) and
 //! Ω̇ = I (τ_m + τ_f) / (J (I − J)). Tolerances: dop853 at rtol 1e-12 and atol 1e-14 reaches about 1e-11 relative
 //! on these smooth motions (as tests/it/rotors.rs); 1e-9 is asserted, except where a switch (a limit, a stop)
