@@ -377,7 +377,8 @@ def score(
     Returns:
         The score as the command's ``--json`` prints it: ``file`` (``"<DataFrame>"`` for a DataFrame), ``scene``,
         ``rows``, ``t_last``, ``reference``, ``reference_error``, ``referee_adequate``, ``metrics`` (each with
-        ``key``, ``name``, ``largest``, ``at``, ``last``, ``threshold``, ``passes``), ``warnings``, ``hints``,
+        ``key``, ``name``, ``largest``, ``at``, ``last``, ``threshold``, ``passes``; an event's also
+        ``occurrences``, each with ``reference_t``, ``their_t`` and ``error``), ``warnings``, ``hints``,
         ``notes`` and, with ``diagnose``, ``diagnosis`` (``closest``, ``distance_rad``, ``verdict``, ``candidates``).
 
     Raises:

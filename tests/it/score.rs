@@ -221,6 +221,16 @@ fn a_time_shifted_flip_reports_the_shift() {
         "{m:?}"
     );
     assert!(m.passes == (shift <= score::metrics::EVENT_TIME_MAX));
+    // Each occurrence's own error (the contract's "each event time"), matched in order: every one `shift` late.
+    let each = m.occurrences.as_ref().expect("an event's occurrences");
+    assert!(!each.is_empty(), "{each:?}");
+    for o in each {
+        let (theirs, reference) = (o.their_t.unwrap(), o.reference_t.unwrap());
+        assert!((theirs - reference - shift).abs() < 1e-6, "{o:?}");
+        assert_eq!(o.error, Some((theirs - reference).abs()));
+    }
+    let largest = each.iter().filter_map(|o| o.error).fold(0.0, f64::max);
+    assert_eq!(largest, m.largest);
 }
 
 #[test]

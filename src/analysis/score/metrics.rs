@@ -51,6 +51,20 @@ pub struct Metric {
     /// What else there is to know (an event missing or extra).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// An event's occurrences, each with its time error (events only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub occurrences: Option<Vec<Occurrence>>,
+}
+
+/// One occurrence of an event on the reference and on their rows, matched in order; a side without it is `None`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Occurrence {
+    /// Its time on the reference (s).
+    pub reference_t: Option<f64>,
+    /// Its time on their rows (s).
+    pub their_t: Option<f64>,
+    /// |their_t − reference_t| (s), where both have it.
+    pub error: Option<f64>,
 }
 
 /// A metric's values at their times, for the figure.
@@ -83,6 +97,7 @@ impl Series {
             threshold,
             passes: largest <= threshold,
             note: None,
+            occurrences: None,
         }
     }
 }
@@ -229,6 +244,16 @@ fn event_metric(e: &Event, found: &[f64], expected: &[f64]) -> Metric {
             expected.len()
         )
     });
+    let occurrences = (0..found.len().max(expected.len()))
+        .map(|k| {
+            let (their_t, reference_t) = (found.get(k).copied(), expected.get(k).copied());
+            Occurrence {
+                reference_t,
+                their_t,
+                error: their_t.zip(reference_t).map(|(a, b)| (a - b).abs()),
+            }
+        })
+        .collect();
     Metric {
         key: format!("event:{}", e.name),
         name: format!("event `{}` time error (s)", e.name),
@@ -238,6 +263,7 @@ fn event_metric(e: &Event, found: &[f64], expected: &[f64]) -> Metric {
         threshold: EVENT_TIME_MAX,
         passes: largest <= EVENT_TIME_MAX && note.is_none(),
         note,
+        occurrences: Some(occurrences),
     }
 }
 

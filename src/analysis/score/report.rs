@@ -56,6 +56,18 @@ pub fn text(score: &Score) -> String {
                 .map(|n| format!(" ({n})"))
                 .unwrap_or_default()
         ));
+        for (k, o) in m.occurrences.iter().flatten().enumerate() {
+            let time = |t: Option<f64>| t.map_or("none".to_string(), |t| format!("{t:.6} s"));
+            out.push_str(&format!(
+                "  occurrence {}: reference {}, theirs {}{}\n",
+                k + 1,
+                time(o.reference_t),
+                time(o.their_t),
+                o.error
+                    .map(|e| format!(", error {e:.3e} s"))
+                    .unwrap_or_default()
+            ));
+        }
     }
     let failed = score.metrics.iter().filter(|m| !m.passes).count();
     out.push_str(&if failed == 0 {
