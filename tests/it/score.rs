@@ -729,3 +729,78 @@ fn eulerdyns_own_omega_columns_are_read_and_a_map_to_a_missing_column_is_named()
         out.stderr
     );
 }
+
+/// The suite's tennis racket without its `[[event]]`: the scene as a user writes it before thinking of events.
+fn racket_without_event() -> String {
+    let (text, _) = racket();
+    let start = text
+        .find("[[event]]")
+        .expect("the suite's racket has an event");
+    let end = start + text[start..].find("\n\n").unwrap() + 2;
+    format!("{}{}", &text[..start], &text[end..])
+}
+
+#[test]
+fn a_flipping_body_s_flips_are_scored_without_an_event() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, e) = racket();
+    // 40 s: the racket flips every 2K/λ ≈ 8.2 s.
+    let scene = racket_without_event().replace("t_end = 12.0", "t_end = 40.0");
+    assert!(
+        !scene.contains("[[event]]") && scene.contains("t_end = 40.0"),
+        "{scene}"
+    );
+    let shift = 0.01;
+    let rows: Vec<_> = (0..=40 * 600)
+        .map(|k| {
+            let t = k as f64 / 600.0;
+            (t, e.attitude(t - shift), e.omega_p(t - shift))
+        })
+        .collect();
+    let s = score_text(dir.path(), "late.csv", &csv(&rows, true), &scene);
+    let m = s
+        .metric("event:flip")
+        .expect("the flips, found without an [[event]]");
+    assert_eq!(m.name, score::flips::LABEL);
+    let each = m.occurrences.as_ref().unwrap();
+    // ω₂ ∝ sn τ changes sign every 2K/λ (Landau & Lifshitz §37; `TorqueFreeBody::flip_interval`): the reference's
+    // flips, located on the closed form by Brent's method to 1e-13 s, are that far apart to round-off.
+    let interval = e.flip_interval().unwrap();
+    let reference: Vec<f64> = each.iter().filter_map(|o| o.reference_t).collect();
+    assert!(reference.len() >= 4, "{each:?}");
+    for pair in reference.windows(2) {
+        assert!(
+            (pair[1] - pair[0] - interval).abs() < 1e-9,
+            "{pair:?} against {interval}"
+        );
+    }
+    // Their flips come `shift` late (linear interpolation between rows 1/600 s apart: O(h³·ω₂''') ≈ 1e-8 s, as
+    // in `a_time_shifted_flip_reports_the_shift`); the last reference flip may fall after their last row.
+    for o in each
+        .iter()
+        .filter(|o| o.their_t.is_some() && o.reference_t.is_some())
+    {
+        assert!((o.error.unwrap() - shift).abs() < 1e-6, "{o:?}");
+    }
+    assert!(m.passes == m.note.is_none(), "{m:?}");
+}
+
+#[test]
+fn the_scene_s_own_flip_event_is_not_scored_twice_and_a_major_axis_wobble_is_no_flip() {
+    let dir = tempfile::tempdir().unwrap();
+    let (scene, e) = racket();
+    let rows: Vec<_> = (0..=12 * 60)
+        .map(|k| {
+            let t = k as f64 / 60.0;
+            (t, e.attitude(t), e.omega_p(t))
+        })
+        .collect();
+    let s = score_text(dir.path(), "racket.csv", &csv(&rows, true), &scene);
+    let flips: Vec<_> = s.metrics.iter().filter(|m| m.key == "event:flip").collect();
+    assert_eq!(flips.len(), 1, "{flips:?}");
+    assert_eq!(flips[0].name, "event `flip` time error (s)");
+    // FREE circulates about its major axis: ω₂ changes sign, but the intermediate axis stays far from H
+    // (H₂,max/|H| = 0.15 by the closed form in score/flips.rs), so nothing flips and no metric is added.
+    let s = score_text(dir.path(), "free.csv", &csv(&exact_rows(), true), FREE);
+    assert!(s.metric("event:flip").is_none(), "{:?}", s.metrics);
+}

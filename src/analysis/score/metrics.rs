@@ -11,7 +11,7 @@ use super::reader::TheirRow;
 use super::reference::Reference;
 use crate::analysis::compare::attitude_angle;
 use crate::effects::{AppliedMoment, EffectMoments};
-use crate::events::{Condition, Direction, Event, Extremum};
+use crate::events::{Condition, Direction, Extremum};
 use crate::frames::{BodyAxes, Vector};
 use crate::motion::free::free_sample;
 use crate::sample::Sample;
@@ -191,6 +191,7 @@ pub fn metrics(
         .collect();
     if let Some(theirs) = samples {
         metrics.extend(event_metrics(scene, theirs, reference));
+        metrics.extend(super::flips::metric(scene, theirs, reference));
     }
     (metrics, all.into_iter().map(|(s, ..)| s).collect())
 }
@@ -218,18 +219,19 @@ fn event_metrics(scene: &Scene, theirs: &[Sample], reference: &Reference) -> Vec
     let t: Vec<f64> = theirs.iter().map(|s| s.t).collect();
     (scene.events.iter().enumerate())
         .map(|(i, e)| {
-            let found = locate(e, &t, &values[i]);
+            let found = locate(&e.condition, &t, &values[i]);
             let expected: Vec<f64> = (reference.occurrences.iter())
                 .filter(|o| o.event == i)
                 .map(|o| o.t)
                 .collect();
-            event_metric(e, &found, &expected)
+            let label = format!("event `{}` time error (s)", e.name);
+            event_metric(&e.name, &label, &found, &expected)
         })
         .collect()
 }
 
-/// The metric of one event from its times on their rows and on the reference.
-fn event_metric(e: &Event, found: &[f64], expected: &[f64]) -> Metric {
+/// The metric `event:NAME` of one event, described by `label`, from its times on their rows and on the reference.
+pub(super) fn event_metric(name: &str, label: &str, found: &[f64], expected: &[f64]) -> Metric {
     let errors: Vec<(f64, f64)> = (found.iter().zip(expected))
         .map(|(a, b)| ((a - b).abs(), *b))
         .collect();
@@ -255,8 +257,8 @@ fn event_metric(e: &Event, found: &[f64], expected: &[f64]) -> Metric {
         })
         .collect();
     Metric {
-        key: format!("event:{}", e.name),
-        name: format!("event `{}` time error (s)", e.name),
+        key: format!("event:{name}"),
+        name: label.to_string(),
         largest,
         at,
         last: errors.last().map_or(0.0, |e| e.0),
@@ -267,11 +269,11 @@ fn event_metric(e: &Event, found: &[f64], expected: &[f64]) -> Metric {
     }
 }
 
-/// The times of event `e` on rows at times `t` with its quantity `q`: a crossing linearly interpolated between
-/// the two rows around it, an extremum at the vertex of the parabola through three rows.
-pub fn locate(e: &Event, t: &[f64], q: &[f64]) -> Vec<f64> {
+/// The times at which quantity `q` on rows at times `t` meets `condition`: a crossing linearly interpolated
+/// between the two rows around it, an extremum at the vertex of the parabola through three rows.
+pub fn locate(condition: &Condition, t: &[f64], q: &[f64]) -> Vec<f64> {
     let mut found = Vec::new();
-    match e.condition {
+    match *condition {
         Condition::Crossing { value, direction } => {
             for k in 1..t.len() {
                 let (a, b) = (q[k - 1] - value, q[k] - value);

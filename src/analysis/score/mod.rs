@@ -3,7 +3,7 @@
 //!
 //! [`reader`] reads their CSV, [`reference`](mod@reference) computes the referee at their times (the closed form where one
 //! applies, else dop853 at rtol 1e-13 with its error estimated), [`metrics`] compares row by row — attitude
-//! angle, ω, energy, |H|, H's direction in space, event times — [`hints`] names the likely export slip when their
+//! angle, ω, energy, |H|, H's direction in space, event times, a torque-free body's flips ([`flips`]) — [`hints`] names the likely export slip when their
 //! first row is not the scene's initial state, [`diagnose`] names the engine model the trajectory is consistent with
 //! (`--diagnose`), [`report`] prints, [`suite`] is the conformance
 //! suite (`eulerdyn suite`, `eulerdyn score --suite`), `figure` (feature `plot`) draws the errors against time, `command` (feature `cli`) is
@@ -14,6 +14,7 @@ pub mod command;
 pub mod diagnose;
 #[cfg(feature = "plot")]
 pub mod figure;
+pub mod flips;
 pub mod hints;
 pub mod metrics;
 pub mod reader;
