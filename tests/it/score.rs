@@ -804,3 +804,42 @@ fn the_scene_s_own_flip_event_is_not_scored_twice_and_a_major_axis_wobble_is_no_
     let s = score_text(dir.path(), "free.csv", &csv(&exact_rows(), true), FREE);
     assert!(s.metric("event:flip").is_none(), "{:?}", s.metrics);
 }
+
+#[test]
+fn a_trajectory_that_ends_early_is_not_a_pass_and_says_where_it_ends() {
+    // An engine that stopped (Drake's top diverges at t = 0.73 s of 5 s): the exact rows of FREE up to t = 2 s
+    // pass every metric, but the scene is not scored past 2 s, so the score is not a pass (exit 1).
+    let dir = tempfile::tempdir().unwrap();
+    let rows: Vec<_> = exact_rows().into_iter().filter(|r| r.0 <= 2.0).collect();
+    let s = score_text(dir.path(), "short.csv", &csv(&rows, true), FREE);
+    assert!(s.metrics.iter().all(|m| m.passes), "{:?}", s.metrics);
+    assert_eq!(s.ends_early, Some(2.0));
+    assert!(!s.passes());
+    assert!(
+        s.notes.iter().any(|n| n.contains("end at t = 2 s")),
+        "{:?}",
+        s.notes
+    );
+    let text = score::report::text(&s);
+    assert!(
+        text.contains("verdict: FAIL (their rows end at t = 2 s"),
+        "{text}"
+    );
+    // The whole run, or one that ends within a row of t_end, is scored as before.
+    let s = score_text(dir.path(), "whole.csv", &csv(&exact_rows(), true), FREE);
+    assert_eq!(s.ends_early, None);
+    assert!(s.passes());
+    // The command: exit 1, and the JSON says where their rows end.
+    let scene = write_file(dir.path(), "free.toml", FREE);
+    let short = dir.path().join("short.csv");
+    let out = eulerdyn([
+        "score",
+        short.to_str().unwrap(),
+        "--scene",
+        scene.to_str().unwrap(),
+        "--json",
+    ]);
+    out.expect_code(1);
+    let json: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    assert_eq!(json["ends_early"], 2.0, "{json}");
+}

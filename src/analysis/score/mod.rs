@@ -79,12 +79,17 @@ pub struct Score {
     /// A suite's scene whose output the engine did not write: not scored, and not a pass.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub missing: bool,
+    /// Their last time (s) when their rows end more than one row before the scene's `t_end` (an engine that
+    /// stopped, or whose state stopped being finite): the rest is not scored, and the score is not a pass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ends_early: Option<f64>,
 }
 
 impl Score {
-    /// Whether every metric is within its threshold (a missing output never passes).
+    /// Whether every metric is within its threshold over the whole scene (a missing output, or one that ends
+    /// early, never passes).
     pub fn passes(&self) -> bool {
-        !self.missing && self.metrics.iter().all(|m| m.passes)
+        !self.missing && self.ends_early.is_none() && self.metrics.iter().all(|m| m.passes)
     }
 
     /// The entry of a suite's scene `scene` whose output `file` is missing.
@@ -107,6 +112,7 @@ impl Score {
             diagnosis: None,
             series: Vec::new(),
             missing: true,
+            ends_early: None,
         }
     }
 
@@ -144,6 +150,15 @@ pub fn score_with(
     };
     let samples = metrics::their_samples(scene, rows);
     let mut notes = Vec::new();
+    let (every, _) = reference::grid(&shown, &times)?;
+    let t_last = times[times.len() - 1];
+    let ends_early = (t_last < t_end - every * (1.0 + reference::GRID_SLACK)).then_some(t_last);
+    if let Some(t) = ends_early {
+        notes.push(format!(
+            "their rows end at t = {t} s, before the scene's t_end = {t_end} s: the rest is not scored, and the \
+             score is not a pass"
+        ));
+    }
     if samples.is_none() {
         notes.push(if rows[0].omega_b.is_none() {
             "no omega columns: ω, energy, H and event times not measured".to_string()
@@ -167,7 +182,7 @@ pub fn score_with(
         file: shown,
         scene: scene.name.clone(),
         rows: rows.len(),
-        t_last: rows[rows.len() - 1].t,
+        t_last,
         reference: reference.source,
         reference_error: reference.estimate,
         referee_adequate,
@@ -178,5 +193,6 @@ pub fn score_with(
         diagnosis,
         series,
         missing: false,
+        ends_early,
     })
 }

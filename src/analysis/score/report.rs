@@ -70,13 +70,16 @@ pub fn text(score: &Score) -> String {
         }
     }
     let failed = score.metrics.iter().filter(|m| !m.passes).count();
-    out.push_str(&if failed == 0 {
-        "verdict: pass (every metric within its threshold)\n".to_string()
-    } else {
-        format!(
-            "verdict: FAIL ({failed} of {} metrics over their thresholds)\n",
-            score.metrics.len()
-        )
+    let over = format!(
+        "{failed} of {} metrics over their thresholds",
+        score.metrics.len()
+    );
+    out.push_str(&match (score.ends_early, failed) {
+        (None, 0) => "verdict: pass (every metric within its threshold)\n".to_string(),
+        (None, _) => format!("verdict: FAIL ({over})\n"),
+        (Some(t), _) => {
+            format!("verdict: FAIL (their rows end at t = {t} s, before the scene's end; {over})\n")
+        }
     });
     out
 }
@@ -117,6 +120,12 @@ pub fn card(engine: &str, scores: &[Score]) -> String {
             out.push_str(&format!(" {cell:>13}"));
         }
         out.push_str(&format!("  {}\n", verdict(s.passes())));
+        if let Some(t) = s.ends_early {
+            out.push_str(&format!(
+                "{:<24}their rows end at t = {t} s, before the scene's t_end (the rest not scored)\n",
+                ""
+            ));
+        }
         if let Some(d) = &s.diagnosis {
             out.push_str(&format!("{:<24}{}\n", "", d.line()));
         }
