@@ -1,74 +1,110 @@
-"""The engines' work-precision figure: step size against attitude error, every engine and eulerdyn's own
-fixed-step methods on the same axes, scored by `eulerdyn score` on one scene of the suite.
+"""The engines' work-precision figure: what accuracy costs, as in Erez, Tassa & Todorov (ICRA 2015) — the wall time
+per simulated second against the largest attitude error, every engine and eulerdyn's own methods on the same axes,
+measured in one run on one scene of the suite.
 
     python engines/work_precision.py --bin target/release/eulerdyn --suite DIR [--scene full_tensor]
 
-Runs MuJoCo (Euler, RK4) and PyBullet through their adapters at 60, 120, ... 1920 steps per second (rows at
-60 Hz), and `eulerdyn run --method rk4|split2|split4 --dt h`; scores each; writes engines/results/work_precision.csv
-and docs/engines_work_precision.svg.
+Each engine runs through its adapter (engines/*/run_suite.py) at 60, 120, ... 1920 steps per second with rows at
+60 Hz; its cost is the median over REPEATS runs of the wall time of its stepping calls (made from Python, one call
+a step: the call's own overhead is part of what a Python user pays), and its error is the largest attitude error
+that `eulerdyn score` gives. eulerdyn's methods are timed by `eulerdyn accuracy` on the same scene with rows at
+60 Hz (the integration alone, in Rust, median of its repeats; the body form of rk4, split2 and split4 over step
+sizes, dop853 over tolerances, the exact flow) and their error is the same largest attitude angle over the rows.
+Writes engines/results/work_precision.csv and docs/engines_work_precision.svg.
 """
 
 import argparse
+import csv
+import importlib.util
 import json
 import math
 import pathlib
+import statistics
 import subprocess
-import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
-sys.path[:0] = [str(HERE / "mujoco"), str(HERE / "pybullet")]
 
 RATES = [60, 120, 240, 480, 960, 1920]
-COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"]
+REPEATS = 5
+COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
+          "#17becf", "#393b79", "#637939"]
+#: Figure label -> (adapter folder, call of its run_scene).
+ENGINES = {
+    "MuJoCo Euler": ("mujoco", lambda m, setup, rate: m.run_scene(setup, rate, "Euler")),
+    "MuJoCo implicitfast": ("mujoco", lambda m, setup, rate: m.run_scene(setup, rate, "implicitfast")),
+    "MuJoCo RK4": ("mujoco", lambda m, setup, rate: m.run_scene(setup, rate, "RK4")),
+    "PyBullet": ("pybullet", lambda m, setup, rate: m.run_scene(setup, rate)),
+    "Drake": ("drake", lambda m, setup, rate: m.run_scene(setup, rate)),
+    "DART": ("dart", lambda m, setup, rate: m.run_scene(setup, rate)),
+    "Rapier": ("rapier", lambda m, setup, rate: m.run_scene(setup, rate, "on")),
+}
+#: eulerdyn's methods on the figure (body form), from `eulerdyn accuracy`'s table.
+OWN = ["rk4", "split2", "split4", "dop853", "exact"]
 
 
-def score(binary, csv, scene, extra=()):
-    """The largest attitude error of `csv` against `scene` (rad), from `eulerdyn score --json`."""
-    out = subprocess.run([binary, "score", str(csv), "--scene", str(scene), "--json", *extra],
+def adapter(folder):
+    """The adapter module engines/<folder>/run_suite.py, ready to run (PyBullet connected)."""
+    spec = importlib.util.spec_from_file_location(f"{folder}_run_suite", HERE / folder / "run_suite.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    if folder == "pybullet":
+        module.p.connect(module.p.DIRECT)
+    return module
+
+
+def score(binary, csv_path, scene):
+    """The largest attitude error of `csv_path` against `scene` (rad), from `eulerdyn score --json`."""
+    out = subprocess.run([binary, "score", str(csv_path), "--scene", str(scene), "--json"],
                          capture_output=True, text=True)
     if out.returncode not in (0, 1):
-        raise SystemExit(f"eulerdyn score {csv}: exit {out.returncode}: {out.stderr}")
+        raise SystemExit(f"eulerdyn score {csv_path}: exit {out.returncode}: {out.stderr}")
     return json.loads(out.stdout)["metrics"][0]["largest"]
 
 
 def engine_points(binary, suite, scene, work):
-    """(engine, step, error) for the engines' adapters."""
-    import run_suite as mujoco_adapter  # engines/mujoco/run_suite.py
-    sys.path.remove(str(HERE / "mujoco"))
-    del sys.modules["run_suite"]
-    import run_suite as bullet_adapter  # engines/pybullet/run_suite.py
-    bullet_adapter.p.connect(bullet_adapter.p.DIRECT)
+    """(label, step, rtol, cost, error) for every engine at every rate; cost in seconds per simulated second."""
     setup = json.loads((suite / f"{scene}.json").read_text())
-    runs = [("MuJoCo Euler", lambda r: mujoco_adapter.run_scene(setup, r, "Euler")),
-            ("MuJoCo RK4", lambda r: mujoco_adapter.run_scene(setup, r, "RK4")),
-            ("PyBullet", lambda r: bullet_adapter.run_scene(setup, r))]
+    modules = {}
     points = []
-    for name, run in runs:
+    for label, (folder, run) in ENGINES.items():
+        module = modules.setdefault(folder, adapter(folder))
         for rate in RATES:
-            csv = work / f"{name.replace(' ', '_')}_{rate}.csv"
-            csv.write_text("\n".join(run(rate)) + "\n")
-            points.append((name, 1.0 / rate, score(binary, csv, suite / f"{scene}.toml")))
+            runs = [run(module, setup, rate) for _ in range(REPEATS)]
+            lines = runs[0][0]
+            csv_path = work / f"{label.replace(' ', '_')}_{rate}.csv"
+            csv_path.write_text("\n".join(lines) + "\n")
+            cost = statistics.median(seconds for _, seconds in runs) / setup["t_end"]
+            points.append((label, 1.0 / rate, None, cost, score(binary, csv_path, suite / f"{scene}.toml")))
     return points
 
 
 def own_points(binary, suite, scene, work):
-    """(method, step, error) for eulerdyn's own fixed-step methods, scored like an engine."""
+    """(label, step, rtol, cost, error) for eulerdyn's methods, from `eulerdyn accuracy` with rows at 60 Hz."""
+    text = (suite / f"{scene}.toml").read_text()
+    at_60hz = work / f"{scene}_60hz.toml"
+    at_60hz.write_text(text.replace("every = 0.05", f"every = {1.0 / 60.0!r}"))
+    if at_60hz.read_text() == text:
+        raise SystemExit(f"{scene}.toml: no `every = 0.05` to set to 60 Hz")
+    table = work / "accuracy.csv"
+    subprocess.run([binary, "-q", "accuracy", str(at_60hz), "-o", str(table)], check=True)
+    t_end = json.loads((suite / f"{scene}.json").read_text())["t_end"]
     points = []
-    columns = [f"--map=omega_{a}=omega_b_{a}" for a in "xyz"]
-    for method in ["rk4", "split2", "split4"]:
-        for rate in RATES:
-            csv = work / f"eulerdyn_{method}_{rate}.csv"
-            subprocess.run([binary, "-q", "run", str(suite / f"{scene}.toml"), "--method", method,
-                            "--dt", repr(1.0 / rate), "--every", repr(1.0 / 60), "-o", str(csv)], check=True)
-            points.append((f"eulerdyn {method}", 1.0 / rate, score(binary, csv, suite / f"{scene}.toml", columns)))
+    with table.open() as f:
+        for row in csv.DictReader(f):
+            if row["frame"] != "body" or row["method"] not in OWN or row["status"] != "ok":
+                continue
+            step = float(row["dt"]) if row["dt"] else None
+            rtol = float(row["rtol"]) if row["rtol"] else None
+            points.append((f"eulerdyn {row['method']}", step, rtol, float(row["wall_s"]) / t_end,
+                           float(row["err_attitude"])))
     return points
 
 
 def svg(points, scene):
-    """A log-log figure: step (s) across, largest attitude error (rad) up, one polyline per engine."""
-    width, height, left, right, top, bottom = 900, 560, 90, 230, 50, 60
-    xs = [math.log10(p[1]) for p in points]
-    ys = [math.log10(max(p[2], 1e-16)) for p in points]
+    """A log-log figure: cost across, largest attitude error up, one polyline per engine or method."""
+    width, height, left, right, top, bottom = 960, 600, 90, 250, 50, 60
+    xs = [math.log10(p[3]) for p in points]
+    ys = [math.log10(max(p[4], 1e-16)) for p in points]
     x0, x1 = math.floor(min(xs)), math.ceil(max(xs))
     y0, y1 = math.floor(min(ys)), math.ceil(max(ys))
     px = lambda x: left + (x - x0) / (x1 - x0) * (width - left - right)
@@ -84,14 +120,14 @@ def svg(points, scene):
         out.append(f'<line x1="{left}" y1="{py(d)}" x2="{width - right}" y2="{py(d)}" stroke="#ddd"/>')
         out.append(f'<text x="{left - 6}" y="{py(d) + 4}" font-size="13" text-anchor="end">1e{d}</text>')
     out.append(f'<text x="{(left + width - right) / 2}" y="{height - 15}" font-size="14" text-anchor="middle">'
-               'step size (s)</text>')
+               'wall time per simulated second (s)</text>')
     out.append(f'<text x="20" y="{(top + height - bottom) / 2}" font-size="14" text-anchor="middle" '
                f'transform="rotate(-90 20 {(top + height - bottom) / 2})">largest attitude error (rad)</text>')
     names = list(dict.fromkeys(p[0] for p in points))
     for k, name in enumerate(names):
         color = COLORS[k % len(COLORS)]
         dash = ' stroke-dasharray="6 4"' if name.startswith("eulerdyn") else ""
-        pts = [(px(math.log10(p[1])), py(math.log10(max(p[2], 1e-16)))) for p in points if p[0] == name]
+        pts = [(px(math.log10(p[3])), py(math.log10(max(p[4], 1e-16)))) for p in points if p[0] == name]
         out.append(f'<polyline fill="none" stroke="{color}" stroke-width="2"{dash} points="'
                    + " ".join(f"{x:.1f},{y:.1f}" for x, y in pts) + '"/>')
         out.extend(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3.5" fill="{color}"/>' for x, y in pts)
@@ -112,7 +148,9 @@ def main():
     work = args.suite / "work_precision"
     work.mkdir(exist_ok=True)
     points = engine_points(args.bin, args.suite, args.scene, work) + own_points(args.bin, args.suite, args.scene, work)
-    table = ["engine,step_s,largest_attitude_error_rad"] + [f"{n},{h!r},{e!r}" for n, h, e in points]
+    blank = lambda v: "" if v is None else repr(v)
+    table = ["engine,step_s,rtol,cost_s_per_simulated_s,largest_attitude_error_rad"]
+    table += [f"{n},{blank(h)},{blank(r)},{c!r},{e!r}" for n, h, r, c, e in points]
     (HERE / "results" / "work_precision.csv").write_text("\n".join(table) + "\n")
     (HERE.parent / "docs" / "engines_work_precision.svg").write_text(svg(points, args.scene))
     print("\n".join(table))

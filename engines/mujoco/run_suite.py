@@ -1,17 +1,20 @@
 """Run eulerdyn's conformance suite in MuJoCo and write each trajectory for `eulerdyn score --suite`.
 
-    python engines/mujoco/run_suite.py --suite DIR [--integrator Euler|RK4 ...] [--rate HZ]
+    python engines/mujoco/run_suite.py --suite DIR [--integrator Euler|implicitfast|RK4 ...] [--rate HZ]
 
 For each scene DIR/NAME.json (written by `eulerdyn suite --out DIR`) builds a MuJoCo model — a free body (a
 freejoint, gravity off) for the torque-free scenes, a ball joint at the pivot for the top, the torque pulse as
 `xfrc_applied` (world axes) — steps it at 1/rate s with the chosen integrator and writes, at the suite's 60 Hz,
 DIR/mujoco_<integrator>[_<rate>hz]/NAME.csv with t, q_w..q_z (body -> world) and omega_x..z (body axes: MuJoCo's
-qvel of a free or ball joint is the angular velocity in the body's local frame).
+qvel of a free or ball joint is the angular velocity in the body's local frame). `implicitfast` is MuJoCo's
+recommended integrator (implicit in the velocity-dependent forces, without their Coriolis part's derivative).
+`run_scene` also returns the wall time of the `mj_step` calls (for the work-precision figure).
 """
 
 import argparse
 import json
 import pathlib
+import time
 
 import mujoco
 import numpy as np
@@ -43,7 +46,7 @@ def model_xml(setup, timestep, integrator):
 
 
 def run_scene(setup, rate, integrator):
-    """The trajectory of one scene as CSV lines at the suite's rate."""
+    """The trajectory of one scene as CSV lines at the suite's rate, and the seconds its steps took."""
     out_rate = setup["rate_hz"]
     substeps = int(round(rate / out_rate))
     model = mujoco.MjModel.from_xml_string(model_xml(setup, 1.0 / (out_rate * substeps), integrator))
@@ -56,16 +59,19 @@ def run_scene(setup, rate, integrator):
     body = model.body("b").id
     frames = int(round(setup["t_end"] * out_rate))
     lines = [HEADER]
+    seconds = 0.0
     for k in range(frames + 1):
         q = data.qpos[q_at:q_at + 4]
         w = data.qvel[w_at:w_at + 3]
         lines.append(",".join(repr(float(v)) for v in (k / out_rate, *q, *w)))
         if k == frames:
             break
+        start = time.perf_counter()
         for _ in range(substeps):
             data.xfrc_applied[body, 3:6] = applied_torque(torque, data, body)
             mujoco.mj_step(model, data)
-    return lines
+        seconds += time.perf_counter() - start
+    return lines, seconds
 
 
 def applied_torque(torque, data, body):
@@ -84,11 +90,11 @@ def applied_torque(torque, data, body):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", required=True, type=pathlib.Path)
-    parser.add_argument("--integrator", action="append", choices=["Euler", "RK4"])
+    parser.add_argument("--integrator", action="append", choices=["Euler", "implicitfast", "RK4"])
     parser.add_argument("--rate", type=float, default=60.0, help="steps per second (a multiple of 60)")
     parser.add_argument("--scene", action="append", help="only these scenes (default: all)")
     args = parser.parse_args()
-    for integrator in args.integrator or ["Euler", "RK4"]:
+    for integrator in args.integrator or ["Euler", "implicitfast", "RK4"]:
         name = f"mujoco_{integrator.lower()}" + ("" if args.rate == 60 else f"_{int(args.rate)}hz")
         out = args.suite / name
         out.mkdir(parents=True, exist_ok=True)
@@ -96,7 +102,7 @@ def main():
             if args.scene and path.stem not in args.scene:
                 continue
             setup = json.loads(path.read_text())
-            lines = run_scene(setup, args.rate, integrator)
+            lines, _ = run_scene(setup, args.rate, integrator)
             (out / f"{path.stem}.csv").write_text("\n".join(lines) + "\n")
         print(f"wrote {out}")
 

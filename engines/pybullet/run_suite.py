@@ -7,11 +7,13 @@ For each scene DIR/NAME.json (written by `eulerdyn suite --out DIR`) builds a Bu
 torque pulse by applyExternalTorque in world axes — with no damping, steps it at 1/rate s and writes, at the
 suite's 60 Hz, DIR/pybullet[_<rate>hz]/NAME.csv with t, q_w..q_z (body -> world) and omega_x..z (body axes).
 A full inertia tensor is given to Bullet as its principal moments and the principal frame (numpy's eigh).
+`run_scene` also returns the wall time of the `stepSimulation` calls (for the work-precision figure).
 """
 
 import argparse
 import json
 import pathlib
+import time
 
 import numpy as np
 import pybullet as p
@@ -100,7 +102,7 @@ def state(body, link, frame):
 
 
 def run_scene(setup, rate):
-    """The trajectory of one scene as CSV lines at the suite's rate."""
+    """The trajectory of one scene as CSV lines at the suite's rate, and the seconds its steps took."""
     p.resetSimulation()
     out_rate = setup["rate_hz"]
     substeps = int(round(rate / out_rate))
@@ -111,6 +113,7 @@ def run_scene(setup, rate):
     torque = setup["torque"]
     frames = int(round(setup["t_end"] * out_rate))
     lines = [HEADER]
+    seconds = 0.0
     for k in range(frames + 1):
         q, w = state(body, link, frame)
         lines.append(",".join(repr(float(v)) for v in (k / out_rate, q[3], q[0], q[1], q[2], *w)))
@@ -122,8 +125,10 @@ def run_scene(setup, rate):
                 value = list(torque["value"])
                 flags = p.WORLD_FRAME if torque["frame"] == "space" else p.LINK_FRAME
                 p.applyExternalTorque(body, link, value, flags)
+            start = time.perf_counter()
             p.stepSimulation()
-    return lines
+            seconds += time.perf_counter() - start
+    return lines, seconds
 
 
 def main():
@@ -139,7 +144,7 @@ def main():
     for path in sorted(args.suite.glob("*.json")):
         if args.scene and path.stem not in args.scene:
             continue
-        lines = run_scene(json.loads(path.read_text()), args.rate)
+        lines, _ = run_scene(json.loads(path.read_text()), args.rate)
         (out / f"{path.stem}.csv").write_text("\n".join(lines) + "\n")
     print(f"wrote {out}")
 

@@ -379,7 +379,9 @@ def score(
         ``rows``, ``t_last``, ``reference``, ``reference_error``, ``referee_adequate``, ``metrics`` (each with
         ``key``, ``name``, ``largest``, ``at``, ``last``, ``threshold``, ``passes``; an event's also
         ``occurrences``, each with ``reference_t``, ``their_t`` and ``error``), ``warnings``, ``hints``,
-        ``notes`` and, with ``diagnose``, ``diagnosis`` (``closest``, ``distance_rad``, ``verdict``, ``candidates``).
+        ``notes``, ``ends_early`` (their last time, s) when their rows end more than one row before the
+        scene's ``t_end`` (not a pass), and, with ``diagnose``, ``diagnosis`` (``closest``, ``distance_rad``,
+        ``verdict``, ``candidates``).
 
     Raises:
         SceneError: bad input, as the command's exit 2 (a missing column, times not on a grid, a quaternion off unit

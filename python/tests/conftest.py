@@ -17,7 +17,7 @@ SCENARIOS = REPO / "scenarios"
 
 
 def cli_binary() -> Path:
-    path = Path(os.environ.get("EULERDYN_BIN", REPO / "target" / "debug" / "eulerdyn"))
+    path = Path(os.environ.get("EULERDYN_BIN", REPO / "target" / "release" / "eulerdyn"))
     assert path.is_file(), f"{path}: no eulerdyn binary; run `cargo build --release` first (or set EULERDYN_BIN)"
     return path
 

@@ -816,13 +816,13 @@ fn a_trajectory_that_ends_early_is_not_a_pass_and_says_where_it_ends() {
     assert_eq!(s.ends_early, Some(2.0));
     assert!(!s.passes());
     assert!(
-        s.notes.iter().any(|n| n.contains("end at t = 2 s")),
+        s.notes.iter().any(|n| n.contains("end at t = 2.000 s")),
         "{:?}",
         s.notes
     );
     let text = score::report::text(&s);
     assert!(
-        text.contains("verdict: FAIL (their rows end at t = 2 s"),
+        text.contains("verdict: FAIL (their rows end at t = 2.000 s"),
         "{text}"
     );
     // The whole run, or one that ends within a row of t_end, is scored as before.

@@ -155,7 +155,7 @@ pub fn score_with(
     let ends_early = (t_last < t_end - every * (1.0 + reference::GRID_SLACK)).then_some(t_last);
     if let Some(t) = ends_early {
         notes.push(format!(
-            "their rows end at t = {t} s, before the scene's t_end = {t_end} s: the rest is not scored, and the \
+            "their rows end at t = {t:.3} s, before the scene's t_end = {t_end} s: the rest is not scored, and the \
              score is not a pass"
         ));
     }

@@ -78,7 +78,9 @@ pub fn text(score: &Score) -> String {
         (None, 0) => "verdict: pass (every metric within its threshold)\n".to_string(),
         (None, _) => format!("verdict: FAIL ({over})\n"),
         (Some(t), _) => {
-            format!("verdict: FAIL (their rows end at t = {t} s, before the scene's end; {over})\n")
+            format!(
+                "verdict: FAIL (their rows end at t = {t:.3} s, before the scene's end; {over})\n"
+            )
         }
     });
     out
@@ -122,7 +124,7 @@ pub fn card(engine: &str, scores: &[Score]) -> String {
         out.push_str(&format!("  {}\n", verdict(s.passes())));
         if let Some(t) = s.ends_early {
             out.push_str(&format!(
-                "{:<24}their rows end at t = {t} s, before the scene's t_end (the rest not scored)\n",
+                "{:<24}their rows end at t = {t:.3} s, before the scene's t_end (the rest not scored)\n",
                 ""
             ));
         }
