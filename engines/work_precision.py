@@ -43,12 +43,10 @@ OWN = ["rk4", "split2", "split4", "dop853", "exact"]
 
 
 def adapter(folder):
-    """The adapter module engines/<folder>/run_suite.py, ready to run (PyBullet connected)."""
+    """The adapter module engines/<folder>/run_suite.py."""
     spec = importlib.util.spec_from_file_location(f"{folder}_run_suite", HERE / folder / "run_suite.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    if folder == "pybullet":
-        module.p.connect(module.p.DIRECT)
     return module
 
 

@@ -15,15 +15,15 @@ DART's own guards reset a non-finite pose to the identity and warn on stderr; th
 `run_scene` also returns the wall time of the `world.step` calls (for the work-precision figure).
 """
 
-import argparse
-import json
 import pathlib
+import sys
 import time
 
 import dartpy as dart
 import numpy as np
 
-HEADER = "t,q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import suite_io  # noqa: E402  (engines/suite_io.py)
 
 
 def build(setup, timestep):
@@ -70,7 +70,7 @@ def state(body, previous):
     return q, body.getAngularVelocity(dart.dynamics.Frame.World(), body)
 
 
-def run_scene(setup, rate):
+def run_scene(setup, rate, _variant=None):
     """The trajectory of one scene as CSV lines at the suite's rate, and the seconds its steps took."""
     out_rate = setup["rate_hz"]
     substeps = int(round(rate / out_rate))
@@ -80,7 +80,7 @@ def run_scene(setup, rate):
     frames = int(round(setup["t_end"] * out_rate))
     q = np.array(setup["q0_wxyz"], dtype=float)
     seconds = 0.0
-    lines = [HEADER]
+    lines = [suite_io.HEADER]
     for k in range(frames + 1):
         q, w = state(body, q)
         lines.append(",".join(repr(float(v)) for v in (k / out_rate, *q, *w)))
@@ -88,7 +88,7 @@ def run_scene(setup, rate):
             break
         for n in range(substeps):
             t = k / out_rate + n * h
-            if torque is not None and torque["t_on"] <= t < (torque["t_off"] or float("inf")):
+            if suite_io.torque_on(torque, t):
                 body.setExtTorque(np.array(torque["value"], dtype=float), torque["frame"] == "body")
             start = time.perf_counter()
             world.step()
@@ -96,22 +96,5 @@ def run_scene(setup, rate):
     return lines, seconds
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--suite", required=True, type=pathlib.Path)
-    parser.add_argument("--rate", type=float, default=60.0, help="steps per second (a multiple of 60)")
-    parser.add_argument("--scene", action="append", help="only these scenes (default: all)")
-    args = parser.parse_args()
-    name = "dart" + ("" if args.rate == 60 else f"_{int(args.rate)}hz")
-    out = args.suite / name
-    out.mkdir(parents=True, exist_ok=True)
-    for path in sorted(args.suite.glob("*.json")):
-        if args.scene and path.stem not in args.scene:
-            continue
-        lines, _ = run_scene(json.loads(path.read_text()), args.rate)
-        (out / f"{path.stem}.csv").write_text("\n".join(lines) + "\n")
-    print(f"wrote {out}")
-
-
 if __name__ == "__main__":
-    main()
+    suite_io.main(__doc__, run_scene, {None: "dart"})

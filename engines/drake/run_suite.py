@@ -15,8 +15,6 @@ A trajectory that stops being finite, or that Drake stops (the ball joint's sing
 row, with a note on stderr.
 """
 
-import argparse
-import json
 import pathlib
 import sys
 import time
@@ -29,7 +27,8 @@ from pydrake.multibody.plant import ExternallyAppliedSpatialForce, MultibodyPlan
 from pydrake.multibody.tree import BallRpyJoint, QuaternionFloatingJoint, RotationalInertia, SpatialInertia
 from pydrake.systems.analysis import Simulator
 
-HEADER = "t,q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import suite_io  # noqa: E402  (engines/suite_io.py)
 
 
 def build(setup, h):
@@ -79,7 +78,7 @@ def state(plant, context, body, joint):
 def applied_force(torque, t, plant, context, body):
     """The scene's torque pulse at time t as the plant's applied spatial forces (world axes, a pure couple)."""
     value = np.zeros(3)
-    if torque is not None and torque["t_on"] <= t < (torque["t_off"] if torque["t_off"] is not None else np.inf):
+    if suite_io.torque_on(torque, t):
         value = np.array(torque["value"], dtype=float)
         if torque["frame"] == "body":
             value = plant.EvalBodyPoseInWorld(context, body).rotation().matrix() @ value
@@ -90,7 +89,7 @@ def applied_force(torque, t, plant, context, body):
     return [force]
 
 
-def run_scene(setup, rate):
+def run_scene(setup, rate, _variant=None):
     """The trajectory of one scene as CSV lines at the suite's rate, and the seconds spent stepping the engine."""
     out_rate = setup["rate_hz"]
     substeps = int(round(rate / out_rate))
@@ -105,7 +104,7 @@ def run_scene(setup, rate):
     simulator.Initialize()
     frames = int(round(setup["t_end"] * out_rate))
     seconds = 0.0
-    lines = [HEADER]
+    lines = [suite_io.HEADER]
     for k in range(frames + 1):
         q, w = state(plant, context, body, joint)
         if not np.all(np.isfinite(np.concatenate([q, w]))):
@@ -132,27 +131,5 @@ def run_scene(setup, rate):
     return lines, seconds
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--suite", required=True, type=pathlib.Path)
-    parser.add_argument("--rate", type=float, default=60.0, help="steps per second (a multiple of 60)")
-    parser.add_argument("--scene", action="append", help="only these scenes (default: all)")
-    args = parser.parse_args()
-    name = "drake" + ("" if args.rate == 60 else f"_{int(args.rate)}hz")
-    out = args.suite / name
-    out.mkdir(parents=True, exist_ok=True)
-    for path in sorted(args.suite.glob("*.json")):
-        if args.scene and path.stem not in args.scene:
-            continue
-        setup = json.loads(path.read_text())
-        lines, _ = run_scene(setup, args.rate)
-        if len(lines) - 1 < int(round(setup["t_end"] * setup["rate_hz"])) + 1:
-            end = lines[-1].split(",")[0] if len(lines) > 1 else "0"
-            print(f"{path.stem}: Drake's state stopped being finite (or Drake stopped) after t = {end}: "
-                  f"{len(lines) - 1} rows", file=sys.stderr)
-        (out / f"{path.stem}.csv").write_text("\n".join(lines) + "\n")
-    print(f"wrote {out}")
-
-
 if __name__ == "__main__":
-    main()
+    suite_io.main(__doc__, run_scene, {None: "drake"})

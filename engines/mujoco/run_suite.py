@@ -11,15 +11,17 @@ recommended integrator (implicit in the velocity-dependent forces, without their
 `run_scene` also returns the wall time of the `mj_step` calls (for the work-precision figure).
 """
 
-import argparse
-import json
 import pathlib
+import sys
 import time
 
 import mujoco
 import numpy as np
 
-HEADER = "t,q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import suite_io  # noqa: E402  (engines/suite_io.py)
+
+INTEGRATORS = {"Euler": "mujoco_euler", "implicitfast": "mujoco_implicitfast", "RK4": "mujoco_rk4"}
 
 
 def model_xml(setup, timestep, integrator):
@@ -58,7 +60,7 @@ def run_scene(setup, rate, integrator):
     torque = setup["torque"]
     body = model.body("b").id
     frames = int(round(setup["t_end"] * out_rate))
-    lines = [HEADER]
+    lines = [suite_io.HEADER]
     seconds = 0.0
     for k in range(frames + 1):
         q = data.qpos[q_at:q_at + 4]
@@ -76,10 +78,7 @@ def run_scene(setup, rate, integrator):
 
 def applied_torque(torque, data, body):
     """The scene's torque pulse at the data's time, in world axes (a body-axes torque turned by the attitude)."""
-    if torque is None:
-        return np.zeros(3)
-    t_off = torque["t_off"] if torque["t_off"] is not None else float("inf")
-    if not torque["t_on"] <= data.time < t_off:
+    if not suite_io.torque_on(torque, data.time):
         return np.zeros(3)
     value = np.array(torque["value"])
     if torque["frame"] == "body":
@@ -87,25 +86,5 @@ def applied_torque(torque, data, body):
     return value
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--suite", required=True, type=pathlib.Path)
-    parser.add_argument("--integrator", action="append", choices=["Euler", "implicitfast", "RK4"])
-    parser.add_argument("--rate", type=float, default=60.0, help="steps per second (a multiple of 60)")
-    parser.add_argument("--scene", action="append", help="only these scenes (default: all)")
-    args = parser.parse_args()
-    for integrator in args.integrator or ["Euler", "implicitfast", "RK4"]:
-        name = f"mujoco_{integrator.lower()}" + ("" if args.rate == 60 else f"_{int(args.rate)}hz")
-        out = args.suite / name
-        out.mkdir(parents=True, exist_ok=True)
-        for path in sorted(args.suite.glob("*.json")):
-            if args.scene and path.stem not in args.scene:
-                continue
-            setup = json.loads(path.read_text())
-            lines, _ = run_scene(setup, args.rate, integrator)
-            (out / f"{path.stem}.csv").write_text("\n".join(lines) + "\n")
-        print(f"wrote {out}")
-
-
 if __name__ == "__main__":
-    main()
+    suite_io.main(__doc__, run_scene, INTEGRATORS, option="integrator")

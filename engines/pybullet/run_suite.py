@@ -10,15 +10,15 @@ A full inertia tensor is given to Bullet as its principal moments and the princi
 `run_scene` also returns the wall time of the `stepSimulation` calls (for the work-precision figure).
 """
 
-import argparse
-import json
 import pathlib
+import sys
 import time
 
 import numpy as np
 import pybullet as p
 
-HEADER = "t,q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import suite_io  # noqa: E402  (engines/suite_io.py)
 
 
 def quat_mul(a, b):
@@ -27,28 +27,10 @@ def quat_mul(a, b):
 
 
 def principal(inertia):
-    """Principal moments and the principal frame (x, y, z, w) of a symmetric tensor, the frame right-handed."""
-    moments, axes = np.linalg.eigh(np.array(inertia))
-    if np.linalg.det(axes) < 0:
-        axes[:, 2] *= -1
-    return moments, matrix_to_quat(axes)
-
-
-def matrix_to_quat(m):
-    """The quaternion (x, y, z, w) of a rotation matrix (Shepperd's method: the largest of w, x, y, z first)."""
-    trace = np.trace(m)
-    k = int(np.argmax([trace, m[0, 0], m[1, 1], m[2, 2]]))
-    if k == 0:
-        w = np.sqrt(1 + trace) / 2
-        return [(m[2, 1] - m[1, 2]) / (4 * w), (m[0, 2] - m[2, 0]) / (4 * w), (m[1, 0] - m[0, 1]) / (4 * w), w]
-    i = k - 1
-    j, l = (i + 1) % 3, (i + 2) % 3
-    v = np.zeros(3)
-    v[i] = np.sqrt(1 + m[i, i] - m[j, j] - m[l, l]) / 2
-    v[j] = (m[j, i] + m[i, j]) / (4 * v[i])
-    v[l] = (m[l, i] + m[i, l]) / (4 * v[i])
-    w = (m[l, j] - m[j, l]) / (4 * v[i])
-    return [v[0], v[1], v[2], w]
+    """Principal moments and the principal frame (x, y, z, w: Bullet's order) of a symmetric tensor."""
+    moments, axes = suite_io.principal(inertia)
+    w, x, y, z = suite_io.matrix_to_quat(axes)
+    return moments, [x, y, z, w]
 
 
 def build(setup):
@@ -101,8 +83,10 @@ def state(body, link, frame):
     return q, rot.T @ np.array(omega_s)
 
 
-def run_scene(setup, rate):
+def run_scene(setup, rate, _variant=None):
     """The trajectory of one scene as CSV lines at the suite's rate, and the seconds its steps took."""
+    if not p.isConnected():
+        p.connect(p.DIRECT)
     p.resetSimulation()
     out_rate = setup["rate_hz"]
     substeps = int(round(rate / out_rate))
@@ -112,7 +96,7 @@ def run_scene(setup, rate):
     body, link, frame = build(setup)
     torque = setup["torque"]
     frames = int(round(setup["t_end"] * out_rate))
-    lines = [HEADER]
+    lines = [suite_io.HEADER]
     seconds = 0.0
     for k in range(frames + 1):
         q, w = state(body, link, frame)
@@ -121,7 +105,7 @@ def run_scene(setup, rate):
             break
         for n in range(substeps):
             t = k / out_rate + n * h
-            if torque is not None and torque["t_on"] <= t < (torque["t_off"] or float("inf")):
+            if suite_io.torque_on(torque, t):
                 value = list(torque["value"])
                 flags = p.WORLD_FRAME if torque["frame"] == "space" else p.LINK_FRAME
                 p.applyExternalTorque(body, link, value, flags)
@@ -131,23 +115,5 @@ def run_scene(setup, rate):
     return lines, seconds
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--suite", required=True, type=pathlib.Path)
-    parser.add_argument("--rate", type=float, default=60.0, help="steps per second (a multiple of 60)")
-    parser.add_argument("--scene", action="append", help="only these scenes (default: all)")
-    args = parser.parse_args()
-    p.connect(p.DIRECT)
-    name = "pybullet" + ("" if args.rate == 60 else f"_{int(args.rate)}hz")
-    out = args.suite / name
-    out.mkdir(parents=True, exist_ok=True)
-    for path in sorted(args.suite.glob("*.json")):
-        if args.scene and path.stem not in args.scene:
-            continue
-        lines, _ = run_scene(json.loads(path.read_text()), args.rate)
-        (out / f"{path.stem}.csv").write_text("\n".join(lines) + "\n")
-    print(f"wrote {out}")
-
-
 if __name__ == "__main__":
-    main()
+    suite_io.main(__doc__, run_scene, {None: "pybullet"})
