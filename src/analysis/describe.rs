@@ -45,11 +45,8 @@ fn characteristic_rate(scene: &Scene) -> f64 {
     scene
         .effects
         .iter()
-        .filter_map(|e| match e {
-            Effect::Torque {
-                profile: Profile::Sine { freq_hz, .. },
-                ..
-            } => Some(2.0 * std::f64::consts::PI * freq_hz),
+        .filter_map(|e| match e.torque()?.profile {
+            Profile::Sine { freq_hz, .. } => Some(2.0 * std::f64::consts::PI * freq_hz),
             _ => None,
         })
         .fold(motion_rate, f64::max)

@@ -279,3 +279,161 @@ impl AppliedMoment for EffectMoments {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::effects::Effect;
+    use crate::frames::{Axes, StateRotation};
+    use crate::profile::Profile;
+    use nalgebra::{UnitQuaternion, Vector3};
+
+    /// The unit roundoff.
+    const U: f64 = f64::EPSILON / 2.0;
+
+    fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
+        Vector3::new(x, y, z)
+    }
+
+    /// The moment as summed before the effects were compiled: every effect in turn, starting from zero.
+    fn moment_as_listed(
+        effects: &[Effect],
+        mass: f64,
+        t: f64,
+        q: &UnitQuaternion<f64>,
+        omega_b: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        let mut m_b = Vector3::zeros();
+        for effect in effects {
+            m_b += match *effect {
+                Effect::Torque {
+                    frame,
+                    value,
+                    profile,
+                } => {
+                    let factor = match profile {
+                        Profile::Constant => 1.0,
+                        // The crate's inline sine (within an ulp of the library's, tested in `trig`).
+                        Profile::Sine { freq_hz, phase_deg } => crate::trig::sin(
+                            2.0 * std::f64::consts::PI * freq_hz * t + phase_deg.to_radians(),
+                        ),
+                        Profile::Step { t_on, t_off } => {
+                            if t_on <= t && t < t_off {
+                                1.0
+                            } else {
+                                0.0
+                            }
+                        }
+                    };
+                    match frame {
+                        Axes::Body => value * factor,
+                        Axes::Space => q.inverse_transform_vector(&(value * factor)),
+                    }
+                }
+                Effect::Gravity { g_s, pivot_b } => {
+                    (-pivot_b).cross(&(q.inverse_transform_vector(&g_s) * mass))
+                }
+                Effect::Damping { c } => -omega_b * c,
+                Effect::TorqueTable { frame, ref table } => match frame {
+                    Axes::Body => table.at(t),
+                    Axes::Space => q.inverse_transform_vector(&table.at(t)),
+                },
+                Effect::User(ref user) => user.moment_b(t, q, omega_b),
+            };
+        }
+        m_b
+    }
+
+    fn every_kind() -> Vec<Effect> {
+        let sine = Profile::Sine {
+            freq_hz: 0.7,
+            phase_deg: 23.0,
+        };
+        let step = Profile::Step {
+            t_on: 1.0,
+            t_off: 2.5,
+        };
+        let mut effects = Vec::new();
+        for frame in [Axes::Body, Axes::Space] {
+            for (value, profile) in [
+                (v(0.2, -0.1, 0.3), Profile::Constant),
+                (v(0.5, 0.25, -0.4), sine),
+                (v(-0.3, 0.6, 0.1), step),
+            ] {
+                effects.push(Effect::Torque {
+                    frame,
+                    value,
+                    profile,
+                });
+            }
+        }
+        effects.push(Effect::Gravity {
+            g_s: v(0.0, 0.0, -9.81),
+            pivot_b: v(0.01, -0.02, -0.05),
+        });
+        effects.push(Effect::Damping { c: 0.3 });
+        effects
+    }
+
+    #[test]
+    fn every_effect_kind_gives_the_moment_it_gave_before() {
+        let mass = 1.5;
+        let q_state = nalgebra::Quaternion::new(0.9, 0.2, -0.3, 0.25);
+        let q = UnitQuaternion::new_normalize(q_state);
+        let omega_b = v(0.3, -1.2, 2.0);
+        let all = every_kind();
+        for t in [0.0, 0.4, 1.0, 1.7, 2.5, 3.1] {
+            for effects in all.chunks(1).chain([&all[..]]) {
+                let moments = EffectMoments::new(effects, mass);
+                let before = moment_as_listed(effects, mass, t, &q, &omega_b);
+                // The moments are summed in another order, and the state's attitude is rotated as A(q)/|q|²
+                // rather than normalised first: equal to the rounding of the sum and of a rotation, 8u times the
+                // largest possible moment Σ|torque| + m|g||ρ_C| + c|ω|.
+                let scale = moments.rest_moment_bound() + moments.damping_c() * omega_b.norm();
+                for after in [
+                    moments.moment_b(t, &q, &omega_b),
+                    moments.moment_b_at_state(
+                        t,
+                        &q_state,
+                        || StateRotation::of(&q_state),
+                        &omega_b,
+                    ),
+                    moments.rest_moment_b(t, &q) - omega_b * moments.damping_c(),
+                ] {
+                    assert!(
+                        (after - before).amax() <= 8.0 * U * scale,
+                        "{effects:?} at t = {t}: {after} vs {before}"
+                    );
+                }
+                // Alone, an effect given the unit quaternion is computed with the same operations as before.
+                if effects.len() == 1 {
+                    assert_eq!(
+                        moments.moment_b(t, &q, &omega_b),
+                        before,
+                        "{effects:?}, t = {t}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn only_space_torques_and_gravity_need_the_attitude() {
+        let needs = |effects: &[Effect]| EffectMoments::new(effects, 1.0).needs_attitude;
+        let all = every_kind();
+        let (body_torques, rest) = all.split_at(3);
+        assert!(!needs(body_torques));
+        assert!(!needs(&[Effect::Damping { c: 0.1 }]));
+        assert!(needs(&rest[..1]));
+        assert!(needs(&rest[3..4]));
+        // Without them, the attitude is never normalised: a state quaternion of any norm gives the same moment.
+        let moments = EffectMoments::new(body_torques, 1.0);
+        let omega_b = v(0.1, 0.2, 0.3);
+        let unit = nalgebra::Quaternion::new(1.0, 0.0, 0.0, 0.0);
+        let zero = nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0);
+        assert_eq!(
+            moments.moment_b_at_state(1.2, &zero, || StateRotation::of(&zero), &omega_b),
+            moments.moment_b_at_state(1.2, &unit, || StateRotation::of(&unit), &omega_b)
+        );
+    }
+}

@@ -8,6 +8,7 @@ mod columns;
 mod compiled;
 mod describe;
 mod keys;
+mod queries;
 mod spec;
 mod table;
 mod user;
@@ -15,6 +16,7 @@ mod validate;
 
 pub use columns::potential_columns;
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
+pub use queries::{TorqueGiven, gravity};
 pub use spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
 pub use user::{MomentLaw, UserMoment};

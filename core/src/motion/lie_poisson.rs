@@ -919,11 +919,11 @@ mod tests {
         // rounding of the sum (measured < 1e-18).
         let b = body([1.0, 2.0, 3.0]);
         let m_s = Vector3::new(1e-3, 3e-4, 1e-3);
-        let torque = crate::effects::Effect::Torque {
+        let torque = crate::effects::Effect::from(crate::effects::TorqueGiven {
             frame: crate::frames::Axes::Space,
             value: m_s,
             profile: crate::profile::Profile::Constant,
-        };
+        });
         let mut lp = LiePoisson::new(
             &b,
             Form::Space,

@@ -174,7 +174,7 @@ impl Scene {
     /// The optional columns a run of `motion` with `effects` writes, in order: an axis motion's leading groups,
     /// gravity's potential, the axis motion's trailing group, then the capabilities' ([`Motion::capability_columns`]).
     pub fn run_columns(motion: &Motion, effects: &[Effect]) -> ColumnSet {
-        let gravity = effects.iter().any(|e| matches!(e, Effect::Gravity { .. }));
+        let gravity = crate::effects::gravity(effects).is_some();
         Self::own_columns(motion.axis_columns(), gravity, motion.capability_columns())
     }
 
@@ -206,10 +206,7 @@ impl Scene {
     /// The potential energy of the scene's gravity at the attitude `q`: V = −m g·r_C, with r_C = q ρ_C the
     /// mass center from the moment center (the pivot or the axis point) in space axes; `None` without gravity.
     pub fn gravity_potential(&self, q: &UnitQuaternion<f64>) -> Option<f64> {
-        self.effects.iter().find_map(|e| match e {
-            Effect::Gravity { g_s, pivot_b } => Some(-self.body.mass() * g_s.dot(&(q * -pivot_b))),
-            _ => None,
-        })
+        (self.effects.iter()).find_map(|e| e.potential(self.body.mass(), q))
     }
 }
 

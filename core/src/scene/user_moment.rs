@@ -47,7 +47,7 @@ impl Scene {
     ) -> Result<Scene, InvalidScene> {
         self.takes_a_law(name)?;
         let user = UserMoment::new(name, axes, law);
-        self.effects.push(Effect::User(user));
+        self.effects.push(Effect::from(user));
         self.facts = Facts::of(&self);
         Ok(self)
     }

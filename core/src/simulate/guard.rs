@@ -144,7 +144,7 @@ impl DivergenceGuard {
     /// energy), and a run with a user's moment law, whose work has no known bound.
     pub fn new(scene: &Scene) -> Option<Self> {
         let (omega0_b, body) = scene.motion.rigid_free()?;
-        if scene.effects.iter().any(|e| matches!(e, Effect::User(_))) {
+        if scene.effects.iter().any(Effect::is_user) {
             return None;
         }
         let facts = scene.facts();

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use serde_json::json;
 
 use super::{ReadOptions, Score, ScoreError, reference};
-use crate::effects::Effect;
+use crate::effects::TorqueGiven;
 use crate::frames::Axes;
 use crate::output::AtomicFile;
 use crate::profile::Profile;
@@ -87,29 +87,27 @@ pub fn setup(name: &str, scene: &Scene) -> serde_json::Value {
         "torque": null,
     });
     for effect in &scene.effects {
-        match effect {
-            Effect::Gravity { g_s, pivot_b } => {
-                out["gravity_s"] = json!(v(g_s));
-                out["pivot_from_c_b"] = json!(v(pivot_b));
-            }
-            Effect::Torque {
-                frame,
-                value,
-                profile,
-            } => {
-                let (t_on, t_off) = match profile {
-                    Profile::Step { t_on, t_off } => (*t_on, *t_off),
-                    _ => (0.0, f64::INFINITY),
-                };
-                let frame = if *frame == Axes::Space {
-                    "space"
-                } else {
-                    "body"
-                };
-                out["torque"] =
-                    json!({"frame": frame, "value": v(value), "t_on": t_on, "t_off": t_off});
-            }
-            _ => {}
+        if let Some((g_s, pivot_b)) = effect.gravity() {
+            out["gravity_s"] = json!(v(&g_s));
+            out["pivot_from_c_b"] = json!(v(&pivot_b));
+        }
+        if let Some(TorqueGiven {
+            frame,
+            value,
+            profile,
+        }) = effect.torque()
+        {
+            let (t_on, t_off) = match profile {
+                Profile::Step { t_on, t_off } => (t_on, t_off),
+                _ => (0.0, f64::INFINITY),
+            };
+            let frame = if frame == Axes::Space {
+                "space"
+            } else {
+                "body"
+            };
+            out["torque"] =
+                json!({"frame": frame, "value": v(&value), "t_on": t_on, "t_off": t_off});
         }
     }
     out

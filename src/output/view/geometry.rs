@@ -233,10 +233,9 @@ pub fn equal_moment_box(m: f64, moments: &Vector3<f64>) -> [f64; 3] {
 
 /// Gravity's g (space axes, m/s²) when the scene has it: the page draws −g up.
 fn gravity_s(effects: &[Effect]) -> Option<Vector3<f64>> {
-    effects.iter().find_map(|e| match e {
-        Effect::Gravity { g_s, .. } if g_s.norm() > 0.0 => Some(*g_s),
-        _ => None,
-    })
+    (effects.iter().filter_map(Effect::gravity))
+        .map(|(g_s, _)| g_s)
+        .find(|g_s| g_s.norm() > 0.0)
 }
 
 /// `[x, y, z]`.

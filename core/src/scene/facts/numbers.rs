@@ -6,7 +6,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{AxisNumbers, BearingNumbers, CheckNumbers, MomentCenter, MotionNumbers, StartNumbers};
 use crate::body::Principal;
-use crate::effects::Effect;
+use crate::effects;
 use crate::frames::{BodyAxes, Vector};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
@@ -39,10 +39,7 @@ impl CheckNumbers {
 impl MotionNumbers {
     /// The moment center, axis and initial state of `scene`, whose inertia about O is `inertia_o_b`.
     fn of(scene: &Scene, inertia_o_b: &Matrix3<f64>) -> Self {
-        let pivot = scene
-            .effects
-            .iter()
-            .any(|e| matches!(e, Effect::Gravity { .. }));
+        let pivot = effects::gravity(&scene.effects).is_some();
         let axis = scene.motion.axis();
         let moment_center = match axis {
             None if pivot => MomentCenter::Pivot,

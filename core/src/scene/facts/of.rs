@@ -45,14 +45,10 @@ impl Facts {
 
 /// The invariants of `scene` (the module's rules).
 fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
-    let gravity_only = scene
-        .effects
-        .iter()
-        .all(|e| matches!(e, Effect::Gravity { .. }));
-    let vertical_gravity = scene.effects.iter().all(|e| match e {
-        Effect::Gravity { g_s, .. } => g_s.x == 0.0 && g_s.y == 0.0,
-        _ => true,
-    });
+    let gravity_only = scene.effects.iter().all(|e| e.gravity().is_some());
+    let vertical_gravity = (scene.effects.iter())
+        .filter_map(Effect::gravity)
+        .all(|(g_s, _)| g_s.x == 0.0 && g_s.y == 0.0);
     let torque_free = scene.effects.is_empty();
     use Invariant::*;
     match &scene.motion {

@@ -4,7 +4,7 @@
 use nalgebra::{Rotation3, UnitQuaternion};
 
 use super::Oracle;
-use crate::effects::Effect;
+use crate::effects::TorqueGiven;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, BodyAxes, Vector};
 use crate::profile::Profile;
@@ -36,28 +36,29 @@ impl Oracle {
                         r_bp,
                     })
             }
-            [
-                Effect::Torque {
-                    frame: Axes::Body,
+            [effect] if effect.torque().is_some() => {
+                let TorqueGiven {
+                    frame,
                     value,
-                    profile: Profile::Constant,
-                },
-            ] => {
+                    profile,
+                } = effect.torque()?;
                 let m = principal.moments;
+                let constant_in_body = frame == Axes::Body && profile == Profile::Constant;
                 let axial = value[0] == 0.0 && value[1] == 0.0;
                 let body_axes_principal = r_bp == UnitQuaternion::identity();
-                (axial && body_axes_principal && m[0] == m[1])
+                (constant_in_body && axial && body_axes_principal && m[0] == m[1])
                     .then(|| AxialTorqueSymmetric::new(m[0], m[2], value[2], omega0_b).ok())
                     .flatten()
                     .map(Oracle::AxialTorque)
             }
-            [Effect::Damping { c }] => {
+            [effect] if effect.damping().is_some() => {
+                let c = effect.damping()?;
                 // ω(0) along a principal axis: I·ω = I_k·ω, with no transverse part (to round-off).
                 let h0_b = scene.body.inertia_c() * omega0_b;
                 let inertia = h0_b.dot(&omega0_b) / omega0_b.norm_squared();
                 let along = (h0_b - omega0_b * inertia).norm() <= 1e-14 * h0_b.norm();
                 along
-                    .then(|| DampedSpin::new(omega0_b, inertia, *c, scene.attitude0).ok())
+                    .then(|| DampedSpin::new(omega0_b, inertia, c, scene.attitude0).ok())
                     .flatten()
                     .map(Oracle::DampedSpin)
             }

@@ -121,7 +121,7 @@ fn effects(doc: &SceneSpec, body: &RigidBody, center_b: &Vector3<f64>) -> Checke
         body.mass(),
         center_b,
     )?;
-    let not_gravity = (effects.iter()).position(|e| !matches!(e, Effect::Gravity { .. }));
+    let not_gravity = (effects.iter()).position(|e| e.gravity().is_none());
     if let (Some(MotionSpec::FixedAxis(_)), Some(index)) = (&doc.motion, not_gravity) {
         return invalid(
             KeyPath::root().key("effect").index(index),

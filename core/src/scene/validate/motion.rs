@@ -62,13 +62,8 @@ fn free_motion(
         None => Vector3::zeros(),
         Some(w) => vector(KeyPath::root().key("initial").key("omega"), w, "rad/s")?,
     });
-    let center_b = effects
-        .iter()
-        .find_map(|e| match e {
-            Effect::Gravity { pivot_b, .. } => Some(*pivot_b),
-            _ => None,
-        })
-        .unwrap_or_else(Vector3::zeros);
+    let center_b =
+        crate::effects::gravity(effects).map_or_else(Vector3::zeros, |(_, pivot_b)| pivot_b);
     let body_key = match doc.body.distribution {
         Distribution::Shape(_) => "shape",
         Distribution::Inertia(_) => "inertia",
@@ -127,10 +122,7 @@ fn axis_geometry(
     let point_b = vector(motion().key("point"), m.point, "m")? - center_b;
     let (axis_b, point_b) = (Vector::new(axis_b), Vector::new(point_b));
     let mut axis = FixedAxis::new(body, axis_b, rate, accel, point_b, attitude0);
-    if let Some(g_s) = effects.iter().find_map(|e| match e {
-        Effect::Gravity { g_s, .. } => Some(*g_s),
-        _ => None,
-    }) {
+    if let Some((g_s, _)) = crate::effects::gravity(effects) {
         axis = axis.with_gravity(Vector::new(g_s));
     }
     if let Some([a, b]) = m.bearings {
