@@ -13,7 +13,7 @@ use crate::integrate::IntegrateError;
 use crate::method::Method;
 use crate::sample::Sample;
 use crate::scene::Exact;
-use crate::scene::{Motion, Scene};
+use crate::scene::Scene;
 use crate::simulate::{self, RunError};
 
 /// The largest difference of one quantity over the rows: absolute, with the largest magnitude seen, so that the
@@ -217,14 +217,17 @@ impl Comparison {
 /// What the comparison means for the scene's method, where it is not the obvious: for `exact` both forms are the
 /// closed form, read two ways; for the splitting methods both forms are the same map.
 fn method_note(scene: &Scene) -> Option<String> {
-    match (scene.solver.method, &scene.motion) {
-        (Method::Exact, Motion::Free { .. }) => Some(
+    if !scene.motion.is_free() {
+        return None;
+    }
+    match scene.solver.method {
+        Method::Exact => Some(
             "method exact: both forms are the closed form — body: omega from the Jacobi functions; space: omega \
              from the closed-form attitude and the constant H_s — so \"body vs space\" checks the attitude \
              against omega, and \"vs exact\" the rows against the oracle"
                 .into(),
         ),
-        (Method::Split2 | Method::Split4, Motion::Free { .. }) => Some(format!(
+        Method::Split2 | Method::Split4 => Some(format!(
             "method {}: the body form turns H_p, the space form keeps H_s; the two are the same map in exact \
              arithmetic, so \"body vs space\" is round-off (amplified where the motion is unstable, as near \
              the separatrix)",

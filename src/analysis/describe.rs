@@ -12,7 +12,7 @@ use crate::method::Method;
 use crate::profile::Profile;
 use crate::sample::BASE_COLUMNS;
 use crate::scene::{
-    AxisNumbers, CheckNumbers, MomentCenter, Motion, MotionNumbers, Scene, StartNumbers,
+    AxisNumbers, CheckNumbers, MomentCenter, MotionKind, MotionNumbers, Scene, StartNumbers,
 };
 use crate::simulate;
 pub use crate::text::{Description, for_people};
@@ -125,12 +125,10 @@ fn motion_lines(
     numbers: &CheckNumbers,
     motion: &MotionNumbers,
 ) {
-    match (&scene.motion, &motion.axis) {
-        (Motion::Free { gyrostat, .. }, _) => {
-            free_motion_lines(w, numbers, motion, gyrostat.as_deref())
-        }
-        (Motion::FixedAxis(_), Some(axis)) => fixed_axis_lines(w, scene, numbers, axis),
-        (Motion::Hinge(_), Some(axis)) => hinge_lines(w, numbers, axis),
+    match (scene.motion.kind(), &motion.axis) {
+        (MotionKind::Free, _) => free_motion_lines(w, numbers, motion, scene.motion.gyrostat()),
+        (MotionKind::FixedAxis, Some(axis)) => fixed_axis_lines(w, scene, numbers, axis),
+        (MotionKind::Hinge, Some(axis)) => hinge_lines(w, numbers, axis),
         _ => {}
     }
     if let Some(axis) = scene.motion.axis() {
@@ -380,17 +378,12 @@ fn support_lines(w: &mut Description, numbers: &CheckNumbers, axis: Option<&Axis
 /// The effects, one a line, then each wheel's imbalance (a moment on the body turning with the wheel), or why
 /// there are none.
 fn effect_lines(w: &mut Description, scene: &Scene) {
-    let imbalances = match &scene.motion {
-        Motion::Free {
-            gyrostat: Some(g), ..
-        } => g.imbalance_effects(),
-        _ => Vec::new(),
-    };
+    let imbalances = (scene.motion.gyrostat()).map_or_else(Vec::new, |g| g.imbalance_effects());
     if scene.effects.is_empty() && imbalances.is_empty() {
-        let none = match scene.motion {
-            Motion::FixedAxis(_) => "none: the motion is prescribed",
-            Motion::Hinge(_) => "none: the hinge turns at its initial rate",
-            Motion::Free { .. } => "none: torque-free",
+        let none = match scene.motion.kind() {
+            MotionKind::FixedAxis => "none: the motion is prescribed",
+            MotionKind::Hinge => "none: the hinge turns at its initial rate",
+            MotionKind::Free => "none: torque-free",
         };
         line(w, "effects", none);
     }
@@ -403,13 +396,7 @@ fn effect_lines(w: &mut Description, scene: &Scene) {
 /// The equation and the method with its step or tolerances; returns the estimate of the steps (one line or more).
 fn method_lines(w: &mut Description, scene: &Scene) -> String {
     let s = &scene.solver;
-    let wheels = matches!(
-        &scene.motion,
-        Motion::Free {
-            gyrostat: Some(_),
-            ..
-        }
-    );
+    let wheels = scene.motion.gyrostat().is_some();
     let form = match (s.form, wheels) {
         (Form::Body, false) => "body axes: I*omega' + omega x I*omega = M",
         (Form::Space, false) => "space axes: dH_s/dt = M_s with I_s(theta)",

@@ -38,7 +38,7 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::double_double::{Dd, FOUR_PI};
 use super::torque_free::{
-    Elliptic, Motion, TorqueFreeBody, half_period_sign, precession_nutation_spin,
+    Elliptic, Regime, TorqueFreeBody, half_period_sign, precession_nutation_spin,
 };
 use crate::trig::small_sin_cos;
 
@@ -70,8 +70,8 @@ impl TorqueFreeBody {
     /// The motion on the equal grid `t_k = k·every`, `k = 0, 1, 2, …`, advanced row by row by addition theorems
     /// (see [`EqualGrid`]); agrees with [`Self::omega_p`] and [`Self::attitude`] to round-off (≤ 1e-13).
     pub fn equal_grid(&self, every: f64) -> EqualGrid<'_> {
-        let walk = match &self.motion {
-            Motion::Elliptic(e) if !e.separatrix && e.jac.mc() > 0.0 && every.is_finite() => {
+        let walk = match &self.regime {
+            Regime::Elliptic(e) if !e.separatrix && e.jac.mc() > 0.0 && every.is_finite() => {
                 Some(Walk::new(e, every))
             }
             _ => None,

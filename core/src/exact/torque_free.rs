@@ -83,11 +83,12 @@ pub struct TorqueFreeBody {
     energy: f64,
     /// |ω₀| in double-double (stationary motion: the angle |ω₀|·t of the rotation, reduced modulo 4π).
     omega0_norm: Dd,
-    pub(super) motion: Motion,
+    pub(super) regime: Regime,
 }
 
+/// Whether ω stays put (a principal-axis spin) or moves on its polhode.
 #[derive(Debug, Clone, PartialEq)]
-pub(super) enum Motion {
+pub(super) enum Regime {
     Stationary,
     Elliptic(Box<Elliptic>),
 }
@@ -174,12 +175,12 @@ impl TorqueFreeBody {
             .fold(Dd::ZERO, |sum, &x| sum + Dd::from(x) * x)
             .sqrt()
             * scale;
-        let motion = if scale == 0.0 {
-            Motion::Stationary
+        let regime = if scale == 0.0 {
+            Regime::Stationary
         } else {
             match classify(&moments_p, &unit) {
-                None => Motion::Stationary,
-                Some((perm, axis3_user, separatrix)) => Motion::Elliptic(Box::new(Elliptic::new(
+                None => Regime::Stationary,
+                Some((perm, axis3_user, separatrix)) => Regime::Elliptic(Box::new(Elliptic::new(
                     &moments_p, &unit, scale, &q0, perm, axis3_user, separatrix,
                 )?)),
             }
@@ -191,7 +192,7 @@ impl TorqueFreeBody {
             h_s,
             energy,
             omega0_norm,
-            motion,
+            regime,
         })
     }
 
@@ -202,10 +203,10 @@ impl TorqueFreeBody {
 
     /// Which kind of motion this is.
     pub fn case(&self) -> TorqueFreeCase {
-        match &self.motion {
-            Motion::Stationary => TorqueFreeCase::Stationary,
-            Motion::Elliptic(e) if e.separatrix => TorqueFreeCase::Separatrix,
-            Motion::Elliptic(e) => TorqueFreeCase::Circulating { axis: e.axis3_user },
+        match &self.regime {
+            Regime::Stationary => TorqueFreeCase::Stationary,
+            Regime::Elliptic(e) if e.separatrix => TorqueFreeCase::Separatrix,
+            Regime::Elliptic(e) => TorqueFreeCase::Circulating { axis: e.axis3_user },
         }
     }
 
@@ -213,18 +214,18 @@ impl TorqueFreeBody {
     /// indices 1 ↔ 3 exchanged otherwise): `Some(1.0)` on the separatrix, `None` when
     /// stationary.
     pub fn elliptic_parameter(&self) -> Option<f64> {
-        match &self.motion {
-            Motion::Stationary => None,
-            Motion::Elliptic(e) => Some(e.jac.m()),
+        match &self.regime {
+            Regime::Stationary => None,
+            Regime::Elliptic(e) => Some(e.jac.m()),
         }
     }
 
     /// Angular velocity in principal axes at time `t` (L&L §37, see the module
     /// docs): `ω₁ = a cn τ`, `ω₂ = ε b sn τ`, `ω₃ = c dn τ` in the canonical frame, `τ = λt + τ₀`.
     pub fn omega_p(&self, t: f64) -> Vector3<f64> {
-        match &self.motion {
-            Motion::Stationary => self.omega0_p,
-            Motion::Elliptic(e) => {
+        match &self.regime {
+            Regime::Stationary => self.omega0_p,
+            Regime::Elliptic(e) => {
                 let (s, c, d, _) = e.functions(t);
                 e.perm.transpose() * Vector3::new(e.a * c, e.eps * e.b * s, e.c * d)
             }
@@ -255,8 +256,8 @@ impl TorqueFreeBody {
     /// For the symmetric cases (`m = 0`) this is `2π/|Ω_b|`, `Ω_b = (I₃ − I₁)ω₃/I₁`.
     /// `None` on the separatrix (not periodic) and for stationary motion (ω constant).
     pub fn period_omega(&self) -> Option<f64> {
-        match &self.motion {
-            Motion::Elliptic(e) if !e.separatrix => Some(4.0 * e.jac.quarter_period() / e.lambda),
+        match &self.regime {
+            Regime::Elliptic(e) if !e.separatrix => Some(4.0 * e.jac.quarter_period() / e.lambda),
             _ => None,
         }
     }
@@ -302,8 +303,8 @@ impl TorqueFreeBody {
     /// is bounded: a few ε times `4π + |κ| R_J`, independent of t while the double-double's own `2⁻¹⁰⁶·φ` stays below
     /// that (φ up to ~1e16 rad). Stationary rotations take the angle `|ω₀|·t` the same way.
     pub fn attitude(&self, t: f64) -> UnitQuaternion<f64> {
-        match &self.motion {
-            Motion::Stationary => {
+        match &self.regime {
+            Regime::Stationary => {
                 let w = self.omega0_norm.hi;
                 if w == 0.0 {
                     self.q0
@@ -313,7 +314,7 @@ impl TorqueFreeBody {
                     self.q0 * axis_angle_quat(&(self.omega0_p / w), angle)
                 }
             }
-            Motion::Elliptic(e) => e.q_fixed * e.q_h(t) * e.q_perm,
+            Regime::Elliptic(e) => e.q_fixed * e.q_h(t) * e.q_perm,
         }
     }
 }

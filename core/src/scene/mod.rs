@@ -5,6 +5,7 @@ pub mod advice;
 mod facts;
 mod file;
 mod model;
+mod motion;
 mod oracle;
 pub mod reference;
 pub mod source_map;
@@ -20,7 +21,8 @@ pub use facts::{
 };
 pub use file::parse_toml;
 pub use file::{Flags, SceneError, flag_value, load, load_spec, parse, parse_spec, read};
-pub use model::{Motion, Scene, SceneSource, SolverConfig};
+pub use model::{Scene, SceneSource, SolverConfig};
+pub use motion::{FreeParts, Motion};
 pub use oracle::{ClosedForm, Exact, Oracle};
 pub use spec::{
     AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, CarrierSpec, CompareSpec,

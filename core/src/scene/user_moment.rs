@@ -1,7 +1,7 @@
 //! A built scene with one more effect: the user's own moment law ([`MomentLaw`]), which a scene file cannot hold.
 
+use super::Scene;
 use super::facts::Facts;
-use super::model::{Motion, Scene};
 use super::source_map::KeyPath;
 use super::validate::InvalidScene;
 use crate::effects::{Effect, MomentLaw, UserMoment};
@@ -61,7 +61,7 @@ impl Scene {
                 "a user's moment needs a name (what check and the sidecar call it)",
             );
         }
-        if !matches!(self.motion, Motion::Free { .. }) {
+        if !self.motion.is_free() {
             return invalid(
                 KeyPath::root().key("motion").key("type"),
                 format!(

@@ -1,6 +1,6 @@
 //! A built scene whose wheels are driven by the user's wheel law ([`WheelLaw`]), which a scene file cannot hold.
 
-use super::model::{Motion, Scene};
+use super::Scene;
 use super::source_map::KeyPath;
 use super::validate::InvalidScene;
 use crate::keys::invalid;
@@ -33,19 +33,14 @@ impl Scene {
         name: &str,
         law: impl WheelLaw + 'static,
     ) -> Result<Scene, InvalidScene> {
-        let Motion::Free {
-            gyrostat: Some(g),
-            omega0_b,
-            ..
-        } = &mut self.motion
-        else {
+        let Some((g, omega0_b)) = self.motion.gyrostat_mut() else {
             return invalid(
                 KeyPath::root().key("body").key("rotor"),
                 format!("the wheel law \"{name}\" needs a free body with wheels ([[body.rotor]])"),
             );
         };
         let start = (&self.attitude0, &**omega0_b);
-        **g = g.take_law(&self.spec.body.rotor, name, law, start)?;
+        *g = g.take_law(&self.spec.body.rotor, name, law, start)?;
         Ok(self)
     }
 }

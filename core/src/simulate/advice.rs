@@ -8,7 +8,7 @@
 use std::fmt;
 
 use crate::sample::Sample;
-use crate::scene::{Motion, Scene};
+use crate::scene::Scene;
 
 /// The most a fixed step should turn the body: |ω|·h ≤ 0.1 rad.
 pub const MAX_TURN_PER_STEP: f64 = 0.1;
@@ -69,7 +69,7 @@ impl EnergyWatch {
     /// The watch of a free body that conserves its energy (`scene.facts()`); `None` otherwise (torques, damping,
     /// a rotor's motor, friction or imbalance; a prescribed axis, whose energy is given, and a hinge are not watched).
     pub fn of(scene: &Scene) -> Option<Self> {
-        let free = matches!(scene.motion, Motion::Free { .. });
+        let free = scene.motion.is_free();
         (free && scene.facts().conserved_energy().is_some()).then_some(Self {
             start: None,
             drift: 0.0,

@@ -10,7 +10,7 @@ use crate::effects;
 use crate::frames::{BodyAxes, Vector};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
-use crate::scene::model::{Motion, Scene};
+use crate::scene::Scene;
 use crate::wheels::gyrostat::Gyrostat;
 
 impl CheckNumbers {
@@ -46,19 +46,16 @@ impl MotionNumbers {
             Some(a) if *a.point_b() != Vector3::zeros() => MomentCenter::AxisPoint,
             _ => MomentCenter::MassCenter,
         };
-        let at_start = match &scene.motion {
-            Motion::Free {
-                omega0_b,
-                body,
-                gyrostat,
-            } => Some(StartNumbers::free(
+        // A hinge's state at the start is its θ₀ and θ̇₀, in its axis numbers.
+        let at_start = match (scene.motion.free(), scene.motion.prescribed()) {
+            (Some(free), _) => Some(StartNumbers::free(
                 scene,
-                omega0_b,
-                body,
-                gyrostat.as_deref(),
+                free.omega0_b,
+                free.body,
+                free.gyrostat,
             )),
-            Motion::FixedAxis(axis) => Some(StartNumbers::fixed_axis(scene, axis)),
-            Motion::Hinge(_) => None,
+            (None, Some(axis)) => Some(StartNumbers::fixed_axis(scene, axis)),
+            (None, None) => None,
         };
         MotionNumbers {
             moment_center,
@@ -75,10 +72,7 @@ impl AxisNumbers {
     fn of(scene: &Scene, axis: &FixedAxis) -> Self {
         let u_b = axis.axis_b().into_inner();
         let (tilt_deg, nearest_principal) = scene.body.principal().tilt_of(&u_b);
-        let hinge = match &scene.motion {
-            Motion::Hinge(hinge) => Some(hinge),
-            _ => None,
-        };
+        let hinge = scene.motion.hinge();
         let at = |z: f64| (*axis.point_b() + scene.center_b + u_b * z).into();
         let (static_imbalance, dynamic_imbalance) = axis.imbalance();
         let e = static_imbalance.norm() / axis.mass();

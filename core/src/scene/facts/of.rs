@@ -13,8 +13,9 @@
 use super::{CheckNumbers, Facts, Invariant};
 use crate::effects::Effect;
 use crate::panel::Panel;
-use crate::scene::model::{Motion, Scene};
 use crate::scene::oracle::Oracle;
+use crate::scene::spec::MotionKind;
+use crate::scene::{Motion, Scene};
 
 impl Facts {
     /// The facts of `scene`.
@@ -51,31 +52,36 @@ fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
         .all(|(g_s, _)| g_s.x == 0.0 && g_s.y == 0.0);
     let torque_free = scene.effects.is_empty();
     use Invariant::*;
-    match &scene.motion {
-        Motion::Free { gyrostat, .. } => {
-            if gyrostat.as_ref().is_some_and(|g| g.imbalanced()) {
-                vec![]
-            } else {
-                let no_motor_work = gyrostat.as_ref().is_none_or(|g| g.wheels_spin_freely());
-                let energy = if torque_free { Energy } else { EnergyTotal };
-                let mut kept = Vec::new();
-                if no_motor_work && gravity_only {
-                    kept.push(energy);
-                }
-                if torque_free {
-                    kept.extend([HSpaceX, HSpaceY, HSpaceZ, HNorm]);
-                } else if gravity_only && vertical_gravity {
-                    kept.push(HSpaceZ);
-                }
-                kept
+    let motion = &scene.motion;
+    match motion.kind() {
+        MotionKind::Free => {
+            let gyrostat = motion.gyrostat();
+            if gyrostat.is_some_and(|g| g.imbalanced()) {
+                return vec![];
             }
+            let no_motor_work = gyrostat.is_none_or(|g| g.wheels_spin_freely());
+            let energy = if torque_free { Energy } else { EnergyTotal };
+            let mut kept = Vec::new();
+            if no_motor_work && gravity_only {
+                kept.push(energy);
+            }
+            if torque_free {
+                kept.extend([HSpaceX, HSpaceY, HSpaceZ, HNorm]);
+            } else if gravity_only && vertical_gravity {
+                kept.push(HSpaceZ);
+            }
+            kept
         }
-        Motion::Hinge(_) if moving_support => vec![],
-        Motion::Hinge(_) if torque_free => vec![Energy, HNorm],
-        Motion::Hinge(_) if gravity_only => vec![EnergyTotal],
-        Motion::Hinge(_) => vec![],
-        Motion::FixedAxis(axis) if moving_support || axis.accel() != 0.0 => vec![],
-        Motion::FixedAxis(_) => vec![Energy, HNorm],
+        MotionKind::Hinge if moving_support => vec![],
+        MotionKind::Hinge if torque_free => vec![Energy, HNorm],
+        MotionKind::Hinge if gravity_only => vec![EnergyTotal],
+        MotionKind::Hinge => vec![],
+        MotionKind::FixedAxis
+            if moving_support || motion.axis().is_some_and(|a| a.accel() != 0.0) =>
+        {
+            vec![]
+        }
+        MotionKind::FixedAxis => vec![Energy, HNorm],
     }
 }
 
@@ -91,10 +97,7 @@ fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
             });
         }
     }
-    if let Motion::Free {
-        gyrostat: Some(g), ..
-    } = motion
-    {
+    if let Some(g) = motion.gyrostat() {
         panels.extend(g.panels());
     }
     panels

@@ -8,22 +8,23 @@ use crate::effects::TorqueGiven;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, BodyAxes, Vector};
 use crate::profile::Profile;
-use crate::scene::model::{Motion, Scene};
+use crate::scene::Scene;
+use crate::scene::spec::MotionKind;
 use crate::wheels::gyrostat::Gyrostat;
 
 impl Oracle {
     /// The closed form that applies to the scene, if any.
     pub fn for_scene(scene: &Scene) -> Option<Oracle> {
-        let omega0_b = match &scene.motion {
-            Motion::FixedAxis(_) => return Some(Oracle::FixedAxis),
-            Motion::Hinge(_) => return None,
-            Motion::Free {
-                omega0_b,
-                gyrostat: Some(g),
-                ..
-            } => return symmetric_gyrostat(scene, omega0_b, g),
-            Motion::Free { omega0_b, .. } => omega0_b.into_inner(),
+        let motion = &scene.motion;
+        let free = match motion.kind() {
+            MotionKind::FixedAxis => return Some(Oracle::FixedAxis),
+            MotionKind::Hinge => return None,
+            MotionKind::Free => motion.free()?,
         };
+        if let Some(g) = free.gyrostat {
+            return symmetric_gyrostat(scene, free.omega0_b, g);
+        }
+        let omega0_b = free.omega0_b.into_inner();
         let principal = scene.body.principal();
         let r_bp = principal_to_body(&principal.axes_b);
         match scene.effects.as_slice() {

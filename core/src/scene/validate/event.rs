@@ -4,13 +4,13 @@
 use super::key_of;
 use crate::keys::{Checked, invalid};
 use crate::method::{Backend, Method};
-use crate::scene::model::{Motion, SolverConfig};
 use crate::scene::validate::Overrides;
+use crate::scene::{Motion, SolverConfig};
 
 /// Events are located on a continuous solution: the closed form of a fixed axis or of `exact`, or the own
 /// Runge–Kutta methods' dense output. The splitting methods and the ode_solvers backend have none.
 pub(super) fn locatable(motion: &Motion, solver: &SolverConfig, o: &Overrides) -> Checked<()> {
-    if matches!(motion, Motion::FixedAxis(_)) || solver.method == Method::Exact {
+    if motion.prescribed().is_some() || solver.method == Method::Exact {
         return Ok(());
     }
     if matches!(solver.method, Method::Split2 | Method::Split4) {

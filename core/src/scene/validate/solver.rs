@@ -3,7 +3,8 @@
 
 use nalgebra::UnitQuaternion;
 
-use super::super::model::{Motion, SolverConfig};
+use super::super::Motion;
+use super::super::model::SolverConfig;
 use super::super::spec::{SceneSpec, SolverSpec};
 use super::{Checked, Invalid, Overrides, finite, invalid, key_of, positive};
 use crate::effects::Effect;
@@ -70,13 +71,7 @@ pub(super) fn validate_method(
     o: &Overrides,
 ) -> Checked<()> {
     let method = solver.method;
-    let has_rotors = matches!(
-        motion,
-        Motion::Free {
-            gyrostat: Some(_),
-            ..
-        }
-    );
+    let has_rotors = motion.gyrostat().is_some();
     if has_rotors && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "method", o.method.is_some()),
@@ -88,7 +83,7 @@ pub(super) fn validate_method(
             ),
         );
     }
-    if matches!(motion, Motion::Hinge(_)) && !method.is_runge_kutta() {
+    if motion.hinge().is_some() && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "method", o.method.is_some()),
             format!(
@@ -127,8 +122,8 @@ pub(super) fn validate_method(
             ),
         );
     }
-    if let Motion::Free { omega0_b, body, .. } = motion {
-        ExactFlow::new(body, omega0_b, attitude0).map_err(|e| Invalid {
+    if let Some(free) = motion.free() {
+        ExactFlow::new(free.body, free.omega0_b, attitude0).map_err(|e| Invalid {
             key: method_key,
             problem: format!("method \"exact\" cannot solve this body in closed form: {e}"),
         })?;
