@@ -191,7 +191,6 @@ pub fn metrics(
         .collect();
     if let Some(theirs) = samples {
         metrics.extend(event_metrics(scene, theirs, reference));
-        metrics.extend(super::flips::metric(scene, theirs, reference));
     }
     (metrics, all.into_iter().map(|(s, ..)| s).collect())
 }

@@ -166,7 +166,10 @@ pub fn score_with(
             "not a free rigid body: ω, energy, H and event times not measured".to_string()
         });
     }
-    let (metrics, series) = metrics::metrics(scene, rows, samples.as_deref(), &reference);
+    let (mut metrics, series) = metrics::metrics(scene, rows, samples.as_deref(), &reference);
+    if let Some(theirs) = &samples {
+        metrics.extend(flips::metric(scene, theirs, &reference));
+    }
     let hints = hints::hints(
         &rows[0],
         &reference.samples[0],
