@@ -69,16 +69,19 @@ def run_scene(setup, rate, integrator):
         if k == frames:
             break
         start = time.perf_counter()
-        for _ in range(substeps):
-            data.xfrc_applied[body, 3:6] = applied_torque(torque, data, body)
+        for n in range(substeps):
+            # The step's time from its index: data.time sums h and drifts (60 steps of 1/60 s end at
+            # 1.0000000000000013, 90 at 1.4999999999999996), which would move the pulse's edges by a step.
+            t = k / out_rate + n / (out_rate * substeps)
+            data.xfrc_applied[body, 3:6] = applied_torque(torque, t, data, body)
             mujoco.mj_step(model, data)
         seconds += time.perf_counter() - start
     return lines, seconds
 
 
-def applied_torque(torque, data, body):
-    """The scene's torque pulse at the data's time, in world axes (a body-axes torque turned by the attitude)."""
-    if not suite_io.torque_on(torque, data.time):
+def applied_torque(torque, t, data, body):
+    """The scene's torque pulse at time t, in world axes (a body-axes torque turned by the attitude)."""
+    if not suite_io.torque_on(torque, t):
         return np.zeros(3)
     value = np.array(torque["value"])
     if torque["frame"] == "body":
