@@ -109,7 +109,8 @@ impl Motion {
         }
     }
 
-    /// The name of the wheel law that commands the wheels ([`Scene::with_wheel_law`]), if one does.
+    /// The name of the wheel law that commands the wheels
+    /// ([`Scene::with_wheel_law`](super::Scene::with_wheel_law)), if one does.
     pub fn wheel_law(&self) -> Option<&str> {
         match self {
             Motion::Free {
