@@ -9,8 +9,8 @@ use crate::frames::Form;
 use crate::integrate::Schedule;
 use crate::method::{Backend, Method};
 
-use super::Motion;
 use super::facts::Facts;
+use super::motion::Motion;
 use super::spec::SceneSpec;
 use crate::effects::potential_columns;
 use crate::motion::axis_columns::AxisColumns;

@@ -1,7 +1,7 @@
 //! A built scene with one more effect: the user's own moment law ([`MomentLaw`]), which a scene file cannot hold.
 
-use super::Scene;
 use super::facts::Facts;
+use super::model::Scene;
 use super::source_map::KeyPath;
 use super::validate::InvalidScene;
 use crate::effects::{Effect, MomentLaw, UserMoment};

@@ -1,6 +1,6 @@
 //! A built scene whose wheels are driven by the user's wheel law ([`WheelLaw`]), which a scene file cannot hold.
 
-use super::Scene;
+use super::model::Scene;
 use super::source_map::KeyPath;
 use super::validate::InvalidScene;
 use crate::keys::invalid;

@@ -10,7 +10,7 @@ use crate::effects;
 use crate::frames::{BodyAxes, Vector};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
-use crate::scene::Scene;
+use crate::scene::model::Scene;
 use crate::wheels::gyrostat::Gyrostat;
 
 impl CheckNumbers {

@@ -13,9 +13,10 @@
 use super::{CheckNumbers, Facts, Invariant};
 use crate::effects::Effect;
 use crate::panel::Panel;
+use crate::scene::model::Scene;
+use crate::scene::motion::Motion;
 use crate::scene::oracle::Oracle;
 use crate::scene::spec::MotionKind;
-use crate::scene::{Motion, Scene};
 
 impl Facts {
     /// The facts of `scene`.

@@ -8,7 +8,7 @@ use crate::effects::TorqueGiven;
 use crate::exact::{AxialTorqueSymmetric, DampedSpin, SymmetricTorqueFree, TorqueFreeBody};
 use crate::frames::{Axes, BodyAxes, Vector};
 use crate::profile::Profile;
-use crate::scene::Scene;
+use crate::scene::model::Scene;
 use crate::scene::spec::MotionKind;
 use crate::wheels::gyrostat::Gyrostat;
 

@@ -4,8 +4,9 @@
 use super::key_of;
 use crate::keys::{Checked, invalid};
 use crate::method::{Backend, Method};
+use crate::scene::model::SolverConfig;
+use crate::scene::motion::Motion;
 use crate::scene::validate::Overrides;
-use crate::scene::{Motion, SolverConfig};
 
 /// Events are located on a continuous solution: the closed form of a fixed axis or of `exact`, or the own
 /// Runge–Kutta methods' dense output. The splitting methods and the ode_solvers backend have none.

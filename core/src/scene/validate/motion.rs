@@ -2,7 +2,7 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
-use super::super::Motion;
+use super::super::motion::Motion;
 use super::super::spec::{AxisDirection, AxisSpec, Distribution, MotionSpec, RateSpec, SceneSpec};
 use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;

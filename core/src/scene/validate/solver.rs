@@ -3,8 +3,8 @@
 
 use nalgebra::UnitQuaternion;
 
-use super::super::Motion;
 use super::super::model::SolverConfig;
+use super::super::motion::Motion;
 use super::super::spec::{SceneSpec, SolverSpec};
 use super::{Checked, Invalid, Overrides, finite, invalid, key_of, positive};
 use crate::effects::Effect;
