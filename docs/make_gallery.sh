@@ -38,6 +38,11 @@ $eulerdyn plot "$work/turbine.csv" -o "$out/turbine_bearings.svg" --panels omega
 $eulerdyn run scenarios/turbine_turn_3g.toml -o "$work/turbine_turn.csv"
 $eulerdyn plot "$work/turbine_turn.csv" -o "$out/turbine_turn_bearings.svg" --panels omega,bearings_space
 
+# Explorer 1's lesson: a minor-axis spin with a nutation damper (a free wheel under viscous friction) ends about the
+# major axis — omega turning from z to x, the energy falling to |H|²/(2 I_max) while |H| stays, the damper's spin.
+$eulerdyn run scenarios/explorer1.toml -o "$work/explorer1.csv"
+$eulerdyn plot "$work/explorer1.csv" -o "$out/explorer1.svg" --panels omega,energy,wheel_spin
+
 # A slew through three wheels that saturate at 0.05 N·m (examples/wheel_slew.rs, a PD law): the body's rate, the
 # wheels' speeds and their commanded and applied torques. SLEW_CSV: a run of it made already (the gallery test's).
 slew_csv=${SLEW_CSV:-"$work/slew.csv"}

@@ -55,6 +55,7 @@ fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
     assert_eq!(
         made,
         [
+            "explorer1.svg",
             "heavy_top.svg",
             "motor_runup_bearings.svg",
             "slew_wheels.svg",
