@@ -141,18 +141,14 @@ pub fn score_with(
     let times: Vec<f64> = rows.iter().map(|r| r.t).collect();
     let reference = reference::reference(scene, &shown, &times)?;
     let diagnosis = match diagnose {
-        true => Some(diagnose::diagnose(
-            scene,
-            rows,
-            reference::grid(&shown, &times)?.0,
-        )?),
+        true => Some(diagnose::diagnose(scene, rows, reference.every)?),
         false => None,
     };
     let samples = metrics::their_samples(scene, rows);
     let mut notes = Vec::new();
-    let (every, _) = reference::grid(&shown, &times)?;
     let t_last = times[times.len() - 1];
-    let ends_early = (t_last < t_end - every * (1.0 + reference::GRID_SLACK)).then_some(t_last);
+    let ends_early =
+        (t_last < t_end - reference.every * (1.0 + reference::GRID_SLACK)).then_some(t_last);
     if let Some(t) = ends_early {
         notes.push(format!(
             "their rows end at t = {t:.3} s, before the scene's t_end = {t_end} s: the rest is not scored, and the \

@@ -43,6 +43,8 @@ pub struct Reference {
     pub source: String,
     /// `None` for the closed form (round-off only).
     pub estimate: Option<ErrorEstimate>,
+    /// The grid Δt their times lie on (s), which the reference was computed on.
+    pub every: f64,
 }
 
 /// The grid Δt their times lie on and the largest distance of a time from it (s).
@@ -130,6 +132,7 @@ pub fn reference(scene: &Scene, path: &str, times: &[f64]) -> Result<Reference, 
                 occurrences,
                 source: format!("closed form: {name}"),
                 estimate: None,
+                every,
             });
         }
     }
@@ -159,5 +162,6 @@ pub fn reference(scene: &Scene, path: &str, times: &[f64]) -> Result<Reference, 
             attitude: attitude + omega_max * slack,
             omega,
         }),
+        every,
     })
 }

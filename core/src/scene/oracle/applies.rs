@@ -37,32 +37,35 @@ impl Oracle {
                         r_bp,
                     })
             }
-            [effect] if effect.torque().is_some() => {
-                let TorqueGiven {
-                    frame,
-                    value,
-                    profile,
-                } = effect.torque()?;
-                let m = principal.moments;
-                let constant_in_body = frame == Axes::Body && profile == Profile::Constant;
-                let axial = value[0] == 0.0 && value[1] == 0.0;
-                let body_axes_principal = r_bp == UnitQuaternion::identity();
-                (constant_in_body && axial && body_axes_principal && m[0] == m[1])
-                    .then(|| AxialTorqueSymmetric::new(m[0], m[2], value[2], omega0_b).ok())
-                    .flatten()
-                    .map(Oracle::AxialTorque)
-            }
-            [effect] if effect.damping().is_some() => {
-                let c = effect.damping()?;
-                // ω(0) along a principal axis: I·ω = I_k·ω, with no transverse part (to round-off).
-                let h0_b = scene.body.inertia_c() * omega0_b;
-                let inertia = h0_b.dot(&omega0_b) / omega0_b.norm_squared();
-                let along = (h0_b - omega0_b * inertia).norm() <= 1e-14 * h0_b.norm();
-                along
-                    .then(|| DampedSpin::new(omega0_b, inertia, c, scene.attitude0).ok())
-                    .flatten()
-                    .map(Oracle::DampedSpin)
-            }
+            [effect] => match (effect.torque(), effect.damping()) {
+                (
+                    Some(TorqueGiven {
+                        frame: Axes::Body,
+                        value,
+                        profile: Profile::Constant,
+                    }),
+                    _,
+                ) => {
+                    let m = principal.moments;
+                    let axial = value[0] == 0.0 && value[1] == 0.0;
+                    let body_axes_principal = r_bp == UnitQuaternion::identity();
+                    (axial && body_axes_principal && m[0] == m[1])
+                        .then(|| AxialTorqueSymmetric::new(m[0], m[2], value[2], omega0_b).ok())
+                        .flatten()
+                        .map(Oracle::AxialTorque)
+                }
+                (_, Some(c)) => {
+                    // ω(0) along a principal axis: I·ω = I_k·ω, with no transverse part (to round-off).
+                    let h0_b = scene.body.inertia_c() * omega0_b;
+                    let inertia = h0_b.dot(&omega0_b) / omega0_b.norm_squared();
+                    let along = (h0_b - omega0_b * inertia).norm() <= 1e-14 * h0_b.norm();
+                    along
+                        .then(|| DampedSpin::new(omega0_b, inertia, c, scene.attitude0).ok())
+                        .flatten()
+                        .map(Oracle::DampedSpin)
+                }
+                _ => None,
+            },
             _ => None,
         }
     }
