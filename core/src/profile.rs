@@ -34,6 +34,9 @@ pub enum Profile {
     },
 }
 
+/// The `profile` key's values, as the reference lists them.
+pub(crate) const PROFILES: &str = "\"constant\" | \"sine\" | \"step\"";
+
 /// The `profile` key: which profile the other keys describe.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -98,7 +98,7 @@ fn the_wheels_are_registered_in_the_listed_lines_only() {
     let names = ["RotorFile", "RotorSpec", "validate_rotors"];
     let registrations = [
         ("scene/spec/file_form.rs", "use crate::wheels::RotorSpec;"),
-        ("scene/spec/file_form.rs", "each rotor: RotorSpec"),
+        ("scene/spec/file_form.rs", "pub rotor: Vec<RotorSpec>,"),
         ("scene/spec/body.rs", "use crate::wheels::RotorSpec;"),
         (
             "scene/spec/body.rs",
@@ -127,7 +127,9 @@ fn the_carrier_is_named_only_in_its_folder_and_its_part_line() {
     let registrations = [
         ("motion/mod.rs", "pub mod carrier;"),
         ("motion/keys.rs", "use super::carrier::spec::CarrierSpec;"),
-        ("motion/keys.rs", "part carrier: CarrierSpec"),
+        ("motion/keys.rs", "use super::carrier::keys::CarrierFile;"),
+        ("motion/keys.rs", "part = CarrierSpec"),
+        ("motion/keys.rs", "carrier: Option<CarrierFile>,"),
         (
             "motion/spec.rs",
             "pub use super::carrier::spec::{CarrierSpec, VehicleSpec};",
@@ -155,8 +157,8 @@ fn the_effects_and_events_tables_are_named_only_in_their_folders_and_registratio
     let registrations = [
         ("scene/spec/file_form.rs", "use crate::effects::EffectSpec;"),
         ("scene/spec/file_form.rs", "use crate::events::EventSpec;"),
-        ("scene/spec/file_form.rs", "each effect: EffectSpec"),
-        ("scene/spec/file_form.rs", "each event: EventSpec"),
+        ("scene/spec/file_form.rs", "pub effect: Vec<EffectSpec>,"),
+        ("scene/spec/file_form.rs", "pub event: Vec<EventSpec>,"),
         ("scene/spec/mod.rs", "pub use crate::effects::{EffectSpec,"),
         (
             "scene/spec/mod.rs",

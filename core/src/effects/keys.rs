@@ -1,5 +1,5 @@
 //! `[[effect]]`'s keys, declared once ([`EffectFile`]: the file form and the reference's table; its `type`,
-//! [`EffectKind`]), and [`EffectSpec`] as a [`Part`]: read from that table (its `type` and the keys that type
+//! [`EffectKind`], with the keys each type takes), and [`EffectSpec`] as a [`Part`]: read from that table (its `type` and the keys that type
 //! takes) and written back. The scene registers it with one line, `each effect: EffectSpec`.
 
 use std::path::Path;
@@ -7,36 +7,77 @@ use std::path::Path;
 use super::spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 use super::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
-use crate::keys::{Checked, KeyPath, Part, Table, file_table, key, position, profile, required};
-use crate::profile::{Profile, ProfileKind, profile_keys};
+use crate::keys::{Checked, KeyPath, Keys, Kind, Part, Table, required};
+use crate::profile::{PROFILES, Profile, ProfileKind, profile_keys};
 
 profile_keys!(EffectFile);
 
-file_table! {
-    /// One `[[effect]]`.
-    pub(crate) struct EffectFile(pub(super)) "[[effect]]",
-        "a moment on the body; any number, at most one gravity" {
-        opt kind as "type": EffectKind = key(EffectKind::CHOICES, "–", "required", "", "the effect");
-        opt frame: Axes = key("\"body\" | \"space\"", "–", "\"body\"", "", "torque and torque_table: the axes of the moment");
-        arr value: [f64; 3] = key("[x, y, z]", "N·m", "required for `torque`", "", "the torque (amplitude for `sine`)");
-        opt profile: ProfileKind = profile("torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off");
-        @sine;
-        @step;
-        arr g: [f64; 3] = key("[x, y, z]", "m/s²", "[0, 0, -9.81]", "", "gravity: uniform, space axes, acting at C");
-        arr pivot: [f64; 3] = position("required for free motion", "gravity: the fixed point, which becomes the moment center (an error with a fixed axis or hinge)");
-        opt c: f64 = key("number", "N·m·s", "required for `damping`", "", "viscous M = −c·ω, ≥ 0");
-        opt file: std::path::PathBuf = key("path", "–", "required for `torque_table`", "", "CSV with header t,M_x,M_y,M_z (s, N·m), relative to the scene file; zero outside its rows");
-        opt interpolation: Interpolation = key("\"linear\" | \"cubic\"", "–", "\"linear\"", "", "torque_table: between rows (cubic: the natural spline)");
-    }
-    kinds {
-        /// The `type` of an effect.
-        pub(crate) enum EffectKind("effect type", "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\"") {
-            Torque = "torque": [frame, value, profile, freq_hz, phase_deg, t_on, t_off];
-            Gravity = "gravity": [g, pivot];
-            Damping = "damping": [c];
-            TorqueTable = "torque_table": [file, frame, interpolation];
-        }
-    }
+/// One `[[effect]]`.
+#[derive(Debug, Clone, Default, PartialEq, Keys)]
+#[keys(
+    header = "[[effect]]",
+    about = "a moment on the body; any number, at most one gravity"
+)]
+pub(crate) struct EffectFile {
+    /// the effect
+    #[key(rename = "type", kinds, shown = "required")]
+    pub(super) kind: Option<EffectKind>,
+    /// torque and torque_table: the axes of the moment
+    #[key(kind = "\"body\" | \"space\"", shown = "\"body\"")]
+    pub(super) frame: Option<Axes>,
+    /// the torque (amplitude for `sine`)
+    #[key(unit = "N·m", shown = "required for `torque`")]
+    pub(super) value: Option<[f64; 3]>,
+    /// torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off
+    #[key(kind = PROFILES, shown = "\"constant\"")]
+    pub(super) profile: Option<ProfileKind>,
+    /// ≥ 0
+    #[key(unit = "Hz", shown = "required for `sine`")]
+    pub(super) freq_hz: Option<f64>,
+    /// `sine` only
+    #[key(unit = "deg", shown = "0")]
+    pub(super) phase_deg: Option<f64>,
+    /// `step` only
+    #[key(unit = "s", shown = "0")]
+    pub(super) t_on: Option<f64>,
+    /// `step` only; > t_on
+    #[key(unit = "s", shown = "never")]
+    pub(super) t_off: Option<f64>,
+    /// gravity: uniform, space axes, acting at C
+    #[key(unit = "m/s²", shown = "[0, 0, -9.81]")]
+    pub(super) g: Option<[f64; 3]>,
+    /// gravity: the fixed point, which becomes the moment center (an error with a fixed axis or hinge)
+    #[key(position, shown = "required for free motion")]
+    pub(super) pivot: Option<[f64; 3]>,
+    /// viscous M = −c·ω, ≥ 0
+    #[key(unit = "N·m·s", shown = "required for `damping`")]
+    pub(super) c: Option<f64>,
+    /// CSV with header t,M_x,M_y,M_z (s, N·m), relative to the scene file; zero outside its rows
+    #[key(shown = "required for `torque_table`")]
+    pub(super) file: Option<std::path::PathBuf>,
+    /// torque_table: between rows (cubic: the natural spline)
+    #[key(kind = "\"linear\" | \"cubic\"", shown = "\"linear\"")]
+    pub(super) interpolation: Option<Interpolation>,
+}
+
+/// The `type` of an effect.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Kind)]
+#[kind(
+    what = "effect type",
+    missing = "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\""
+)]
+pub(crate) enum EffectKind {
+    #[kind(
+        "torque",
+        takes(frame, value, profile, freq_hz, phase_deg, t_on, t_off)
+    )]
+    Torque,
+    #[kind("gravity", takes(g, pivot))]
+    Gravity,
+    #[kind("damping", takes(c))]
+    Damping,
+    #[kind("torque_table", takes(file, frame, interpolation))]
+    TorqueTable,
 }
 
 impl Part for EffectSpec {

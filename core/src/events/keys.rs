@@ -1,41 +1,54 @@
-//! `[[event]]`'s keys, declared once ([`EventFile`]: the file form, the reference's table and the typed
-//! [`EventSpec`], read from it and written back): `name` and `when`, exactly one of `crosses`, with its optional
+//! `[[event]]`'s keys, declared once by the typed [`EventSpec`] (its file form `EventFile`, the reference's table,
+//! both conversions): `name` and `when`, exactly one of `crosses`, with its optional
 //! `direction`, and `extremum` (the [`ConditionSpec`]), `stop`. The scene registers it with one line, `each event: EventSpec`.
 
 use super::spec::ConditionSpec;
 use super::{Direction, Extremum};
-use crate::keys::{Checked, Group, KeyPath, file_table, invalid, key};
+use crate::keys::{Checked, Group, KeyPath, Keys, Table, invalid};
 
-file_table! {
-    /// One `[[event]]`.
-    pub(crate) struct EventFile(pub(super)) "[[event]]",
-        "a moment located between the rows on the continuous solution" {
-        /// `name`: letters, digits and `_`, unique in the scene.
-        opt(required) name: String = key("string", "–", "required", "", "letters, digits, `_`; unique");
-        /// `when`: a CSV column of the run, or `|X|` for the norm of X_s_x..z.
-        opt(required) when: String = key("string", "–", "required", "", "a CSV column of this run, or `|X|` for the norm of X_s_x..z");
-        /// `crosses` (with `direction`) or `extremum`.
-        group condition: ConditionSpec {
-            opt crosses: f64 = key("number", "the column's", "one of `crosses` / `extremum`", "", "a crossing of this value");
-            opt direction: Direction = key("\"up\" | \"down\" | \"both\"", "–", "\"both\"", "", "with `crosses`");
-            opt extremum: Extremum = key("\"max\" | \"min\"", "–", "one of `crosses` / `extremum`", "", "every local extremum");
-        }
-        /// `stop`: the run ends at the first occurrence (absent: false).
-        opt(false) stop: bool = key("bool", "–", "false", "", "true: the run ends at the first occurrence");
-    }
-    either {
-        crosses, extremum: "give either `crosses` (a value) or `extremum` (\"max\" or \"min\"), not both";
-    }
-    spec {
-        /// One `[[event]]`.
-        #[derive(Debug, Clone, PartialEq)]
-        pub struct EventSpec("an event");
-    }
+/// One `[[event]]`.
+#[derive(Debug, Clone, PartialEq, Table)]
+#[table(
+    file = EventFile,
+    header = "[[event]]",
+    about = "a moment located between the rows on the continuous solution",
+    what = "an event"
+)]
+pub struct EventSpec {
+    /// letters, digits, `_`; unique
+    pub name: String,
+    /// a CSV column of this run, or `|X|` for the norm of X_s_x..z
+    pub when: String,
+    /// `crosses` (with `direction`) or `extremum`.
+    #[key(flatten = ConditionKeys)]
+    pub condition: ConditionSpec,
+    /// true: the run ends at the first occurrence
+    #[key(default = false)]
+    pub stop: bool,
+}
+
+/// `crosses` (with `direction`) or `extremum`, read as the event's [`ConditionSpec`].
+#[derive(Debug, Clone, Copy, Default, PartialEq, Keys)]
+#[keys(either(
+    crosses,
+    extremum,
+    "give either `crosses` (a value) or `extremum` (\"max\" or \"min\"), not both"
+))]
+pub(crate) struct ConditionKeys {
+    /// a crossing of this value
+    #[key(unit = "the column's", shown = "one of `crosses` / `extremum`")]
+    crosses: Option<f64>,
+    /// with `crosses`
+    #[key(kind = "\"up\" | \"down\" | \"both\"", shown = "\"both\"")]
+    direction: Option<Direction>,
+    /// every local extremum
+    #[key(kind = "\"max\" | \"min\"", shown = "one of `crosses` / `extremum`")]
+    extremum: Option<Extremum>,
 }
 
 /// Exactly one of `crosses` (with its optional `direction`) and `extremum`.
-impl Group<EventFile> for ConditionSpec {
-    fn read(doc: &EventFile, at: &KeyPath) -> Checked<Self> {
+impl Group<ConditionKeys> for ConditionSpec {
+    fn read(doc: &ConditionKeys, at: &KeyPath) -> Checked<Self> {
         match (doc.crosses, doc.extremum) {
             (None, None) => invalid(
                 at.clone(),
@@ -55,7 +68,7 @@ impl Group<EventFile> for ConditionSpec {
         }
     }
 
-    fn write(&self, file: &mut EventFile) {
+    fn write(&self, file: &mut ConditionKeys) {
         match *self {
             ConditionSpec::Crosses { value, direction } => {
                 file.crosses = Some(value);

@@ -1,7 +1,7 @@
 //! A capability's own table inside a table of the scene (`carrier = { … }` in `[motion]`, each `[[effect]]`),
-//! declared in the capability's folder. The enclosing table registers it with one line in its
-//! [`file_table!`](super::file_table) (`part NAME: SPEC = KEY;`, or `one`/`maybe`/`each` in a table that declares
-//! its typed spec): the file field, the reference's table, the typed field, reading, writing and attaching come
+//! declared in the capability's folder. The enclosing table registers it with one field (`#[key(table)]` in a typed
+//! spec with `#[derive(Table)]`: `P`, `Option<P>` or `Vec<P>`; `#[key(part = SPEC)]` in a file form with
+//! `#[derive(Keys)]`): the file field, the reference's table, the typed field, reading, writing and attaching come
 //! from that line and [`Part`] (with [`Attach`]); [`Either`] and [`Group`] read keys of one table together.
 
 use std::path::Path;
@@ -10,7 +10,7 @@ use super::{Checked, KeyPath, Table};
 
 /// A part's keys: its declared file form, read into its typed spec and written back.
 pub(crate) trait Part: Sized {
-    /// The declared file form (a `file_table!` struct).
+    /// The declared file form (a struct with `#[derive(Keys)]`).
     type File;
     /// Its keys, for the book's reference (the file form's `TABLE`).
     const TABLE: Table;
@@ -43,8 +43,8 @@ pub(crate) trait Either<T> {
     fn set_either(&mut self, choice: Option<T>);
 }
 
-/// Keys of a table read together into one value of its typed spec (`group NAME: T { keys }` in a `file_table!`
-/// with a `spec`): the body's `shape` or `inertia` as its `Distribution`.
+/// Keys of a table read together into one value of its typed spec (`#[key(flatten = F)]` on a field of a
+/// `#[derive(Table)]` spec, `F` the keys' own `#[derive(Keys)]` struct): the body's `shape` or `inertia` as its `Distribution`.
 pub(crate) trait Group<F>: Sized {
     /// The value the keys of `file` (the table at `at`) give.
     fn read(file: &F, at: &KeyPath) -> Checked<Self>;

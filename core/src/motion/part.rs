@@ -4,7 +4,7 @@
 
 use super::keys::{AxisParts, MotionFile, MotionKind};
 use super::spec::{AxisSpec, FixedAxisSpec, HingeSpec, MotionSpec, RateSpec};
-use crate::keys::{Checked, Either, KeyPath, Part, Table, invalid};
+use crate::keys::{Checked, Either, KeyPath, Keys, Part, Table, invalid};
 
 impl Part for MotionSpec {
     type File = MotionFile;

@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{Friction, RPM, WheelControl};
-use crate::keys::{Checked, KeyPath, finite, invalid, positive};
+use crate::keys::{Checked, KeyPath, Keys, finite, invalid, positive};
 
 /// `friction.stribeck`: the extra breakaway torque (N·m) and the speed over which it fades (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -41,13 +41,19 @@ pub enum WheelMode {
 }
 
 /// A wheel's limits and friction as the scene gives them (absent: none).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Keys)]
 pub struct WheelKeys {
-    /// `max_torque` (N·m, > 0).
+    /// > 0: the motor torque is clipped to ±max_torque (`<name>_torque_cmd` keeps the command)
+    #[key(unit = "N·m")]
     pub max_torque: Option<f64>,
-    /// `max_speed_rpm` (rpm, > 0): the limit of the relative spin.
+    /// > 0: the relative spin's limit (the initial spin must be within it); at it the motor can only slow the wheel
+    #[key(unit = "rpm")]
     pub max_speed_rpm: Option<f64>,
-    /// `friction`.
+    /// friction opposing the relative spin: τ_f = −(coulomb + stribeck.torque·exp(−(Ω/stribeck.speed)²))·sign(Ω) − viscous·Ω
+    #[key(
+        kind = "{ coulomb, viscous, stribeck = { torque, speed } }",
+        unit = "N·m, N·m·s, (N·m, rad/s)"
+    )]
     pub friction: Option<FrictionKeys>,
 }
 

@@ -1,26 +1,46 @@
 //! A carrier's keys, declared once (`carrier = { … }` in `[motion]`): the file form and the reference's table
 //! ([`CarrierFile`]); [`CarrierSpec`] is a [`Part`] (read from it and written back) that [`Attach`]es to a fixed
-//! axis or hinge. `[motion]` registers it with one line, `part carrier: CarrierSpec`.
+//! axis or hinge. `[motion]` registers it with one field, `#[key(part = CarrierSpec)] carrier`.
 
 use super::Carrier;
 use super::spec::{CarrierSpec, VehicleSpec};
 use super::vehicle::Vehicle;
-use crate::keys::{Attach, Checked, KeyPath, Part, Table, file_table, invalid, key, vector};
+use crate::keys::{Attach, Checked, KeyPath, Keys, Part, Table, invalid, vector};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::profile::{Profile, ProfileKeys, ProfileKind};
 
-file_table! {
-    /// `carrier = { … }` in `[motion]`.
-    #[derive(Copy)]
-    pub(crate) struct CarrierFile(pub(super)) "[motion.carrier]",
-        "a carrier turning the axis, its point and bearings at Ω_c = rate·p(t), space axes, about the axis point" {
-        arr rate: [f64; 3] = key("[x, y, z]", "rad/s", "required", "", "space axes");
-        opt profile: ProfileKind = key("\"constant\" | \"sine\"", "–", "\"constant\"", "", "p = 1, or sin(2π freq_hz t + phase_deg)");
-        @sine;
-        arr center: [f64; 3] = key("[x, y, z]", "m", "the axis point", "from the axis point, space axes at t = 0; a point of the vehicle, turning with it", "the point the carrier turns about: the axis point then moves on a circle about it");
-        arr accel: [f64; 3] = key("[x, y, z]", "m/s²", "[0, 0, 0]", "", "the vehicle's own linear acceleration, space axes (29.43 upward = a 3 g load factor)");
-        opt accel_profile: ProfileKind = key("\"constant\" | \"sine\"", "–", "\"constant\"", "", "`accel` times 1, or times sin(2π freq_hz t + phase_deg) with the carrier's freq_hz and phase_deg");
-    }
+/// `carrier = { … }` in `[motion]`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Keys)]
+#[keys(
+    header = "[motion.carrier]",
+    about = "a carrier turning the axis, its point and bearings at Ω_c = rate·p(t), space axes, about the axis point"
+)]
+pub(crate) struct CarrierFile {
+    /// space axes
+    #[key(unit = "rad/s", shown = "required")]
+    pub(super) rate: Option<[f64; 3]>,
+    /// p = 1, or sin(2π freq_hz t + phase_deg)
+    #[key(kind = "\"constant\" | \"sine\"", shown = "\"constant\"")]
+    pub(super) profile: Option<ProfileKind>,
+    /// ≥ 0
+    #[key(unit = "Hz", shown = "required for `sine`")]
+    pub(super) freq_hz: Option<f64>,
+    /// `sine` only
+    #[key(unit = "deg", shown = "0")]
+    pub(super) phase_deg: Option<f64>,
+    /// the point the carrier turns about: the axis point then moves on a circle about it
+    #[key(
+        unit = "m",
+        shown = "the axis point",
+        origin = "from the axis point, space axes at t = 0; a point of the vehicle, turning with it"
+    )]
+    pub(super) center: Option<[f64; 3]>,
+    /// the vehicle's own linear acceleration, space axes (29.43 upward = a 3 g load factor)
+    #[key(unit = "m/s²", shown = "[0, 0, 0]")]
+    pub(super) accel: Option<[f64; 3]>,
+    /// `accel` times 1, or times sin(2π freq_hz t + phase_deg) with the carrier's freq_hz and phase_deg
+    #[key(kind = "\"constant\" | \"sine\"", shown = "\"constant\"")]
+    pub(super) accel_profile: Option<ProfileKind>,
 }
 
 impl Part for CarrierSpec {

@@ -1,5 +1,5 @@
 //! The scene file's keys for the reader: each table's keys with their type, unit, default, the origin a position
-//! is measured from, and meaning — the `TABLE` of each table's one declaration (`keys::file_table!`), which also
+//! is measured from, and meaning — the `TABLE` of each table's one declaration (`#[derive(Table)]` or `#[derive(Keys)]`), which also
 //! makes the serde form, so the two cannot drift. The book's key reference is generated from [`keys`] (the test
 //! `tests/it/book.rs`); the unit test below checks each table against the keys serde names in its message for an
 //! unknown key.

@@ -2,13 +2,13 @@
 //! `inertia` as the body's [`Distribution`], one of them required. Each failure names the key (the TOML front end adds its line); the values themselves
 //! (finite, in range) are validation's ([`SceneSpec::build`](super::SceneSpec::build)).
 
-use super::file_form::BodyFile;
+use super::file_form::DistributionKeys;
 use super::{Distribution, ShapeSpec};
 use crate::keys::{Checked, Group, KeyPath, Part, invalid};
 
 /// `shape` (read as a [`ShapeSpec`]) or `inertia`; one of them is required.
-impl Group<BodyFile> for Distribution {
-    fn read(file: &BodyFile, at: &KeyPath) -> Checked<Self> {
+impl Group<DistributionKeys> for Distribution {
+    fn read(file: &DistributionKeys, at: &KeyPath) -> Checked<Self> {
         match (&file.shape, file.inertia) {
             (None, None) => invalid(
                 at.clone(),
@@ -22,7 +22,7 @@ impl Group<BodyFile> for Distribution {
         }
     }
 
-    fn write(&self, file: &mut BodyFile) {
+    fn write(&self, file: &mut DistributionKeys) {
         match *self {
             Distribution::Shape(shape) => file.shape = Some(shape.write()),
             Distribution::Inertia(inertia) => file.inertia = Some(inertia),
