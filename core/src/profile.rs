@@ -10,7 +10,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::keys::{Checked, KeyPath, finite, invalid};
+use crate::keys::{Checked, KeyPath, Keys, finite, invalid};
 use crate::text::plain;
 
 /// A time profile p(t) ([module doc](self)).
@@ -46,13 +46,24 @@ pub(crate) enum ProfileKind {
     Step,
 }
 
-/// A profile's keys as a table gives them (each absent as `None`).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+/// A profile's keys as a table gives them (each absent as `None`), spliced into a table that has them
+/// (`#[key(flatten)]`: a torque effect, a wheel's motor).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Keys)]
 pub(crate) struct ProfileKeys {
+    /// the moment's time profile p(t): 1, sin(2π freq_hz t + phase_deg), or 1 for t_on ≤ t < t_off (else 0)
+    #[key(kind = PROFILES, shown = "\"constant\"")]
     pub(crate) profile: Option<ProfileKind>,
+    /// ≥ 0
+    #[key(unit = "Hz", shown = "required for `sine`")]
     pub(crate) freq_hz: Option<f64>,
+    /// `sine` only
+    #[key(unit = "deg", shown = "0")]
     pub(crate) phase_deg: Option<f64>,
+    /// `step` only
+    #[key(unit = "s", shown = "0")]
     pub(crate) t_on: Option<f64>,
+    /// `step` only; > t_on
+    #[key(unit = "s", shown = "never")]
     pub(crate) t_off: Option<f64>,
 }
 
@@ -211,28 +222,3 @@ impl Profile {
         Ok(self)
     }
 }
-
-/// A time profile's five keys of a table that has them (`@sine; @step;` and `profile`), read and set as one
-/// [`ProfileKeys`].
-macro_rules! profile_keys {
-    ($($file:ty),*) => {$(
-        impl $file {
-            pub(crate) fn profile_keys(&self) -> $crate::profile::ProfileKeys {
-                $crate::profile::ProfileKeys {
-                    profile: self.profile,
-                    freq_hz: self.freq_hz,
-                    phase_deg: self.phase_deg,
-                    t_on: self.t_on,
-                    t_off: self.t_off,
-                }
-            }
-
-            pub(crate) fn set_profile_keys(&mut self, keys: $crate::profile::ProfileKeys) {
-                (self.profile, self.freq_hz, self.phase_deg) = (keys.profile, keys.freq_hz, keys.phase_deg);
-                (self.t_on, self.t_off) = (keys.t_on, keys.t_off);
-            }
-        }
-    )*};
-}
-
-pub(crate) use profile_keys;

@@ -8,9 +8,7 @@ use super::spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
 use super::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
 use crate::keys::{Checked, KeyPath, Keys, Kind, Part, Table, required};
-use crate::profile::{PROFILES, Profile, ProfileKind, profile_keys};
-
-profile_keys!(EffectFile);
+use crate::profile::{Profile, ProfileKeys};
 
 /// One `[[effect]]`.
 #[derive(Debug, Clone, Default, PartialEq, Keys)]
@@ -28,21 +26,9 @@ pub(crate) struct EffectFile {
     /// the torque (amplitude for `sine`)
     #[key(unit = "N·m", shown = "required for `torque`")]
     pub(super) value: Option<[f64; 3]>,
-    /// torque: value, value·sin(2π freq_hz t + phase), or value for t_on ≤ t < t_off
-    #[key(kind = PROFILES, shown = "\"constant\"")]
-    pub(super) profile: Option<ProfileKind>,
-    /// ≥ 0
-    #[key(unit = "Hz", shown = "required for `sine`")]
-    pub(super) freq_hz: Option<f64>,
-    /// `sine` only
-    #[key(unit = "deg", shown = "0")]
-    pub(super) phase_deg: Option<f64>,
-    /// `step` only
-    #[key(unit = "s", shown = "0")]
-    pub(super) t_on: Option<f64>,
-    /// `step` only; > t_on
-    #[key(unit = "s", shown = "never")]
-    pub(super) t_off: Option<f64>,
+    /// torque: value·p(t)
+    #[key(flatten)]
+    pub(super) profile: ProfileKeys,
     /// gravity: uniform, space axes, acting at C
     #[key(unit = "m/s²", shown = "[0, 0, -9.81]")]
     pub(super) g: Option<[f64; 3]>,
@@ -92,7 +78,7 @@ impl Part for EffectSpec {
             EffectKind::Torque => EffectSpec::Torque(TorqueSpec {
                 frame: doc.frame.unwrap_or(Axes::Body),
                 value: required(key("value"), doc.value, &kind_text)?,
-                profile: Profile::read(at, &doc.profile_keys(), "a sine torque")?,
+                profile: Profile::read(at, &doc.profile, "a sine torque")?,
             }),
             EffectKind::Gravity => EffectSpec::Gravity {
                 g: doc.g.unwrap_or(DEFAULT_GRAVITY),
@@ -111,16 +97,13 @@ impl Part for EffectSpec {
 
     fn write(&self) -> EffectFile {
         match self {
-            EffectSpec::Torque(torque) => {
-                let mut file = EffectFile {
-                    kind: Some(EffectKind::Torque),
-                    frame: Some(torque.frame),
-                    value: Some(torque.value),
-                    ..EffectFile::default()
-                };
-                file.set_profile_keys(torque.profile.keys());
-                file
-            }
+            EffectSpec::Torque(torque) => EffectFile {
+                kind: Some(EffectKind::Torque),
+                frame: Some(torque.frame),
+                value: Some(torque.value),
+                profile: torque.profile.keys(),
+                ..EffectFile::default()
+            },
             EffectSpec::Gravity { g, pivot } => EffectFile {
                 kind: Some(EffectKind::Gravity),
                 g: Some(*g),

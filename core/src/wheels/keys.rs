@@ -8,7 +8,7 @@ use super::WheelKeys;
 use super::limits::WheelMode;
 use super::spec::RotorDrive;
 use crate::keys::{Checked, Group, KeyPath, Keys, Table, invalid};
-use crate::profile::{PROFILES, Profile, ProfileKind, profile_keys};
+use crate::profile::{Profile, ProfileKeys};
 
 /// One `[[body.rotor]]`: a wheel of moment of inertia J about its axis a (fixed in the body), spinning at Ω relative
 /// to the body; its momentum adds J Ω a to H (H = I ω + Σ J_k Ω_k a_k).
@@ -58,29 +58,15 @@ pub(crate) struct DriveKeys {
     /// instead of `spin_accel`: the motor torque on the wheel (the body feels its opposite); neither: Ω stays constant
     #[key(unit = "N·m")]
     torque: Option<f64>,
-    /// the motor torque's profile, as a torque effect's
-    #[key(kind = PROFILES, shown = "\"constant\"")]
-    profile: Option<ProfileKind>,
-    /// ≥ 0
-    #[key(unit = "Hz", shown = "required for `sine`")]
-    freq_hz: Option<f64>,
-    /// `sine` only
-    #[key(unit = "deg", shown = "0")]
-    phase_deg: Option<f64>,
-    /// `step` only
-    #[key(unit = "s", shown = "0")]
-    t_on: Option<f64>,
-    /// `step` only; > t_on
-    #[key(unit = "s", shown = "never")]
-    t_off: Option<f64>,
+    /// the motor torque's profile: torque·p(t)
+    #[key(flatten)]
+    profile: ProfileKeys,
     /// instead of `torque`: the motor torque commanded by a table (header `t,torque`; linear between rows), relative to the scene file
     torque_table: Option<std::path::PathBuf>,
     /// `"free"`: no motor, the wheel spins freely (friction only); without a driver a wheel holds its relative spin
     #[key(kind = "\"free\"", shown = "held")]
     mode: Option<WheelMode>,
 }
-
-profile_keys!(DriveKeys);
 
 /// The limits and friction as given (each absent: none).
 impl Group<WheelKeys> for WheelKeys {
@@ -99,8 +85,7 @@ impl Group<DriveKeys> for RotorDrive {
     fn read(doc: &DriveKeys, at: &KeyPath) -> Checked<Self> {
         let drive = drive(at, doc)?;
         if !matches!(drive, RotorDrive::Torque { .. }) {
-            const PROFILE: [&str; 5] = ["profile", "freq_hz", "phase_deg", "t_on", "t_off"];
-            if let Some(name) = doc.given().into_iter().find(|k| PROFILE.contains(k)) {
+            if let Some(name) = doc.profile.given().into_iter().next() {
                 return invalid(
                     at.clone().key(name),
                     format!(
@@ -120,7 +105,7 @@ impl Group<DriveKeys> for RotorDrive {
             RotorDrive::SpinAccel(accel) => file.spin_accel = Some(*accel),
             RotorDrive::Torque { value, profile } => {
                 file.torque = Some(*value);
-                file.set_profile_keys(profile.keys());
+                file.profile = profile.keys();
             }
         }
     }
@@ -135,9 +120,8 @@ impl Group<DriveKeys> for RotorDrive {
 
 /// A rotor's drive: at most one of `spin_accel`, `torque`, `torque_table` and `mode = "free"`.
 fn drive(table: &KeyPath, doc: &DriveKeys) -> Checked<RotorDrive> {
-    const DRIVES: [&str; 4] = ["spin_accel", "torque", "torque_table", "mode"];
-    let given = doc.given();
-    let mut present = given.into_iter().filter(|k| DRIVES.contains(k));
+    let profile = doc.profile.given();
+    let mut present = (doc.given().into_iter()).filter(|k| !profile.contains(k));
     if let (Some(first), Some(second)) = (present.next(), present.next()) {
         let message = match (first, second) {
             ("spin_accel", "torque") => {
@@ -155,7 +139,7 @@ fn drive(table: &KeyPath, doc: &DriveKeys) -> Checked<RotorDrive> {
             (Some(accel), ..) => RotorDrive::SpinAccel(accel),
             (_, Some(value), ..) => RotorDrive::Torque {
                 value,
-                profile: Profile::read(table, &doc.profile_keys(), "a sine torque")?,
+                profile: Profile::read(table, &doc.profile, "a sine torque")?,
             },
             (_, _, Some(file), _) => RotorDrive::Table(file.clone()),
             (_, _, _, Some(WheelMode::Free)) => RotorDrive::Free,

@@ -28,19 +28,27 @@ pub(crate) struct CarrierFile {
     /// `sine` only
     #[key(unit = "deg", shown = "0")]
     pub(super) phase_deg: Option<f64>,
+    /// The vehicle's keys: the point the carrier turns about and its acceleration.
+    #[key(flatten)]
+    pub(super) vehicle: VehicleKeys,
+}
+
+/// A carrier's vehicle keys, which only an axis point can take.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Keys)]
+pub(crate) struct VehicleKeys {
     /// the point the carrier turns about: the axis point then moves on a circle about it
     #[key(
         unit = "m",
         shown = "the axis point",
         origin = "from the axis point, space axes at t = 0; a point of the vehicle, turning with it"
     )]
-    pub(super) center: Option<[f64; 3]>,
+    center: Option<[f64; 3]>,
     /// the vehicle's own linear acceleration, space axes (29.43 upward = a 3 g load factor)
     #[key(unit = "m/s²", shown = "[0, 0, 0]")]
-    pub(super) accel: Option<[f64; 3]>,
+    accel: Option<[f64; 3]>,
     /// `accel` times 1, or times sin(2π freq_hz t + phase_deg) with the carrier's freq_hz and phase_deg
     #[key(kind = "\"constant\" | \"sine\"", shown = "\"constant\"")]
-    pub(super) accel_profile: Option<ProfileKind>,
+    accel_profile: Option<ProfileKind>,
 }
 
 impl Part for CarrierSpec {
@@ -55,9 +63,10 @@ impl Part for CarrierSpec {
         write(self)
     }
 
-    /// `center` and `accel` name the vehicle's point of the axis: a free body has none.
+    /// The vehicle's keys (`center`, `accel`, `accel_profile`) name the vehicle's point of the axis: a free body
+    /// has none.
     fn refuse_unattached(file: &CarrierFile, at: &KeyPath) -> Checked<()> {
-        match (file.given().into_iter()).find(|k| ["center", "accel"].contains(k)) {
+        match file.vehicle.given().first() {
             Some(name) => invalid(
                 at.clone().key(name),
                 format!(
@@ -86,7 +95,7 @@ fn read(doc: &CarrierFile, at: &KeyPath) -> Checked<CarrierSpec> {
             "a carrier needs `rate = [x, y, z]`: its angular velocity (rad/s, space axes)",
         );
     };
-    if doc.accel_profile.is_some() && doc.accel.is_none() {
+    if doc.vehicle.accel_profile.is_some() && doc.vehicle.accel.is_none() {
         return invalid(
             key("accel_profile"),
             "`accel_profile` applies to a carrier with `accel = [x, y, z]` only",
@@ -94,7 +103,7 @@ fn read(doc: &CarrierFile, at: &KeyPath) -> Checked<CarrierSpec> {
     }
     let kinds = [
         ("profile", doc.profile),
-        ("accel_profile", doc.accel_profile),
+        ("accel_profile", doc.vehicle.accel_profile),
     ];
     if let Some((name, _)) = kinds.iter().find(|(_, k)| *k == Some(ProfileKind::Step)) {
         return invalid(
@@ -121,11 +130,12 @@ fn read(doc: &CarrierFile, at: &KeyPath) -> Checked<CarrierSpec> {
         Some(ProfileKind::Sine) => shared,
         _ => Profile::Constant,
     };
-    let vehicle = (doc.center.is_some() || doc.accel.is_some()).then(|| VehicleSpec {
-        center: doc.center.unwrap_or([0.0; 3]),
-        accel: doc.accel.unwrap_or([0.0; 3]),
-        accel_profile: profile_of(doc.accel_profile),
-    });
+    let vehicle =
+        (doc.vehicle.center.is_some() || doc.vehicle.accel.is_some()).then(|| VehicleSpec {
+            center: doc.vehicle.center.unwrap_or([0.0; 3]),
+            accel: doc.vehicle.accel.unwrap_or([0.0; 3]),
+            accel_profile: profile_of(doc.vehicle.accel_profile),
+        });
     Ok(CarrierSpec {
         rate,
         profile: profile_of(doc.profile),
@@ -147,9 +157,11 @@ fn write(carrier: &CarrierSpec) -> CarrierFile {
         profile: rate.profile,
         freq_hz: sine.and_then(|k| k.freq_hz),
         phase_deg: sine.and_then(|k| k.phase_deg),
-        center: carrier.vehicle.map(|v| v.center),
-        accel: carrier.vehicle.map(|v| v.accel),
-        accel_profile: accel.and_then(|k| k.profile),
+        vehicle: VehicleKeys {
+            center: carrier.vehicle.map(|v| v.center),
+            accel: carrier.vehicle.map(|v| v.accel),
+            accel_profile: accel.and_then(|k| k.profile),
+        },
     }
 }
 
