@@ -43,6 +43,11 @@ $eulerdyn plot "$work/turbine_turn.csv" -o "$out/turbine_turn_bearings.svg" --pa
 $eulerdyn run scenarios/explorer1.toml -o "$work/explorer1.csv"
 $eulerdyn plot "$work/explorer1.csv" -o "$out/explorer1.svg" --panels omega,energy,wheel_spin
 
+# A boom held by the gravity gradient on a 500 km orbit: roll, pitch and yaw from the LVLH frame librating about
+# nadir, and the gradient's moment that drives them.
+$eulerdyn run scenarios/gravity_gradient_boom.toml -o "$work/gravity_gradient_boom.csv"
+$eulerdyn plot "$work/gravity_gradient_boom.csv" -o "$out/gravity_gradient_boom.svg" --panels lvlh,moment
+
 # A slew through three wheels that saturate at 0.05 N·m (examples/wheel_slew.rs, a PD law): the body's rate, the
 # wheels' speeds and their commanded and applied torques. SLEW_CSV: a run of it made already (the gallery test's).
 slew_csv=${SLEW_CSV:-"$work/slew.csv"}

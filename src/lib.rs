@@ -70,8 +70,8 @@ pub mod output;
 // The numerical core (core/src/, the crate eulerdyn-core), under the same paths.
 #[doc(inline)]
 pub use eulerdyn_core::{
-    body, effects, events, exact, frames, integrate, keys, kinetics, method, motion, named, panel,
-    profile, sample, scene, simulate, text, trig, wheels,
+    body, effects, events, exact, frames, integrate, keys, kinetics, method, motion, named, orbit,
+    panel, profile, sample, scene, simulate, text, trig, wheels,
 };
 
 pub use frames::{Axes, Form};

@@ -17,6 +17,7 @@ pub mod kinetics;
 pub mod method;
 pub mod motion;
 pub mod named;
+pub mod orbit;
 pub mod panel;
 pub mod profile;
 pub mod sample;

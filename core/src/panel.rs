@@ -38,6 +38,8 @@ pub enum Panel {
     WheelTorque,
     /// Each wheel's friction torque (runs whose wheels are under control: a law, a table, a limit or friction).
     WheelFriction,
+    /// The attitude from the LVLH frame of the scene's orbit: roll, pitch and yaw (rad).
+    Lvlh,
 }
 
 impl Panel {
@@ -59,15 +61,16 @@ impl Panel {
     /// ([`crate::scene::Facts::panels`]): every panel of [`Panel::ALL`], then those of [`Panel::AXIS_ONLY`] whose
     /// columns the header has (the bearings in space axes when the support moves, `moving_support`), then
     /// [`Panel::WHEELS`] when the run has `wheels` (their names), with [`Panel::WheelFriction`] when each has its
-    /// `<name>_friction` column (wheels under control).
+    /// `<name>_friction` column (wheels under control), then [`Panel::Lvlh`] when it has the LVLH angles (in orbit).
     ///
     /// ```
     /// use eulerdyn::panel::Panel;
-    /// let free = Panel::of_run(|c| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup"), false, &[]);
-    /// assert_eq!(free, Panel::ALL);
-    /// let wheel = Panel::of_run(|c| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup"), false,
-    ///     &["rw".to_string()]);
+    /// let free_columns = |c: &str| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup") && !c.ends_with("_lvlh");
+    /// assert_eq!(Panel::of_run(free_columns, false, &[]), Panel::ALL);
+    /// let wheel = Panel::of_run(free_columns, false, &["rw".to_string()]);
     /// assert_eq!(wheel.last(), Some(&Panel::WheelFriction));
+    /// let in_orbit = Panel::of_run(|c| free_columns(c) || c.ends_with("_lvlh"), false, &[]);
+    /// assert_eq!(in_orbit.last(), Some(&Panel::Lvlh));
     /// ```
     pub fn of_run(
         has: impl Fn(&str) -> bool,
@@ -82,10 +85,14 @@ impl Panel {
             });
         let friction = wheels.iter().all(|n| has(&format!("{n}_friction")));
         let wheel_panels = Panel::wheel_panels(!wheels.is_empty(), friction);
+        let lvlh = [Panel::Lvlh]
+            .into_iter()
+            .filter(|p| p.columns().iter().all(|c| has(c)));
         Panel::ALL
             .into_iter()
             .chain(axis)
             .chain(wheel_panels)
+            .chain(lvlh)
             .collect()
     }
 
@@ -123,6 +130,7 @@ impl Panel {
             Panel::WheelMomentum => "wheel_h",
             Panel::WheelTorque => "wheel_torque",
             Panel::WheelFriction => "wheel_friction",
+            Panel::Lvlh => "lvlh",
         }
     }
 
@@ -155,6 +163,7 @@ impl Panel {
             ],
             Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
             Panel::Theta => &["theta"],
+            Panel::Lvlh => &["roll_lvlh", "pitch_lvlh", "yaw_lvlh"],
             Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
                 &[]
             }
@@ -180,6 +189,7 @@ impl Panel {
                 Some("only runs of scenes with `bearings` have the bearing forces")
             }
             Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
+            Panel::Lvlh => Some("only runs of scenes with an [orbit] have the LVLH angles"),
             Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque => {
                 Some("only runs of scenes with [[body.rotor]] have the wheels' columns")
             }
@@ -255,7 +265,7 @@ impl Panel {
         Panel::ALL.map(Panel::name).join(", ")
             + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
                (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_h, \
-               wheel_torque, wheel_friction (wheels under control)"
+               wheel_torque, wheel_friction (wheels under control), and for runs in orbit: lvlh"
     }
 }
 
@@ -274,7 +284,7 @@ impl FromStr for Panel {
             .chain(Panel::AXIS_ONLY)
             .chain([Panel::BearingsSpace])
             .chain(Panel::WHEELS)
-            .chain([Panel::WheelFriction])
+            .chain([Panel::WheelFriction, Panel::Lvlh])
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }

@@ -1,6 +1,7 @@
 //! One row of a run: the kinetic state and moment at a time, and which optional columns a run writes.
 
 use std::borrow::Cow;
+use std::sync::Arc;
 
 use nalgebra::UnitQuaternion;
 
@@ -159,14 +160,27 @@ pub struct ColumnSet {
 /// Columns a capability adds to a run ([`ColumnSet::groups`]), and how their values are read from a row:
 /// `values(sample, columns, out)` appends one value per column, NaN where the sample lacks one. Two groups are
 /// equal when they write the same columns.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub struct ColumnGroup {
     /// What adds it, as the book's column reference names it (`theta`, `support`, `potential`, `rotors`…).
     pub name: &'static str,
     /// The columns, in order.
     pub columns: Vec<Column>,
-    /// Appends one row's values of `columns`.
-    pub values: fn(&Sample, &[Column], &mut Vec<f64>),
+    /// Appends one row's values of `columns` (a function of the row, and of what the group was made with: an
+    /// orbit's LVLH frame).
+    pub values: RowValues,
+}
+
+/// How a [`ColumnGroup`] reads one row's values.
+pub type RowValues = Arc<dyn Fn(&Sample, &[Column], &mut Vec<f64>) + Send + Sync>;
+
+impl std::fmt::Debug for ColumnGroup {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        (f.debug_struct("ColumnGroup"))
+            .field("name", &self.name)
+            .field("columns", &self.columns)
+            .finish_non_exhaustive()
+    }
 }
 
 impl PartialEq for ColumnGroup {

@@ -67,6 +67,9 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
         }
     }
     attitude_line(w, scene);
+    if let Some(orbit) = &scene.orbit {
+        line(w, "orbit", &orbit.describe());
+    }
     effect_lines(w, scene);
     let steps = method_lines(w, scene);
     output_lines(w, scene);

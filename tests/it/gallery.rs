@@ -56,6 +56,7 @@ fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
         made,
         [
             "explorer1.svg",
+            "gravity_gradient_boom.svg",
             "heavy_top.svg",
             "motor_runup_bearings.svg",
             "slew_wheels.svg",

@@ -23,6 +23,7 @@ mod hard_cases;
 mod integrate_methods;
 mod invariant_axis;
 mod messages;
+mod orbit;
 mod output_paths;
 mod output_safety;
 mod plot;

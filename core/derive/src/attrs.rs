@@ -88,42 +88,39 @@ pub fn doc_text(attrs: &[Attribute]) -> Option<String> {
     (!text.is_empty()).then_some(text)
 }
 
-/// `either(a, b, "message")` or `either(a, b, "message", T::VA, T::VB)`: keys that exclude each other, the second
-/// named by the message; with the variants, the pair also read and written as the choice `T`.
+/// `either(a, b, …, "message")` or `either(a, b, "message", T::VA, T::VB)`: keys that exclude each other, the later
+/// of two given named by the message; with the variants, a pair also read and written as the choice `T`.
 pub struct Either {
-    pub a: Ident,
-    pub b: Ident,
+    pub keys: Vec<Ident>,
     pub message: LitStr,
     pub choice: Option<(Path, Path)>,
 }
 
 impl Either {
-    /// The pair from the content of `either(…)`.
+    /// The keys from the content of `either(…)`.
     pub fn parse(input: syn::parse::ParseStream) -> syn::Result<Self> {
         let content;
         syn::parenthesized!(content in input);
         let items = Punctuated::<Expr, Token![,]>::parse_terminated(&content)?;
         let span = items.span();
-        let mut items = items.into_iter();
-        let ident = |e: Option<Expr>| match e {
-            Some(Expr::Path(p)) if p.path.get_ident().is_some() => {
-                Ok(p.path.get_ident().cloned().unwrap())
-            }
-            _ => Err(syn::Error::new(
-                span,
-                "either(a, b, \"message\"): a and b are keys",
-            )),
-        };
-        let (a, b) = (ident(items.next())?, ident(items.next())?);
-        let message = match items.next() {
+        let mut keys = Vec::new();
+        let mut rest = items.into_iter().peekable();
+        while let Some(Expr::Path(p)) = rest.peek() {
+            let Some(ident) = p.path.get_ident().cloned() else {
+                break;
+            };
+            keys.push(ident);
+            rest.next();
+        }
+        let message = match rest.next() {
             Some(Expr::Lit(syn::ExprLit {
                 lit: syn::Lit::Str(s),
                 ..
-            })) => s,
+            })) if keys.len() >= 2 => s,
             _ => {
                 return Err(syn::Error::new(
                     span,
-                    "either(a, b, \"message\"): the third item is the message",
+                    "either(a, b, …, \"message\"): two keys or more, then the message",
                 ));
             }
         };
@@ -131,19 +128,18 @@ impl Either {
             Some(Expr::Path(p)) => Some(p.path),
             _ => None,
         };
-        let choice = match (path(items.next()), path(items.next())) {
-            (Some(va), Some(vb)) => Some((va, vb)),
+        let choice = match (path(rest.next()), path(rest.next())) {
+            (Some(va), Some(vb)) if keys.len() == 2 => Some((va, vb)),
             (None, None) => None,
             _ => {
                 return Err(syn::Error::new(
                     span,
-                    "either(a, b, \"message\", T::A, T::B): give both variants or neither",
+                    "either(a, b, \"message\", T::A, T::B): a pair's two variants, or none",
                 ));
             }
         };
         Ok(Either {
-            a,
-            b,
+            keys,
             message,
             choice,
         })

@@ -288,11 +288,15 @@ fn given_entry(field: &FileField) -> TokenStream {
 /// typed choice (`keys::Either`).
 fn exclusive(form: &FileForm) -> (TokenStream, TokenStream) {
     let pairs = form.eithers.iter().map(|e| {
-        let (a, b, message) = (&e.a, &e.b, &e.message);
-        let b_name = b.to_string();
-        quote!(if self.#a.is_some() && self.#b.is_some() {
-            return crate::keys::invalid(at.clone().key(#b_name), #message);
-        })
+        let message = &e.message;
+        let checks = e.keys.iter().enumerate().skip(1).map(|(j, later)| {
+            let earlier = &e.keys[..j];
+            let name = later.to_string();
+            quote!(if self.#later.is_some() && (false #(|| self.#earlier.is_some())*) {
+                return crate::keys::invalid(at.clone().key(#name), #message);
+            })
+        });
+        quote!(#(#checks)*)
     });
     let groups = form
         .fields
@@ -305,7 +309,7 @@ fn exclusive(form: &FileForm) -> (TokenStream, TokenStream) {
     let name = &form.ident;
     let choices = form.eithers.iter().filter_map(|e| {
         let (va, vb) = e.choice.as_ref()?;
-        let (a, b) = (&e.a, &e.b);
+        let (a, b) = (&e.keys[0], &e.keys[1]);
         let enum_path: Vec<_> = va
             .segments
             .iter()

@@ -34,8 +34,8 @@ pub fn derive_keys(input: TokenStream) -> TokenStream {
     expand(input, keys::derive)
 }
 
-/// A table's typed spec: `#[table(file = F, header = "[x]", about = "…", what = "a thing", derive(Copy))]` on
-/// the struct, `#[key(…)]` on its fields.
+/// A table's typed spec: `#[table(file = F, header = "[x]", about = "…", what = "a thing", either(a, b, "…"),
+/// derive(Copy))]` on the struct, `#[key(…)]` on its fields.
 #[proc_macro_derive(Table, attributes(key, table))]
 pub fn derive_table(input: TokenStream) -> TokenStream {
     expand(input, table::derive)

@@ -23,6 +23,7 @@ struct TableAttr {
     about: Option<Expr>,
     what: Option<Expr>,
     derives: Vec<syn::Path>,
+    eithers: Vec<crate::attrs::Either>,
 }
 
 /// One spec field's code: its file field, its reading, writing and files; its parameter of `of` when required.
@@ -36,7 +37,7 @@ struct FieldCode {
 }
 
 pub fn derive(input: &DeriveInput) -> syn::Result<TokenStream> {
-    let attr = table_attr(input)?;
+    let mut attr = table_attr(input)?;
     let (Some(file), Some(header), Some(about)) = (&attr.file, &attr.header, &attr.about) else {
         return Err(syn::Error::new_spanned(
             &input.ident,
@@ -62,7 +63,7 @@ pub fn derive(input: &DeriveInput) -> syn::Result<TokenStream> {
         ident: file.clone(),
         table: Some((header.clone(), about.clone())),
         fields: Vec::new(),
-        eithers: Vec::new(),
+        eithers: std::mem::take(&mut attr.eithers),
         parts: None,
         own_spec: false,
     };
@@ -144,6 +145,8 @@ fn table_attr(input: &DeriveInput) -> syn::Result<TableAttr> {
                 attr.about = Some(meta.value()?.parse()?);
             } else if meta.path.is_ident("what") {
                 attr.what = Some(meta.value()?.parse()?);
+            } else if meta.path.is_ident("either") {
+                attr.eithers.push(crate::attrs::Either::parse(meta.input)?);
             } else if meta.path.is_ident("derive") {
                 meta.parse_nested_meta(|d| {
                     attr.derives.push(d.path);
@@ -151,7 +154,7 @@ fn table_attr(input: &DeriveInput) -> syn::Result<TableAttr> {
                 })?;
             } else {
                 return Err(meta.error(
-                    "unknown `table` attribute; expected file, header, about, what or derive",
+                    "unknown `table` attribute; expected file, header, about, what, either or derive",
                 ));
             }
             Ok(())

@@ -1,6 +1,8 @@
 //! Gravity's columns: its potential energy V = −m g·r_C and the total T + V, after an axis motion's leading
 //! columns (`crate::motion::axis_columns`).
 
+use std::sync::Arc;
+
 use crate::sample::{Column, ColumnGroup, Sample};
 
 /// The columns a run under gravity writes, `potential` and `energy_total`.
@@ -13,7 +15,7 @@ pub fn potential_columns() -> ColumnGroup {
     ColumnGroup {
         name: "potential",
         columns: POTENTIAL_COLUMNS.to_vec(),
-        values: potential,
+        values: Arc::new(potential),
     }
 }
 

@@ -2,10 +2,11 @@
 //! asks for at (t, q, ω); [`TorqueFree`] is none (the compiler removes it, so a torque-free run pays nothing), and
 //! [`EffectMoments`] sums a scene's torques, gravity and damping.
 
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 use super::{Effect, TorqueSum, UserMoment};
 use crate::frames::{Axes, StateRotation};
+use crate::orbit::CircularOrbit;
 
 /// The external moment acting on the body, about the moment center.
 pub trait AppliedMoment {
@@ -76,11 +77,18 @@ pub struct EffectMoments {
     laws: Box<[UserMoment]>,
 }
 
-/// Gravity g_s acting at C, which sits at ρ_C from the moment center (body axes).
+/// Gravity's moment: uniform g_s acting at C, which sits at ρ_C from the moment center (body axes), or an orbit's
+/// gradient on a body of inertia I about C.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct GravityMoment {
-    g_s: Vector3<f64>,
-    rho_c_b: Vector3<f64>,
+enum GravityMoment {
+    Uniform {
+        g_s: Vector3<f64>,
+        rho_c_b: Vector3<f64>,
+    },
+    Gradient {
+        orbit: CircularOrbit,
+        inertia_c_b: Matrix3<f64>,
+    },
 }
 
 impl EffectMoments {
@@ -103,7 +111,7 @@ impl EffectMoments {
                     value,
                     profile,
                 } => torques_s.add(value, profile),
-                Effect::Gravity { g_s, pivot_b } => gravity.push(GravityMoment {
+                Effect::Gravity { g_s, pivot_b } => gravity.push(GravityMoment::Uniform {
                     g_s: *g_s,
                     rho_c_b: -pivot_b,
                 }),
@@ -116,6 +124,12 @@ impl EffectMoments {
                     frame: Axes::Space,
                     table,
                 } => torques_s.add_table(table),
+                Effect::GravityGradient { orbit, inertia_c_b } => {
+                    gravity.push(GravityMoment::Gradient {
+                        orbit: *orbit,
+                        inertia_c_b: *inertia_c_b,
+                    })
+                }
                 Effect::User(user) => laws.push(user.clone()),
             }
         }
@@ -161,7 +175,8 @@ impl EffectMoments {
     }
 
     /// The moments that depend on the attitude, body axes, given the rotation `to_body`: v_s ↦ Rᵀ v_s:
-    /// Rᵀ M_s(t) for the space-axis torques and ρ_C × m (Rᵀ g_s) for gravity.
+    /// Rᵀ M_s(t) for the space-axis torques, ρ_C × m (Rᵀ g_s) for gravity and 3n² n̂_b × (I n̂_b) with
+    /// n̂_b = Rᵀ n̂_s(t) for an orbit's gravity gradient.
     #[inline(always)]
     fn attitude_moment_b(
         &self,
@@ -174,8 +189,14 @@ impl EffectMoments {
             to_body(&self.torques_s.at(t))
         };
         for gravity in &self.gravity {
-            let weight_b = to_body(&gravity.g_s) * self.mass;
-            m_b += gravity.rho_c_b.cross(&weight_b);
+            m_b += match gravity {
+                GravityMoment::Uniform { g_s, rho_c_b } => {
+                    rho_c_b.cross(&(to_body(g_s) * self.mass))
+                }
+                GravityMoment::Gradient { orbit, inertia_c_b } => {
+                    orbit.gravity_gradient_b(&to_body(&orbit.nadir_s(t)), inertia_c_b)
+                }
+            };
         }
         m_b
     }
@@ -285,6 +306,7 @@ mod tests {
     use super::*;
     use crate::effects::Effect;
     use crate::frames::{Axes, StateRotation};
+    use crate::orbit::CircularOrbit;
     use crate::profile::Profile;
     use nalgebra::{UnitQuaternion, Vector3};
 
@@ -338,6 +360,10 @@ mod tests {
                     Axes::Body => table.at(t),
                     Axes::Space => q.inverse_transform_vector(&table.at(t)),
                 },
+                Effect::GravityGradient { orbit, inertia_c_b } => orbit.gravity_gradient_b(
+                    &q.inverse_transform_vector(&orbit.nadir_s(t)),
+                    &inertia_c_b,
+                ),
                 Effect::User(ref user) => user.moment_b(t, q, omega_b),
             };
         }
@@ -372,6 +398,13 @@ mod tests {
             pivot_b: v(0.01, -0.02, -0.05),
         });
         effects.push(Effect::Damping { c: 0.3 });
+        // A close orbit (r = 7000 km) and a large body, so that the gradient's moment is of the others' order.
+        effects.push(Effect::GravityGradient {
+            orbit: CircularOrbit::new(7.0e6, 0.9, 0.4, 1.1),
+            inertia_c_b: nalgebra::Matrix3::new(
+                9.0e5, 1.0e4, -2.0e4, 1.0e4, 6.0e5, 3.0e4, -2.0e4, 3.0e4, 3.0e5,
+            ),
+        });
         effects
     }
 

@@ -2,7 +2,7 @@
 
 use super::Effect;
 use crate::profile::Profile;
-use crate::text::{plain, vec3};
+use crate::text::{for_people, plain, vec3};
 
 impl Effect {
     /// The effect in words: its kind, values, axes and time profile.
@@ -55,6 +55,11 @@ impl Effect {
                     frame.name()
                 )
             }
+            Effect::GravityGradient { orbit, .. } => format!(
+                "gravity gradient of the circular orbit r = {} km (n = {} rad/s): M = 3 n^2 nadir_b x (I nadir_b)",
+                for_people(orbit.radius() / 1e3),
+                for_people(orbit.mean_motion())
+            ),
             Effect::User(user) => format!(
                 "user's moment law \"{}\" (a Rust or Python function of t, q, omega) in {} axes",
                 user.name,

@@ -50,7 +50,7 @@ pub(crate) struct EffectFile {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Kind)]
 #[kind(
     what = "effect type",
-    missing = "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\" or \"torque_table\""
+    missing = "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\", \"torque_table\" or \"gravity_gradient\""
 )]
 pub(crate) enum EffectKind {
     #[kind(
@@ -64,6 +64,8 @@ pub(crate) enum EffectKind {
     Damping,
     #[kind("torque_table", takes(file, frame, interpolation))]
     TorqueTable,
+    #[kind("gravity_gradient")]
+    GravityGradient,
 }
 
 impl Part for EffectSpec {
@@ -87,6 +89,7 @@ impl Part for EffectSpec {
             EffectKind::Damping => EffectSpec::Damping {
                 c: required(key("c"), doc.c, &kind_text)?,
             },
+            EffectKind::GravityGradient => EffectSpec::GravityGradient,
             EffectKind::TorqueTable => EffectSpec::TorqueTable(TorqueTableSpec {
                 file: required(key("file"), doc.file.clone(), &kind_text)?,
                 frame: doc.frame.unwrap_or(Axes::Body),
@@ -113,6 +116,10 @@ impl Part for EffectSpec {
             EffectSpec::Damping { c } => EffectFile {
                 kind: Some(EffectKind::Damping),
                 c: Some(*c),
+                ..EffectFile::default()
+            },
+            EffectSpec::GravityGradient => EffectFile {
+                kind: Some(EffectKind::GravityGradient),
                 ..EffectFile::default()
             },
             EffectSpec::TorqueTable(table) => EffectFile {

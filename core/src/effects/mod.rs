@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 mod columns;
 mod compiled;
@@ -23,6 +23,7 @@ pub use user::{MomentLaw, UserMoment};
 pub(crate) use validate::validate_effects;
 
 use crate::frames::Axes;
+use crate::orbit::CircularOrbit;
 use crate::profile::Profile;
 use crate::trig;
 
@@ -61,6 +62,14 @@ pub enum Effect {
         /// The table.
         table: Arc<TorqueTable>,
     },
+    /// The gravity gradient of a circular orbit on a free body about C: M = 3n² n̂_b × (I n̂_b)
+    /// ([`CircularOrbit::gravity_gradient_b`]).
+    GravityGradient {
+        /// The orbit.
+        orbit: CircularOrbit,
+        /// The body's inertia about C, body axes (kg·m²).
+        inertia_c_b: Matrix3<f64>,
+    },
     /// The user's own law ([`MomentLaw`]), named; added to a built scene by
     /// [`Scene::with_moment`](crate::scene::Scene::with_moment).
     User(UserMoment),
@@ -74,6 +83,7 @@ impl Effect {
             Effect::Gravity { .. } => "gravity",
             Effect::Damping { .. } => "damping",
             Effect::TorqueTable { .. } => "torque_table",
+            Effect::GravityGradient { .. } => "gravity_gradient",
             Effect::User(_) => "user",
         }
     }
@@ -89,7 +99,8 @@ impl Effect {
 
     /// An upper bound of the moment's magnitude over all times and attitudes, on a body of mass `mass` (kg), N·m:
     /// |value| for a torque (every profile factor is at most 1 in magnitude), m |g| |pivot| for gravity (|ρ_C| =
-    /// |pivot|), [`TorqueTable::largest_moment`] for a table; `None` for damping, whose moment −c ω depends on ω and
+    /// |pivot|), [`TorqueTable::largest_moment`] for a table, 3n²‖I‖ for a gravity gradient (|n̂ × I n̂| ≤ ‖I‖);
+    /// `None` for damping, whose moment −c ω depends on ω and
     /// whose power −c|ω|² is never positive, and for the user's law, which has no known bound.
     pub fn largest_moment(&self, mass: f64) -> Option<f64> {
         match self {
@@ -97,6 +108,9 @@ impl Effect {
             Effect::Gravity { g_s, pivot_b } => Some(mass * g_s.norm() * pivot_b.norm()),
             Effect::Damping { .. } => None,
             Effect::TorqueTable { table, .. } => Some(table.largest_moment()),
+            Effect::GravityGradient { orbit, inertia_c_b } => {
+                Some(3.0 * orbit.mean_motion().powi(2) * inertia_c_b.norm())
+            }
             Effect::User(_) => None,
         }
     }

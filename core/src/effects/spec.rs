@@ -27,6 +27,8 @@ pub enum EffectSpec {
     },
     /// `type = "torque_table"`: a moment tabulated in a CSV file.
     TorqueTable(TorqueTableSpec),
+    /// `type = "gravity_gradient"`: the gravity gradient of the scene's `[orbit]` on a free body.
+    GravityGradient,
 }
 
 /// `type = "torque_table"`: the rows (t, M_x, M_y, M_z) of `file`, interpolated, zero outside the table's range.
@@ -140,13 +142,14 @@ impl EffectSpec {
         EffectSpec::Damping { c }
     }
 
-    /// The effect's `type` in a scene file: `torque`, `gravity`, `damping` or `torque_table`.
+    /// The effect's `type` in a scene file: `torque`, `gravity`, `damping`, `torque_table` or `gravity_gradient`.
     pub fn kind(&self) -> &'static str {
         match self {
             EffectSpec::Torque(_) => "torque",
             EffectSpec::Gravity { .. } => "gravity",
             EffectSpec::Damping { .. } => "damping",
             EffectSpec::TorqueTable(_) => "torque_table",
+            EffectSpec::GravityGradient => "gravity_gradient",
         }
     }
 }

@@ -3,25 +3,42 @@
 
 use std::sync::Arc;
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::spec::{EffectSpec, TorqueSpec};
 use super::{Effect, TorqueTable};
+use crate::body::RigidBody;
 use crate::keys::{Checked, KeyPath, finite, invalid, vector};
+use crate::orbit::CircularOrbit;
 
-/// Every `[[effect]]` of `specs`, in order, and at most one gravity (its pivot is the body's one fixed point) on a
-/// body of `mass` (kg). `axis_point_b` is the axis point of a fixed-axis or hinge motion from the mass center,
-/// gravity's moment center there; other positions are turned from the reference origin to the mass center
-/// `center_b`.
+/// Every `[[effect]]` of `specs`, in order, and at most one gravity (its pivot is the body's one fixed point) on
+/// `body`. `axis_point_b` is the axis point of a fixed-axis or hinge motion from the mass center, gravity's moment
+/// center there; other positions are turned from the reference origin to the mass center `center_b`. The
+/// environment's effects take the body along `orbit`.
 pub(crate) fn validate_effects(
     specs: &[EffectSpec],
     axis_point_b: Option<&Vector3<f64>>,
-    mass: f64,
+    body: &RigidBody,
     center_b: &Vector3<f64>,
+    orbit: Option<&CircularOrbit>,
 ) -> Checked<Vec<Effect>> {
+    let on = Placement {
+        axis_point_b,
+        center_b,
+        inertia_c_b: body.inertia_c(),
+        orbit,
+    };
     let effects = (specs.iter().enumerate())
-        .map(|(i, e)| validate_effect(i, e, axis_point_b, center_b))
+        .map(|(i, e)| validate_effect(i, e, &on))
         .collect::<Checked<Vec<_>>>()?;
+    let gradient = (effects.iter()).position(|e| matches!(e, Effect::GravityGradient { .. }));
+    if let (Some(index), true) = (gradient, effects.iter().any(|e| e.gravity().is_some())) {
+        return invalid(
+            KeyPath::root().key("effect").index(index).key("type"),
+            "a gravity gradient acts on a free body in orbit, about C: it does not combine with uniform `gravity` \
+             about a pivot",
+        );
+    }
     let second_gravity = (specs.iter().enumerate())
         .filter(|(_, e)| matches!(e, EffectSpec::Gravity { .. }))
         .nth(1);
@@ -31,7 +48,7 @@ pub(crate) fn validate_effects(
             "only one gravity effect is allowed: its pivot is the single fixed point of the body",
         );
     }
-    effect_moments_in_range(&effects, mass)?;
+    effect_moments_in_range(&effects, body.mass())?;
     Ok(effects)
 }
 
@@ -68,16 +85,39 @@ fn effect_moments_in_range(effects: &[Effect], mass: f64) -> Checked<()> {
     Ok(())
 }
 
-/// One effect; `axis_point` is the axis point of a fixed-axis or hinge motion, which is gravity's moment center.
-fn validate_effect(
-    index: usize,
-    doc: &EffectSpec,
-    axis_point: Option<&Vector3<f64>>,
-    center_b: &Vector3<f64>,
-) -> Checked<Effect> {
+/// Where the effects act: an axis motion's axis point (gravity's moment center there), the mass center from the
+/// reference origin, the body's inertia about C and the orbit.
+struct Placement<'a> {
+    axis_point_b: Option<&'a Vector3<f64>>,
+    center_b: &'a Vector3<f64>,
+    inertia_c_b: &'a Matrix3<f64>,
+    orbit: Option<&'a CircularOrbit>,
+}
+
+/// One effect, placed `on` the body.
+fn validate_effect(index: usize, doc: &EffectSpec, on: &Placement) -> Checked<Effect> {
     let table = KeyPath::root().key("effect").index(index);
     let key = |name: &str| table.clone().key(name);
+    let (axis_point, center_b) = (on.axis_point_b, on.center_b);
     Ok(match *doc {
+        EffectSpec::GravityGradient => match (on.orbit, axis_point) {
+            (None, _) => {
+                return invalid(
+                    key("type"),
+                    "effect type = \"gravity_gradient\" needs an `[orbit]` (altitude_km or radius_km)",
+                );
+            }
+            (Some(_), Some(_)) => {
+                return invalid(
+                    key("type"),
+                    "a gravity gradient acts on a free body about C; a fixed axis or hinge is not in orbit",
+                );
+            }
+            (Some(orbit), None) => Effect::GravityGradient {
+                orbit: *orbit,
+                inertia_c_b: *on.inertia_c_b,
+            },
+        },
         EffectSpec::Torque(torque) => validate_torque(&table, &torque)?,
         // The table is read here, once: its errors name the file and the row.
         EffectSpec::TorqueTable(ref spec) => Effect::TorqueTable {

@@ -3,6 +3,8 @@
 //! eq. 8.10); the support's θ̇, θ̈, force and drive moment; the bearings' forces; and, after gravity's potential
 //! (appended in the third round, so that earlier columns keep their places), the support's moment about A.
 
+use std::sync::Arc;
+
 use nalgebra::Vector3;
 
 use crate::frames::Vector;
@@ -64,7 +66,7 @@ fn group(
     ColumnGroup {
         name,
         columns: columns.to_vec(),
-        values,
+        values: Arc::new(values),
     }
 }
 

@@ -133,10 +133,12 @@ pub fn separatrix_distance(scene: &Scene) -> Option<f64> {
     (two_e > 0.0).then(|| (h2 - two_e * i2) / (two_e * (i3 - i1)))
 }
 
-/// Everything `check` warns about in a valid scene (unit slips in its spec, the separatrix).
+/// Everything `check` warns about in a valid scene (unit slips in its spec, a torque-free body's separatrix).
 pub fn warnings(scene: &Scene) -> Vec<String> {
     let mut out = unit_slips(&scene.spec);
-    if let Some(delta) = separatrix_distance(scene).filter(|d| d.abs() < SEPARATRIX_DISTANCE) {
+    let torque_free = scene.effects.is_empty();
+    let near = separatrix_distance(scene).filter(|d| torque_free && d.abs() < SEPARATRIX_DISTANCE);
+    if let Some(delta) = near {
         out.push(format!(
             "the initial omega lies near the separatrix of this asymmetric body (delta = (H^2 - 2E*I2) / \
              (2E*(I3 - I1)) = {delta:.2e}, within {SEPARATRIX_DISTANCE:e}): tiny changes of omega0 or the inertia \

@@ -14,6 +14,7 @@ use super::motion::Motion;
 use super::spec::SceneSpec;
 use crate::effects::potential_columns;
 use crate::motion::axis_columns::AxisColumns;
+use crate::orbit::{CircularOrbit, lvlh_columns};
 use crate::sample::{ColumnGroup, ColumnSet};
 
 /// `[solver]`, validated.
@@ -52,10 +53,18 @@ impl Scene {
     }
 
     /// The optional columns a run of `motion` with `effects` writes, in order: an axis motion's leading groups,
-    /// gravity's potential, the axis motion's trailing group, then the capabilities' ([`Motion::capability_columns`]).
-    pub fn run_columns(motion: &Motion, effects: &[Effect]) -> ColumnSet {
+    /// gravity's potential, the axis motion's trailing group, the capabilities' ([`Motion::capability_columns`]),
+    /// then an orbit's LVLH angles.
+    pub fn run_columns(
+        motion: &Motion,
+        effects: &[Effect],
+        orbit: Option<&CircularOrbit>,
+    ) -> ColumnSet {
         let gravity = crate::effects::gravity(effects).is_some();
-        Self::own_columns(motion.axis_columns(), gravity, motion.capability_columns())
+        let mut columns =
+            Self::own_columns(motion.axis_columns(), gravity, motion.capability_columns());
+        columns.groups.extend(orbit.copied().map(lvlh_columns));
+        columns
     }
 
     /// Every optional column of a scene's own (an axis motion's with force, H_s integrated and bearings, and the
@@ -110,6 +119,8 @@ pub struct Scene {
     pub effects: Vec<Effect>,
     /// `[[event]]`s to locate between the rows.
     pub events: Vec<Event>,
+    /// `[orbit]`: where the environment's effects take the body, and the frame of the LVLH columns.
+    pub orbit: Option<CircularOrbit>,
     /// `[solver]`.
     pub solver: SolverConfig,
     /// Row times: k·every, then t_end.

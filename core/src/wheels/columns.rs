@@ -1,6 +1,8 @@
 //! A body's wheels' columns, written after all others: per wheel `<name>_spin` (rad/s), `<name>_h` (N·m·s) and
 //! `<name>_torque` (N·m), and under control `<name>_torque_cmd` and `<name>_friction` (N·m).
 
+use std::sync::Arc;
+
 use std::borrow::Cow;
 
 use super::gyrostat::Gyrostat;
@@ -59,9 +61,9 @@ pub fn columns(names: &[String], controlled: bool) -> ColumnGroup {
         name: "rotors",
         columns: rotor_columns(names, controlled),
         values: if controlled {
-            wheel_values::<5>
+            Arc::new(wheel_values::<5>)
         } else {
-            wheel_values::<3>
+            Arc::new(wheel_values::<3>)
         },
     }
 }

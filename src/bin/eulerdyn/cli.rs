@@ -130,11 +130,12 @@ pub struct PlotArgs {
     /// Panels to draw, comma-separated, in the order given: h_body, h_space, moment, omega, energy, drift (every
     /// run has these six); theta, support, bearings (and bearings_space, the same in space axes) for fixed_axis
     /// and hinge runs; wheel_spin, wheel_h, wheel_torque (with the friction dashed) for runs with wheels
-    /// ([[body.rotor]]) and wheel_friction for wheels under control. `all`, alone: every panel the run has.
+    /// ([[body.rotor]]) and wheel_friction for wheels under control; lvlh (roll, pitch, yaw from the LVLH frame)
+    /// for runs in orbit. `all`, alone: every panel the run has.
     ///
     /// Default: the panels the run has (and `all`): the six, then theta and support for a fixed_axis or hinge
-    /// run, bearings when it has bearings, and wheel_spin, wheel_h and wheel_torque when it has wheels, with
-    /// wheel_friction when they are under control.
+    /// run, bearings when it has bearings, wheel_spin, wheel_h and wheel_torque when it has wheels, with
+    /// wheel_friction when they are under control, and lvlh in orbit.
     #[arg(long, value_name = "LIST")]
     pub panels: Option<String>,
     /// Figure width and height in centimetres (at 96 pixels per inch), e.g. 16,12. Default: 16 cm wide, as

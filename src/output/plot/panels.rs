@@ -182,6 +182,15 @@ fn curves_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
         Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
             wheels_panel(run, panel)
         }
+        Panel::Lvlh => PanelPlot::linear(
+            "Attitude from LVLH (3-2-1: yaw, pitch, roll)",
+            "angle (rad)",
+            vec![
+                single(run, "roll_lvlh", "roll", RED),
+                single(run, "pitch_lvlh", "pitch", GREEN),
+                single(run, "yaw_lvlh", "yaw", BLUE),
+            ],
+        ),
     }
 }
 

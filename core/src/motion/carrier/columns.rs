@@ -1,5 +1,7 @@
 //! The carrier's columns: its rate Ω_c (rad/s, space axes), written after the support's moment `M_sup_s_*`.
 
+use std::sync::Arc;
+
 use nalgebra::Vector3;
 
 use crate::sample::{Column, ColumnGroup, Sample};
@@ -33,7 +35,7 @@ pub fn columns() -> ColumnGroup {
     ColumnGroup {
         name: "carrier",
         columns: CARRIER_COLUMNS.to_vec(),
-        values: omega_c_s,
+        values: Arc::new(omega_c_s),
     }
 }
 

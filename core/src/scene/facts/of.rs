@@ -37,10 +37,10 @@ impl Facts {
             invariants: invariants(scene, moving_support),
             closed_form: oracle.as_ref().map(Oracle::kind),
             moving_support,
-            panels: panels(&scene.motion, moving_support),
+            panels: panels(&scene.motion, moving_support, scene.orbit.is_some()),
             check: Some(CheckNumbers::of(scene)),
             oracle,
-            columns: Scene::run_columns(&scene.motion, &scene.effects),
+            columns: Scene::run_columns(&scene.motion, &scene.effects, scene.orbit.as_ref()),
         }
     }
 }
@@ -86,8 +86,8 @@ fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
     }
 }
 
-/// The panels of a run of `motion` ([`Facts::panels`]).
-fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
+/// The panels of a run of `motion`, in orbit or not ([`Facts::panels`]).
+fn panels(motion: &Motion, moving_support: bool, orbit: bool) -> Vec<Panel> {
     let mut panels = Panel::ALL.to_vec();
     if let Some(axis) = motion.axis() {
         panels.extend([Panel::Theta, Panel::Support]);
@@ -101,5 +101,6 @@ fn panels(motion: &Motion, moving_support: bool) -> Vec<Panel> {
     if let Some(g) = motion.gyrostat() {
         panels.extend(g.panels());
     }
+    panels.extend([Panel::Lvlh].into_iter().filter(|_| orbit));
     panels
 }

@@ -11,9 +11,10 @@ use super::{AttitudeSpec, Distribution, InertiaSpec, ShapeSpec};
 use crate::effects::EffectSpec;
 use crate::events::EventSpec;
 use crate::frames::Form;
-use crate::keys::{Keys, Kind, Table};
+use crate::keys::{Checked, Group, KeyPath, Keys, Kind, Table};
 use crate::method::{Backend, Method};
 use crate::motion::spec::MotionSpec;
+use crate::orbit::OrbitSpec;
 use crate::wheels::RotorSpec;
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).
@@ -35,6 +36,9 @@ pub struct SceneSpec {
     /// the state at t = 0: `[initial]`
     #[key(table, shown = "at rest, identity attitude")]
     pub initial: Option<InitialSpec>,
+    /// a circular orbit about the Earth, for the environment's effects and the LVLH columns: `[orbit]`
+    #[key(table)]
+    pub orbit: Option<OrbitSpec>,
     /// the moments applied: `[[effect]]`
     #[key(table, shown = "none: torque-free")]
     pub effect: Vec<EffectSpec>,
@@ -162,24 +166,33 @@ pub(crate) enum ShapeKind {
 
 /// `[initial]`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Table)]
-#[table(file = InitialFile, header = "[initial]", about = "the state at t = 0", derive(Copy))]
+#[table(
+    file = InitialFile,
+    header = "[initial]",
+    about = "the state at t = 0",
+    either(omega, omega_lvlh, "give either `omega` (inertial) or `omega_lvlh` (relative to LVLH), not both"),
+    derive(Copy)
+)]
 pub struct InitialSpec {
     /// ω(0) in body axes; free motion only
     #[key(unit = "rad/s", shown = "[0, 0, 0]")]
     pub omega: Option<[f64; 3]>,
-    /// `attitude` or `attitude_euler_deg`; absent: the identity (or what the motion's `axis_in_space` sets).
+    /// `attitude`, `attitude_euler_deg` or `attitude_lvlh_deg`; absent: the identity (or what the motion's
+    /// `axis_in_space` sets).
     #[key(flatten = AttitudeKeys)]
     pub attitude: Option<AttitudeSpec>,
+    /// instead of `omega`: ω(0) relative to the LVLH frame, body axes (ω = this + the frame's rate n ĥ); needs an `[orbit]`
+    #[key(unit = "rad/s")]
+    pub omega_lvlh: Option<[f64; 3]>,
 }
 
-/// `[initial]`'s attitude: a quaternion or Euler angles, read as an [`AttitudeSpec`].
+/// `[initial]`'s attitude: a quaternion, Euler angles, or angles from LVLH, read as an [`AttitudeSpec`].
 #[derive(Debug, Clone, Copy, Default, PartialEq, Keys)]
 #[keys(either(
     attitude,
     attitude_euler_deg,
-    "give either `attitude` or `attitude_euler_deg`, not both",
-    AttitudeSpec::Quaternion,
-    AttitudeSpec::EulerDeg
+    attitude_lvlh_deg,
+    "give one of `attitude`, `attitude_euler_deg` and `attitude_lvlh_deg`"
 ))]
 pub(crate) struct AttitudeKeys {
     /// body → space quaternion, normalised; not zero
@@ -188,6 +201,38 @@ pub(crate) struct AttitudeKeys {
     /// instead of `attitude`: intrinsic z-y′-x″ angles, R = R_z R_y′ R_x″
     #[key(kind = "[z, y, x]", unit = "deg")]
     attitude_euler_deg: Option<[f64; 3]>,
+    /// instead of `attitude`: 3-2-1 angles from the LVLH frame at t = 0, R_LVLH←body = R_z(yaw) R_y(pitch) R_x(roll); needs an `[orbit]`
+    #[key(kind = "[roll, pitch, yaw]", unit = "deg")]
+    attitude_lvlh_deg: Option<[f64; 3]>,
+}
+
+/// The attitude the file gives, if any (`exclusive()` has refused two).
+impl Group<AttitudeKeys> for Option<AttitudeSpec> {
+    fn read(keys: &AttitudeKeys, _at: &KeyPath) -> Checked<Self> {
+        Ok(match *keys {
+            AttitudeKeys {
+                attitude: Some(q), ..
+            } => Some(AttitudeSpec::Quaternion(q)),
+            AttitudeKeys {
+                attitude_euler_deg: Some(zyx),
+                ..
+            } => Some(AttitudeSpec::EulerDeg(zyx)),
+            AttitudeKeys {
+                attitude_lvlh_deg: Some(rpy),
+                ..
+            } => Some(AttitudeSpec::LvlhDeg(rpy)),
+            _ => None,
+        })
+    }
+
+    fn write(&self, keys: &mut AttitudeKeys) {
+        match *self {
+            Some(AttitudeSpec::Quaternion(q)) => keys.attitude = Some(q),
+            Some(AttitudeSpec::EulerDeg(zyx)) => keys.attitude_euler_deg = Some(zyx),
+            Some(AttitudeSpec::LvlhDeg(rpy)) => keys.attitude_lvlh_deg = Some(rpy),
+            None => {}
+        }
+    }
 }
 
 /// `[solver]`.

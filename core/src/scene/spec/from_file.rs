@@ -122,6 +122,7 @@ mod tests {
             spec.initial = Some(InitialSpec {
                 omega: Some([0.1, 0.2, 0.3]),
                 attitude: Some(AttitudeSpec::EulerDeg([10.0, 20.0, 30.0])),
+                ..InitialSpec::default()
             });
             let text = toml::to_string(&spec).unwrap();
             assert_eq!(parse_spec(Path::new("x.toml"), &text), Ok(spec), "{text}");

@@ -37,6 +37,9 @@ pub enum AttitudeSpec {
     Quaternion([f64; 4]),
     /// `attitude_euler_deg = [z, y, x]`: intrinsic z-y'-x'' angles in degrees.
     EulerDeg([f64; 3]),
+    /// `attitude_lvlh_deg = [roll, pitch, yaw]`: 3-2-1 angles in degrees from the LVLH frame of the scene's orbit
+    /// at t = 0.
+    LvlhDeg([f64; 3]),
 }
 
 impl Serialize for SceneSpec {

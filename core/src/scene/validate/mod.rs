@@ -19,6 +19,7 @@ use crate::effects::Effect;
 use crate::frames::Form;
 use crate::keys::{Checked, Invalid, finite, invalid, positive, vector};
 use crate::method::{Backend, Method, defaults};
+use crate::orbit::CircularOrbit;
 
 pub use crate::keys::InvalidScene;
 pub use solver::{MAX_FIXED_STEPS, MAX_ROWS};
@@ -66,9 +67,15 @@ impl SceneSpec {
 
 fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
     let (body, center_b) = body::validate_body(&doc.body)?;
-    let attitude0 = attitude(doc)?;
-    let effects = effects(doc, &body, &center_b)?;
-    let motion = motion::validate_motion(doc, &body, &attitude0, &effects, &center_b)?;
+    let orbit = doc
+        .orbit
+        .as_ref()
+        .map(crate::orbit::validate_orbit)
+        .transpose()?;
+    let attitude0 = attitude(doc, orbit.as_ref())?;
+    let effects = effects(doc, &body, &center_b, orbit.as_ref())?;
+    let omega0 = motion::initial_omega(doc, orbit.as_ref(), &attitude0)?;
+    let motion = motion::validate_motion(doc, &body, &attitude0, (omega0, &effects), &center_b)?;
     // An axis motion may set the attitude itself (`axis_in_space`, a hinge's `angle_deg`).
     let attitude0 = motion.attitude0(attitude0);
     let solver = solver::validate_solver(&doc.solver, overrides)?;
@@ -94,6 +101,7 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
         attitude0,
         effects,
         events: Vec::new(),
+        orbit,
         solver,
         schedule,
         compare_tolerance,
@@ -108,7 +116,12 @@ fn validate(doc: &SceneSpec, overrides: &Overrides) -> Checked<Scene> {
 
 /// The scene's effects (`crate::effects::validate_effects`), gravity's moment center on an axis its point; a
 /// fixed-axis motion takes gravity only.
-fn effects(doc: &SceneSpec, body: &RigidBody, center_b: &Vector3<f64>) -> Checked<Vec<Effect>> {
+fn effects(
+    doc: &SceneSpec,
+    body: &RigidBody,
+    center_b: &Vector3<f64>,
+    orbit: Option<&CircularOrbit>,
+) -> Checked<Vec<Effect>> {
     let axis_point_b = match doc.motion.as_ref().and_then(MotionSpec::axis) {
         Some(axis) => {
             Some(vector(KeyPath::root().key("motion").key("point"), axis.point, "m")? - center_b)
@@ -118,8 +131,9 @@ fn effects(doc: &SceneSpec, body: &RigidBody, center_b: &Vector3<f64>) -> Checke
     let effects = crate::effects::validate_effects(
         &doc.effect,
         axis_point_b.as_ref(),
-        body.mass(),
+        body,
         center_b,
+        orbit,
     )?;
     let not_gravity = (effects.iter()).position(|e| e.gravity().is_none());
     if let (Some(MotionSpec::FixedAxis(_)), Some(index)) = (&doc.motion, not_gravity) {
@@ -131,9 +145,10 @@ fn effects(doc: &SceneSpec, body: &RigidBody, center_b: &Vector3<f64>) -> Checke
     Ok(effects)
 }
 
-/// `initial.attitude`, normalised, or the rotation of `initial.attitude_euler_deg` = [z, y, x], intrinsic
-/// z-y'-x'' (R = R_z R_y' R_x''); the identity when neither is given.
-fn attitude(doc: &SceneSpec) -> Checked<UnitQuaternion<f64>> {
+/// `initial.attitude`, normalised, the rotation of `initial.attitude_euler_deg` = [z, y, x], intrinsic
+/// z-y'-x'' (R = R_z R_y' R_x''), or of `attitude_lvlh_deg` = [roll, pitch, yaw] from the LVLH frame of `orbit` at
+/// t = 0; the identity when none is given.
+fn attitude(doc: &SceneSpec, orbit: Option<&CircularOrbit>) -> Checked<UnitQuaternion<f64>> {
     let key = |name: &str| KeyPath::root().key("initial").key(name);
     let axis_in_space = (doc.motion.as_ref())
         .and_then(MotionSpec::axis)
@@ -142,11 +157,24 @@ fn attitude(doc: &SceneSpec) -> Checked<UnitQuaternion<f64>> {
     if given.is_some() && axis_in_space {
         return invalid(
             KeyPath::root().key("motion").key("axis_in_space"),
-            "`motion.axis_in_space` sets the attitude at t = 0: remove initial.attitude / attitude_euler_deg",
+            "`motion.axis_in_space` sets the attitude at t = 0: remove initial.attitude / attitude_euler_deg / attitude_lvlh_deg",
         );
     }
     match given {
         None => Ok(UnitQuaternion::identity()),
+        Some(AttitudeSpec::LvlhDeg(angles)) => {
+            let key = key("attitude_lvlh_deg");
+            let [roll, pitch, yaw] = vector(key.clone(), angles, "degrees")?
+                .map(f64::to_radians)
+                .into();
+            match orbit {
+                Some(orbit) => Ok(orbit.attitude_from_lvlh(0.0, [roll, pitch, yaw])),
+                None => invalid(
+                    key,
+                    "angles from the LVLH frame need an `[orbit]` (altitude_km or radius_km)",
+                ),
+            }
+        }
         Some(AttitudeSpec::EulerDeg(angles)) => {
             let [z, y, x] = vector(key("attitude_euler_deg"), angles, "degrees")?.into();
             Ok(UnitQuaternion::from_euler_angles(

@@ -13,15 +13,46 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::motion::support::Bearings;
+use crate::orbit::CircularOrbit;
 
+/// `initial.omega`, or `initial.omega_lvlh` (ω relative to the LVLH frame of `orbit`, body axes) plus the frame's
+/// rate n ĥ seen in the body at `attitude0`: ω_b = ω_rel + Rᵀ n ĥ; with the key it was given by.
+pub(super) fn initial_omega(
+    doc: &SceneSpec,
+    orbit: Option<&CircularOrbit>,
+    attitude0: &UnitQuaternion<f64>,
+) -> Checked<Option<([f64; 3], &'static str)>> {
+    let Some(initial) = &doc.initial else {
+        return Ok(None);
+    };
+    match (initial.omega, initial.omega_lvlh, orbit) {
+        (Some(omega), ..) => Ok(Some((omega, "omega"))),
+        (None, Some(relative), Some(orbit)) => {
+            let relative_b = vector(
+                KeyPath::root().key("initial").key("omega_lvlh"),
+                relative,
+                "rad/s",
+            )?;
+            let omega_b = relative_b + attitude0.inverse_transform_vector(&orbit.lvlh_rate_s());
+            Ok(Some((omega_b.into(), "omega_lvlh")))
+        }
+        (None, Some(_), None) => invalid(
+            KeyPath::root().key("initial").key("omega_lvlh"),
+            "a rate relative to the LVLH frame needs an `[orbit]` (altitude_km or radius_km)",
+        ),
+        (None, None, _) => Ok(None),
+    }
+}
+
+/// The motion, a free body's from `omega0` (ω at t = 0 and the key that gave it).
 pub(super) fn validate_motion(
     doc: &SceneSpec,
     body: &RigidBody,
     attitude0: &UnitQuaternion<f64>,
-    effects: &[Effect],
+    (omega0, effects): (Option<([f64; 3], &'static str)>, &[Effect]),
     center_b: &Vector3<f64>,
 ) -> Checked<Motion> {
-    let initial_omega = doc.initial.as_ref().and_then(|i| i.omega);
+    let initial_omega = omega0;
     let (axis_spec, accel, angle_deg) = match &doc.motion {
         None | Some(MotionSpec::Free) => {
             return free_motion(doc, body, initial_omega, effects, center_b);
@@ -36,10 +67,12 @@ pub(super) fn validate_motion(
              or hinge motion with rotors is not supported",
         );
     }
-    if initial_omega.is_some() {
+    if let Some((_, name)) = initial_omega {
         return invalid(
-            KeyPath::root().key("initial").key("omega"),
-            "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.omega",
+            KeyPath::root().key("initial").key(name),
+            format!(
+                "a fixed-axis or hinge motion sets ω from `motion.rate`; remove initial.{name}"
+            ),
         );
     }
     let axis = axis_geometry(axis_spec, accel, body, attitude0, effects, center_b)?;
@@ -54,13 +87,13 @@ pub(super) fn validate_motion(
 fn free_motion(
     doc: &SceneSpec,
     body: &RigidBody,
-    initial_omega: Option<[f64; 3]>,
+    initial_omega: Option<([f64; 3], &'static str)>,
     effects: &[Effect],
     c_b: &Vector3<f64>,
 ) -> Checked<Motion> {
     let omega0_b = Vector::new(match initial_omega {
         None => Vector3::zeros(),
-        Some(w) => vector(KeyPath::root().key("initial").key("omega"), w, "rad/s")?,
+        Some((w, name)) => vector(KeyPath::root().key("initial").key(name), w, "rad/s")?,
     });
     let center_b =
         crate::effects::gravity(effects).map_or_else(Vector3::zeros, |(_, pivot_b)| pivot_b);
@@ -76,8 +109,9 @@ fn free_motion(
     // the run by T.
     let (h0_b, energy0) = free_body.momentum_and_energy(&omega0_b);
     if !(energy0.is_finite() && h0_b.norm().is_finite()) {
+        let name = initial_omega.map_or("omega", |(_, name)| name);
         return invalid(
-            KeyPath::root().key("initial").key("omega"),
+            KeyPath::root().key("initial").key(name),
             format!(
                 "ω₀ = ({:e}, {:e}, {:e}) rad/s is too large: the moment of momentum I·ω₀ or the kinetic \
                  energy ½ ω₀·I·ω₀ is beyond the range of double precision",

@@ -1,0 +1,340 @@
+//! `[orbit]`, the LVLH frame and the gravity gradient, against closed forms: the LVLH equilibrium of a body with
+//! its principal axes on the frame's, the pitch libration (an exact pendulum), the moment at a known tilt and at any
+//! attitude (an independent evaluation from the orbital elements), an inertially fixed body seen from the turning
+//! frame, and bad input.
+
+use std::f64::consts::PI;
+
+use eulerdyn::exact::JacobiElliptic;
+use eulerdyn::scene::{self, Overrides};
+use eulerdyn::simulate;
+use eulerdyn::{Form, Sample};
+use nalgebra::{Matrix3, Vector3};
+
+use crate::common::{eulerdyn, scene_from, write_file};
+
+/// μ and R of the scene format (WGS 84).
+const MU: f64 = 3.986004418e14;
+const R_EARTH: f64 = 6378.137e3;
+/// The body: principal moments along body x (roll, along-track at equilibrium), y (pitch) and z (nadir).
+const I: [f64; 3] = [0.05, 0.04, 0.02];
+
+/// A body of inertia `I` on a 500 km circular orbit (inclined, its node turned, the body past the node at t = 0),
+/// under its gravity gradient when `gradient`, with `initial` as `[initial]`'s keys and `extra` appended.
+fn scene_text(initial: &str, gradient: bool, form: Form, t_end: f64, extra: &str) -> String {
+    let effect = if gradient {
+        "[[effect]]\ntype = \"gravity_gradient\"\n"
+    } else {
+        ""
+    };
+    format!(
+        "[body]\nmass = 4.0\ninertia = [{}, {}, {}]\n\
+         [orbit]\naltitude_km = 500.0\ninclination_deg = 51.6\nraan_deg = 30.0\narg_lat_deg = 10.0\n\
+         [initial]\n{initial}\n{effect}{extra}\
+         [solver]\nframe = \"{}\"\nrtol = 1e-12\natol = 1e-14\nt_end = {t_end}\n[output]\nevery = 10.0\n",
+        I[0],
+        I[1],
+        I[2],
+        form.name()
+    )
+}
+
+/// n = √(μ/r³) of the 500 km orbit.
+fn mean_motion() -> f64 {
+    (MU / (R_EARTH + 500e3).powi(3)).sqrt()
+}
+
+/// Every row of a run, with the values of its LVLH columns.
+fn rows(text: &str) -> Vec<(Sample, [f64; 3])> {
+    let scene = scene_from(text, &Overrides::default());
+    let columns = scene.facts().columns();
+    let names: Vec<String> = columns
+        .columns()
+        .iter()
+        .map(|c| c.name.to_string())
+        .collect();
+    let at = |name: &str| names.iter().position(|n| n == name).unwrap();
+    let (roll, pitch, yaw) = (at("roll_lvlh"), at("pitch_lvlh"), at("yaw_lvlh"));
+    let mut out = Vec::new();
+    simulate::run(&scene, |s| {
+        let mut values = Vec::new();
+        columns.values(s, &mut values);
+        out.push((*s, [values[roll], values[pitch], values[yaw]]));
+        Ok::<(), std::convert::Infallible>(())
+    })
+    .unwrap();
+    out
+}
+
+#[test]
+fn a_body_on_the_lvlh_axes_stays_there_in_both_forms() {
+    // With its principal axes on the LVLH axes and turning with the frame, a body is in relative equilibrium
+    // under the gravity gradient (Hughes, *Spacecraft Attitude Dynamics*, 1986, §8.1): the moment n̂ × I n̂ is zero
+    // for n̂ on a principal axis, and ω = n ĥ is a steady rotation about a principal axis.
+    for form in [Form::Body, Form::Space] {
+        let text = scene_text(
+            "attitude_lvlh_deg = [0.0, 0.0, 0.0]\nomega_lvlh = [0.0, 0.0, 0.0]",
+            true,
+            form,
+            2.0 * 5677.0,
+            "",
+        );
+        let rows = rows(&text);
+        // Two orbits: what stays is round-off carried by the integration (rtol 1e-12 on angles of order n t).
+        let largest =
+            (rows.iter().flat_map(|(_, a)| a.iter())).fold(0.0_f64, |m, a| m.max(a.abs()));
+        assert!(
+            largest < 1e-9,
+            "{form:?}: the body left LVLH by {largest:e} rad"
+        );
+    }
+}
+
+/// The exact period of a pure pitch libration of amplitude `theta0` (rad). The pitch equation of a body with its
+/// roll and yaw at zero, I_y θ̈ + (3/2) n² (I_x − I_z) sin 2θ = 0 (Hughes 1986, §8.1), is a pendulum in φ = 2θ with
+/// ω_p = n √(3 (I_x − I_z)/I_y), the contract's small-angle frequency; its period is 4 K(k)/ω_p with
+/// k = sin(φ₀/2) (Landau & Lifshitz, *Mechanics*, §11, problem 1).
+fn libration_period(theta0: f64) -> f64 {
+    let omega_p = mean_motion() * (3.0 * (I[0] - I[2]) / I[1]).sqrt();
+    let k = theta0.sin();
+    4.0 * JacobiElliptic::new(k * k).unwrap().quarter_period() / omega_p
+}
+
+#[test]
+fn the_pitch_libration_is_the_pendulum_of_the_closed_form_in_both_forms() {
+    let theta0: f64 = 5f64.to_radians();
+    let event =
+        "[[event]]\nname = \"down\"\nwhen = \"pitch_lvlh\"\ncrosses = 0.0\ndirection = \"down\"\n";
+    for form in [Form::Body, Form::Space] {
+        let text = scene_text(
+            "attitude_lvlh_deg = [0.0, 5.0, 0.0]\nomega_lvlh = [0.0, 0.0, 0.0]",
+            true,
+            form,
+            4.5 * libration_period(theta0),
+            event,
+        );
+        let scene = scene_from(&text, &Overrides::default());
+        let (_, found) =
+            simulate::run_with_events(&scene, |_| Ok::<(), std::convert::Infallible>(())).unwrap();
+        let times: Vec<f64> = found.iter().map(|o| o.t).collect();
+        // Downward crossings at T/4, 5T/4, … 17T/4.
+        assert_eq!(times.len(), 5, "{form:?}: {times:?}");
+        let expected = libration_period(theta0);
+        // At 5° the pendulum's period is 1 + θ₀²/4 + … ≈ 1.0019 times the small-angle one: the test tells them
+        // apart by far. The crossings are located to the integration's accuracy (rtol 1e-12), round-off on ~10⁴ s.
+        for pair in times.windows(2) {
+            let period = pair[1] - pair[0];
+            assert!(
+                ((period - expected) / expected).abs() < 1e-9,
+                "{form:?}: period {period} s, the pendulum's {expected} s"
+            );
+        }
+        let small_angle = 2.0 * PI / (mean_motion() * (3.0 * (I[0] - I[2]) / I[1]).sqrt());
+        assert!((expected / small_angle - 1.0 - theta0.sin().powi(2) / 4.0).abs() < 1e-5);
+    }
+}
+
+/// The unit vector to nadir from the orbital elements (Vallado, *Fundamentals of Astrodynamics and Applications*,
+/// 4th ed., eq. 2-103 for a circular orbit: the position's direction at argument of latitude u).
+fn nadir_s(inclination: f64, raan: f64, u: f64) -> Vector3<f64> {
+    let (si, ci, so, co, su, cu) = (
+        inclination.sin(),
+        inclination.cos(),
+        raan.sin(),
+        raan.cos(),
+        u.sin(),
+        u.cos(),
+    );
+    -Vector3::new(co * cu - so * su * ci, so * cu + co * su * ci, su * si)
+}
+
+#[test]
+fn the_gravity_gradient_moment_is_the_closed_form_at_any_attitude() {
+    let n = mean_motion();
+    let inertia = Matrix3::from_diagonal(&Vector3::from(I));
+    // A pure pitch tilt θ: M = (0, −(3/2) n² (I_x − I_z) sin 2θ, 0) in body axes (Hughes 1986, §8.1).
+    let tilt = 20f64.to_radians();
+    let text = scene_text(
+        "attitude_lvlh_deg = [0.0, 20.0, 0.0]\nomega_lvlh = [0.0, 0.0, 0.0]",
+        true,
+        Form::Body,
+        10.0,
+        "",
+    );
+    let (first, _) = rows(&text)[0];
+    let expected = Vector3::new(0.0, -1.5 * n * n * (I[0] - I[2]) * (2.0 * tilt).sin(), 0.0);
+    // Both are the same few products of numbers of order n² I: a few ulps of |M| ~ 1e-8 N·m.
+    assert!(
+        (*first.m_o_b - expected).norm() < 1e-20,
+        "{:?} vs {expected:?}",
+        first.m_o_b
+    );
+    // Any attitude, at every row: M = 3 n² n̂_b × (I n̂_b) with n̂ from the orbital elements independently of
+    // eulerdyn's LVLH frame (Schaub & Junkins, *Analytical Mechanics of Space Systems*, §4.6.3).
+    let text = scene_text(
+        "attitude_euler_deg = [40.0, -25.0, 70.0]\nomega = [0.01, -0.02, 0.03]",
+        true,
+        Form::Body,
+        600.0,
+        "",
+    );
+    let (inclination, raan, u0) = (51.6f64.to_radians(), 30f64.to_radians(), 10f64.to_radians());
+    for (s, _) in rows(&text) {
+        let nadir_b =
+            s.q.inverse_transform_vector(&nadir_s(inclination, raan, u0 + n * s.t));
+        let expected = 3.0 * n * n * nadir_b.cross(&(inertia * nadir_b));
+        // The orbit's angle n t and the attitude carry relative round-off ~1e-14 into a moment of ~1e-7 N·m.
+        assert!(
+            (*s.m_o_b - expected).norm() < 1e-19,
+            "t = {}: {:?} vs {expected:?}",
+            s.t,
+            s.m_o_b
+        );
+    }
+}
+
+#[test]
+fn an_inertially_fixed_body_pitches_up_at_the_orbit_rate() {
+    // Without a moment the body keeps its attitude in space while the LVLH frame turns at n ĥ = −n y_LVLH: seen
+    // from the frame, the body turns at +n about y, pitch(t) = θ₀ + n t, roll and yaw zero. With `omega_lvlh` zero
+    // instead, it turns with the frame and every angle stays.
+    let n = mean_motion();
+    let fixed = rows(&scene_text(
+        "attitude_lvlh_deg = [0.0, -30.0, 0.0]\nomega = [0.0, 0.0, 0.0]",
+        false,
+        Form::Body,
+        1000.0,
+        "",
+    ));
+    for (s, [roll, pitch, yaw]) in &fixed {
+        let expected = -30f64.to_radians() + n * s.t;
+        assert!(
+            (pitch - expected).abs() < 1e-12,
+            "t = {}: {pitch} vs {expected}",
+            s.t
+        );
+        assert!(
+            roll.abs() < 1e-12 && yaw.abs() < 1e-12,
+            "t = {}: {roll}, {yaw}",
+            s.t
+        );
+    }
+    // Turning with the frame about a principal axis (body y on −ĥ), a free body keeps its angles from it.
+    let turning = rows(&scene_text(
+        "attitude_lvlh_deg = [0.0, -30.0, 0.0]\nomega_lvlh = [0.0, 0.0, 0.0]",
+        false,
+        Form::Space,
+        1000.0,
+        "",
+    ));
+    for (s, [roll, pitch, yaw]) in &turning {
+        let pitch_error = pitch + 30f64.to_radians();
+        assert!(
+            roll.abs() < 1e-10 && pitch_error.abs() < 1e-10 && yaw.abs() < 1e-10,
+            "t = {}: {roll}, {pitch}, {yaw}",
+            s.t
+        );
+    }
+    // Any angles given are the first row's.
+    let (_, first) = rows(&scene_text(
+        "attitude_lvlh_deg = [10.0, -30.0, 45.0]",
+        false,
+        Form::Body,
+        10.0,
+        "",
+    ))[0];
+    let given = [10f64, -30.0, 45.0].map(f64::to_radians);
+    assert!(
+        (0..3).all(|k| (first[k] - given[k]).abs() < 1e-14),
+        "{first:?}"
+    );
+    // The attitude at t = 0 is the LVLH frame's times the angles': the body's x axis, for zero angles, along the
+    // velocity (the frame's x, ĥ × r̂).
+    let scene = scene_from(
+        &scene_text(
+            "attitude_lvlh_deg = [0.0, 0.0, 0.0]",
+            false,
+            Form::Body,
+            10.0,
+            "",
+        ),
+        &Overrides::default(),
+    );
+    let (i, o, u) = (51.6f64.to_radians(), 30f64.to_radians(), 10f64.to_radians());
+    let r_hat = -nadir_s(i, o, u);
+    let h_hat = Vector3::new(o.sin() * i.sin(), -o.cos() * i.sin(), i.cos());
+    let x_body = scene.attitude0 * Vector3::x();
+    assert!((x_body - h_hat.cross(&r_hat)).norm() < 1e-15, "{x_body:?}");
+}
+
+#[test]
+fn orbit_mistakes_name_their_key_and_write_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = scene_text("omega = [0.0, 0.0, 0.1]", true, Form::Body, 1.0, "");
+    let cases = [
+        (
+            base.replace("[orbit]\naltitude_km = 500.0\ninclination_deg = 51.6\nraan_deg = 30.0\narg_lat_deg = 10.0\n", ""),
+            "effect[0].type",
+            "needs an `[orbit]`",
+        ),
+        (
+            base.replace("altitude_km = 500.0", "altitude_km = -1.0"),
+            "orbit.altitude_km",
+            "must be > 0",
+        ),
+        (
+            base.replace("altitude_km = 500.0", "altitude_km = 500.0\nradius_km = 6878.0"),
+            "orbit.radius_km",
+            "give either `altitude_km` or `radius_km`",
+        ),
+        (
+            base.replace("altitude_km = 500.0", "radius_km = 6000.0"),
+            "orbit.radius_km",
+            "above the Earth's surface",
+        ),
+        (
+            base.replace("[orbit]\naltitude_km = 500.0\ninclination_deg = 51.6\nraan_deg = 30.0\narg_lat_deg = 10.0\n", "")
+                .replace("omega = [0.0, 0.0, 0.1]", "attitude_lvlh_deg = [0.0, 1.0, 0.0]")
+                .replace("[[effect]]\ntype = \"gravity_gradient\"\n", ""),
+            "initial.attitude_lvlh_deg",
+            "need an `[orbit]`",
+        ),
+        (
+            base.replace("omega = [0.0, 0.0, 0.1]", "omega = [0.0, 0.0, 0.1]\nomega_lvlh = [0.0, 0.0, 0.0]"),
+            "initial.omega_lvlh",
+            "give either `omega`",
+        ),
+        (
+            base.replace("[orbit]", "[[effect]]\ntype = \"gravity\"\npivot = [0.0, 0.0, 0.1]\n[orbit]"),
+            "effect[1].type",
+            "does not combine with uniform `gravity`",
+        ),
+    ];
+    for (text, key, problem) in cases {
+        let path = write_file(dir.path(), "orbit.toml", &text);
+        let out = dir.path().join("orbit.csv");
+        let outcome = eulerdyn([
+            "run".as_ref(),
+            path.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ]);
+        assert_eq!(outcome.code, Some(2), "{text}\n{}", outcome.stderr);
+        assert!(
+            outcome.stderr.contains(&format!("key `{key}`")) && outcome.stderr.contains(problem),
+            "{key}: {}",
+            outcome.stderr
+        );
+        assert!(!out.exists(), "{key}: a CSV was written");
+    }
+    let parsed = scene::parse_spec(
+        std::path::Path::new("x.toml"),
+        &base.replace("gravity_gradient", "gravity_gradiant"),
+    )
+    .unwrap_err();
+    assert!(
+        parsed.problem.contains("gravity_gradient"),
+        "{}",
+        parsed.problem
+    );
+}
