@@ -338,3 +338,150 @@ fn orbit_mistakes_name_their_key_and_write_nothing() {
         parsed.problem
     );
 }
+
+/// Each row's time, attitude and the values of the columns `names`, of a run of `text`.
+fn columns_of(text: &str, names: &[&str]) -> Vec<(f64, nalgebra::UnitQuaternion<f64>, Vec<f64>)> {
+    let scene = scene_from(text, &Overrides::default());
+    let columns = scene.facts().columns();
+    let all: Vec<String> = columns
+        .columns()
+        .iter()
+        .map(|c| c.name.to_string())
+        .collect();
+    let at: Vec<usize> = (names.iter())
+        .map(|n| {
+            all.iter()
+                .position(|c| c == n)
+                .unwrap_or_else(|| panic!("no column {n}"))
+        })
+        .collect();
+    let mut out = Vec::new();
+    simulate::run(&scene, |s| {
+        let mut values = Vec::new();
+        columns.values(s, &mut values);
+        out.push((s.t, s.q, at.iter().map(|&k| values[k]).collect()));
+        Ok::<(), std::convert::Infallible>(())
+    })
+    .unwrap();
+    out
+}
+
+/// A body at rest in space axes on a polar 500 km orbit, `arg_lat_deg` past the node at t = 0, with the magnetic
+/// effect's keys `magnetic`.
+fn polar_text(arg_lat_deg: f64, magnetic: &str, initial: &str, t_end: f64) -> String {
+    format!(
+        "[body]\nmass = 4.0\ninertia = [{}, {}, {}]\n\
+         [orbit]\naltitude_km = 500.0\ninclination_deg = 90.0\narg_lat_deg = {arg_lat_deg}\n\
+         [initial]\n{initial}\n[[effect]]\ntype = \"magnetic\"\n{magnetic}\n\
+         [solver]\nrtol = 1e-12\natol = 1e-14\nt_end = {t_end}\n[output]\nevery = 10.0\n",
+        I[0], I[1], I[2]
+    )
+}
+
+#[test]
+fn the_dipole_field_over_the_poles_and_the_equator_is_the_closed_form() {
+    // A centred dipole along the Earth's axis, its moment pointing south: B = B₀ (R/r)³ (ẑ − 3(ẑ·r̂) r̂) — on the
+    // equator B₀ (R/r)³ northward, over either pole 2B₀ (R/r)³ along −ẑ (Jackson, *Classical Electrodynamics*,
+    // 3rd ed., eq. 5.56; Wertz 1978, appendix H). The body sits at the identity, so B_b = B_s.
+    let scale = 3.12e-5 * (R_EARTH / (R_EARTH + 500e3)).powi(3);
+    for (arg_lat, expected) in [
+        (0.0, Vector3::new(0.0, 0.0, scale)),
+        (90.0, Vector3::new(0.0, 0.0, -2.0 * scale)),
+        (180.0, Vector3::new(0.0, 0.0, scale)),
+        (270.0, Vector3::new(0.0, 0.0, -2.0 * scale)),
+    ] {
+        let rows = columns_of(
+            &polar_text(arg_lat, "", "", 10.0),
+            &["B_b_x", "B_b_y", "B_b_z"],
+        );
+        let b = Vector3::from_column_slice(&rows[0].2);
+        // The position's angles round to a few ulps of 1: B to ~1e-15 of its size.
+        assert!(
+            (b - expected).norm() < 1e-19,
+            "u = {arg_lat}°: {b:?} vs {expected:?}"
+        );
+    }
+}
+
+#[test]
+fn a_tilted_field_turns_with_the_earth_and_its_moment_is_m_cross_b() {
+    // The field of a dipole tilted 11° toward longitude 40° at t = 0, turning with the Earth at 7.2921159e-5 rad/s,
+    // evaluated here from the orbital elements (Vallado's position, the dipole's axis turned about z) and its
+    // moment m × B_b on a tumbling body, against every row of the run.
+    let magnetic = "dipole = [0.02, -0.05, 0.03]\nfield_tilt_deg = 11.0\nfield_lon_deg = 40.0";
+    let text = scene_text("omega = [0.02, -0.01, 0.03]", false, Form::Body, 3000.0, "").replace(
+        "[solver]",
+        &format!("[[effect]]\ntype = \"magnetic\"\n{magnetic}\n[solver]"),
+    );
+    let rows = columns_of(
+        &text,
+        &["B_b_x", "B_b_y", "B_b_z", "M_b_x", "M_b_y", "M_b_z"],
+    );
+    let (i, o, u0, n) = (
+        51.6f64.to_radians(),
+        30f64.to_radians(),
+        10f64.to_radians(),
+        mean_motion(),
+    );
+    let (tilt, lon, earth) = (11f64.to_radians(), 40f64.to_radians(), 7.2921159e-5);
+    let b0 = 3.12e-5 * R_EARTH.powi(3);
+    let dipole = Vector3::new(0.02, -0.05, 0.03);
+    for (t, q, values) in &rows {
+        let r_hat = -nadir_s(i, o, u0 + n * t);
+        let r = R_EARTH + 500e3;
+        let m_hat = Vector3::new(
+            tilt.sin() * (lon + earth * t).cos(),
+            tilt.sin() * (lon + earth * t).sin(),
+            tilt.cos(),
+        );
+        let b_s = (m_hat - r_hat * (3.0 * m_hat.dot(&r_hat))) * (b0 / r.powi(3));
+        let b_b = q.inverse_transform_vector(&b_s);
+        let got_b = Vector3::new(values[0], values[1], values[2]);
+        let got_m = Vector3::new(values[3], values[4], values[5]);
+        // Angles of order 1e-1..1 rad rounded to ulps: B to ~1e-15 relative (|B| ~ 3e-5 T), M likewise.
+        assert!(
+            (got_b - b_b).norm() < 1e-18,
+            "t = {t}: {got_b:?} vs {b_b:?}"
+        );
+        assert!(
+            (got_m - dipole.cross(&b_b)).norm() < 1e-19,
+            "t = {t}: {got_m:?}"
+        );
+    }
+}
+
+#[test]
+fn magnetic_mistakes_name_their_key() {
+    for (text, key, problem) in [
+        (
+            polar_text(0.0, "", "", 1.0).replace(
+                "[orbit]\naltitude_km = 500.0\ninclination_deg = 90.0\narg_lat_deg = 0\n",
+                "",
+            ),
+            "effect[0].type",
+            "needs an `[orbit]`",
+        ),
+        (
+            polar_text(0.0, "field_b0 = 0.0", "", 1.0),
+            "effect[0].field_b0",
+            "must be > 0",
+        ),
+        (
+            polar_text(0.0, "dipole = [1.0, 2.0]", "", 1.0),
+            "effect[0].dipole",
+            "3 numbers",
+        ),
+        (
+            polar_text(0.0, "c = 1.0", "", 1.0),
+            "effect[0].c",
+            "takes no `c`",
+        ),
+    ] {
+        let err =
+            scene::parse(std::path::Path::new("x.toml"), &text, &Overrides::default()).unwrap_err();
+        assert!(
+            err.key.as_deref() == Some(key) && err.problem.contains(problem),
+            "{key}: {err}"
+        );
+    }
+}

@@ -6,7 +6,7 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 use super::{Effect, TorqueSum, UserMoment};
 use crate::frames::{Axes, StateRotation};
-use crate::orbit::CircularOrbit;
+use crate::orbit::{CircularOrbit, DipoleField};
 
 /// The external moment acting on the body, about the moment center.
 pub trait AppliedMoment {
@@ -71,16 +71,17 @@ pub struct EffectMoments {
     mass: f64,
     torques_b: TorqueSum,
     torques_s: TorqueSum,
-    gravity: Vec<GravityMoment>,
+    attitude_moments: Vec<AttitudeMoment>,
     pub(crate) needs_attitude: bool,
     damping_c: f64,
     laws: Box<[UserMoment]>,
 }
 
-/// Gravity's moment: uniform g_s acting at C, which sits at ρ_C from the moment center (body axes), or an orbit's
-/// gradient on a body of inertia I about C.
+/// A moment that depends on the attitude only through vectors given in space axes: uniform gravity g_s acting at C,
+/// which sits at ρ_C from the moment center (body axes); an orbit's gravity gradient on a body of inertia I about
+/// C; a residual dipole m in the Earth's field, m × B_b.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum GravityMoment {
+enum AttitudeMoment {
     Uniform {
         g_s: Vector3<f64>,
         rho_c_b: Vector3<f64>,
@@ -89,6 +90,11 @@ enum GravityMoment {
         orbit: CircularOrbit,
         inertia_c_b: Matrix3<f64>,
     },
+    Magnetic {
+        orbit: CircularOrbit,
+        field: DipoleField,
+        dipole_b: Vector3<f64>,
+    },
 }
 
 impl EffectMoments {
@@ -96,7 +102,7 @@ impl EffectMoments {
     pub fn new(effects: &[Effect], mass: f64) -> Self {
         let mut torques_b = TorqueSum::default();
         let mut torques_s = TorqueSum::default();
-        let mut gravity = Vec::new();
+        let mut attitude_moments = Vec::new();
         let mut damping_c = 0.0;
         let mut laws = Vec::new();
         for effect in effects {
@@ -111,10 +117,12 @@ impl EffectMoments {
                     value,
                     profile,
                 } => torques_s.add(value, profile),
-                Effect::Gravity { g_s, pivot_b } => gravity.push(GravityMoment::Uniform {
-                    g_s: *g_s,
-                    rho_c_b: -pivot_b,
-                }),
+                Effect::Gravity { g_s, pivot_b } => {
+                    attitude_moments.push(AttitudeMoment::Uniform {
+                        g_s: *g_s,
+                        rho_c_b: -pivot_b,
+                    })
+                }
                 Effect::Damping { c } => damping_c += c,
                 Effect::TorqueTable {
                     frame: Axes::Body,
@@ -125,21 +133,30 @@ impl EffectMoments {
                     table,
                 } => torques_s.add_table(table),
                 Effect::GravityGradient { orbit, inertia_c_b } => {
-                    gravity.push(GravityMoment::Gradient {
+                    attitude_moments.push(AttitudeMoment::Gradient {
                         orbit: *orbit,
                         inertia_c_b: *inertia_c_b,
                     })
                 }
+                Effect::Magnetic {
+                    orbit,
+                    field,
+                    dipole_b,
+                } => attitude_moments.push(AttitudeMoment::Magnetic {
+                    orbit: *orbit,
+                    field: *field,
+                    dipole_b: *dipole_b,
+                }),
                 Effect::User(user) => laws.push(user.clone()),
             }
         }
         Self {
             effects: effects.to_vec(),
             mass,
-            needs_attitude: !torques_s.is_zero() || !gravity.is_empty(),
+            needs_attitude: !torques_s.is_zero() || !attitude_moments.is_empty(),
             torques_b,
             torques_s,
-            gravity,
+            attitude_moments,
             damping_c,
             laws: laws.into_boxed_slice(),
         }
@@ -175,8 +192,8 @@ impl EffectMoments {
     }
 
     /// The moments that depend on the attitude, body axes, given the rotation `to_body`: v_s ↦ Rᵀ v_s:
-    /// Rᵀ M_s(t) for the space-axis torques, ρ_C × m (Rᵀ g_s) for gravity and 3n² n̂_b × (I n̂_b) with
-    /// n̂_b = Rᵀ n̂_s(t) for an orbit's gravity gradient.
+    /// Rᵀ M_s(t) for the space-axis torques, ρ_C × m (Rᵀ g_s) for gravity, 3n² n̂_b × (I n̂_b) with
+    /// n̂_b = Rᵀ n̂_s(t) for an orbit's gravity gradient and m × Rᵀ B_s(r(t), t) for a dipole in the Earth's field.
     #[inline(always)]
     fn attitude_moment_b(
         &self,
@@ -188,14 +205,19 @@ impl EffectMoments {
         } else {
             to_body(&self.torques_s.at(t))
         };
-        for gravity in &self.gravity {
-            m_b += match gravity {
-                GravityMoment::Uniform { g_s, rho_c_b } => {
+        for moment in &self.attitude_moments {
+            m_b += match moment {
+                AttitudeMoment::Uniform { g_s, rho_c_b } => {
                     rho_c_b.cross(&(to_body(g_s) * self.mass))
                 }
-                GravityMoment::Gradient { orbit, inertia_c_b } => {
+                AttitudeMoment::Gradient { orbit, inertia_c_b } => {
                     orbit.gravity_gradient_b(&to_body(&orbit.nadir_s(t)), inertia_c_b)
                 }
+                AttitudeMoment::Magnetic {
+                    orbit,
+                    field,
+                    dipole_b,
+                } => dipole_b.cross(&to_body(&field.b_s(&orbit.position_s(t), t))),
             };
         }
         m_b
@@ -306,7 +328,7 @@ mod tests {
     use super::*;
     use crate::effects::Effect;
     use crate::frames::{Axes, StateRotation};
-    use crate::orbit::CircularOrbit;
+    use crate::orbit::{CircularOrbit, DipoleField};
     use crate::profile::Profile;
     use nalgebra::{UnitQuaternion, Vector3};
 
@@ -364,6 +386,13 @@ mod tests {
                     &q.inverse_transform_vector(&orbit.nadir_s(t)),
                     &inertia_c_b,
                 ),
+                Effect::Magnetic {
+                    orbit,
+                    field,
+                    dipole_b,
+                } => {
+                    dipole_b.cross(&q.inverse_transform_vector(&field.b_s(&orbit.position_s(t), t)))
+                }
                 Effect::User(ref user) => user.moment_b(t, q, omega_b),
             };
         }
@@ -399,6 +428,11 @@ mod tests {
         });
         effects.push(Effect::Damping { c: 0.3 });
         // A close orbit (r = 7000 km) and a large body, so that the gradient's moment is of the others' order.
+        effects.push(Effect::Magnetic {
+            orbit: CircularOrbit::new(7.0e6, 0.9, 0.4, 1.1),
+            field: DipoleField::new(3.12e-5, 0.2, 0.7),
+            dipole_b: v(2.0e4, -1.0e4, 3.0e4),
+        });
         effects.push(Effect::GravityGradient {
             orbit: CircularOrbit::new(7.0e6, 0.9, 0.4, 1.1),
             inertia_c_b: nalgebra::Matrix3::new(

@@ -60,6 +60,14 @@ impl Effect {
                 for_people(orbit.radius() / 1e3),
                 for_people(orbit.mean_motion())
             ),
+            Effect::Magnetic {
+                field, dipole_b, ..
+            } => format!(
+                "magnetic: residual dipole {} A*m^2 (body axes) in a centred dipole field, B0 = {} T on the equator at \
+                 the surface: M = m x B_b",
+                vec3(dipole_b),
+                for_people(field.b0())
+            ),
             Effect::User(user) => format!(
                 "user's moment law \"{}\" (a Rust or Python function of t, q, omega) in {} axes",
                 user.name,

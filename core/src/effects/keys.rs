@@ -4,10 +4,11 @@
 
 use std::path::Path;
 
-use super::spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
+use super::spec::{EffectSpec, MagneticSpec, TorqueSpec, TorqueTableSpec};
 use super::{DEFAULT_GRAVITY, Interpolation};
 use crate::frames::Axes;
 use crate::keys::{Checked, KeyPath, Keys, Kind, Part, Table, required};
+use crate::orbit::DEFAULT_B0;
 use crate::profile::{Profile, ProfileKeys};
 
 /// One `[[effect]]`.
@@ -44,13 +45,25 @@ pub(crate) struct EffectFile {
     /// torque_table: between rows (cubic: the natural spline)
     #[key(kind = "\"linear\" | \"cubic\"", shown = "\"linear\"")]
     pub(super) interpolation: Option<Interpolation>,
+    /// magnetic: the body's residual magnetic dipole, body axes; the moment is m × B
+    #[key(unit = "A·m²", shown = "[0, 0, 0]")]
+    pub(super) dipole: Option<[f64; 3]>,
+    /// magnetic: the field dipole's tilt from the Earth's axis (0: aligned); a tilted dipole turns with the Earth
+    #[key(unit = "deg", shown = "0")]
+    pub(super) field_tilt_deg: Option<f64>,
+    /// magnetic: the longitude the tilted dipole leans toward at t = 0, from space x
+    #[key(unit = "deg", shown = "0")]
+    pub(super) field_lon_deg: Option<f64>,
+    /// magnetic: the field on the equator at the Earth's surface, > 0; B ∝ (R/r)³
+    #[key(unit = "T", shown = "3.12e-5")]
+    pub(super) field_b0: Option<f64>,
 }
 
 /// The `type` of an effect.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Kind)]
 #[kind(
     what = "effect type",
-    missing = "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\", \"torque_table\" or \"gravity_gradient\""
+    missing = "missing: an effect needs `type` = \"torque\", \"gravity\", \"damping\", \"torque_table\", \"gravity_gradient\" or \"magnetic\""
 )]
 pub(crate) enum EffectKind {
     #[kind(
@@ -66,6 +79,8 @@ pub(crate) enum EffectKind {
     TorqueTable,
     #[kind("gravity_gradient")]
     GravityGradient,
+    #[kind("magnetic", takes(dipole, field_tilt_deg, field_lon_deg, field_b0))]
+    Magnetic,
 }
 
 impl Part for EffectSpec {
@@ -90,6 +105,12 @@ impl Part for EffectSpec {
                 c: required(key("c"), doc.c, &kind_text)?,
             },
             EffectKind::GravityGradient => EffectSpec::GravityGradient,
+            EffectKind::Magnetic => EffectSpec::Magnetic(MagneticSpec {
+                dipole: doc.dipole.unwrap_or([0.0; 3]),
+                field_tilt_deg: doc.field_tilt_deg.unwrap_or(0.0),
+                field_lon_deg: doc.field_lon_deg.unwrap_or(0.0),
+                field_b0: doc.field_b0.unwrap_or(DEFAULT_B0),
+            }),
             EffectKind::TorqueTable => EffectSpec::TorqueTable(TorqueTableSpec {
                 file: required(key("file"), doc.file.clone(), &kind_text)?,
                 frame: doc.frame.unwrap_or(Axes::Body),
@@ -116,6 +137,14 @@ impl Part for EffectSpec {
             EffectSpec::Damping { c } => EffectFile {
                 kind: Some(EffectKind::Damping),
                 c: Some(*c),
+                ..EffectFile::default()
+            },
+            EffectSpec::Magnetic(m) => EffectFile {
+                kind: Some(EffectKind::Magnetic),
+                dipole: Some(m.dipole),
+                field_tilt_deg: Some(m.field_tilt_deg),
+                field_lon_deg: Some(m.field_lon_deg),
+                field_b0: Some(m.field_b0),
                 ..EffectFile::default()
             },
             EffectSpec::GravityGradient => EffectFile {

@@ -17,13 +17,13 @@ mod validate;
 pub use columns::potential_columns;
 pub use compiled::{AppliedMoment, EffectMoments, TorqueFree};
 pub use queries::{TorqueGiven, gravity};
-pub use spec::{EffectSpec, TorqueSpec, TorqueTableSpec};
+pub use spec::{EffectSpec, MagneticSpec, TorqueSpec, TorqueTableSpec};
 pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
 pub use user::{MomentLaw, UserMoment};
 pub(crate) use validate::validate_effects;
 
 use crate::frames::Axes;
-use crate::orbit::CircularOrbit;
+use crate::orbit::{CircularOrbit, DipoleField};
 use crate::profile::Profile;
 use crate::trig;
 
@@ -70,6 +70,15 @@ pub enum Effect {
         /// The body's inertia about C, body axes (kg·m²).
         inertia_c_b: Matrix3<f64>,
     },
+    /// A residual dipole m (A·m², body axes) in the Earth's field along a circular orbit: M = m × B_b.
+    Magnetic {
+        /// The orbit.
+        orbit: CircularOrbit,
+        /// The Earth's field.
+        field: DipoleField,
+        /// m, body axes (A·m²).
+        dipole_b: Vector3<f64>,
+    },
     /// The user's own law ([`MomentLaw`]), named; added to a built scene by
     /// [`Scene::with_moment`](crate::scene::Scene::with_moment).
     User(UserMoment),
@@ -84,6 +93,7 @@ impl Effect {
             Effect::Damping { .. } => "damping",
             Effect::TorqueTable { .. } => "torque_table",
             Effect::GravityGradient { .. } => "gravity_gradient",
+            Effect::Magnetic { .. } => "magnetic",
             Effect::User(_) => "user",
         }
     }
@@ -99,7 +109,8 @@ impl Effect {
 
     /// An upper bound of the moment's magnitude over all times and attitudes, on a body of mass `mass` (kg), N·m:
     /// |value| for a torque (every profile factor is at most 1 in magnitude), m |g| |pivot| for gravity (|ρ_C| =
-    /// |pivot|), [`TorqueTable::largest_moment`] for a table, 3n²‖I‖ for a gravity gradient (|n̂ × I n̂| ≤ ‖I‖);
+    /// |pivot|), [`TorqueTable::largest_moment`] for a table, 3n²‖I‖ for a gravity gradient (|n̂ × I n̂| ≤ ‖I‖),
+    /// |m| 2B₀(R/r)³ for a dipole in the Earth's field (its largest, over a pole);
     /// `None` for damping, whose moment −c ω depends on ω and
     /// whose power −c|ω|² is never positive, and for the user's law, which has no known bound.
     pub fn largest_moment(&self, mass: f64) -> Option<f64> {
@@ -111,6 +122,11 @@ impl Effect {
             Effect::GravityGradient { orbit, inertia_c_b } => {
                 Some(3.0 * orbit.mean_motion().powi(2) * inertia_c_b.norm())
             }
+            Effect::Magnetic {
+                orbit,
+                field,
+                dipole_b,
+            } => Some(dipole_b.norm() * field.largest_b(orbit.radius())),
             Effect::User(_) => None,
         }
     }

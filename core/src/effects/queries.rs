@@ -5,6 +5,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 
 use super::Effect;
 use crate::frames::Axes;
+use crate::orbit::{CircularOrbit, DipoleField};
 use crate::profile::Profile;
 
 /// An applied torque as given: its axes, value (N·m) and time profile.
@@ -89,6 +90,16 @@ impl From<super::UserMoment> for Effect {
     /// The user's own law as an effect ([`crate::scene::Scene::with_moment`] adds it).
     fn from(user: super::UserMoment) -> Self {
         Effect::User(user)
+    }
+}
+
+impl Effect {
+    /// The orbit and the Earth's field, when this effect is a dipole in the field.
+    pub fn field(&self) -> Option<(CircularOrbit, DipoleField)> {
+        match self {
+            Effect::Magnetic { orbit, field, .. } => Some((*orbit, *field)),
+            _ => None,
+        }
     }
 }
 

@@ -29,6 +29,45 @@ pub enum EffectSpec {
     TorqueTable(TorqueTableSpec),
     /// `type = "gravity_gradient"`: the gravity gradient of the scene's `[orbit]` on a free body.
     GravityGradient,
+    /// `type = "magnetic"`: the moment m × B of the body's residual dipole in the Earth's field along the orbit.
+    Magnetic(MagneticSpec),
+}
+
+/// `type = "magnetic"`: a residual dipole in a centred-dipole Earth field ([`crate::orbit::DipoleField`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MagneticSpec {
+    /// `dipole`: the body's residual dipole, body axes (A·m²; absent: zero).
+    pub dipole: [f64; 3],
+    /// `field_tilt_deg`: the field dipole's tilt from the Earth's axis (deg; absent: 0).
+    pub field_tilt_deg: f64,
+    /// `field_lon_deg`: the longitude a tilted dipole leans toward at t = 0 (deg; absent: 0).
+    pub field_lon_deg: f64,
+    /// `field_b0`: the field on the equator at the surface (T; absent: [`crate::orbit::DEFAULT_B0`]).
+    pub field_b0: f64,
+}
+
+impl MagneticSpec {
+    /// A residual dipole `dipole` (A·m², body axes) in the default field, aligned with the Earth's axis.
+    ///
+    /// ```
+    /// use eulerdyn::scene::{EffectSpec, MagneticSpec};
+    /// let spec = EffectSpec::from(MagneticSpec::new([0.0, 0.0, 0.05]));
+    /// assert_eq!(spec.kind(), "magnetic");
+    /// ```
+    pub fn new(dipole: [f64; 3]) -> Self {
+        MagneticSpec {
+            dipole,
+            field_tilt_deg: 0.0,
+            field_lon_deg: 0.0,
+            field_b0: crate::orbit::DEFAULT_B0,
+        }
+    }
+}
+
+impl From<MagneticSpec> for EffectSpec {
+    fn from(magnetic: MagneticSpec) -> Self {
+        EffectSpec::Magnetic(magnetic)
+    }
 }
 
 /// `type = "torque_table"`: the rows (t, M_x, M_y, M_z) of `file`, interpolated, zero outside the table's range.
@@ -142,7 +181,8 @@ impl EffectSpec {
         EffectSpec::Damping { c }
     }
 
-    /// The effect's `type` in a scene file: `torque`, `gravity`, `damping`, `torque_table` or `gravity_gradient`.
+    /// The effect's `type` in a scene file: `torque`, `gravity`, `damping`, `torque_table`, `gravity_gradient` or
+    /// `magnetic`.
     pub fn kind(&self) -> &'static str {
         match self {
             EffectSpec::Torque(_) => "torque",
@@ -150,6 +190,7 @@ impl EffectSpec {
             EffectSpec::Damping { .. } => "damping",
             EffectSpec::TorqueTable(_) => "torque_table",
             EffectSpec::GravityGradient => "gravity_gradient",
+            EffectSpec::Magnetic(_) => "magnetic",
         }
     }
 }

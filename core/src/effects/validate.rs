@@ -5,11 +5,11 @@ use std::sync::Arc;
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::spec::{EffectSpec, TorqueSpec};
+use super::spec::{EffectSpec, MagneticSpec, TorqueSpec};
 use super::{Effect, TorqueTable};
 use crate::body::RigidBody;
 use crate::keys::{Checked, KeyPath, finite, invalid, vector};
-use crate::orbit::CircularOrbit;
+use crate::orbit::{CircularOrbit, DipoleField};
 
 /// Every `[[effect]]` of `specs`, in order, and at most one gravity (its pivot is the body's one fixed point) on
 /// `body`. `axis_point_b` is the axis point of a fixed-axis or hinge motion from the mass center, gravity's moment
@@ -118,6 +118,7 @@ fn validate_effect(index: usize, doc: &EffectSpec, on: &Placement) -> Checked<Ef
                 inertia_c_b: *on.inertia_c_b,
             },
         },
+        EffectSpec::Magnetic(ref magnetic) => validate_magnetic(&table, magnetic, on)?,
         EffectSpec::Torque(torque) => validate_torque(&table, &torque)?,
         // The table is read here, once: its errors name the file and the row.
         EffectSpec::TorqueTable(ref spec) => Effect::TorqueTable {
@@ -156,6 +157,41 @@ fn validate_effect(index: usize, doc: &EffectSpec, on: &Placement) -> Checked<Ef
             }
             Effect::Damping { c }
         }
+    })
+}
+
+/// A residual dipole in the Earth's field: an orbit and a free body, a finite dipole (A·m²), finite angles and a
+/// field B₀ > 0 (T).
+fn validate_magnetic(table: &KeyPath, doc: &MagneticSpec, on: &Placement) -> Checked<Effect> {
+    let key = |name: &str| table.clone().key(name);
+    let orbit = match (on.orbit, on.axis_point_b) {
+        (None, _) => {
+            return invalid(
+                key("type"),
+                "effect type = \"magnetic\" needs an `[orbit]` (altitude_km or radius_km): the field is the Earth's along it",
+            );
+        }
+        (Some(_), Some(_)) => {
+            return invalid(
+                key("type"),
+                "a magnetic moment acts on a free body in orbit; a fixed axis or hinge is not in orbit",
+            );
+        }
+        (Some(orbit), None) => *orbit,
+    };
+    let b0 = finite(key("field_b0"), doc.field_b0, "T")?;
+    if b0 <= 0.0 {
+        return invalid(key("field_b0"), format!("must be > 0 (T), got {b0:?}"));
+    }
+    let angle = |name: &str, value: f64| finite(key(name), value, "degrees").map(f64::to_radians);
+    Ok(Effect::Magnetic {
+        orbit,
+        field: DipoleField::new(
+            b0,
+            angle("field_tilt_deg", doc.field_tilt_deg)?,
+            angle("field_lon_deg", doc.field_lon_deg)?,
+        ),
+        dipole_b: vector(key("dipole"), doc.dipole, "A*m^2")?,
     })
 }
 

@@ -7,13 +7,15 @@
 //! y against the orbit normal (−ĥ) and x = y × z along the velocity; it turns at n ĥ in space.
 
 mod columns;
+mod field;
 mod keys;
 
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 use crate::text::for_people;
 
-pub use columns::lvlh_columns;
+pub use columns::{field_columns, lvlh_columns};
+pub use field::{DEFAULT_B0, DipoleField, EARTH_RATE};
 pub(crate) use keys::validate_orbit;
 pub use keys::{OrbitSize, OrbitSpec};
 
@@ -101,6 +103,11 @@ impl CircularOrbit {
     /// The LVLH frame's angular velocity in space axes, n ĥ (rad/s).
     pub fn lvlh_rate_s(&self) -> Vector3<f64> {
         self.plane_s * Vector3::z() * self.mean_motion
+    }
+
+    /// The body's position from the Earth's centre at `t`, space axes (m): r = −r n̂.
+    pub fn position_s(&self, t: f64) -> Vector3<f64> {
+        -self.nadir_s(t) * self.radius
     }
 
     /// The direction to nadir at `t`, space axes: −r̂ = −R_z(Ω) R_x(i) (cos u, sin u, 0).

@@ -27,9 +27,9 @@ pub use oracle::{ClosedForm, Exact, Oracle};
 pub use spec::{
     AttitudeSpec, AxisDirection, AxisParts, AxisSpec, BodySpec, CarrierSpec, CompareSpec,
     ConditionSpec, Direction, Distribution, EffectSpec, EventSpec, Extremum, FixedAxisSpec,
-    HingeSpec, InertiaSpec, InitialSpec, MotionKind, MotionSpec, OutputSpec, PointMassSpec,
-    RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec, TorqueTableSpec,
-    VehicleSpec,
+    HingeSpec, InertiaSpec, InitialSpec, MagneticSpec, MotionKind, MotionSpec, OutputSpec,
+    PointMassSpec, RateSpec, RotorDrive, RotorSpec, SceneSpec, ShapeSpec, SolverSpec, TorqueSpec,
+    TorqueTableSpec, VehicleSpec,
 };
 pub use template::SceneTemplate;
 pub use validate::{InvalidScene, MAX_FIXED_STEPS, MAX_ROWS, Overrides};

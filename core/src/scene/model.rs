@@ -14,7 +14,7 @@ use super::motion::Motion;
 use super::spec::SceneSpec;
 use crate::effects::potential_columns;
 use crate::motion::axis_columns::AxisColumns;
-use crate::orbit::{CircularOrbit, lvlh_columns};
+use crate::orbit::{CircularOrbit, field_columns, lvlh_columns};
 use crate::sample::{ColumnGroup, ColumnSet};
 
 /// `[solver]`, validated.
@@ -54,7 +54,7 @@ impl Scene {
 
     /// The optional columns a run of `motion` with `effects` writes, in order: an axis motion's leading groups,
     /// gravity's potential, the axis motion's trailing group, the capabilities' ([`Motion::capability_columns`]),
-    /// then an orbit's LVLH angles.
+    /// then an orbit's LVLH angles and the Earth's field in body axes (with a magnetic effect).
     pub fn run_columns(
         motion: &Motion,
         effects: &[Effect],
@@ -64,6 +64,10 @@ impl Scene {
         let mut columns =
             Self::own_columns(motion.axis_columns(), gravity, motion.capability_columns());
         columns.groups.extend(orbit.copied().map(lvlh_columns));
+        let field = effects.iter().find_map(Effect::field);
+        columns
+            .groups
+            .extend(field.map(|(orbit, field)| field_columns(orbit, field)));
         columns
     }
 

@@ -50,8 +50,8 @@ fn axes(column: &Column) -> &'static str {
 }
 
 /// The column table: every column in the order a run writes them, with the group that adds it (its name, as
-/// `ColumnGroup::name`): the scene's own (`Scene::all_own_columns`), then a carrier's, a body's wheels' and an
-/// orbit's.
+/// `ColumnGroup::name`): the scene's own (`Scene::all_own_columns`), then a carrier's, a body's wheels', an
+/// orbit's and the Earth's field (with a magnetic effect).
 pub(super) fn column_table() -> String {
     let orbit =
         eulerdyn::orbit::CircularOrbit::new(eulerdyn::orbit::R_EARTH + 500e3, 0.0, 0.0, 0.0);
@@ -59,6 +59,7 @@ pub(super) fn column_table() -> String {
         carrier::columns(),
         eulerdyn::wheels::columns(&["NAME".to_string()], true),
         eulerdyn::orbit::lvlh_columns(orbit),
+        eulerdyn::orbit::field_columns(orbit, eulerdyn::orbit::DipoleField::new(3.12e-5, 0.0, 0.0)),
     ];
     let groups: Vec<(String, Vec<Column>)> =
         std::iter::once(("always".to_string(), BASE_COLUMNS.to_vec()))

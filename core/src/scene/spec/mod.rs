@@ -17,7 +17,7 @@ use crate::frames::Form;
 use crate::keys::{KeyPath, Part};
 use crate::method::Method;
 
-pub use crate::effects::{EffectSpec, TorqueSpec, TorqueTableSpec};
+pub use crate::effects::{EffectSpec, MagneticSpec, TorqueSpec, TorqueTableSpec};
 pub use crate::events::{ConditionSpec, Direction, EventSpec, Extremum};
 pub use crate::motion::spec::{
     AxisDirection, AxisParts, AxisSpec, CarrierSpec, FixedAxisSpec, HingeSpec, MotionKind,
