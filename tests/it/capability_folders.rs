@@ -220,3 +220,46 @@ fn the_motion_table_is_named_only_in_its_folder_and_its_registration() {
         outside.join("\n")
     );
 }
+
+#[test]
+fn each_effect_kind_is_named_only_in_its_folder_and_the_registry() {
+    // A kind is its folder plus its lines in `effects/kinds.rs` (and the re-exports of the effects' and the scene's
+    // public names); the rest of the library asks an effect through `Effect`'s queries.
+    let registrations = [
+        ("effects/kinds.rs", ""),
+        ("effects/spec_builders.rs", ""),
+        ("effects/mod.rs", "pub use "),
+        ("scene/spec/mod.rs", "pub use crate::effects::{EffectSpec,"),
+        ("scene/mod.rs", "Spec,"),
+        ("lib.rs", "Spec,"),
+    ];
+    for (folder, names) in [
+        // `TorqueGiven` is what the query `Effect::torque` answers: the closed forms and the suite read it.
+        ("effects/torque/", &["TorqueKeys", "TorqueSpec"][..]),
+        ("effects/gravity/", &["GravityKeys", "GravitySpec"]),
+        (
+            "effects/damping/",
+            &["DampingKeys", "DampingSpec", "Damping"],
+        ),
+        (
+            "effects/torque_table/",
+            &["TorqueTableKeys", "TorqueTableSpec", "TabulatedTorque"],
+        ),
+        (
+            "effects/gravity_gradient/",
+            &["GravityGradientSpec", "GravityGradient"],
+        ),
+        (
+            "effects/magnetic/",
+            &["MagneticKeys", "MagneticSpec", "MagneticDipole"],
+        ),
+        ("effects/b_dot/", &["BDotKeys", "BDotSpec", "BDot"]),
+    ] {
+        let outside = named_outside(folder, names, &registrations);
+        assert!(
+            outside.is_empty(),
+            "outside core/src/{folder}:\n{}",
+            outside.join("\n")
+        );
+    }
+}

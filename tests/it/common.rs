@@ -155,6 +155,19 @@ pub fn read_csv(text: &str) -> (Vec<String>, Vec<csv::StringRecord>) {
     (head, records)
 }
 
+/// Runs `eulerdyn sweep SWEEP -o DIR/results.csv`, expecting exit 0, and reads the table.
+pub fn sweep_table(sweep: &Path, dir: &Path) -> (Vec<String>, Vec<csv::StringRecord>) {
+    let out = dir.join("results.csv");
+    eulerdyn([
+        "sweep",
+        sweep.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ])
+    .expect_code(0);
+    read_csv(&std::fs::read_to_string(&out).unwrap())
+}
+
 /// The values of the column `name`, parsed as f64.
 pub fn column(head: &[String], records: &[csv::StringRecord], name: &str) -> Vec<f64> {
     let i = head

@@ -356,15 +356,7 @@ fn a_sweep_reports_the_located_maximum_where_its_rows_miss_the_peak() {
         "sweep.toml",
         "scene = \"base.toml\"\n[[vary]]\nkey = \"effect.0.value.2\"\nvalues = [0.3, 0.6]\n[summary]\ncolumns = [\"theta_dot\"]\n",
     );
-    let out = dir.path().join("results.csv");
-    eulerdyn([
-        "sweep",
-        sweep.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ])
-    .expect_code(0);
-    let (head, rows) = crate::common::read_csv(&std::fs::read_to_string(&out).unwrap());
+    let (head, rows) = crate::common::sweep_table(&sweep, dir.path());
     let located = crate::common::column(&head, &rows, "fastest_max");
     let sampled = crate::common::column(&head, &rows, "max_theta_dot");
     let omega_f = 2.0 * PI * 0.7;

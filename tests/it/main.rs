@@ -1,6 +1,7 @@
 //! The integration tests: one test crate (one binary to link, built once by `cargo test --release` on top of
 //! the release build), a module per topic. `common` holds the helpers they share.
 
+mod b_dot;
 mod balance_grade;
 mod balance_slips;
 mod body;

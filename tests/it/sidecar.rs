@@ -64,7 +64,7 @@ fn a_default_left_out_and_written_out_give_the_same_csv_sidecar_scene_and_plots(
         "the same scene as simulated"
     );
     let g = match sidecar_a.scene.spec.effect[0] {
-        EffectSpec::Gravity { g, .. } => Some(g),
+        EffectSpec::Gravity(gravity) => Some(gravity.g),
         _ => None,
     };
     assert_eq!(g, Some([0.0, 0.0, -9.81]), "the default g is written in");

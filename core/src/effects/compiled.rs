@@ -2,11 +2,13 @@
 //! asks for at (t, q, ω); [`TorqueFree`] is none (the compiler removes it, so a torque-free run pays nothing), and
 //! [`EffectMoments`] sums a scene's torques, gravity and damping.
 
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use std::sync::Arc;
 
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+
+use super::compiling::{AttitudeLaw, Compiling, UniformGravity};
 use super::{Effect, TorqueSum, UserMoment};
-use crate::frames::{Axes, StateRotation};
-use crate::orbit::{CircularOrbit, DipoleField};
+use crate::frames::StateRotation;
 
 /// The external moment acting on the body, about the moment center.
 pub trait AppliedMoment {
@@ -55,110 +57,59 @@ impl AppliedMoment for TorqueFree {
 
 /// The sum of a scene's effects, about the moment center:
 /// torque `value·f(t)` (rotated into the body when given in space axes); gravity about the pivot
-/// M = ρ_C × m Rᵀg with ρ_C = −pivot the position of C relative to the pivot; damping M = −c ω.
+/// M = ρ_C × m Rᵀg with ρ_C = −pivot the position of C relative to the pivot; the environment's moments
+/// ([`AttitudeLaw`]); damping M = −c ω; the laws that depend on ω (B-dot, the user's).
 ///
-/// Split as M_b(t, q, ω) = [`EffectMoments::rest_moment_b`](t, q) − c·ω: the part that does not depend on ω
-/// (torques, gravity) and the total damping coefficient c = Σ c_k, which the splitting methods apply as exact kicks.
+/// Split as M_b(t, q, ω) = [`EffectMoments::rest_moment_b`](t, q) − c·ω + Σ laws: the part that does not depend on
+/// ω (torques, gravity, the environment's) and the total damping coefficient c = Σ c_k, which the splitting methods
+/// apply as exact kicks.
 ///
-/// The effects are compiled once: the body-axis torques into one [`TorqueSum`], the space-axis torques into another
-/// (rotated into the body once per evaluation), so that only space torques and gravity need the attitude.
+/// The effects are compiled once (each kind adds itself, [`EffectKind::compile`](super::EffectKind::compile)): the body-axis torques into one
+/// [`TorqueSum`], the space-axis torques into another (rotated into the body once per evaluation), so that only
+/// space torques, gravity and the environment's moments need the attitude.
 ///
-/// The user's laws ([`UserMoment`]) are added to M_b after the rest; they may depend on ω, so they are not part of
+/// The laws ([`UserMoment`]) are added to M_b after the rest; they depend on ω, so they are not part of
 /// `rest_moment_b` and a splitting method cannot apply them (a scene with one refuses split2/split4).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct EffectMoments {
     effects: Vec<Effect>,
     mass: f64,
     torques_b: TorqueSum,
     torques_s: TorqueSum,
-    attitude_moments: Vec<AttitudeMoment>,
+    /// Boxed, one word: the scene's `Motion` holds a hinge's compiled effects and stays small.
+    gravity: Option<Box<UniformGravity>>,
+    attitude_laws: Box<[Arc<dyn AttitudeLaw>]>,
     pub(crate) needs_attitude: bool,
     damping_c: f64,
     laws: Box<[UserMoment]>,
 }
 
-/// A moment that depends on the attitude only through vectors given in space axes: uniform gravity g_s acting at C,
-/// which sits at ρ_C from the moment center (body axes); an orbit's gravity gradient on a body of inertia I about
-/// C; a residual dipole m in the Earth's field, m × B_b.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum AttitudeMoment {
-    Uniform {
-        g_s: Vector3<f64>,
-        rho_c_b: Vector3<f64>,
-    },
-    Gradient {
-        orbit: CircularOrbit,
-        inertia_c_b: Matrix3<f64>,
-    },
-    Magnetic {
-        orbit: CircularOrbit,
-        field: DipoleField,
-        dipole_b: Vector3<f64>,
-    },
+impl PartialEq for EffectMoments {
+    /// Equal when compiled from equal effects on equal masses.
+    fn eq(&self, other: &Self) -> bool {
+        self.effects == other.effects && self.mass == other.mass
+    }
 }
 
 impl EffectMoments {
     /// The moments of `effects` on a body of mass `mass` (kg).
     pub fn new(effects: &[Effect], mass: f64) -> Self {
-        let mut torques_b = TorqueSum::default();
-        let mut torques_s = TorqueSum::default();
-        let mut attitude_moments = Vec::new();
-        let mut damping_c = 0.0;
-        let mut laws = Vec::new();
+        let mut parts = Compiling::default();
         for effect in effects {
-            match effect {
-                Effect::Torque {
-                    frame: Axes::Body,
-                    value,
-                    profile,
-                } => torques_b.add(value, profile),
-                Effect::Torque {
-                    frame: Axes::Space,
-                    value,
-                    profile,
-                } => torques_s.add(value, profile),
-                Effect::Gravity { g_s, pivot_b } => {
-                    attitude_moments.push(AttitudeMoment::Uniform {
-                        g_s: *g_s,
-                        rho_c_b: -pivot_b,
-                    })
-                }
-                Effect::Damping { c } => damping_c += c,
-                Effect::TorqueTable {
-                    frame: Axes::Body,
-                    table,
-                } => torques_b.add_table(table),
-                Effect::TorqueTable {
-                    frame: Axes::Space,
-                    table,
-                } => torques_s.add_table(table),
-                Effect::GravityGradient { orbit, inertia_c_b } => {
-                    attitude_moments.push(AttitudeMoment::Gradient {
-                        orbit: *orbit,
-                        inertia_c_b: *inertia_c_b,
-                    })
-                }
-                Effect::Magnetic {
-                    orbit,
-                    field,
-                    dipole_b,
-                } => attitude_moments.push(AttitudeMoment::Magnetic {
-                    orbit: *orbit,
-                    field: *field,
-                    dipole_b: *dipole_b,
-                }),
-                Effect::User(user) => laws.push(user.clone()),
-            }
+            effect.door().compile(&mut parts);
         }
         Self {
             effects: effects.to_vec(),
             mass,
-            needs_attitude: !torques_s.is_zero() || !attitude_moments.is_empty(),
-            torques_b,
-            torques_s,
-            attitude_moments,
-            damping_c,
-            laws: laws.into_boxed_slice(),
+            needs_attitude: !parts.torques_s.is_zero()
+                || parts.gravity.is_some()
+                || !parts.attitude_laws.is_empty(),
+            torques_b: parts.torques_b,
+            torques_s: parts.torques_s,
+            gravity: parts.gravity.map(Box::new),
+            attitude_laws: parts.attitude_laws.into_boxed_slice(),
+            damping_c: parts.damping_c,
+            laws: parts.laws.into_boxed_slice(),
         }
     }
 
@@ -205,20 +156,12 @@ impl EffectMoments {
         } else {
             to_body(&self.torques_s.at(t))
         };
-        for moment in &self.attitude_moments {
-            m_b += match moment {
-                AttitudeMoment::Uniform { g_s, rho_c_b } => {
-                    rho_c_b.cross(&(to_body(g_s) * self.mass))
-                }
-                AttitudeMoment::Gradient { orbit, inertia_c_b } => {
-                    orbit.gravity_gradient_b(&to_body(&orbit.nadir_s(t)), inertia_c_b)
-                }
-                AttitudeMoment::Magnetic {
-                    orbit,
-                    field,
-                    dipole_b,
-                } => dipole_b.cross(&to_body(&field.b_s(&orbit.position_s(t), t))),
-            };
+        if let Some(gravity) = &self.gravity {
+            let UniformGravity { g_s, rho_c_b } = gravity.as_ref();
+            m_b += rho_c_b.cross(&(to_body(g_s) * self.mass));
+        }
+        for law in &self.attitude_laws {
+            m_b += law.moment_b(t, &to_body);
         }
         m_b
     }
@@ -326,7 +269,9 @@ impl AppliedMoment for EffectMoments {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::effects::Effect;
+    use crate::effects::{
+        Damping, Effect, Gravity, GravityGradient, MagneticDipole, TabulatedTorque, TorqueGiven,
+    };
     use crate::frames::{Axes, StateRotation};
     use crate::orbit::{CircularOrbit, DipoleField};
     use crate::profile::Profile;
@@ -350,11 +295,11 @@ mod tests {
         let mut m_b = Vector3::zeros();
         for effect in effects {
             m_b += match *effect {
-                Effect::Torque {
+                Effect::Torque(TorqueGiven {
                     frame,
                     value,
                     profile,
-                } => {
+                }) => {
                     let factor = match profile {
                         Profile::Constant => 1.0,
                         // The crate's inline sine (within an ulp of the library's, tested in `trig`).
@@ -374,25 +319,27 @@ mod tests {
                         Axes::Space => q.inverse_transform_vector(&(value * factor)),
                     }
                 }
-                Effect::Gravity { g_s, pivot_b } => {
+                Effect::Gravity(Gravity { g_s, pivot_b }) => {
                     (-pivot_b).cross(&(q.inverse_transform_vector(&g_s) * mass))
                 }
-                Effect::Damping { c } => -omega_b * c,
-                Effect::TorqueTable { frame, ref table } => match frame {
+                Effect::Damping(Damping { c }) => -omega_b * c,
+                Effect::TorqueTable(TabulatedTorque { frame, ref table }) => match frame {
                     Axes::Body => table.at(t),
                     Axes::Space => q.inverse_transform_vector(&table.at(t)),
                 },
-                Effect::GravityGradient { orbit, inertia_c_b } => orbit.gravity_gradient_b(
-                    &q.inverse_transform_vector(&orbit.nadir_s(t)),
-                    &inertia_c_b,
-                ),
-                Effect::Magnetic {
+                Effect::GravityGradient(GravityGradient { orbit, inertia_c_b }) => orbit
+                    .gravity_gradient_b(
+                        &q.inverse_transform_vector(&orbit.nadir_s(t)),
+                        &inertia_c_b,
+                    ),
+                Effect::Magnetic(MagneticDipole {
                     orbit,
                     field,
                     dipole_b,
-                } => {
+                }) => {
                     dipole_b.cross(&q.inverse_transform_vector(&field.b_s(&orbit.position_s(t), t)))
                 }
+                Effect::BDot(ref b_dot) => crate::effects::MomentLaw::moment(b_dot, t, q, omega_b),
                 Effect::User(ref user) => user.moment_b(t, q, omega_b),
             };
         }
@@ -415,30 +362,30 @@ mod tests {
                 (v(0.5, 0.25, -0.4), sine),
                 (v(-0.3, 0.6, 0.1), step),
             ] {
-                effects.push(Effect::Torque {
+                effects.push(Effect::Torque(TorqueGiven {
                     frame,
                     value,
                     profile,
-                });
+                }));
             }
         }
-        effects.push(Effect::Gravity {
+        effects.push(Effect::Gravity(Gravity {
             g_s: v(0.0, 0.0, -9.81),
             pivot_b: v(0.01, -0.02, -0.05),
-        });
-        effects.push(Effect::Damping { c: 0.3 });
+        }));
+        effects.push(Effect::Damping(Damping { c: 0.3 }));
         // A close orbit (r = 7000 km) and a large body, so that the gradient's moment is of the others' order.
-        effects.push(Effect::Magnetic {
+        effects.push(Effect::Magnetic(MagneticDipole {
             orbit: CircularOrbit::new(7.0e6, 0.9, 0.4, 1.1),
             field: DipoleField::new(3.12e-5, 0.2, 0.7),
             dipole_b: v(2.0e4, -1.0e4, 3.0e4),
-        });
-        effects.push(Effect::GravityGradient {
+        }));
+        effects.push(Effect::GravityGradient(GravityGradient {
             orbit: CircularOrbit::new(7.0e6, 0.9, 0.4, 1.1),
             inertia_c_b: nalgebra::Matrix3::new(
                 9.0e5, 1.0e4, -2.0e4, 1.0e4, 6.0e5, 3.0e4, -2.0e4, 3.0e4, 3.0e5,
             ),
-        });
+        }));
         effects
     }
 
@@ -490,7 +437,7 @@ mod tests {
         let all = every_kind();
         let (body_torques, rest) = all.split_at(3);
         assert!(!needs(body_torques));
-        assert!(!needs(&[Effect::Damping { c: 0.1 }]));
+        assert!(!needs(&[Effect::Damping(Damping { c: 0.1 })]));
         assert!(needs(&rest[..1]));
         assert!(needs(&rest[3..4]));
         // Without them, the attitude is never normalised: a state quaternion of any norm gives the same moment.

@@ -16,8 +16,9 @@ use crate::text::for_people;
 
 pub use columns::{field_columns, lvlh_columns};
 pub use field::{DEFAULT_B0, DipoleField, EARTH_RATE};
+pub(crate) use keys::FieldKeys;
 pub(crate) use keys::validate_orbit;
-pub use keys::{OrbitSize, OrbitSpec};
+pub use keys::{FieldSpec, OrbitSize, OrbitSpec};
 
 /// The Earth's gravitational parameter μ (m³/s², EGM96/WGS 84).
 pub const MU_EARTH: f64 = 3.986004418e14;
@@ -108,6 +109,11 @@ impl CircularOrbit {
     /// The body's position from the Earth's centre at `t`, space axes (m): r = −r n̂.
     pub fn position_s(&self, t: f64) -> Vector3<f64> {
         -self.nadir_s(t) * self.radius
+    }
+
+    /// The body's velocity at `t`, space axes (m/s): v = n ĥ × r.
+    pub fn velocity_s(&self, t: f64) -> Vector3<f64> {
+        self.lvlh_rate_s().cross(&self.position_s(t))
     }
 
     /// The direction to nadir at `t`, space axes: −r̂ = −R_z(Ω) R_x(i) (cos u, sin u, 0).

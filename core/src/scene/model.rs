@@ -54,7 +54,8 @@ impl Scene {
 
     /// The optional columns a run of `motion` with `effects` writes, in order: an axis motion's leading groups,
     /// gravity's potential, the axis motion's trailing group, the capabilities' ([`Motion::capability_columns`]),
-    /// then an orbit's LVLH angles and the Earth's field in body axes (with a magnetic effect).
+    /// then an orbit's LVLH angles, the Earth's field in body axes (with an effect that acts in it) and the effects'
+    /// own (B-dot's dipole).
     pub fn run_columns(
         motion: &Motion,
         effects: &[Effect],
@@ -68,6 +69,9 @@ impl Scene {
         columns
             .groups
             .extend(field.map(|(orbit, field)| field_columns(orbit, field)));
+        columns
+            .groups
+            .extend(effects.iter().filter_map(Effect::columns));
         columns
     }
 

@@ -256,7 +256,8 @@ fn run_rows(
                     // `Scene::with_moment` refuses this; a scene changed by hand afterwards still gets a clear error.
                     return Err(RunError::Integrate(IntegrateError::InvalidSettings {
                         reason: format!(
-                            "method \"{}\" cannot apply a user's moment law: use rk4, dopri5 or dop853",
+                            "method \"{}\" cannot apply a moment law of omega (b_dot, a user's law): use rk4, \
+                             dopri5 or dop853",
                             scene.solver.method.name()
                         ),
                     }));

@@ -102,6 +102,20 @@ pub(super) fn validate_method(
             ),
         );
     }
+    if !method.is_runge_kutta()
+        && let Some((index, effect)) =
+            (effects.iter().enumerate()).find(|(_, e)| e.depends_on_rate())
+    {
+        return invalid(
+            key_of("solver", "method", o.method.is_some()),
+            format!(
+                "method \"{}\" cannot apply the scene's effect[{index}] ({}): its moment depends on omega, which \
+                 split2/split4 hold fixed in each kick and exact leaves out; use rk4, dopri5 or dop853",
+                method.name(),
+                effect.kind()
+            ),
+        );
+    }
     if method != Method::Exact {
         return Ok(());
     }

@@ -1,5 +1,5 @@
-//! A moment from the user's own law: a Rust type or closure that gives the moment from (t, q, ω_b), named so that
-//! `check` and the run's sidecar say what acted.
+//! A moment law of (t, q, ω_b): a Rust type or closure that gives the moment, named so that `check` and the run's
+//! sidecar say what acted — the user's own, or an effect's that depends on ω (B-dot).
 
 use std::fmt;
 use std::sync::Arc;
