@@ -161,7 +161,7 @@ impl EffectMoments {
             m_b += rho_c_b.cross(&(to_body(g_s) * self.mass));
         }
         for law in &self.attitude_laws {
-            m_b += law.moment_b(t, &to_body);
+            m_b += law.moment_b(&to_body(&law.vector_s(t)));
         }
         m_b
     }

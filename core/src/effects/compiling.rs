@@ -16,11 +16,15 @@ pub(super) struct UniformGravity {
     pub(super) rho_c_b: Vector3<f64>,
 }
 
-/// A moment that depends on the attitude only through vectors given in space axes (an environment's effect): its
-/// body-axis moment at `t` given the rotation `to_body`: v_s ↦ Rᵀ v_s.
+/// A moment that depends on the attitude only through one vector given in space axes (an environment's effect):
+/// M_b = f(Rᵀ v_s(t)), the vector v_s(t) ([`vector_s`](Self::vector_s)) rotated into the body by the caller, so
+/// that the rotation stays inlined in the right-hand side.
 pub trait AttitudeLaw: std::fmt::Debug + Send + Sync {
-    /// M_b(t, R).
-    fn moment_b(&self, t: f64, to_body: &dyn Fn(&Vector3<f64>) -> Vector3<f64>) -> Vector3<f64>;
+    /// v_s(t): the space-axis vector the moment depends on.
+    fn vector_s(&self, t: f64) -> Vector3<f64>;
+
+    /// M_b from v_b = Rᵀ v_s(t).
+    fn moment_b(&self, v_b: &Vector3<f64>) -> Vector3<f64>;
 }
 
 /// What an effect kind adds itself to: the pieces [`EffectMoments`](super::EffectMoments) sums.

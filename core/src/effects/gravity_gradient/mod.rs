@@ -60,8 +60,13 @@ impl EffectKind for GravityGradient {
 }
 
 impl AttitudeLaw for GravityGradient {
-    /// 3n² n̂_b × (I n̂_b), n̂_b = Rᵀ n̂_s(t).
-    fn moment_b(&self, t: f64, to_body: &dyn Fn(&Vector3<f64>) -> Vector3<f64>) -> Vector3<f64> {
-        (self.orbit).gravity_gradient_b(&to_body(&self.orbit.nadir_s(t)), &self.inertia_c_b)
+    /// n̂_s(t), nadir.
+    fn vector_s(&self, t: f64) -> Vector3<f64> {
+        self.orbit.nadir_s(t)
+    }
+
+    /// 3n² n̂_b × (I n̂_b).
+    fn moment_b(&self, nadir_b: &Vector3<f64>) -> Vector3<f64> {
+        (self.orbit).gravity_gradient_b(nadir_b, &self.inertia_c_b)
     }
 }

@@ -111,9 +111,13 @@ impl EffectKind for MagneticDipole {
 }
 
 impl AttitudeLaw for MagneticDipole {
-    /// m × Rᵀ B_s(r(t), t).
-    fn moment_b(&self, t: f64, to_body: &dyn Fn(&Vector3<f64>) -> Vector3<f64>) -> Vector3<f64> {
-        let b_s = self.field.b_s(&self.orbit.position_s(t), t);
-        self.dipole_b.cross(&to_body(&b_s))
+    /// B_s(r(t), t).
+    fn vector_s(&self, t: f64) -> Vector3<f64> {
+        self.field.b_s(&self.orbit.position_s(t), t)
+    }
+
+    /// m × B_b.
+    fn moment_b(&self, b_b: &Vector3<f64>) -> Vector3<f64> {
+        self.dipole_b.cross(b_b)
     }
 }
