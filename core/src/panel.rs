@@ -40,6 +40,10 @@ pub enum Panel {
     WheelFriction,
     /// The attitude from the LVLH frame of the scene's orbit: roll, pitch and yaw (rad).
     Lvlh,
+    /// The Earth's field in body axes, B_b (T): runs with an effect that acts in it (`magnetic`, `b_dot`).
+    Field,
+    /// The magnetorquers' dipole in body axes, m_b (A·m²): runs with `b_dot`.
+    Dipole,
 }
 
 impl Panel {
@@ -85,9 +89,7 @@ impl Panel {
             });
         let friction = wheels.iter().all(|n| has(&format!("{n}_friction")));
         let wheel_panels = Panel::wheel_panels(!wheels.is_empty(), friction);
-        let lvlh = [Panel::Lvlh]
-            .into_iter()
-            .filter(|p| p.columns().iter().all(|c| has(c)));
+        let lvlh = (Panel::ORBIT.into_iter()).filter(|p| p.columns().iter().all(|c| has(c)));
         Panel::ALL
             .into_iter()
             .chain(axis)
@@ -131,6 +133,8 @@ impl Panel {
             Panel::WheelTorque => "wheel_torque",
             Panel::WheelFriction => "wheel_friction",
             Panel::Lvlh => "lvlh",
+            Panel::Field => "field",
+            Panel::Dipole => "dipole",
         }
     }
 
@@ -138,6 +142,10 @@ impl Panel {
     /// are named by the wheels (`<name>_spin`, `<name>_h`, `<name>_torque`, `<name>_torque_cmd`,
     /// `<name>_friction`). [`Panel::WheelFriction`] follows them when the wheels are under control.
     pub const WHEELS: [Panel; 3] = [Panel::WheelSpin, Panel::WheelMomentum, Panel::WheelTorque];
+
+    /// The panels of runs in orbit, drawn last by default when the run has their columns: the attitude from LVLH,
+    /// the field, the magnetorquers' dipole.
+    pub const ORBIT: [Panel; 3] = [Panel::Lvlh, Panel::Field, Panel::Dipole];
 
     /// The CSV columns the panel needs (besides `t`).
     pub fn columns(self) -> &'static [&'static str] {
@@ -164,6 +172,8 @@ impl Panel {
             Panel::Support => &["F_sup_s_x", "F_sup_s_y", "F_sup_s_z"],
             Panel::Theta => &["theta"],
             Panel::Lvlh => &["roll_lvlh", "pitch_lvlh", "yaw_lvlh"],
+            Panel::Field => &["B_b_x", "B_b_y", "B_b_z"],
+            Panel::Dipole => &["m_b_x", "m_b_y", "m_b_z"],
             Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
                 &[]
             }
@@ -190,6 +200,12 @@ impl Panel {
             }
             Panel::Support | Panel::Theta => Some("only fixed_axis and hinge runs have them"),
             Panel::Lvlh => Some("only runs of scenes with an [orbit] have the LVLH angles"),
+            Panel::Field => Some(
+                "only runs of scenes with an effect in the Earth's field (magnetic, b_dot) have the field B_b",
+            ),
+            Panel::Dipole => {
+                Some("only runs of scenes with b_dot have the magnetorquers' dipole m_b")
+            }
             Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque => {
                 Some("only runs of scenes with [[body.rotor]] have the wheels' columns")
             }
@@ -265,7 +281,8 @@ impl Panel {
         Panel::ALL.map(Panel::name).join(", ")
             + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
                (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_h, \
-               wheel_torque, wheel_friction (wheels under control), and for runs in orbit: lvlh"
+               wheel_torque, wheel_friction (wheels under control), and for runs in orbit: lvlh, field (magnetic, b_dot), \
+               dipole (b_dot)"
     }
 }
 
@@ -284,7 +301,8 @@ impl FromStr for Panel {
             .chain(Panel::AXIS_ONLY)
             .chain([Panel::BearingsSpace])
             .chain(Panel::WHEELS)
-            .chain([Panel::WheelFriction, Panel::Lvlh])
+            .chain([Panel::WheelFriction])
+            .chain(Panel::ORBIT)
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }

@@ -71,6 +71,7 @@ pub fn describe(scene: &Scene, warnings: &[String]) -> Description {
         line(w, "orbit", &orbit.describe());
     }
     effect_lines(w, scene);
+    conserved_line(w, scene);
     let steps = method_lines(w, scene);
     output_lines(w, scene);
     // A long estimate continues on the lines below its label.
@@ -394,6 +395,19 @@ fn effect_lines(w: &mut Description, scene: &Scene) {
     for (k, text) in texts.enumerate() {
         line(w, if k == 0 { "effects" } else { "" }, &text);
     }
+}
+
+/// What the run keeps constant (the facts' invariants, by their columns), or that it keeps nothing: with an orbit's,
+/// a law's or a drive's moments neither H nor the energy is an invariant.
+fn conserved_line(w: &mut Description, scene: &Scene) {
+    let invariants = &scene.facts().invariants;
+    let text = if invariants.is_empty() {
+        "nothing: the scene's moments change both H and the energy".to_string()
+    } else {
+        let columns: Vec<&str> = invariants.iter().map(|i| i.column()).collect();
+        format!("{} (the drift panel shows their error)", columns.join(", "))
+    };
+    line(w, "conserved", &text);
 }
 
 /// The equation and the method with its step or tolerances; returns the estimate of the steps (one line or more).

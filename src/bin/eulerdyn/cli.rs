@@ -131,11 +131,11 @@ pub struct PlotArgs {
     /// run has these six); theta, support, bearings (and bearings_space, the same in space axes) for fixed_axis
     /// and hinge runs; wheel_spin, wheel_h, wheel_torque (with the friction dashed) for runs with wheels
     /// ([[body.rotor]]) and wheel_friction for wheels under control; lvlh (roll, pitch, yaw from the LVLH frame)
-    /// for runs in orbit. `all`, alone: every panel the run has.
+    /// for runs in orbit, field (B in body axes) with magnetic or b_dot, dipole (the magnetorquers') with b_dot. `all`, alone: every panel the run has.
     ///
     /// Default: the panels the run has (and `all`): the six, then theta and support for a fixed_axis or hinge
     /// run, bearings when it has bearings, wheel_spin, wheel_h and wheel_torque when it has wheels, with
-    /// wheel_friction when they are under control, and lvlh in orbit.
+    /// wheel_friction when they are under control, and lvlh, field and dipole in orbit when the run has them.
     #[arg(long, value_name = "LIST")]
     pub panels: Option<String>,
     /// Figure width and height in centimetres (at 96 pixels per inch), e.g. 16,12. Default: 16 cm wide, as

@@ -191,6 +191,24 @@ fn curves_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
                 single(run, "yaw_lvlh", "yaw", BLUE),
             ],
         ),
+        Panel::Field => PanelPlot::linear(
+            "The Earth's field B in body axes",
+            "B (T)",
+            vec![
+                single(run, "B_b_x", "B_b,x", RED),
+                single(run, "B_b_y", "B_b,y", GREEN),
+                single(run, "B_b_z", "B_b,z", BLUE),
+            ],
+        ),
+        Panel::Dipole => PanelPlot::linear(
+            "The magnetorquers' dipole m in body axes (B-dot)",
+            "m (A·m²)",
+            vec![
+                single(run, "m_b_x", "m_b,x", RED),
+                single(run, "m_b_y", "m_b,y", GREEN),
+                single(run, "m_b_z", "m_b,z", BLUE),
+            ],
+        ),
     }
 }
 

@@ -13,6 +13,7 @@
 use super::{CheckNumbers, Facts, Invariant};
 use crate::effects::Effect;
 use crate::panel::Panel;
+use crate::sample::ColumnSet;
 use crate::scene::model::Scene;
 use crate::scene::motion::Motion;
 use crate::scene::oracle::Oracle;
@@ -33,14 +34,15 @@ impl Facts {
     pub fn of(scene: &Scene) -> Self {
         let moving_support = (scene.motion.axis()).is_some_and(|a| a.moving_support().is_some());
         let oracle = Oracle::for_scene(scene);
+        let columns = Scene::run_columns(&scene.motion, &scene.effects, scene.orbit.as_ref());
         Facts {
             invariants: invariants(scene, moving_support),
             closed_form: oracle.as_ref().map(Oracle::kind),
             moving_support,
-            panels: panels(&scene.motion, moving_support, scene.orbit.is_some()),
+            panels: panels(&scene.motion, moving_support, &columns),
             check: Some(CheckNumbers::of(scene)),
             oracle,
-            columns: Scene::run_columns(&scene.motion, &scene.effects, scene.orbit.as_ref()),
+            columns,
         }
     }
 }
@@ -86,8 +88,8 @@ fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
     }
 }
 
-/// The panels of a run of `motion`, in orbit or not ([`Facts::panels`]).
-fn panels(motion: &Motion, moving_support: bool, orbit: bool) -> Vec<Panel> {
+/// The panels of a run of `motion` writing `columns` ([`Facts::panels`]): the orbit's when it has their columns.
+fn panels(motion: &Motion, moving_support: bool, columns: &ColumnSet) -> Vec<Panel> {
     let mut panels = Panel::ALL.to_vec();
     if let Some(axis) = motion.axis() {
         panels.extend([Panel::Theta, Panel::Support]);
@@ -101,6 +103,12 @@ fn panels(motion: &Motion, moving_support: bool, orbit: bool) -> Vec<Panel> {
     if let Some(g) = motion.gyrostat() {
         panels.extend(g.panels());
     }
-    panels.extend([Panel::Lvlh].into_iter().filter(|_| orbit));
+    let names: Vec<String> = columns
+        .columns()
+        .iter()
+        .map(|c| c.name.to_string())
+        .collect();
+    let has_all = |p: &Panel| p.columns().iter().all(|c| names.iter().any(|n| n == c));
+    panels.extend(Panel::ORBIT.into_iter().filter(has_all));
     panels
 }
