@@ -9,6 +9,8 @@ window.eulerdynVectors = {
   M_s: { label: 'M (moment about the center)', color: '#1aa6b7', kind: 'M' },
   R_A_s: { label: 'R_A (bearing A on the body)', color: '#7a5230', kind: 'R' },
   R_B_s: { label: 'R_B (bearing B on the body)', color: '#a07850', kind: 'R' },
+  nadir_s: { label: 'nadir (toward the Earth\'s centre)', color: '#2f7d32', kind: 'direction' },
+  field_s: { label: 'the Earth\'s magnetic field B', color: '#6a3fb5', kind: 'direction' },
 };
 
 window.eulerdynControls = function (api, data) {
@@ -27,6 +29,10 @@ window.eulerdynControls = function (api, data) {
   for (const name of api.vectors) {
     const v = window.eulerdynVectors[name];
     if (!v) continue;
+    if (v.kind === 'direction') {
+      legend.push(`<li><span class="swatch" style="background:${v.color}"></span>${v.label}: its direction, from O</li>`);
+      continue;
+    }
     let longest = 0;
     for (const row of api.rows) longest = Math.max(longest, Math.hypot(...row[name]));
     // H shares its scale with the wheels' momenta.

@@ -97,7 +97,7 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     if (!look) continue;
     const arrow = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, look.color);
     arrow.line.material.linewidth = 2;
-    if (look.kind !== 'R') arrow.position.copy(anchor);
+    if (look.kind !== 'R' && look.kind !== 'direction') arrow.position.copy(anchor);
     if (name === 'R_A_s' && bearings) arrow.position.copy(bearings[0]);
     if (name === 'R_B_s' && bearings) arrow.position.copy(bearings[1]);
     scene.add(arrow);

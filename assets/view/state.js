@@ -22,16 +22,46 @@
     R_B_s: xyz('R_B_s'),
   };
   const qIndex = indices(['q_w', 'q_x', 'q_y', 'q_z']);
+  // In orbit: nadir (from the sidecar's orbit) and the Earth's field (its columns in body axes), drawn as directions.
+  const orbit = geometry.orbit || null;
+  const fieldIndex = xyz('B_b');
   // The wheels ([[body.rotor]] in the sidecar's scene) whose axial momentum `<name>_h` the CSV has.
   const rotors = (geometry.rotors || []).map((r) => ({ ...r, index: columns.indexOf(r.name + '_h') }))
     .filter((r) => r.index >= 0);
-  const vectorNames = Object.keys(vectorIndex).filter((k) => vectorIndex[k] !== null);
+  const directionNames = [orbit && 'nadir_s', fieldIndex && 'field_s'].filter((n) => n);
+  const vectorNames = Object.keys(vectorIndex).filter((k) => vectorIndex[k] !== null).concat(directionNames);
+
+  /** v rotated by the unit quaternion q = [w, x, y, z] (body → space): v + 2w (u × v) + 2 u × (u × v). */
+  function rotate(q, v) {
+    const [w, x, y, z] = q;
+    const c = [y * v[2] - z * v[1], z * v[0] - x * v[2], x * v[1] - y * v[0]];
+    const cc = [y * c[2] - z * c[1], z * c[0] - x * c[2], x * c[1] - y * c[0]];
+    return v.map((vi, i) => vi + 2 * w * c[i] + 2 * cc[i]);
+  }
+
+  /** The directions a row in orbit draws, in space axes: nadir on the circular orbit at the row's time,
+   * −R_z(Ω) R_x(i) (cos u, sin u, 0) with u = u₀ + n t, and the field's direction B_b / |B_b| turned by q. */
+  function directions(row, q, s) {
+    if (orbit) {
+      const u = orbit.arg_lat0 + orbit.mean_motion * s.t;
+      const [ci, si, co, so] = [Math.cos(orbit.inclination), Math.sin(orbit.inclination), Math.cos(orbit.raan),
+        Math.sin(orbit.raan)];
+      const plane = [Math.cos(u), Math.sin(u) * ci, Math.sin(u) * si];
+      s.nadir_s = [-(co * plane[0] - so * plane[1]), -(so * plane[0] + co * plane[1]), -plane[2]];
+    }
+    if (fieldIndex) {
+      const b = fieldIndex.map((i) => row[i]);
+      const norm = Math.hypot(b[0], b[1], b[2]);
+      s.field_s = rotate(q, norm > 0 ? b.map((x) => x / norm) : b);
+    }
+  }
 
   /** The state of kept row k: its values exactly as embedded. */
   function rowState(k) {
     const row = table[k];
     const s = { t: row[0], q: qIndex.map((i) => row[i]) };
-    for (const name of vectorNames) s[name] = vectorIndex[name].map((i) => row[i]);
+    for (const name of vectorNames) if (vectorIndex[name]) s[name] = vectorIndex[name].map((i) => row[i]);
+    directions(row, s.q, s);
     s.rotor_h = rotors.map((r) => row[r.index]);
     return s;
   }

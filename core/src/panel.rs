@@ -65,16 +65,18 @@ impl Panel {
     /// ([`crate::scene::Facts::panels`]): every panel of [`Panel::ALL`], then those of [`Panel::AXIS_ONLY`] whose
     /// columns the header has (the bearings in space axes when the support moves, `moving_support`), then
     /// [`Panel::WHEELS`] when the run has `wheels` (their names), with [`Panel::WheelFriction`] when each has its
-    /// `<name>_friction` column (wheels under control), then [`Panel::Lvlh`] when it has the LVLH angles (in orbit).
+    /// `<name>_friction` column (wheels under control), then those of [`Panel::ORBIT`] whose columns it has.
     ///
     /// ```
     /// use eulerdyn::panel::Panel;
-    /// let free_columns = |c: &str| !c.starts_with("R_") && c != "theta" && !c.starts_with("F_sup") && !c.ends_with("_lvlh");
+    /// let free_columns = |c: &str| Panel::ALL.iter().any(|p| p.columns().contains(&c));
     /// assert_eq!(Panel::of_run(free_columns, false, &[]), Panel::ALL);
-    /// let wheel = Panel::of_run(free_columns, false, &["rw".to_string()]);
+    /// let wheel = Panel::of_run(|c| free_columns(c) || c.starts_with("rw_"), false, &["rw".to_string()]);
     /// assert_eq!(wheel.last(), Some(&Panel::WheelFriction));
     /// let in_orbit = Panel::of_run(|c| free_columns(c) || c.ends_with("_lvlh"), false, &[]);
     /// assert_eq!(in_orbit.last(), Some(&Panel::Lvlh));
+    /// let with_b_dot = Panel::of_run(|c| free_columns(c) || c.starts_with("B_b") || c.starts_with("m_b"), false, &[]);
+    /// assert_eq!(with_b_dot[with_b_dot.len() - 2..], [Panel::Field, Panel::Dipole]);
     /// ```
     pub fn of_run(
         has: impl Fn(&str) -> bool,

@@ -296,6 +296,42 @@ def test_bearing_forces_are_drawn_where_the_run_has_them(work, open_page):
     assert "R_A" in page.page.inner_text("#legend")
 
 
+def test_in_orbit_nadir_and_the_field_are_drawn_as_directions(work, open_page):
+    # Nadir from the orbital elements: -r_hat = -R_z(raan) R_x(i) (cos u, sin u, 0), u = n t (the scenario's orbit:
+    # 500 km, i = 97.4 deg, raan = 0, u0 = 0; n = sqrt(mu / r^3)); the field's direction q B_b / |B_b| from the CSV.
+    csv_path, html_path, _ = make_page(work, "cubesat_b_dot.toml", "cubesat", "--t-end", "600")
+    page = open_page(html_path)
+    vectors = page.js("() => window.eulerdyn.vectors")
+    assert "nadir_s" in vectors and "field_s" in vectors, vectors
+    rows = read_csv(csv_path)
+    r = 6378.137e3 + 500e3
+    n = math.sqrt(3.986004418e14 / r**3)
+    inc = math.radians(97.4)
+    picked = [rows[k] for k in (0, 7, 30, len(rows) - 1)]
+    for row, s in zip(picked, states_at(page, [row["t"] for row in picked])):
+        u = n * row["t"]
+        nadir = [-math.cos(u), -math.sin(u) * math.cos(inc), -math.sin(u) * math.sin(inc)]
+        # The page evaluates the same closed form from the sidecar's orbit: agreement to rounding, 1e-12.
+        assert max(abs(a - b) for a, b in zip(s["nadir_s"], nadir)) < 1e-12, (row["t"], s["nadir_s"], nadir)
+        q = [row["q_w"], row["q_x"], row["q_y"], row["q_z"]]
+        b = [row["B_b_x"], row["B_b_y"], row["B_b_z"]]
+        b_s = rotate(q, [x / math.hypot(*b) for x in b])
+        assert max(abs(a - c) for a, c in zip(s["field_s"], b_s)) < 1e-12, (row["t"], s["field_s"], b_s)
+    legend = page.page.inner_text("#legend")
+    assert "nadir" in legend and "magnetic field" in legend
+
+
+def rotate(q, v):
+    """v turned by the unit quaternion q = (w, x, y, z): the rotation matrix of Shuster (1993), eq. 161, applied."""
+    w, x, y, z = q
+    m = [
+        [w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z],
+    ]
+    return [sum(m[i][k] * v[k] for k in range(3)) for i in range(3)]
+
+
 def test_without_the_sidecar_the_page_draws_the_csv_and_says_what_is_missing(disk, work, open_page):
     csv_path = work / "lonely.csv"
     shutil.copy(disk[0], csv_path)

@@ -86,6 +86,21 @@ impl CircularOrbit {
         self.radius
     }
 
+    /// The inclination i (rad).
+    pub fn inclination(&self) -> f64 {
+        self.inclination
+    }
+
+    /// The right ascension of the ascending node Ω (rad).
+    pub fn raan(&self) -> f64 {
+        self.raan
+    }
+
+    /// The argument of latitude at t = 0, u₀ (rad).
+    pub fn arg_lat0(&self) -> f64 {
+        self.arg_lat0
+    }
+
     /// n = √(μ/r³) (rad/s).
     pub fn mean_motion(&self) -> f64 {
         self.mean_motion

@@ -98,6 +98,12 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
             "motion": motion,
             "effects": scene.effects.iter().map(|e| e.kind()).collect::<Vec<_>>(),
             "gravity_s": gravity_s(&scene.effects).map(|g| vec3(&g)),
+            "orbit": scene.orbit.map(|o| json!({
+                "mean_motion": o.mean_motion(),
+                "inclination": o.inclination(),
+                "raan": o.raan(),
+                "arg_lat0": o.arg_lat0(),
+            })),
             "body": body,
             "point_masses": point_masses,
             "rotors": rotors,

@@ -36,10 +36,12 @@ pub const REQUIRED: [&str; 17] = [
     "M_s_z",
 ];
 
-/// Column groups drawn when the CSV has all of the group: the bearings' forces on the body, in space axes.
-pub const OPTIONAL: [[&str; 3]; 2] = [
+/// Column groups drawn when the CSV has all of the group: the bearings' forces on the body, in space axes; in
+/// orbit, the Earth's field in body axes (drawn as its direction).
+pub const OPTIONAL: [[&str; 3]; 3] = [
     ["R_A_s_x", "R_A_s_y", "R_A_s_z"],
     ["R_B_s_x", "R_B_s_y", "R_B_s_z"],
+    ["B_b_x", "B_b_y", "B_b_z"],
 ];
 
 /// The wheels' axial momentum columns `<name>_h`, in the header's order, of the rotors whose three columns
