@@ -48,6 +48,9 @@ $eulerdyn plot "$work/explorer1.csv" -o "$out/explorer1.svg" --panels omega,ener
 $eulerdyn run scenarios/gravity_gradient_boom.toml -o "$work/gravity_gradient_boom.csv"
 $eulerdyn plot "$work/gravity_gradient_boom.csv" -o "$out/gravity_gradient_boom.svg" --panels lvlh,moment
 
+$eulerdyn run scenarios/cubesat_b_dot.toml -o "$work/cubesat_b_dot.csv"
+$eulerdyn plot "$work/cubesat_b_dot.csv" -o "$out/cubesat_b_dot.svg" --panels omega,energy,field,dipole
+
 # A slew through three wheels that saturate at 0.05 N·m (examples/wheel_slew.rs, a PD law): the body's rate, the
 # wheels' speeds and their commanded and applied torques. SLEW_CSV: a run of it made already (the gallery test's).
 slew_csv=${SLEW_CSV:-"$work/slew.csv"}

@@ -25,11 +25,50 @@ pub trait Named: Sized + Copy + 'static {
             .ok_or_else(|| {
                 let names: Vec<&str> = Self::ALL.iter().map(Self::name).collect();
                 format!(
-                    "unknown value \"{name}\"; expected one of: {}",
-                    names.join(", ")
+                    "unknown value \"{name}\"; expected one of: {}{}",
+                    names.join(", "),
+                    nearest_hint(name, &names)
                 )
             })
     }
+}
+
+/// `; the nearest is `x``: the choice nearest `name` by edit distance, when it is within a third of the longer
+/// name (two edits at least): a misspelling, not another word. Empty otherwise.
+///
+/// ```
+/// use eulerdyn::named::nearest_hint;
+/// assert_eq!(nearest_hint("bdot", &["magnetic", "b_dot"]), "; the nearest is `b_dot`");
+/// assert_eq!(nearest_hint("euler", &["rk4", "dop853"]), "");
+/// ```
+pub fn nearest_hint(name: &str, choices: &[&str]) -> String {
+    let lower = name.to_lowercase();
+    let nearest = (choices.iter())
+        .map(|c| (edit_distance(&lower, &c.to_lowercase()), *c))
+        .min_by_key(|(d, _)| *d);
+    match nearest {
+        Some((d, choice)) if d > 0 && d <= 2.max(name.len().max(choice.len()) / 3) => {
+            format!("; the nearest is `{choice}`")
+        }
+        _ => String::new(),
+    }
+}
+
+/// The Levenshtein distance of `a` and `b` (insertions, deletions and substitutions of characters), by the
+/// two-row dynamic programme of Wagner & Fischer, "The string-to-string correction problem", JACM 21 (1974).
+pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let substitute = diagonal + usize::from(ca != *cb);
+            diagonal = row[j + 1];
+            row[j + 1] = substitute.min(row[j] + 1).min(diagonal + 1);
+        }
+    }
+    row[b.len()]
 }
 
 /// serde by [`Named::name`], so that a scene file's `method = "rk4"` is a typed value and a wrong name gets the
@@ -52,3 +91,17 @@ macro_rules! serde_by_name {
 }
 
 pub(crate) use serde_by_name;
+
+#[cfg(test)]
+mod tests {
+    use super::edit_distance;
+
+    #[test]
+    fn the_edit_distance_counts_single_character_edits() {
+        // Wagner & Fischer (1974): kitten → sitting takes 3 edits (two substitutions, one insertion).
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("effects", "effect"), 1);
+        assert_eq!(edit_distance("", "abc"), 3);
+        assert_eq!(edit_distance("same", "same"), 0);
+    }
+}

@@ -55,6 +55,7 @@ fn the_gallery_script_remakes_the_committed_figures_byte_for_byte() {
     assert_eq!(
         made,
         [
+            "cubesat_b_dot.svg",
             "explorer1.svg",
             "gravity_gradient_boom.svg",
             "heavy_top.svg",

@@ -142,7 +142,14 @@ pub fn derive(input: &DeriveInput) -> syn::Result<TokenStream> {
                     fn visit_str<E: ::serde::de::Error>(self, v: &str) -> ::core::result::Result<#ident, E> {
                         match v {
                             #(#names => Ok(#ident::#idents),)*
-                            _ => Err(E::unknown_variant(v, #ident::NAMES)),
+                            _ => {
+                                let listed: ::std::vec::Vec<::std::string::String> = #ident::NAMES.iter().map(|n| ::std::format!("`{n}`")).collect();
+                                Err(E::custom(::std::format!(
+                                    "unknown variant `{v}`, expected one of {}{}",
+                                    listed.join(", "),
+                                    crate::named::nearest_hint(v, #ident::NAMES)
+                                )))
+                            }
                         }
                     }
                 }

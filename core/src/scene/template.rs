@@ -74,9 +74,9 @@ impl SceneTemplate {
         if *name != wrong {
             return None;
         }
-        let nearest = valid
-            .iter()
-            .min_by_key(|v| edit_distance(&wrong.to_lowercase(), &v.to_lowercase()))?;
+        let nearest = valid.iter().min_by_key(|v| {
+            crate::named::edit_distance(&wrong.to_lowercase(), &v.to_lowercase())
+        })?;
         let mut fixed = truncated(key, absent).key(nearest);
         for segment in &key.segments()[absent + 1..] {
             fixed = match segment {
@@ -223,23 +223,6 @@ fn unknown_field(message: &str) -> Option<(String, Vec<String>)> {
     (!valid.is_empty()).then(|| (wrong.to_string(), valid))
 }
 
-/// The Levenshtein distance of `a` and `b` (insertions, deletions and substitutions of characters), by the
-/// two-row dynamic programme of Wagner & Fischer, "The string-to-string correction problem", JACM 21 (1974).
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let substitute = diagonal + usize::from(ca != *cb);
-            diagonal = row[j + 1];
-            row[j + 1] = substitute.min(row[j] + 1).min(diagonal + 1);
-        }
-    }
-    row[b.len()]
-}
-
 fn out_of_range(path: &str, len: usize) -> String {
     if len == 0 {
         format!(
@@ -351,14 +334,5 @@ mod tests {
             leaf.contains("the nearest valid key is `motion.tilt_deg`"),
             "{leaf}"
         );
-    }
-
-    #[test]
-    fn the_edit_distance_counts_single_character_edits() {
-        // Wagner & Fischer (1974): kitten → sitting takes 3 edits (two substitutions, one insertion).
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
-        assert_eq!(edit_distance("effects", "effect"), 1);
-        assert_eq!(edit_distance("", "abc"), 3);
-        assert_eq!(edit_distance("same", "same"), 0);
     }
 }
