@@ -7,7 +7,9 @@ use std::sync::Arc;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 use super::compiling::{AttitudeLaw, Compiling, UniformGravity};
-use super::{Effect, TorqueSum, UserMoment};
+use super::kinds::Effect;
+use super::law::UserMoment;
+use super::torque_sum::TorqueSum;
 use crate::frames::StateRotation;
 
 /// The external moment acting on the body, about the moment center.

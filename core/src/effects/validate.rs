@@ -4,7 +4,7 @@
 use nalgebra::Vector3;
 
 use super::kind::Placement;
-use super::{Effect, EffectSpec};
+use super::kinds::{Effect, EffectSpec};
 use crate::body::RigidBody;
 use crate::keys::{Checked, KeyPath, invalid};
 use crate::orbit::CircularOrbit;
