@@ -407,16 +407,22 @@ fn the_dipole_field_over_the_poles_and_the_equator_is_the_closed_form() {
 fn a_tilted_field_turns_with_the_earth_and_its_moment_is_m_cross_b() {
     // The field of a dipole tilted 11° toward longitude 40° at t = 0, turning with the Earth at 7.2921159e-5 rad/s,
     // evaluated here from the orbital elements (Vallado's position, the dipole's axis turned about z) and its
-    // moment m × B_b on a tumbling body, against every row of the run.
+    // moment m × B_b on a tumbling body, against every row of the run, in both forms of Euler's equation.
     let magnetic = "dipole = [0.02, -0.05, 0.03]\nfield_tilt_deg = 11.0\nfield_lon_deg = 40.0";
-    let text = scene_text("omega = [0.02, -0.01, 0.03]", false, Form::Body, 3000.0, "").replace(
-        "[solver]",
-        &format!("[[effect]]\ntype = \"magnetic\"\n{magnetic}\n[solver]"),
-    );
-    let rows = columns_of(
-        &text,
-        &["B_b_x", "B_b_y", "B_b_z", "M_b_x", "M_b_y", "M_b_z"],
-    );
+    let run = |form| {
+        let text = scene_text("omega = [0.02, -0.01, 0.03]", false, form, 3000.0, "").replace(
+            "[solver]",
+            &format!("[[effect]]\ntype = \"magnetic\"\n{magnetic}\n[solver]"),
+        );
+        columns_of(
+            &text,
+            &["B_b_x", "B_b_y", "B_b_z", "M_b_x", "M_b_y", "M_b_z"],
+        )
+    };
+    let rows: Vec<_> = run(Form::Body)
+        .into_iter()
+        .chain(run(Form::Space))
+        .collect();
     let (i, o, u0, n) = (
         51.6f64.to_radians(),
         30f64.to_radians(),
