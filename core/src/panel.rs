@@ -182,6 +182,37 @@ impl Panel {
         }
     }
 
+    /// A panel that draws its [`columns`](Self::columns) as they are, one curve each: its title, its axis label and
+    /// each curve's label, in the order of the columns; `None` for the panels drawn their own way.
+    ///
+    /// ```
+    /// use eulerdyn::panel::Panel;
+    /// let (_, axis, labels) = Panel::Field.plain_curves().unwrap();
+    /// assert_eq!((axis, labels.len()), ("B (T)", Panel::Field.columns().len()));
+    /// assert!(Panel::Drift.plain_curves().is_none());
+    /// ```
+    pub fn plain_curves(self) -> Option<(&'static str, &'static str, &'static [&'static str])> {
+        match self {
+            Panel::Theta => Some(("Angle θ turned about the fixed axis", "θ (rad)", &["θ"])),
+            Panel::Lvlh => Some((
+                "Attitude from LVLH (3-2-1: yaw, pitch, roll)",
+                "angle (rad)",
+                &["roll", "pitch", "yaw"],
+            )),
+            Panel::Field => Some((
+                "The Earth's field B in body axes",
+                "B (T)",
+                &["B_b,x", "B_b,y", "B_b,z"],
+            )),
+            Panel::Dipole => Some((
+                "The magnetorquers' dipole m in body axes (B-dot)",
+                "m (A·m²)",
+                &["m_b,x", "m_b,y", "m_b,z"],
+            )),
+            _ => None,
+        }
+    }
+
     /// The CSV columns the panel draws when the file has them: V and T + V (gravity scenes) for the energy panel,
     /// T + V and H_s,z (an invariant under vertical gravity) for the drift panel; the H panels read T and ω_b for
     /// the run's momentum scale, below which a change of H is drawn flat.

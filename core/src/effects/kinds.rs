@@ -139,6 +139,11 @@ impl Effect {
         }
     }
 
+    /// Whether this is an orbit's gravity gradient (which does not combine with uniform gravity).
+    pub(crate) fn is_gravity_gradient(&self) -> bool {
+        matches!(self, Effect::GravityGradient(_))
+    }
+
     /// The torque as given, when this effect is an applied torque (not a table).
     pub fn torque(&self) -> Option<TorqueGiven> {
         match self {

@@ -104,7 +104,8 @@ mod tests {
                 let h = 0.5;
                 let difference =
                     (b(t - 2.0 * h) - b(t + 2.0 * h) + (b(t + h) - b(t - h)) * 8.0) / (12.0 * h);
-                let rate = field.b_rate_s(&orbit.position_s(t), &orbit.velocity_s(t), t);
+                let (r_s, v_s) = orbit.position_and_velocity_s(t);
+                let rate = field.b_rate_s(&r_s, &v_s, t);
                 assert!(
                     (rate - difference).norm() <= 1e-11 * rate.norm(),
                     "t = {t}: {rate:?} vs {difference:?}"

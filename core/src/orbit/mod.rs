@@ -126,9 +126,10 @@ impl CircularOrbit {
         -self.nadir_s(t) * self.radius
     }
 
-    /// The body's velocity at `t`, space axes (m/s): v = n ĥ × r.
-    pub fn velocity_s(&self, t: f64) -> Vector3<f64> {
-        self.lvlh_rate_s().cross(&self.position_s(t))
+    /// The body's position and velocity at `t`, space axes (m, m/s): r and v = n ĥ × r.
+    pub fn position_and_velocity_s(&self, t: f64) -> (Vector3<f64>, Vector3<f64>) {
+        let r_s = self.position_s(t);
+        (r_s, self.lvlh_rate_s().cross(&r_s))
     }
 
     /// The direction to nadir at `t`, space axes: −r̂ = −R_z(Ω) R_x(i) (cos u, sin u, 0).

@@ -174,42 +174,25 @@ fn curves_plot(run: &RunSeries, panel: Panel) -> PanelPlot {
         Panel::Bearings => bearings_panel(run, "b", "body"),
         Panel::BearingsSpace => bearings_panel(run, "s", "space"),
         Panel::Support => support_panel(run),
-        Panel::Theta => PanelPlot::linear(
-            "Angle θ turned about the fixed axis",
-            "θ (rad)",
-            vec![single(run, "theta", "θ", BLUE)],
-        ),
         Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
             wheels_panel(run, panel)
         }
-        Panel::Lvlh => PanelPlot::linear(
-            "Attitude from LVLH (3-2-1: yaw, pitch, roll)",
-            "angle (rad)",
-            vec![
-                single(run, "roll_lvlh", "roll", RED),
-                single(run, "pitch_lvlh", "pitch", GREEN),
-                single(run, "yaw_lvlh", "yaw", BLUE),
-            ],
-        ),
-        Panel::Field => PanelPlot::linear(
-            "The Earth's field B in body axes",
-            "B (T)",
-            vec![
-                single(run, "B_b_x", "B_b,x", RED),
-                single(run, "B_b_y", "B_b,y", GREEN),
-                single(run, "B_b_z", "B_b,z", BLUE),
-            ],
-        ),
-        Panel::Dipole => PanelPlot::linear(
-            "The magnetorquers' dipole m in body axes (B-dot)",
-            "m (A·m²)",
-            vec![
-                single(run, "m_b_x", "m_b,x", RED),
-                single(run, "m_b_y", "m_b,y", GREEN),
-                single(run, "m_b_z", "m_b,z", BLUE),
-            ],
-        ),
+        plain => plain_panel(run, plain),
     }
+}
+
+/// A panel of [`Panel::plain_curves`]: each column as it is, blue alone, else red, green and blue in order.
+fn plain_panel(run: &RunSeries, panel: Panel) -> PanelPlot {
+    let (title, axis, labels) = panel.plain_curves().unwrap_or((panel.name(), "", &[]));
+    let colors: &[RGBColor] = if labels.len() == 1 {
+        &[BLUE]
+    } else {
+        &[RED, GREEN, BLUE]
+    };
+    let curves = (panel.columns().iter().zip(labels).zip(colors))
+        .map(|((column, label), color)| single(run, column, label, *color))
+        .collect();
+    PanelPlot::linear(title, axis, curves)
 }
 
 /// The wheels' spins Ω (rad/s), axial momenta J (a·ω + Ω) (N·m·s), friction torques, or their motor torques

@@ -119,7 +119,7 @@ impl BDot {
         q: &UnitQuaternion<f64>,
         omega_b: &Vector3<f64>,
     ) -> (Vector3<f64>, Vector3<f64>) {
-        let (r_s, v_s) = (self.orbit.position_s(t), self.orbit.velocity_s(t));
+        let (r_s, v_s) = self.orbit.position_and_velocity_s(t);
         let b_b = q.inverse_transform_vector(&self.field.b_s(&r_s, t));
         let b_rate_b =
             q.inverse_transform_vector(&self.field.b_rate_s(&r_s, &v_s, t)) - omega_b.cross(&b_b);
