@@ -38,26 +38,28 @@ use super::{
     start,
 };
 
-/// Adapter from [`OdeSystem`] to `ode_solvers::System` on dynamic vectors. With `autonomous`,
+/// The right-hand side f(t, y) on slices of N numbers, behind `dyn` so that ode_solvers' solvers are compiled once
+/// each rather than once per system (they run at ode_solvers' own pace on heap vectors; the call is not the cost).
+type DynRhs<'s> = dyn FnMut(f64, &[f64], &mut [f64]) + 's;
+
+/// Adapter from a right-hand side on N numbers to `ode_solvers::System` on dynamic vectors. With `autonomous`,
 /// the state has N + 1 components and the last one is the time τ (τ' = 1).
-struct Adapter<'a, 'b, const N: usize, S> {
-    sys: &'a RefCell<&'b mut S>,
+struct Adapter<'a, 's> {
+    rhs: &'a RefCell<&'a mut DynRhs<'s>>,
+    n: usize,
     autonomous: bool,
     /// Time of the last accepted step seen by `solout`, and the largest accepted step.
     last_x: &'a Cell<f64>,
     max_step: &'a Cell<f64>,
 }
 
-impl<const N: usize, S: OdeSystem<N>> System<f64, DVector<f64>> for Adapter<'_, '_, N, S> {
+impl System<f64, DVector<f64>> for Adapter<'_, '_> {
     fn system(&self, x: f64, y: &DVector<f64>, dy: &mut DVector<f64>) {
-        let t = if self.autonomous { y[N] } else { x };
-        let ys = SVector::<f64, N>::from_fn(|i, _| y[i]);
-        let f = self.sys.borrow_mut().rhs(t, &ys);
-        for i in 0..N {
-            dy[i] = f[i];
-        }
+        let n = self.n;
+        let t = if self.autonomous { y[n] } else { x };
+        (self.rhs.borrow_mut())(t, &y.as_slice()[..n], &mut dy.as_mut_slice()[..n]);
         if self.autonomous {
-            dy[N] = 1.0;
+            dy[n] = 1.0;
         }
     }
 
@@ -131,9 +133,9 @@ type Solved = (OsStats, Option<f64>, Option<DVector<f64>>);
 
 /// Solves one row interval with `settings.method`: RK4 with the step of [`rk4_step_for`], the adaptive pairs with
 /// the controller parameters of the own implementations ([`ControllerParams`]) and sparse output.
-fn solve_interval<const N: usize, S: OdeSystem<N>, E>(
+fn solve_interval<E>(
     settings: &Settings,
-    adapter: Adapter<'_, '_, N, S>,
+    adapter: Adapter<'_, '_>,
     y_dyn: DVector<f64>,
     iv: &Interval,
 ) -> Result<Solved, IntegrateError<E>> {
@@ -205,7 +207,6 @@ where
     let autonomous = settings.method == Method::Dop853;
     let h_max = schedule.t_end();
     let mut h_guess = 0.0; // 0 → ode_solvers' hinit
-    let sys_cell = RefCell::new(sys);
     let last_x = Cell::new(0.0);
     let max_step = Cell::new(0.0);
     let mut t_a = 0.0;
@@ -220,12 +221,6 @@ where
         }
         last_x.set(t_a);
         max_step.set(0.0);
-        let adapter = Adapter::<N, S> {
-            sys: &sys_cell,
-            autonomous,
-            last_x: &last_x,
-            max_step: &max_step,
-        };
         let y_dyn = DVector::<f64>::from_iterator(
             N + usize::from(autonomous),
             y.iter().copied().chain(autonomous.then_some(t_a)),
@@ -237,6 +232,20 @@ where
             h_guess,
             budget,
         };
+        let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
+            dy.copy_from_slice(
+                sys.rhs(t, &SVector::<f64, N>::from_column_slice(y))
+                    .as_slice(),
+            );
+        };
+        let rhs_cell = RefCell::new(&mut rhs as &mut DynRhs<'_>);
+        let adapter = Adapter {
+            rhs: &rhs_cell,
+            n: N,
+            autonomous,
+            last_x: &last_x,
+            max_step: &max_step,
+        };
         let (s, bad, y_end) = solve_interval(settings, adapter, y_dyn, &interval)?;
         add(&mut stats, s);
         if let Some(t) = bad {
@@ -247,7 +256,7 @@ where
             return Err(IntegrateError::NonFinite { t: t_b });
         };
         y = SVector::<f64, N>::from_fn(|i, _| y_end[i]);
-        sys_cell.borrow().project(&mut y);
+        sys.project(&mut y);
         if !all_finite(&y) {
             return Err(IntegrateError::NonFinite { t: t_b });
         }
