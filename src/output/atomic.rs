@@ -18,9 +18,8 @@ use std::io::{self, BufWriter, Write};
 use std::os::unix::fs::PermissionsExt;
 use std::path::{Path, PathBuf};
 
-use tempfile::TempPath;
-
 use super::pending;
+use super::temp_file::TempPath;
 
 /// Where an output path's bytes go.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -157,15 +156,10 @@ impl AtomicFile {
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let temp = tempfile::Builder::new()
-            .prefix(&format!(".{name}."))
-            .suffix(".tmp")
-            .tempfile_in(&dir)?;
-        // tempfile creates 0600; an output file gets the usual rw-r--r--.
-        temp.as_file()
-            .set_permissions(std::fs::Permissions::from_mode(0o644))?;
-        pending::register(temp.path());
-        let (file, temp_path) = temp.into_parts();
+        let (file, temp_path) = TempPath::create_in(&dir, &name)?;
+        // An output file gets the usual rw-r--r--, whatever the umask.
+        file.set_permissions(std::fs::Permissions::from_mode(0o644))?;
+        pending::register(temp_path.path());
         Ok(Self {
             path: path.to_path_buf(),
             out: BufWriter::new(file),
@@ -247,8 +241,8 @@ impl Synced {
         let Sink::Temporary { temp_path, target } = self.0 else {
             return Ok(());
         };
-        let temp = temp_path.to_path_buf();
-        let result = temp_path.persist(&target).map_err(|e| e.error);
+        let temp = temp_path.path().to_path_buf();
+        let result = temp_path.rename_over(&target);
         pending::unregister(&temp);
         result
     }

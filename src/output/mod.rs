@@ -12,6 +12,7 @@ pub mod run_csv;
 pub mod run_file;
 pub mod sidecar;
 #[cfg(feature = "plot")]
+mod temp_file;
 mod ticks;
 #[cfg(feature = "view")]
 pub mod view;
