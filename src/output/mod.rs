@@ -11,8 +11,8 @@ pub mod plot;
 pub mod run_csv;
 pub mod run_file;
 pub mod sidecar;
-#[cfg(feature = "plot")]
 mod temp_file;
+#[cfg(feature = "plot")]
 mod ticks;
 #[cfg(feature = "view")]
 pub mod view;
