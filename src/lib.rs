@@ -38,7 +38,7 @@
 //!
 //! Modules point down only: vocabulary ([`frames`], [`method`], [`named`], [`sample`], [`panel`], [`body`], [`kinetics`],
 //! [`effects`], [`events`], [`trig`]) → closed forms ([`exact`]) and integrators ([`integrate`]) → motions
-//! ([`motion`]) and the body's wheels ([`wheels`]) → the validated [`scene`] → [`simulate`] → [`analysis`] and
+//! ([`motion`]), the body's wheels ([`wheels`]) and its changing shape ([`shape_change`]) → the validated [`scene`] → [`simulate`] → [`analysis`] and
 //! [`output`]. The command line is a binary over the library (feature `cli`, on by default). The modules from
 //! [`simulate`] down are the workspace's crate `eulerdyn-core` (core/src/), re-exported here under the same paths:
 //! cargo compiles it as one code-generation unit, which its run-time figures need, while analysis and output
@@ -71,7 +71,7 @@ pub mod output;
 #[doc(inline)]
 pub use eulerdyn_core::{
     body, effects, events, exact, frames, integrate, keys, kinetics, method, motion, named, orbit,
-    panel, profile, sample, scene, simulate, text, trig, wheels,
+    panel, profile, sample, scene, shape_change, simulate, text, trig, wheels,
 };
 
 pub use frames::{Axes, Form};

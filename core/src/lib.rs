@@ -22,6 +22,7 @@ pub mod panel;
 pub mod profile;
 pub mod sample;
 pub mod scene;
+pub mod shape_change;
 pub mod simulate;
 pub mod text;
 pub mod trig;

@@ -130,7 +130,12 @@ fn motion_lines(
     motion: &MotionNumbers,
 ) {
     match (scene.motion.kind(), &motion.axis) {
-        (MotionKind::Free, _) => free_motion_lines(w, numbers, motion, scene.motion.gyrostat()),
+        (MotionKind::Free, _) => {
+            free_motion_lines(w, numbers, motion, scene.motion.gyrostat());
+            if let Some(shape) = scene.motion.shape_change() {
+                shape.describe(w, scene.body.mass());
+            }
+        }
         (MotionKind::FixedAxis, Some(axis)) => fixed_axis_lines(w, scene, numbers, axis),
         (MotionKind::Hinge, Some(axis)) => hinge_lines(w, numbers, axis),
         _ => {}
@@ -415,6 +420,12 @@ fn method_lines(w: &mut Description, scene: &Scene) -> String {
     let s = &scene.solver;
     let wheels = scene.motion.gyrostat().is_some();
     let form = match (s.form, wheels) {
+        _ if scene.motion.shape_change().is_some() => match s.form {
+            Form::Body => {
+                "body axes: dH_b/dt + omega x H_b = M, H = I(t)*omega + h (so I*omega' = M - I'*omega - h' - omega x H)"
+            }
+            Form::Space => "space axes: dH_s/dt = M_s, omega = I(t)^-1 (R^T H_s - h)",
+        },
         (Form::Body, false) => "body axes: I*omega' + omega x I*omega = M",
         (Form::Space, false) => "space axes: dH_s/dt = M_s with I_s(theta)",
         (Form::Body, true) => {

@@ -181,7 +181,7 @@ fn field_code(field: &syn::Field, what: Option<&Expr>) -> syn::Result<FieldCode>
                 "a typed spec's group names the keys it is read from: `flatten = GroupKeys`",
             ));
         };
-        return Ok(group(ident, ty, keys));
+        return Ok(group(ident, ty, keys, attr.default.as_ref()));
     }
     let name = attr
         .rename
@@ -254,8 +254,9 @@ fn field_code(field: &syn::Field, what: Option<&Expr>) -> syn::Result<FieldCode>
     })
 }
 
-/// `flatten = K`: the group's keys spliced into the file form; the field read from them as a `keys::Group<K>`.
-fn group(ident: Ident, ty: &Type, keys: &Type) -> FieldCode {
+/// `flatten = K`: the group's keys spliced into the file form; the field read from them as a `keys::Group<K>`;
+/// with `default = E`, `S::of(…)` sets it to E instead of taking it.
+fn group(ident: Ident, ty: &Type, keys: &Type, default: Option<&Expr>) -> FieldCode {
     FieldCode {
         file: FileField {
             ident: ident.clone(),
@@ -268,7 +269,10 @@ fn group(ident: Ident, ty: &Type, keys: &Type) -> FieldCode {
         read: quote!(#ident: <#ty as crate::keys::Group<#keys>>::read(&file.#ident, at)?,),
         write: quote!(crate::keys::Group::<#keys>::write(&self.#ident, &mut file.#ident);),
         files: quote!(crate::keys::Group::<#keys>::take_files_in(&mut self.#ident, dir);),
-        init: (quote!(#ident: #ty), None),
+        init: match default {
+            Some(default) => (quote!(), Some(quote!(#default))),
+            None => (quote!(#ident: #ty), None),
+        },
     }
 }
 

@@ -40,6 +40,12 @@ pub trait EffectKind {
         false
     }
 
+    /// Whether the moment depends on the body's mass distribution (its centre of mass or inertia, fixed when the
+    /// effect is validated): a body that changes shape refuses it.
+    fn uses_mass_distribution(&self) -> bool {
+        false
+    }
+
     /// Whether the work of the moment has no known bound (the user's law): the divergence guard then stands down.
     fn unbounded_work(&self) -> bool {
         false

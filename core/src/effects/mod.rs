@@ -36,6 +36,7 @@ pub use kind::EffectKind;
 pub use kinds::{Effect, EffectSpec};
 pub use law::{MomentLaw, UserMoment};
 pub use magnetic::{MagneticDipole, MagneticSpec};
+pub(crate) use table::read_rows;
 pub use table::{Interpolation, TABLE_HEADER, TorqueTable};
 pub use torque::{TorqueGiven, TorqueSpec};
 pub use torque_sum::TorqueSum;
@@ -72,6 +73,11 @@ impl Effect {
     /// (kg), N·m ([`EffectKind::largest_moment`]).
     pub fn largest_moment(&self, mass: f64) -> Option<f64> {
         self.door().largest_moment(mass)
+    }
+
+    /// Whether the moment depends on the body's mass distribution ([`EffectKind::uses_mass_distribution`]).
+    pub fn uses_mass_distribution(&self) -> bool {
+        self.door().uses_mass_distribution()
     }
 
     /// Gravity's g (space axes, m/s²) and the pivot from C (body axes, m), when this effect is gravity.

@@ -159,9 +159,39 @@ impl TorqueTable {
     }
 }
 
-/// The rows of a table's text: the times and moments, or what is wrong and in which row. A UTF-8 byte-order mark
-/// and CRLF line ends (as spreadsheets save CSV) are accepted.
+/// The rows of a table's text: the times and moments, or what is wrong and in which row.
 fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector3<f64>>), String> {
+    let what = if header_names.len() == 4 {
+        "t in s, the moment in N*m"
+    } else {
+        "t in s, the torque in N*m"
+    };
+    let (t, rows) = parse_table(text, header_names, what)?;
+    let m = (rows.iter())
+        .map(|values| Vector3::from_fn(|i, _| values.get(i).copied().unwrap_or(0.0)))
+        .collect();
+    Ok((t, m))
+}
+
+/// Reads the table at `path` ([`parse_table`]); its errors name the file.
+pub(crate) fn read_rows(
+    path: &Path,
+    header: &[&str],
+    units: &str,
+) -> Result<(Vec<f64>, Vec<Vec<f64>>), String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("{}: cannot read the table: {e}", path.display()))?;
+    parse_table(&text, header, units).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// The rows of a CSV table with the header `header` (`t` first; `units` says what its columns hold): the times,
+/// strictly increasing, and each row's other values, all finite; at least 2 rows. A UTF-8 byte-order mark and CRLF
+/// line ends (as spreadsheets save CSV) are accepted.
+pub(crate) fn parse_table(
+    text: &str,
+    header_names: &[&str],
+    units: &str,
+) -> Result<(Vec<f64>, Vec<Vec<f64>>), String> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
@@ -174,18 +204,13 @@ fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector
         ));
     };
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
-    let what = if header_names.len() == 4 {
-        "moment"
-    } else {
-        "torque"
-    };
     if names != header_names {
         return Err(format!(
-            "row 0 (the header): expected `{expected}` (t in s, the {what} in N*m), got `{}`",
+            "row 0 (the header): expected `{expected}` ({units}), got `{}`",
             header.trim()
         ));
     }
-    let (mut t, mut m) = (Vec::new(), Vec::<Vector3<f64>>::new());
+    let (mut t, mut rows) = (Vec::new(), Vec::new());
     for (row, (index, line)) in lines.enumerate() {
         let at = format!("row {} (line {})", row + 1, index + 1);
         let values =
@@ -200,9 +225,7 @@ fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector
             _ => {}
         }
         t.push(values[0]);
-        m.push(Vector3::from_fn(|i, _| {
-            values.get(i + 1).copied().unwrap_or(0.0)
-        }));
+        rows.push(values[1..].to_vec());
     }
     if t.len() < 2 {
         return Err(format!(
@@ -210,7 +233,7 @@ fn parse_rows(text: &str, header_names: &[&str]) -> Result<(Vec<f64>, Vec<Vector
             t.len()
         ));
     }
-    Ok((t, m))
+    Ok((t, rows))
 }
 
 /// The finite numbers of one row, one per column of `header`.

@@ -210,7 +210,7 @@ pub fn attitude(y: &State) -> UnitQuaternion<f64> {
 
 /// Renormalises the quaternion part of a state.
 #[inline(always)]
-fn normalise_quaternion(y: &mut State) {
+pub(crate) fn normalise_quaternion(y: &mut State) {
     let n = (y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6]).sqrt();
     for k in 3..7 {
         y[k] /= n;
@@ -218,7 +218,7 @@ fn normalise_quaternion(y: &mut State) {
 }
 
 #[inline(always)]
-fn with_attitude_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>) -> State {
+pub(crate) fn with_attitude_rate(first: Vector3<f64>, y: &State, omega_b: &Vector3<f64>) -> State {
     let dq = quaternion_rate(&[y[3], y[4], y[5], y[6]], omega_b);
     State::from([first[0], first[1], first[2], dq[0], dq[1], dq[2], dq[3]])
 }

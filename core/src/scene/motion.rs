@@ -4,6 +4,8 @@
 //! names a variant. It sits in `scene/`, above `motion/` and `wheels/`, because a free body's rotors (`wheels`)
 //! are built on `motion::free`.
 
+use std::sync::Arc;
+
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::spec::MotionKind;
@@ -13,6 +15,7 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::sample::ColumnGroup;
+use crate::shape_change::ShapeChange;
 use crate::wheels::gyrostat::Gyrostat;
 
 /// A free motion's parts: ω₀, the body about its moment center, and its rotors.
@@ -24,6 +27,8 @@ pub struct FreeParts<'a> {
     pub body: &'a FreeBody,
     /// The body with its rotors, when it has any.
     pub gyrostat: Option<&'a Gyrostat>,
+    /// The body's mass distribution in time, when it changes shape.
+    pub shape_change: Option<&'a Arc<ShapeChange>>,
 }
 
 /// The motion of the body.
@@ -38,6 +43,8 @@ pub enum Motion {
         body: FreeBody,
         /// The body with its rotors (`[[body.rotor]]`), when it has any.
         gyrostat: Option<Box<Gyrostat>>,
+        /// The body's mass distribution in time (`[[body.moving_mass]]`, `inertia_table`), when it changes shape.
+        shape_change: Option<Arc<ShapeChange>>,
     },
     /// Prescribed rotation about a fixed axis.
     FixedAxis(FixedAxis),
@@ -53,10 +60,12 @@ impl Motion {
                 omega0_b,
                 body,
                 gyrostat,
+                shape_change,
             } => Some(FreeParts {
                 omega0_b,
                 body,
                 gyrostat: gyrostat.as_deref(),
+                shape_change: shape_change.as_ref(),
             }),
             _ => None,
         }
@@ -70,6 +79,11 @@ impl Motion {
     /// The body's rotors, when it is free and has any.
     pub fn gyrostat(&self) -> Option<&Gyrostat> {
         self.free().and_then(|f| f.gyrostat)
+    }
+
+    /// The body's mass distribution in time, when it is free and changes shape.
+    pub fn shape_change(&self) -> Option<&Arc<ShapeChange>> {
+        self.free().and_then(|f| f.shape_change)
     }
 
     /// The body's rotors and ω₀, to change the rotors (a wheel law) when it is free and has any.
@@ -130,12 +144,17 @@ impl Motion {
         })
     }
 
-    /// The columns its capabilities add after all others: a moving support's, a body's wheels'.
+    /// The columns its capabilities add after all others: a moving support's, a body's wheels', a changing
+    /// shape's.
     pub fn capability_columns(&self) -> Option<ColumnGroup> {
         match self {
             Motion::Free {
                 gyrostat: Some(g), ..
             } => Some(g.columns()),
+            Motion::Free {
+                shape_change: Some(shape),
+                ..
+            } => Some(shape.columns()),
             _ => (self.axis())
                 .and_then(FixedAxis::moving_support)
                 .map(|s| s.columns()),
@@ -166,13 +185,15 @@ impl Motion {
             }
     }
 
-    /// A free rigid body without rotors: its ω₀ (body axes) and the body about its moment center.
+    /// A free rigid body without rotors whose shape does not change: its ω₀ (body axes) and the body about its
+    /// moment center.
     pub fn rigid_free(&self) -> Option<(&Vector<BodyAxes>, &FreeBody)> {
         match self {
             Motion::Free {
                 omega0_b,
                 body,
                 gyrostat: None,
+                shape_change: None,
             } => Some((omega0_b, body)),
             _ => None,
         }

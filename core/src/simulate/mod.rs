@@ -10,7 +10,7 @@ use std::time::Instant;
 
 use nalgebra::{SVector, Vector3};
 
-use crate::effects::{EffectMoments, TorqueFree};
+use crate::effects::{AppliedMoment, EffectMoments, TorqueFree};
 use crate::events::{Locator, Occurrence};
 use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
@@ -22,6 +22,7 @@ use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
+use crate::shape_change::{self, ShapeChange, system::ChangingForm};
 use crate::wheels::gyrostat::{self, Gyrostat, GyrostatForm};
 
 mod advice;
@@ -247,6 +248,17 @@ fn run_rows(
             let moments = EffectMoments::new(&scene.effects, scene.body.mass());
             run_gyrostat(scene, gyrostat, omega0_b, moments, deliver, events)
         }
+        Motion::Free {
+            omega0_b,
+            shape_change: Some(shape),
+            ..
+        } => match scene.effects.is_empty() {
+            true => run_changing(scene, shape, omega0_b, TorqueFree, deliver, events),
+            false => {
+                let moments = EffectMoments::new(&scene.effects, scene.body.mass());
+                run_changing(scene, shape, omega0_b, moments, deliver, events)
+            }
+        },
         Motion::Free { omega0_b, body, .. } => {
             if scene.effects.is_empty() {
                 run_free(scene, (body, omega0_b), TorqueFree, deliver, events)
@@ -393,6 +405,37 @@ fn run_gyrostat<E>(
         moment: moment.clone(),
         form,
     };
+    let run = events::Integration {
+        scene,
+        settings: &settings,
+        locator,
+    };
+    run.integrate(&mut system, y0, on_row, row)
+}
+
+/// A body that changes shape ([`crate::shape_change::system`]), by the scene's Runge–Kutta method (validation
+/// refuses the others), in the form the scene's frame selects.
+fn run_changing<M: AppliedMoment + Clone, E>(
+    scene: &Scene,
+    shape: &ShapeChange,
+    omega0_b: &Vector<BodyAxes>,
+    moment: M,
+    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
+    locator: Option<&mut Locator>,
+) -> Result<Stats, IntegrateError<Stop<E>>> {
+    let Runner::RungeKutta(settings) = runner(scene) else {
+        return Err(IntegrateError::InvalidSettings {
+            reason: format!(
+                "method \"{}\" cannot run a body that changes shape",
+                scene.solver.method.name()
+            ),
+        });
+    };
+    let form = scene.solver.form;
+    let y0 = shape_change::system::initial_state(shape, form, omega0_b, &scene.attitude0);
+    let row = |t: f64, y: &free::State| shape_change::system::sample(shape, &moment, form, t, y);
+    let on_row = |t: f64, y: &free::State| sink(&row(t, y));
+    let mut system = ChangingForm::new(shape, moment.clone(), form);
     let run = events::Integration {
         scene,
         settings: &settings,

@@ -95,6 +95,10 @@ impl EffectKind for Gravity {
         "gravity"
     }
 
+    fn uses_mass_distribution(&self) -> bool {
+        true
+    }
+
     fn describe(&self) -> String {
         format!(
             "gravity g = {} m/s^2 (space axes) at C, pivot {} m from C (body axes)",

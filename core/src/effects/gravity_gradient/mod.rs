@@ -37,6 +37,10 @@ impl EffectKind for GravityGradient {
         "gravity_gradient"
     }
 
+    fn uses_mass_distribution(&self) -> bool {
+        true
+    }
+
     fn describe(&self) -> String {
         format!(
             "gravity gradient of the circular orbit r = {} km (n = {} rad/s): M = 3 n^2 nadir_b x (I nadir_b)",

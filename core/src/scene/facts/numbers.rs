@@ -6,11 +6,12 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{AxisNumbers, BearingNumbers, CheckNumbers, MomentCenter, MotionNumbers, StartNumbers};
 use crate::body::Principal;
-use crate::effects;
-use crate::frames::{BodyAxes, Vector};
+use crate::effects::{self, TorqueFree};
+use crate::frames::{BodyAxes, Form, Vector};
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::scene::model::Scene;
+use crate::shape_change::{ShapeChange, system};
 use crate::wheels::gyrostat::Gyrostat;
 
 impl CheckNumbers {
@@ -48,12 +49,10 @@ impl MotionNumbers {
         };
         // A hinge's state at the start is its θ₀ and θ̇₀, in its axis numbers.
         let at_start = match (scene.motion.free(), scene.motion.prescribed()) {
-            (Some(free), _) => Some(StartNumbers::free(
-                scene,
-                free.omega0_b,
-                free.body,
-                free.gyrostat,
-            )),
+            (Some(free), _) => Some(match free.shape_change {
+                Some(shape) => StartNumbers::changing(scene, free.omega0_b, shape),
+                None => StartNumbers::free(scene, free.omega0_b, free.body, free.gyrostat),
+            }),
             (None, Some(axis)) => Some(StartNumbers::fixed_axis(scene, axis)),
             (None, None) => None,
         };
@@ -118,6 +117,21 @@ impl StartNumbers {
             m_o_b: None,
             f_s: None,
             energy,
+        }
+    }
+
+    /// A body that changes shape: its row at t = 0 (H = I(0) ω + h(0) about C(0), T of
+    /// [`crate::shape_change::system`]).
+    fn changing(scene: &Scene, omega0_b: &Vector<BodyAxes>, shape: &ShapeChange) -> Self {
+        let y0 = system::initial_state(shape, Form::Body, omega0_b, &scene.attitude0);
+        let s = system::sample(shape, &TorqueFree, Form::Body, 0.0, &y0);
+        StartNumbers {
+            omega_b: (*s.omega_b).into(),
+            h_o_b: (*s.h_o_b).into(),
+            h_o_s: (*s.h_o_s).into(),
+            m_o_b: None,
+            f_s: None,
+            energy: s.energy,
         }
     }
 

@@ -7,6 +7,7 @@
 //!   space z (gravity's moment r × m g is horizontal);
 //! - a hinge: T with no effect, T + V under gravity alone;
 //! - a prescribed fixed axis turning steadily: T and |H| (H_s turns with the body; its magnitude does not);
+//! - a body that changes shape (M = d/dt(I·ω)), torque-free: H_s and |H|, not T (its drives do work, P_internal);
 //! - nothing with torques, damping or a user's law, an accelerating prescribed axis, a turning carrier (which
 //!   does work on the body), or an imbalanced wheel (its turning moment changes H and T).
 
@@ -58,6 +59,13 @@ fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
     let motion = &scene.motion;
     match motion.kind() {
         MotionKind::Free => {
+            if motion.shape_change().is_some() {
+                // M = d/dt(I·ω): H is the invariant; the internal drives change T (P_internal).
+                return match torque_free {
+                    true => vec![HSpaceX, HSpaceY, HSpaceZ, HNorm],
+                    false => vec![],
+                };
+            }
             let gyrostat = motion.gyrostat();
             if gyrostat.is_some_and(|g| g.imbalanced()) {
                 return vec![];

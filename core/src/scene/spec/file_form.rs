@@ -15,6 +15,7 @@ use crate::keys::{Checked, Group, KeyPath, Keys, Kind, Table};
 use crate::method::{Backend, Method};
 use crate::motion::spec::MotionSpec;
 use crate::orbit::OrbitSpec;
+use crate::shape_change::{ShapeChangeKeys, ShapeChangeSpec};
 use crate::wheels::RotorSpec;
 
 /// A whole scene. Serde reads and writes it as a scene file writes it (TOML, or the same keys in JSON).
@@ -77,6 +78,9 @@ pub struct BodySpec {
     /// wheels spinning inside the body (at most 4): `[[body.rotor]]`
     #[key(table)]
     pub rotor: Vec<RotorSpec>,
+    /// `[[body.moving_mass]]` or `inertia_table`: a body that changes shape.
+    #[key(flatten = ShapeChangeKeys, default = ShapeChangeSpec::default())]
+    pub shape_change: ShapeChangeSpec,
 }
 
 /// `[body]`'s `shape` or `inertia`, read as the body's [`Distribution`].

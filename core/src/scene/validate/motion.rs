@@ -60,6 +60,17 @@ pub(super) fn validate_motion(
         Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
         Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
+    if doc.body.shape_change.is_some() {
+        let key = match doc.body.shape_change.moving_mass.is_empty() {
+            true => "inertia_table",
+            false => "moving_mass",
+        };
+        return invalid(
+            KeyPath::root().key("body").key(key),
+            "a body that changes shape turns freely (free motion): on a fixed axis or hinge its moving masses \
+             would load the support in ways this model does not compute",
+        );
+    }
     if !doc.body.rotor.is_empty() {
         return invalid(
             KeyPath::root().key("body").key("rotor"),
@@ -120,11 +131,51 @@ fn free_motion(
         );
     }
     let gyrostat = crate::wheels::validate_rotors(&doc.body.rotor, &free_body, &(c_b + center_b))?;
+    let shape_change = shape_change(doc, body, effects, c_b)?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
         gyrostat,
+        shape_change: shape_change.map(std::sync::Arc::new),
     })
+}
+
+/// The body's shape change, on a free body about C without rotors and without an effect whose moment depends on
+/// the mass distribution (gravity about a pivot, the gravity gradient).
+fn shape_change(
+    doc: &SceneSpec,
+    body: &RigidBody,
+    effects: &[Effect],
+    c_b: &Vector3<f64>,
+) -> Checked<Option<crate::shape_change::ShapeChange>> {
+    let spec = &doc.body.shape_change;
+    if !spec.is_some() {
+        return Ok(None);
+    }
+    let key = KeyPath::root()
+        .key("body")
+        .key(match spec.moving_mass.is_empty() {
+            true => "inertia_table",
+            false => "moving_mass",
+        });
+    if !doc.body.rotor.is_empty() {
+        return invalid(
+            key,
+            "a body that changes shape cannot carry rotors yet: remove `[[body.rotor]]` or the shape change",
+        );
+    }
+    if let Some(index) = effects.iter().position(Effect::uses_mass_distribution) {
+        return invalid(
+            key,
+            format!(
+                "effect[{index}] ({}) acts through the mass distribution, which this body changes; its moment is \
+                 not modelled for a changing body",
+                effects[index].kind()
+            ),
+        );
+    }
+    let point_masses = !doc.body.point_mass.is_empty();
+    crate::shape_change::validate_shape_change(spec, body, c_b, point_masses)
 }
 
 /// The axis of a fixed-axis or hinge motion: its direction, rate, acceleration, point, bearings and the gravity

@@ -83,6 +83,17 @@ pub(super) fn validate_method(
             ),
         );
     }
+    if motion.shape_change().is_some() && !method.is_runge_kutta() {
+        return invalid(
+            key_of("solver", "method", o.method.is_some()),
+            format!(
+                "method \"{}\" cannot run a body that changes shape: exact is the rigid body's torque-free closed \
+                 form (its inertia constant), and split2/split4 split the rotation of a constant inertia; use rk4, \
+                 dopri5 or dop853",
+                method.name()
+            ),
+        );
+    }
     if motion.hinge().is_some() && !method.is_runge_kutta() {
         return invalid(
             key_of("solver", "method", o.method.is_some()),
