@@ -35,6 +35,7 @@ mod scenario_csv;
 mod scene_errors;
 mod scene_fuzz;
 mod score;
+mod shape_change;
 mod sidecar;
 mod study;
 mod sweep;
