@@ -44,6 +44,10 @@ pub enum Panel {
     Field,
     /// The magnetorquers' dipole in body axes, m_b (A·m²): runs with `b_dot`.
     Dipole,
+    /// The inertia about the system's centre of mass, body axes (kg·m²): runs of a body that changes shape.
+    Inertia,
+    /// The power the internal drives put into the motion, P_internal (W): runs of a body that changes shape.
+    InternalPower,
 }
 
 impl Panel {
@@ -91,7 +95,8 @@ impl Panel {
             });
         let friction = wheels.iter().all(|n| has(&format!("{n}_friction")));
         let wheel_panels = Panel::wheel_panels(!wheels.is_empty(), friction);
-        let lvlh = (Panel::ORBIT.into_iter()).filter(|p| p.columns().iter().all(|c| has(c)));
+        let lvlh = (Panel::ORBIT.into_iter().chain(Panel::SHAPE))
+            .filter(|p| p.columns().iter().all(|c| has(c)));
         Panel::ALL
             .into_iter()
             .chain(axis)
@@ -137,6 +142,8 @@ impl Panel {
             Panel::Lvlh => "lvlh",
             Panel::Field => "field",
             Panel::Dipole => "dipole",
+            Panel::Inertia => "inertia",
+            Panel::InternalPower => "internal_power",
         }
     }
 
@@ -148,6 +155,9 @@ impl Panel {
     /// The panels of runs in orbit, drawn last by default when the run has their columns: the attitude from LVLH,
     /// the field, the magnetorquers' dipole.
     pub const ORBIT: [Panel; 3] = [Panel::Lvlh, Panel::Field, Panel::Dipole];
+
+    /// The panels of a body that changes shape, drawn after the orbit's by default when the run has their columns.
+    pub const SHAPE: [Panel; 2] = [Panel::Inertia, Panel::InternalPower];
 
     /// The CSV columns the panel needs (besides `t`).
     pub fn columns(self) -> &'static [&'static str] {
@@ -176,6 +186,8 @@ impl Panel {
             Panel::Lvlh => &["roll_lvlh", "pitch_lvlh", "yaw_lvlh"],
             Panel::Field => &["B_b_x", "B_b_y", "B_b_z"],
             Panel::Dipole => &["m_b_x", "m_b_y", "m_b_z"],
+            Panel::Inertia => &["I_b_xx", "I_b_yy", "I_b_zz", "I_b_xy", "I_b_xz", "I_b_yz"],
+            Panel::InternalPower => &["P_internal"],
             Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque | Panel::WheelFriction => {
                 &[]
             }
@@ -209,6 +221,16 @@ impl Panel {
                 "m (A·m²)",
                 &["m_b,x", "m_b,y", "m_b,z"],
             )),
+            Panel::Inertia => Some((
+                "Inertia about C(t), body axes",
+                "I (kg·m²)",
+                &["I_xx", "I_yy", "I_zz", "I_xy", "I_xz", "I_yz"],
+            )),
+            Panel::InternalPower => Some((
+                "Power of the internal drives, dT/dt − M·ω",
+                "P_internal (W)",
+                &["P_internal"],
+            )),
             _ => None,
         }
     }
@@ -239,6 +261,9 @@ impl Panel {
             Panel::Dipole => {
                 Some("only runs of scenes with b_dot have the magnetorquers' dipole m_b")
             }
+            Panel::Inertia | Panel::InternalPower => Some(
+                "only runs of a body that changes shape ([[body.moving_mass]], inertia_table) have them",
+            ),
             Panel::WheelSpin | Panel::WheelMomentum | Panel::WheelTorque => {
                 Some("only runs of scenes with [[body.rotor]] have the wheels' columns")
             }
@@ -315,7 +340,7 @@ impl Panel {
             + ", and for fixed_axis and hinge runs: theta, support, bearings (with bearings only), bearings_space \
                (the same in space axes, drawn only when asked for), and for rotor runs: wheel_spin, wheel_h, \
                wheel_torque, wheel_friction (wheels under control), and for runs in orbit: lvlh, field (magnetic, b_dot), \
-               dipole (b_dot)"
+               dipole (b_dot), and for a body that changes shape: inertia, internal_power"
     }
 }
 
@@ -336,6 +361,7 @@ impl FromStr for Panel {
             .chain(Panel::WHEELS)
             .chain([Panel::WheelFriction])
             .chain(Panel::ORBIT)
+            .chain(Panel::SHAPE)
             .find(|p| p.name() == s)
             .ok_or_else(|| format!("unknown panel \"{s}\"; panels: {}, or all", Panel::names()))
     }

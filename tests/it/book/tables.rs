@@ -60,6 +60,7 @@ pub(super) fn column_table() -> String {
         eulerdyn::wheels::columns(&["NAME".to_string()], true),
         eulerdyn::orbit::lvlh_columns(orbit),
         eulerdyn::orbit::field_columns(orbit, eulerdyn::orbit::DipoleField::new(3.12e-5, 0.0, 0.0)),
+        shape_change_columns(),
     ];
     let groups: Vec<(String, Vec<Column>)> =
         std::iter::once(("always".to_string(), BASE_COLUMNS.to_vec()))
@@ -91,6 +92,29 @@ pub(super) fn column_table() -> String {
         }
     }
     out
+}
+
+/// The columns of a body that changes shape, with its centre of mass moving and one moving mass `NAME`.
+fn shape_change_columns() -> eulerdyn::sample::ColumnGroup {
+    use eulerdyn::shape_change::{Distribution, MassPath, MovingMass, Profile, ShapeChange};
+    use nalgebra::{Matrix3, Vector3};
+    let shape = ShapeChange::new(Distribution::Masses {
+        rest_mass: 1.0,
+        rest_c_b: Vector3::zeros(),
+        rest_inertia_b: Matrix3::identity(),
+        masses: vec![MovingMass {
+            name: "NAME".into(),
+            mass: 0.1,
+            path: MassPath::Move {
+                from: Vector3::zeros(),
+                to: Vector3::x(),
+                start: 0.0,
+                duration: 1.0,
+                profile: Profile::Smooth,
+            },
+        }],
+    });
+    std::sync::Arc::new(shape).columns()
 }
 
 /// The subcommands `eulerdyn --help` lists.

@@ -117,6 +117,6 @@ fn panels(motion: &Motion, moving_support: bool, columns: &ColumnSet) -> Vec<Pan
         .map(|c| c.name.to_string())
         .collect();
     let has_all = |p: &Panel| p.columns().iter().all(|c| names.iter().any(|n| n == c));
-    panels.extend(Panel::ORBIT.into_iter().filter(has_all));
+    panels.extend(Panel::ORBIT.into_iter().chain(Panel::SHAPE).filter(has_all));
     panels
 }
