@@ -2,7 +2,8 @@
 // The body group turns by the run's attitude q (body -> space) and holds the body's shape, point masses and body
 // axes, all placed in body axes from O. Vectors are drawn in space axes: ω, H and M from a point beside the body
 // (vectorAnchor), the bearing forces from the bearings. Wheels ([[body.rotor]]) turn with the body: a disc and its
-// spin axis, and an arrow of the wheel's axial momentum h along the axis at H's scale.
+// spin axis, and an arrow of the wheel's axial momentum h along the axis at H's scale. Moving masses
+// ([[body.moving_mass]]) are balls in the body where their position columns put them at the time shown.
 'use strict';
 
 window.eulerdynScene = function (THREE, OrbitControls, api) {
@@ -38,6 +39,20 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     parts.body.push(ball);
     samples.push(v3(p.at));
   }
+  // The moving masses: a ball each, placed every frame from its position (reference origin) shifted to O.
+  const referenceO = v3(geometry.reference_o || [0, 0, 0]);
+  const movingBalls = (api.moving_names || []).map((name, k) => {
+    const ball = new THREE.Mesh(new THREE.SphereGeometry(0.07 * bodyRadius, 20, 12),
+      new THREE.MeshStandardMaterial({ color: 0xb0413e, roughness: 0.4 }));
+    ball.name = 'moving mass ' + name;
+    const last = api.rows[api.rows.length - 1];
+    samples.push(v3(api.rows[0].moving[k]).add(referenceO), v3(last.moving[k]).add(referenceO));
+    ball.position.copy(v3(api.rows[0].moving[k]).add(referenceO));
+    body.add(ball);
+    parts.body.push(ball);
+    return ball;
+  });
+  api.moving_balls = movingBalls;
   const bodyBox = new THREE.Box3().setFromObject(body);
   const size = Math.max(bodyBox.getBoundingSphere(new THREE.Sphere()).radius + bodyBox.getCenter(new THREE.Vector3()).length(), 1e-6);
 
@@ -144,6 +159,7 @@ window.eulerdynScene = function (THREE, OrbitControls, api) {
     }
     for (const name of Object.keys(arrows)) setArrow(arrows[name], v3(state[name]).multiplyScalar(scaleOf(name)), size);
     wheels.forEach((w, k) => setArrow(w.arrow, v3(w.axis_b).multiplyScalar(state.rotor_h[k] * scaleOf('H_s')), size));
+    movingBalls.forEach((ball, k) => ball.position.copy(v3(state.moving[k]).add(referenceO)));
     if (trail) trail.geometry.setDrawRange(0, trailCount(api, state.t));
     renderer.setViewport(0, 0, width, height);
     renderer.setScissorTest(false);

@@ -28,6 +28,10 @@
   // The wheels ([[body.rotor]] in the sidecar's scene) whose axial momentum `<name>_h` the CSV has.
   const rotors = (geometry.rotors || []).map((r) => ({ ...r, index: columns.indexOf(r.name + '_h') }))
     .filter((r) => r.index >= 0);
+  // The moving masses ([[body.moving_mass]]) whose position columns `<name>_x/_y/_z` the CSV has (from the reference
+  // origin, body axes).
+  const moving = (geometry.moving_masses || []).map((m) => ({ ...m, index: xyz(m.name) }))
+    .filter((m) => m.index);
   const directionNames = [orbit && 'nadir_s', fieldIndex && 'field_s'].filter((n) => n);
   const vectorNames = Object.keys(vectorIndex).filter((k) => vectorIndex[k] !== null).concat(directionNames);
 
@@ -63,6 +67,7 @@
     for (const name of vectorNames) if (vectorIndex[name]) s[name] = vectorIndex[name].map((i) => row[i]);
     directions(row, s.q, s);
     s.rotor_h = rotors.map((r) => row[r.index]);
+    s.moving = moving.map((m) => m.index.map((i) => row[i]));
     return s;
   }
 
@@ -114,6 +119,7 @@
     const out = { t: tc, q: slerp(a.q, b.q, s) };
     for (const name of vectorNames) out[name] = lerp(a[name], b[name], s);
     out.rotor_h = lerp(a.rotor_h, b.rotor_h, s);
+    out.moving = a.moving.map((p, k) => lerp(p, b.moving[k], s));
     return out;
   }
 
@@ -175,6 +181,7 @@
     events: data.events || [],
     vectors: vectorNames,
     rotor_names: rotors.map((r) => r.name),
+    moving_names: moving.map((m) => m.name),
     drawn: false,
     setTime: setTime,
     state: () => current,

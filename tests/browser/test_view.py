@@ -555,12 +555,12 @@ def test_the_events_are_listed_and_a_click_shows_each_ones_time(work, disk, open
 
 
 def scene_objects(page, names):
-    """For each three.js object name, whether an object of that name is in the page's scene graph (its parents reach
-    a Scene) and visible."""
+    """For each three.js object name (a wheel's, a moving mass's), whether an object of that name is in the page's
+    scene graph (its parents reach a Scene) and visible."""
     return page.js("""(names) => names.map((n) => {
         const r = window.eulerdyn.rotors.find((w) => 'rotor ' + w.name === n || 'rotor momentum ' + w.name === n);
-        if (!r) return false;
-        let o = r.wheel.name === n ? r.wheel : r.arrow;
+        let o = r ? (r.wheel.name === n ? r.wheel : r.arrow) : window.eulerdyn.moving_balls.find((b) => b.name === n);
+        if (!o) return false;
         const visible = o.visible;
         while (o.parent) o = o.parent;
         return o.type === 'Scene' && visible;
@@ -650,3 +650,25 @@ def test_a_carriers_axis_and_bearings_turn_with_it(work, open_page):
     want = rotate(q, [0.0, 0.0, 1.0])
     assert max(abs(a - b) for a, b in zip(drawn, want)) < 1e-6, (drawn, want)
     assert abs(want[1]) > 0.2, "the axis has turned away from space x"
+
+
+def test_moving_masses_are_drawn_where_their_columns_put_them(work, rod, open_page):
+    csv_path, html_path, _ = make_page(work, "deploying_booms.toml", "booms")
+    rows = read_csv(csv_path)
+    page = open_page(html_path)
+    names = ["tip_a", "tip_b"]
+    assert page.js("() => window.eulerdyn.moving_names") == names
+    reference_o = page.js("() => window.eulerdyn.geometry.reference_o")
+    # At a row's time each ball sits at its columns' position (from the reference origin) shifted to O, in the body
+    # group: before the deployment, half-way and deployed.
+    for row in (rows[0], rows[100], rows[-1]):
+        page.js("(t) => window.eulerdyn.setTime(t)", row["t"])
+        drawn = page.js("() => window.eulerdyn.moving_balls.map((b) => [b.position.x, b.position.y, b.position.z])")
+        for k, name in enumerate(names):
+            want = [row[f"{name}_{c}"] + reference_o[i] for i, c in enumerate("xyz")]
+            assert max(abs(a - b) for a, b in zip(drawn[k], want)) < 1e-12, (row["t"], name, drawn[k], want)
+    assert abs(rows[-1]["tip_a_x"] - 2.0) < 1e-15 and abs(rows[0]["tip_a_x"] - 0.3) < 1e-15
+    assert scene_objects(page, [f"moving mass {n}" for n in names]) == [True, True]
+    # A run without moving masses has none.
+    page = open_page(rod[1])
+    assert page.js("() => window.eulerdyn.moving_names") == []

@@ -84,6 +84,7 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
         .collect();
     let principal = Principal::of(&inertia_o_b);
     let rotors = rotors_json(spec, &reference_o);
+    let moving_masses = moving_masses_json(spec);
     let motion = &sidecar.scene.motion;
     let units: serde_json::Map<String, Value> = sidecar
         .columns
@@ -107,6 +108,8 @@ fn geometry_of_sidecar(sidecar: &Sidecar) -> Result<Geometry, String> {
             "body": body,
             "point_masses": point_masses,
             "rotors": rotors,
+            "moving_masses": moving_masses,
+            "reference_o": vec3(&reference_o),
             "mass_center": vec3(&rho_c_b),
             "axis_b": axis.map(|a| vec3(a.axis_b())),
             "bearings": axis.and_then(|a| a.bearings()).map(|b| [b.a, b.b]),
@@ -134,6 +137,27 @@ fn rotors_json(spec: &SceneSpec, reference_o: &Vector3<f64>) -> Vec<Value> {
             })
         })
         .collect()
+}
+
+/// The moving masses (`[[body.moving_mass]]`): each one's name, whose columns `<name>_x`, `<name>_y`, `<name>_z`
+/// hold its position from the reference origin (drawn from O at `reference_o`), and its mass.
+fn moving_masses_json(spec: &SceneSpec) -> Vec<Value> {
+    (spec.body.shape_change.moving_mass.iter().enumerate())
+        .map(|(k, m)| {
+            let name = m.name.clone().unwrap_or_else(|| format!("mass{k}"));
+            json!({ "name": name, "mass": m.mass })
+        })
+        .collect()
+}
+
+impl Geometry {
+    /// The names of the moving masses whose positions the page draws.
+    pub fn moving_mass_names(&self) -> Vec<String> {
+        let masses = self.json["moving_masses"].as_array();
+        (masses.into_iter().flatten())
+            .filter_map(|m| m["name"].as_str().map(String::from))
+            .collect()
+    }
 }
 
 /// Thin parts of a body are drawn at least this fraction of its longest dimension thick: a thin rod or a thin disk

@@ -102,11 +102,12 @@ pub fn read_view_run(csv: &Path, max_rows: usize) -> Result<ViewRun, ViewError> 
         );
     }
     let reader = RunCsvReader::open(csv)?;
-    let rows = read_rows(reader, max_rows)?;
+    let geometry = read_geometry(csv);
+    let rows = read_rows(reader, max_rows, &geometry.moving_mass_names())?;
     Ok(ViewRun {
         file: csv.to_path_buf(),
         rows,
-        geometry: read_geometry(csv),
+        geometry,
         events: run_events(csv, Sidecar::read(csv).ok().as_ref())?,
     })
 }
@@ -118,7 +119,7 @@ pub fn read_from(
     max_rows: usize,
     geometry: Geometry,
 ) -> Result<ViewRun, ViewError> {
-    let rows = read_rows(RunCsvReader::new(file, reader)?, max_rows)?;
+    let rows = read_rows(RunCsvReader::new(file, reader)?, max_rows, &[])?;
     Ok(ViewRun {
         file: file.to_path_buf(),
         rows,

@@ -1,5 +1,6 @@
 //! The rows the page draws: the columns it needs, read from the run's CSV with the shared reader, and
-//! decimated for long runs; with rotors, each wheel's axial momentum `<name>_h`.
+//! decimated for long runs; with rotors, each wheel's axial momentum `<name>_h`; with moving masses, each one's
+//! position `<name>_x`, `<name>_y`, `<name>_z`.
 //!
 //! **Decimation rule.** At most [`MAX_DRAWN_ROWS`] rows are kept: every s-th data row counting from the first
 //! (rows 0, s, 2s, …), s the smallest power of two that keeps at most [`MAX_DRAWN_ROWS`] of them, plus the last
@@ -152,9 +153,14 @@ impl RowKeeper {
     }
 }
 
-/// Reads the rows a page draws from `csv`, decimated to at most `max` rows (plus the last). A CSV without the
-/// columns every run has is refused as not an eulerdyn run.
-pub fn read_rows(mut csv: RunCsvReader<impl Read>, max: usize) -> Result<Rows, CsvInputError> {
+/// Reads the rows a page draws from `csv`, decimated to at most `max` rows (plus the last), with the positions of
+/// the moving masses named `moving` whose three columns the CSV has. A CSV without the columns every run has is
+/// refused as not an eulerdyn run.
+pub fn read_rows(
+    mut csv: RunCsvReader<impl Read>,
+    max: usize,
+    moving: &[String],
+) -> Result<Rows, CsvInputError> {
     let missing: Vec<&str> = REQUIRED
         .iter()
         .copied()
@@ -182,6 +188,12 @@ pub fn read_rows(mut csv: RunCsvReader<impl Read>, max: usize) -> Result<Rows, C
         }
     }
     columns.extend(momentum_columns.iter().map(String::as_str));
+    let positions: Vec<String> = (moving.iter())
+        .map(|name| ["x", "y", "z"].map(|axis| format!("{name}_{axis}")))
+        .filter(|group| group.iter().all(|c| csv.index_of(c).is_some()))
+        .flatten()
+        .collect();
+    columns.extend(positions.iter().map(String::as_str));
     let index: Vec<usize> = columns.iter().filter_map(|c| csv.index_of(c)).collect();
     let mut keeper = RowKeeper::new(columns.len(), max);
     let mut values = vec![0.0; columns.len()];
