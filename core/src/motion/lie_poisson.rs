@@ -676,6 +676,41 @@ impl<K: KickMoment> LiePoisson<K> {
     }
 }
 
+/// The drift D(τ) of the free rigid `body` ([`LiePoisson`]'s, unfused) on a state given in body axes: H in the
+/// form's axes (H_b in the body form, H_s in the space form) and the attitude q_b. For a splitting whose inertia
+/// changes from one drift to the next (`crate::shape_change::splitting`). Returns the sub-flows done.
+pub(crate) fn drift_body_state(
+    body: &FreeBody,
+    form: Form,
+    tau: f64,
+    h: &mut Vector3<f64>,
+    q_b: &mut UnitQuaternion<f64>,
+) -> u64 {
+    let split = LiePoisson::new(body, form, Scheme::Strang, TorqueFree);
+    let q_p = if split.identity {
+        *q_b
+    } else {
+        *q_b * split.axes_q
+    };
+    let mut y = SplitState {
+        h: match form {
+            Form::Body => split.axes_b.inverse_transform_vector(h),
+            Form::Space => *h,
+        },
+        q_p: [q_p.w, q_p.i, q_p.j, q_p.k],
+        h_norm0: 0.0,
+        h_lo: Vector3::zeros(),
+        open_tau: 0.0,
+    };
+    let evals = split.drift(tau, &mut y);
+    *q_b = split.attitude_b(&y);
+    *h = match form {
+        Form::Body => split.axes_b * y.h,
+        Form::Space => y.h,
+    };
+    evals
+}
+
 impl<K: KickMoment> FixedStep for LiePoisson<K> {
     type State = SplitState;
 

@@ -1,8 +1,8 @@
 //! A body that changes shape, one capability in one folder: point masses moved inside a freely turning body
 //! (`[[body.moving_mass]]`: booms that deploy, a mass on a rail, a skater's arms) or an inertia history
 //! (`[body] inertia_table`), and Euler's equation in its full form, M = d/dt(I·ω), about the system's
-//! instantaneous centre of mass ([`system`]): its distribution in time ([`history`]), the masses' paths
-//! ([`path`]), its keys (`keys.rs`) and validation (`validate.rs`), its columns (`columns.rs`) and `check` lines
+//! instantaneous centre of mass ([`system`], and split by [`splitting`]): its distribution in time
+//! ([`history`]), the masses' paths ([`path`]), its keys (`keys.rs`) and validation (`validate.rs`), its columns (`columns.rs`) and `check` lines
 //! (`describe.rs`). Without external moment H_s is constant; the kinetic energy is not — the internal drives put
 //! in `P_internal`.
 
@@ -11,6 +11,7 @@ mod describe;
 pub mod history;
 mod keys;
 pub mod path;
+pub mod splitting;
 pub mod system;
 mod validate;
 

@@ -10,7 +10,7 @@ use std::time::Instant;
 
 use nalgebra::{SVector, Vector3};
 
-use crate::effects::{AppliedMoment, EffectMoments, TorqueFree};
+use crate::effects::{EffectMoments, TorqueFree};
 use crate::events::{Locator, Occurrence};
 use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
@@ -22,7 +22,7 @@ use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
-use crate::shape_change::{self, ShapeChange, system::ChangingForm};
+use crate::shape_change::{self, ShapeChange, splitting::ChangingSplit, system::ChangingForm};
 use crate::wheels::gyrostat::{self, Gyrostat, GyrostatForm};
 
 mod advice;
@@ -413,9 +413,9 @@ fn run_gyrostat<E>(
     run.integrate(&mut system, y0, on_row, row)
 }
 
-/// A body that changes shape ([`crate::shape_change::system`]), by the scene's Runge–Kutta method (validation
-/// refuses the others), in the form the scene's frame selects.
-fn run_changing<M: AppliedMoment + Clone, E>(
+/// A body that changes shape ([`crate::shape_change::system`]) in the form the scene's frame selects: by the
+/// scene's Runge–Kutta method, or split2/split4 ([`crate::shape_change::splitting`]); validation refuses `exact`.
+fn run_changing<M: KickMoment + Clone, E>(
     scene: &Scene,
     shape: &ShapeChange,
     omega0_b: &Vector<BodyAxes>,
@@ -423,16 +423,28 @@ fn run_changing<M: AppliedMoment + Clone, E>(
     mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
     locator: Option<&mut Locator>,
 ) -> Result<Stats, IntegrateError<Stop<E>>> {
-    let Runner::RungeKutta(settings) = runner(scene) else {
-        return Err(IntegrateError::InvalidSettings {
-            reason: format!(
-                "method \"{}\" cannot run a body that changes shape",
-                scene.solver.method.name()
-            ),
-        });
-    };
     let form = scene.solver.form;
     let y0 = shape_change::system::initial_state(shape, form, omega0_b, &scene.attitude0);
+    let settings = match runner(scene) {
+        Runner::RungeKutta(settings) => settings,
+        Runner::Splitting(scheme) => {
+            let mass = shape.distribution().mass(scene.body.mass());
+            let mut split = ChangingSplit::new(shape, mass, form, scheme, moment.clone());
+            return run_fixed_step(
+                &mut split,
+                y0,
+                &scene.schedule,
+                scene.solver.dt,
+                max_steps(),
+                |t, y| sink(&shape_change::system::sample(shape, &moment, form, t, y)),
+            );
+        }
+        Runner::Exact => {
+            return Err(IntegrateError::InvalidSettings {
+                reason: "method \"exact\" cannot run a body that changes shape".into(),
+            });
+        }
+    };
     let row = |t: f64, y: &free::State| shape_change::system::sample(shape, &moment, form, t, y);
     let on_row = |t: f64, y: &free::State| sink(&row(t, y));
     let mut system = ChangingForm::new(shape, moment.clone(), form);

@@ -83,16 +83,26 @@ pub(super) fn validate_method(
             ),
         );
     }
-    if motion.shape_change().is_some() && !method.is_runge_kutta() {
-        return invalid(
-            key_of("solver", "method", o.method.is_some()),
-            format!(
-                "method \"{}\" cannot run a body that changes shape: exact is the rigid body's torque-free closed \
-                 form (its inertia constant), and split2/split4 split the rotation of a constant inertia; use rk4, \
-                 dopri5 or dop853",
-                method.name()
-            ),
-        );
+    if motion.shape_change().is_some() {
+        if method == Method::Exact {
+            return invalid(
+                key_of("solver", "method", o.method.is_some()),
+                "method \"exact\" cannot run a body that changes shape: it is the rigid body's torque-free closed \
+                 form, its inertia constant; use split2, split4, rk4, dopri5 or dop853",
+            );
+        }
+        if !method.is_runge_kutta()
+            && let Some(index) = effects.iter().position(|e| e.damping().is_some())
+        {
+            return invalid(
+                key_of("solver", "method", o.method.is_some()),
+                format!(
+                    "method \"{}\" cannot damp a body that changes shape (effect[{index}]): its kicks solve the \
+                     damping with a constant inertia; use rk4, dopri5 or dop853",
+                    method.name()
+                ),
+            );
+        }
     }
     if motion.hinge().is_some() && !method.is_runge_kutta() {
         return invalid(
