@@ -599,3 +599,32 @@ fn split2_and_split4_converge_at_their_orders_and_keep_h_s_to_the_bit() {
         );
     }
 }
+
+#[test]
+fn compare_finds_no_closed_form_and_plot_draws_the_inertia_and_the_drives_power() {
+    // The closed forms are of rigid bodies: compare holds the two forms against each other only.
+    let scene = crate::common::repo_path("scenarios/deploying_booms.toml");
+    let out = eulerdyn(["compare", scene.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}{}", out.stdout, out.stderr);
+    assert!(
+        out.stdout.contains("closed form: none applies"),
+        "{}",
+        out.stdout
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("booms.csv");
+    let svg = dir.path().join("booms.svg");
+    assert_eq!(
+        eulerdyn(["run", scene.to_str().unwrap(), "-o", csv.to_str().unwrap()]).code,
+        Some(0)
+    );
+    let plot = eulerdyn(["plot", csv.to_str().unwrap(), "-o", svg.to_str().unwrap()]);
+    assert_eq!(plot.code, Some(0), "{}", plot.stderr);
+    assert!(
+        plot.stderr.contains("inertia, internal_power"),
+        "{}",
+        plot.stderr
+    );
+    let figure = std::fs::read_to_string(&svg).unwrap();
+    assert!(figure.len() > 10_000);
+}

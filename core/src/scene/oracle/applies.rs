@@ -21,6 +21,10 @@ impl Oracle {
             MotionKind::Hinge => return None,
             MotionKind::Free => motion.free()?,
         };
+        if free.shape_change.is_some() {
+            // The closed forms are of rigid bodies; I(t) has none.
+            return None;
+        }
         if let Some(g) = free.gyrostat {
             return symmetric_gyrostat(scene, free.omega0_b, g);
         }
