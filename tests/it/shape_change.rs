@@ -559,7 +559,7 @@ fn tables_that_are_no_path_or_no_body_exit_2_naming_the_file_and_row() {
 }
 
 #[test]
-fn split2_and_split4_converge_at_their_orders_and_keep_h_s_to_the_bit() {
+fn split2_and_split4_converge_at_their_orders_and_keep_h_s_to_round_off_in_both_forms() {
     // The midpoint-frozen Strang step is symmetric in (t, y): order 2, and Suzuki's composition order 4 (Blanes &
     // Casas, *A Concise Introduction to Geometric Numerical Integration*, §3.3; McLachlan 1993 for the rigid drift).
     // Halving the step divides the error by 2^p: measured 4.00 (split2) and 16.0 (split4), within ±10 % here. The
@@ -576,12 +576,22 @@ fn split2_and_split4_converge_at_their_orders_and_keep_h_s_to_the_bit() {
             ..Overrides::default()
         };
         let rows = run(&scene_from(text, &overrides));
-        if form == Form::Space {
-            assert!(
-                rows.iter().all(|s| s.h_o_s == rows[0].h_o_s),
-                "{method:?}: H_s moved"
-            );
-        }
+        // H_s: untouched in the space form; in the body form every sub-flow is a rotation, so it moves by
+        // round-off only (a few ulp a sub-flow, ≤ 10⁴ sub-flows here: 1e-11 of |H|).
+        let h0 = rows[0].h_o_s;
+        let moved = rows
+            .iter()
+            .map(|s| (s.h_o_s - h0).norm())
+            .fold(0.0, f64::max);
+        let allowed = if form == Form::Space {
+            0.0
+        } else {
+            1e-11 * h0.norm()
+        };
+        assert!(
+            moved <= allowed,
+            "{method:?} {form:?}: H_s moved by {moved:e}"
+        );
         (rows.iter().zip(&reference))
             .map(|(a, b)| (a.omega_b - b.omega_b).norm())
             .fold(0.0, f64::max)
