@@ -28,7 +28,7 @@ pub struct Sample {
     pub m_o_b: Vector<BodyAxes>,
     /// M_O in space axes.
     pub m_o_s: Vector<SpaceAxes>,
-    /// Kinetic energy ½ ω·H (J).
+    /// Kinetic energy T (J): ½ ω·H for a rigid body; with wheels or moving masses, theirs included.
     pub energy: f64,
     /// Prescribed motion: angle turned about the fixed axis (rad).
     pub theta: Option<f64>,
@@ -292,7 +292,11 @@ pub const BASE_COLUMNS: [Column; 25] = [
         "N*m",
         "external moment about the moment center, space axes",
     ),
-    Column::fixed("energy", "J", "kinetic energy 1/2 omega.H"),
+    Column::fixed(
+        "energy",
+        "J",
+        "kinetic energy T (1/2 omega.H for a rigid body; wheels and moving masses included)",
+    ),
     Column::fixed("H_norm", "kg*m^2/s", "|H|"),
 ];
 

@@ -79,7 +79,7 @@ const PANEL_TITLES: [&str; 6] = [
     "Moment of momentum H, space axes",
     "Moment M about the moment center",
     "Angular velocity ω",
-    "Kinetic energy T = ½ ω·H",
+    "Kinetic energy T",
     "Drift of |H| and T since t = 0",
 ];
 

@@ -258,7 +258,7 @@ fn energy_panel(run: &RunSeries) -> PanelPlot {
             curves,
         )
     } else {
-        PanelPlot::linear("Kinetic energy T = ½ ω·H", "energy (J)", curves)
+        PanelPlot::linear("Kinetic energy T", "energy (J)", curves)
     }
 }
 
