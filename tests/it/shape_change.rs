@@ -490,6 +490,8 @@ fn bad_input_exits_2_naming_the_key_and_writes_nothing() {
         ("duration <= 0", base.replacen("duration = 4.0", "duration = 0.0", 1), "duration"),
         ("no duration", base.replacen("duration = 4.0\n", "", 1), "duration"),
         ("table and from", base.replacen(first, "mass = 0.5\ntable = \"p.csv\"\nfrom = [0.2, 0.0, 0.0]", 1), "from"),
+        ("a position beyond double precision", base.replacen("from = [0.2, 0.0, 0.0]", "from = [1e300, 0.0, 0.0]", 1), "moving_mass"),
+        ("a speed beyond double precision", base.replacen("duration = 4.0", "duration = 1e-300", 1), "moving_mass"),
         ("a name twice", base.replace("name = \"right\"", "name = \"left\""), "name"),
         ("exact", base.replace("method = \"dop853\"", "method = \"exact\""), "method"),
         ("split4 with damping", base.replace("method = \"dop853\"", "method = \"split4\"").replace("[solver]", "[[effect]]\ntype = \"damping\"\nc = 0.1\n[solver]"), "method"),

@@ -6,7 +6,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::ShapeChange;
 use super::history::{Distribution, InertiaHistory, MovingMass};
 use super::keys::{MovingMassSpec, PathSpec, ShapeChangeSpec};
-use super::path::MassPath;
+use super::path::{MassPath, Side};
 use crate::body::{Principal, RigidBody};
 use crate::effects::read_rows;
 use crate::keys::{Checked, KeyPath, finite, invalid, positive, vector};
@@ -44,10 +44,8 @@ pub(crate) fn validate_shape_change(
                 key: key("inertia_table"),
                 problem,
             })?;
-            Ok(Some(ShapeChange::new(Distribution::Table {
-                c_b: *c_b,
-                history,
-            })))
+            let shape = ShapeChange::new(Distribution::Table { c_b: *c_b, history });
+            finite_throughout(shape, key("inertia_table")).map(Some)
         }
         (None, false) => {
             let mut masses: Vec<MovingMass> = Vec::with_capacity(spec.moving_mass.len());
@@ -64,14 +62,44 @@ pub(crate) fn validate_shape_change(
                 }
                 masses.push(mass);
             }
-            Ok(Some(ShapeChange::new(Distribution::Masses {
+            let shape = ShapeChange::new(Distribution::Masses {
                 rest_mass: body.mass(),
                 rest_c_b: *c_b,
                 rest_inertia_b: *body.inertia_c(),
                 masses,
-            })))
+            });
+            finite_throughout(shape, key("moving_mass")).map(Some)
         }
     }
+}
+
+/// `shape` when its distribution is finite at t = 0, on both sides of every corner and between corners (where a
+/// smooth move is fastest): else the masses' sizes, paths or speeds are beyond double precision (the key `key`).
+fn finite_throughout(shape: ShapeChange, key: KeyPath) -> Checked<ShapeChange> {
+    let corners = shape.distribution().corners();
+    let middles = corners.windows(2).map(|w| 0.5 * (w[0] + w[1]));
+    let times = std::iter::once(0.0)
+        .chain(corners.iter().copied())
+        .chain(middles);
+    for t in times {
+        for side in [Side::Before, Side::After] {
+            let s = shape.at(t, side);
+            let values = (s.inertia_b.iter().chain(&s.inertia_dot_b).chain(&s.c_b))
+                .chain(s.h_b.iter().chain(&s.h_dot_b))
+                .chain([&s.energy_rel, &s.energy_rel_dot]);
+            if !values.into_iter().all(|v| v.is_finite()) {
+                return invalid(
+                    key,
+                    format!(
+                        "at t = {t} s the system's inertia, the masses' relative moment of momentum or their \
+                         speeds are beyond the range of double precision: give masses, positions and durations \
+                         of a body's size"
+                    ),
+                );
+            }
+        }
+    }
+    Ok(shape)
 }
 
 /// One moving mass: its name (a column prefix), mass > 0 and path.

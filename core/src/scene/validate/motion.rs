@@ -8,12 +8,15 @@ use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
+use crate::effects::TorqueFree;
+use crate::frames::Form;
 use crate::frames::Vector;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::motion::support::Bearings;
 use crate::orbit::CircularOrbit;
+use crate::shape_change::system;
 
 /// `initial.omega`, or `initial.omega_lvlh` (ω relative to the LVLH frame of `orbit`, body axes) plus the frame's
 /// rate n ĥ seen in the body at `attitude0`: ω_b = ω_rel + Rᵀ n ĥ; with the key it was given by.
@@ -132,6 +135,19 @@ fn free_motion(
     }
     let gyrostat = crate::wheels::validate_rotors(&doc.body.rotor, &free_body, &(c_b + center_b))?;
     let shape_change = shape_change(doc, body, effects, c_b)?;
+    if let Some(shape) = &shape_change {
+        // As for a rigid body: H(0) and T(0) of the system must be numbers.
+        let y0 = system::initial_state(shape, Form::Body, &omega0_b, &UnitQuaternion::identity());
+        let s = system::sample(shape, &TorqueFree, Form::Body, 0.0, &y0);
+        if !(s.energy.is_finite() && s.h_o_b.norm().is_finite()) {
+            let name = initial_omega.map_or("omega", |(_, name)| name);
+            return invalid(
+                KeyPath::root().key("initial").key(name),
+                "ω₀ is too large for this body: the system's moment of momentum I(0)·ω₀ + h or its kinetic energy is \
+                 beyond the range of double precision",
+            );
+        }
+    }
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
