@@ -158,19 +158,21 @@ fn masses_at(
     t: f64,
     side: Side,
 ) -> MassState {
-    let kinematics: Vec<_> = masses
-        .iter()
-        .map(|m| (m.mass, m.path.at(t, side)))
-        .collect();
-    let total = rest_mass + kinematics.iter().map(|(m, _)| m).sum::<f64>();
-    let weighted = |f: &dyn Fn(&super::path::Kinematics) -> Vector3<f64>| {
-        kinematics
-            .iter()
-            .fold(Vector3::zeros(), |sum, (m, k)| sum + f(k) * *m)
-    };
-    let c_b = (rest_c_b * rest_mass + weighted(&|k| k.r)) / total;
-    let c_dot_b = weighted(&|k| k.v) / total;
-    let c_ddot_b = weighted(&|k| k.a) / total;
+    // The sums over the masses in one pass (no allocation: this runs at every right-hand side), the paths
+    // evaluated again in the second pass below (a few operations each).
+    let kinematics = || masses.iter().map(|m| (m.mass, m.path.at(t, side)));
+    let (mut moved, mut sum_r, mut sum_v, mut sum_a) =
+        (0.0, Vector3::zeros(), Vector3::zeros(), Vector3::zeros());
+    for (m, k) in kinematics() {
+        moved += m;
+        sum_r += k.r * m;
+        sum_v += k.v * m;
+        sum_a += k.a * m;
+    }
+    let total = rest_mass + moved;
+    let c_b = (rest_c_b * rest_mass + sum_r) / total;
+    let c_dot_b = sum_v / total;
+    let c_ddot_b = sum_a / total;
     let d_rest = rest_c_b - c_b;
     let mut state = MassState {
         inertia_b: rest_inertia_b + parallel(&d_rest) * rest_mass,
@@ -181,12 +183,12 @@ fn masses_at(
         energy_rel: -0.5 * total * c_dot_b.norm_squared(),
         energy_rel_dot: -total * c_dot_b.dot(&c_ddot_b),
     };
-    for (m, k) in &kinematics {
+    for (m, k) in kinematics() {
         let rho = k.r - c_b;
-        state.inertia_b += parallel(&rho) * *m;
-        state.inertia_dot_b += parallel_rate(&rho, &(k.v - c_dot_b)) * *m;
-        state.h_b += rho.cross(&k.v) * *m;
-        state.h_dot_b += (rho.cross(&k.a) - c_dot_b.cross(&k.v)) * *m;
+        state.inertia_b += parallel(&rho) * m;
+        state.inertia_dot_b += parallel_rate(&rho, &(k.v - c_dot_b)) * m;
+        state.h_b += rho.cross(&k.v) * m;
+        state.h_dot_b += (rho.cross(&k.a) - c_dot_b.cross(&k.v)) * m;
         state.energy_rel += 0.5 * m * k.v.norm_squared();
         state.energy_rel_dot += m * k.v.dot(&k.a);
     }
