@@ -6,6 +6,7 @@ pub mod balance;
 pub mod compare;
 pub mod describe;
 pub mod facts;
+pub mod fit;
 pub mod score;
 pub mod study;
 #[cfg(feature = "sweep")]

@@ -96,6 +96,51 @@ pub fn read_trajectory(
     options: &ReadOptions,
     t_end: f64,
 ) -> Result<Trajectory, ScoreError> {
+    let measured = read_measured(path, options, t_end, true)?;
+    let rows = (measured.rows.iter())
+        .map(|r| TheirRow {
+            t: r.t,
+            q: r.q.expect("the attitude is required"),
+            omega_b: r.omega_b,
+        })
+        .collect();
+    Ok(Trajectory {
+        rows,
+        warnings: measured.warnings,
+        columns: measured.columns.expect("the attitude is required"),
+    })
+}
+
+/// One row of a measured motion: time, and the attitude and the body-axis ω where the file gives them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeasuredRow {
+    /// Time (s).
+    pub t: f64,
+    /// Attitude, body → space, when the file gives it.
+    pub q: Option<UnitQuaternion<f64>>,
+    /// ω in body axes (rad/s), when the file gives it.
+    pub omega_b: Option<Vector3<f64>>,
+}
+
+/// A measured motion: a gyro's ω and/or the attitude against time.
+#[derive(Debug, Clone)]
+pub struct Measured {
+    /// The rows, in time order.
+    pub rows: Vec<MeasuredRow>,
+    /// What reading it warned of (e.g. quaternions normalised).
+    pub warnings: Vec<String>,
+    /// The columns the attitude was read from, when it was.
+    pub columns: Option<AttitudeColumns>,
+}
+
+/// Reads `path` (ending no later than `t_end`): the attitude is refused missing when `need_attitude`, else either
+/// the attitude or ω (or both) must be there. ω in space axes needs the attitude to be turned into the body.
+pub fn read_measured(
+    path: &Path,
+    options: &ReadOptions,
+    t_end: f64,
+    need_attitude: bool,
+) -> Result<Measured, ScoreError> {
     let input = |problem: String| ScoreError::Input(format!("{}: {problem}", path.display()));
     for (name, _) in &options.map {
         if !NAMES.contains(&name.as_str()) {
@@ -128,13 +173,7 @@ pub fn read_trajectory(
             csv.header_shown()
         ))
     })?;
-    let attitude = attitude_columns(&csv, &column, options.quaternion).ok_or_else(|| {
-        input(format!(
-            "no attitude columns: give q_w,q_x,q_y,q_z, q_0..q_3 (with --quaternion) or R_11..R_33 (or map them with \
-             --map); its columns are {}",
-            csv.header_shown()
-        ))
-    })?;
+    let attitude = attitude_columns(&csv, &column, options.quaternion);
     let omega: Vec<Option<usize>> = OMEGA.iter().map(|n| find(&csv, n)).collect();
     let omega = match omega.as_slice() {
         [Some(x), Some(y), Some(z)] => Some([*x, *y, *z]),
@@ -146,21 +185,45 @@ pub fn read_trajectory(
             )));
         }
     };
+    let attitude_wanted =
+        "q_w,q_x,q_y,q_z, q_0..q_3 (with --quaternion) or R_11..R_33 (or map them with --map)";
+    match (&attitude, omega) {
+        (None, _) if need_attitude => {
+            return Err(input(format!(
+                "no attitude columns: give {attitude_wanted}; its columns are {}",
+                csv.header_shown()
+            )));
+        }
+        (None, None) => {
+            return Err(input(format!(
+                "neither a gyro's omega_x,omega_y,omega_z nor the attitude ({attitude_wanted}); its columns are {}",
+                csv.header_shown()
+            )));
+        }
+        (None, Some(_)) if omega_axes == Axes::Space => {
+            return Err(input(
+                "omega in space axes (--omega space) needs the attitude to turn it into the body, and the file has \
+                 no attitude columns"
+                    .into(),
+            ));
+        }
+        _ => {}
+    }
     let mut reading = Reading::new(path, t_end, omega_axes);
-    let (index, names) = reading.columns(t_index, &attitude, omega, &column);
+    let (index, names) = reading.columns(t_index, attitude.as_ref(), omega, &column);
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let mut values = vec![0.0; index.len()];
     while csv
         .next_row(&index, &names, &mut values)
         .map_err(|e| ScoreError::Input(e.to_string()))?
     {
-        reading.add(csv.rows(), &values, &attitude, omega.is_some())?;
+        reading.add(csv.rows(), &values, attitude.as_ref(), omega.is_some())?;
     }
-    let columns = match &attitude {
+    let columns = attitude.as_ref().map(|a| match a {
         Attitude::Quaternion(_, names) if names[0] == "q_w" => AttitudeColumns::Named,
         Attitude::Quaternion(..) => AttitudeColumns::Generic(options.quaternion),
         Attitude::Matrix(_) => AttitudeColumns::Matrix,
-    };
+    });
     reading.finish(columns)
 }
 
@@ -217,7 +280,7 @@ struct Reading<'p> {
     path: &'p Path,
     t_end: f64,
     omega_axes: Axes,
-    rows: Vec<TheirRow>,
+    rows: Vec<MeasuredRow>,
     /// Rows normalised, and the first.
     normalised: (u64, u64),
     attitude_names: String,
@@ -239,18 +302,19 @@ impl<'p> Reading<'p> {
     fn columns(
         &mut self,
         t: usize,
-        attitude: &Attitude,
+        attitude: Option<&Attitude>,
         omega: Option<[usize; 3]>,
         column: &dyn Fn(&str) -> String,
     ) -> (Vec<usize>, Vec<String>) {
         let mut index = vec![t];
         let mut names = vec![column("t")];
         match attitude {
-            Attitude::Quaternion(i, n) => {
+            None => {}
+            Some(Attitude::Quaternion(i, n)) => {
                 index.extend(i);
                 names.extend(n.iter().map(|n| column(n)));
             }
-            Attitude::Matrix(i) => {
+            Some(Attitude::Matrix(i)) => {
                 index.extend(i);
                 names.extend(
                     (1..=3)
@@ -279,7 +343,7 @@ impl<'p> Reading<'p> {
         &mut self,
         row: u64,
         v: &[f64],
-        attitude: &Attitude,
+        attitude: Option<&Attitude>,
         with_omega: bool,
     ) -> Result<(), ScoreError> {
         let t = v[0];
@@ -314,6 +378,34 @@ impl<'p> Reading<'p> {
                 ),
             ));
         }
+        let q = match attitude {
+            Some(attitude) => Some(self.attitude(row, v, attitude)?),
+            None => None,
+        };
+        let n = match attitude {
+            None => 1,
+            Some(Attitude::Quaternion(..)) => 5,
+            Some(Attitude::Matrix(_)) => 10,
+        };
+        let omega_b = with_omega.then(|| {
+            let w = Vector3::new(v[n], v[n + 1], v[n + 2]);
+            match (self.omega_axes, q) {
+                (Axes::Space, Some(q)) => q.inverse_transform_vector(&w),
+                _ => w,
+            }
+        });
+        self.rows.push(MeasuredRow { t, q, omega_b });
+        Ok(())
+    }
+
+    /// The attitude of data row `row`, refused off a unit quaternion (or a rotation) by more than
+    /// [`NORM_REFUSED`], normalised (and counted) off by more than [`NORM_WARNED`].
+    fn attitude(
+        &mut self,
+        row: u64,
+        v: &[f64],
+        attitude: &Attitude,
+    ) -> Result<UnitQuaternion<f64>, ScoreError> {
         let (q, off) = match attitude {
             Attitude::Quaternion(..) => {
                 let q = nalgebra::Quaternion::new(v[1], v[2], v[3], v[4]);
@@ -345,22 +437,10 @@ impl<'p> Reading<'p> {
                 self.normalised.1 = row;
             }
         }
-        let n = match attitude {
-            Attitude::Quaternion(..) => 5,
-            Attitude::Matrix(_) => 10,
-        };
-        let omega_b = with_omega.then(|| {
-            let w = Vector3::new(v[n], v[n + 1], v[n + 2]);
-            match self.omega_axes {
-                Axes::Body => w,
-                Axes::Space => q.inverse_transform_vector(&w),
-            }
-        });
-        self.rows.push(TheirRow { t, q, omega_b });
-        Ok(())
+        Ok(q)
     }
 
-    fn finish(self, columns: AttitudeColumns) -> Result<Trajectory, ScoreError> {
+    fn finish(self, columns: Option<AttitudeColumns>) -> Result<Measured, ScoreError> {
         if self.rows.len() < 2 {
             return Err(ScoreError::Input(format!(
                 "{}: {} data rows; a trajectory needs at least 2",
@@ -377,7 +457,7 @@ impl<'p> Reading<'p> {
                 self.normalised.1
             ));
         }
-        Ok(Trajectory {
+        Ok(Measured {
             rows: self.rows,
             warnings,
             columns,

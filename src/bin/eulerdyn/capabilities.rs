@@ -26,4 +26,5 @@ macro_rules! capabilities {
 
 capabilities! {
     Score(eulerdyn::analysis::score::command::Commands),
+    Fit(eulerdyn::analysis::fit::command::Commands),
 }
