@@ -16,6 +16,7 @@ mod events;
 mod exact_closed_forms;
 mod exact_grid;
 mod first_hour;
+mod fit;
 mod fixed_axis;
 mod free_rotation;
 mod gallery;

@@ -65,7 +65,36 @@ impl FreeBody {
     /// "Numerical stability" section.
     pub fn new(body: &RigidBody, center_b: &Vector<BodyAxes>) -> Result<Self, SingularInertia> {
         let rho_c_b = -*center_b;
-        let inertia_b = body.inertia_about(&rho_c_b);
+        Self::of(body.inertia_about(&rho_c_b), rho_c_b, body.mass())
+    }
+
+    /// The same body about the same center with the inertia about C replaced by `inertia_c_b` (body axes), which
+    /// need only be positive definite (a fit steps through tensors no mass distribution has): I_A = I_C +
+    /// m (|ρ|² 1 − ρ ρᵀ) with ρ = ρ_C the position of C relative to A (eq. 8.12's parallel axes).
+    ///
+    /// ```
+    /// use eulerdyn::body::RigidBody;
+    /// use eulerdyn::frames::Vector;
+    /// use eulerdyn::motion::free::FreeBody;
+    /// use nalgebra::{Matrix3, Vector3};
+    /// let body = RigidBody::from_principal(2.0, [1.0, 2.0, 3.0]).unwrap();
+    /// let free = FreeBody::new(&body, &Vector::new(Vector3::zeros())).unwrap();
+    /// let other = free.with_inertia_c(&Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 2.5))).unwrap();
+    /// assert_eq!(other.inertia_b()[(2, 2)], 2.5);
+    /// ```
+    pub fn with_inertia_c(&self, inertia_c_b: &Matrix3<f64>) -> Result<Self, SingularInertia> {
+        let rho = *self.rho_c_b;
+        let parallel =
+            (Matrix3::identity() * rho.norm_squared() - rho * rho.transpose()) * self.mass;
+        Self::of(inertia_c_b + parallel, self.rho_c_b, self.mass)
+    }
+
+    /// The body of inertia `inertia_b` about A, C at `rho_c_b` from A, of `mass`.
+    fn of(
+        inertia_b: Matrix3<f64>,
+        rho_c_b: Vector<BodyAxes>,
+        mass: f64,
+    ) -> Result<Self, SingularInertia> {
         let principal = crate::body::Principal::of(&inertia_b);
         let largest = principal.moments.amax();
         if principal.moments.iter().any(|&m| m <= 1e-12 * largest) {
@@ -96,7 +125,7 @@ impl FreeBody {
             moments_p: principal.moments,
             axes_b: principal.axes_b,
             rho_c_b,
-            mass: body.mass(),
+            mass,
             euler,
         })
     }

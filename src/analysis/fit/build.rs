@@ -86,12 +86,19 @@ impl Builder {
         (self.spec_at(inertia, omega0, q0).build_with(&overrides)).map_err(|e| e.to_string())
     }
 
-    /// The model at x; `Err` when x is not a body.
+    /// The model at x; `Err` when its inertia is not positive definite. An inertia that no mass distribution has
+    /// (the triangle inequality broken) is still a model: the scene's effects are then those at the scene's own
+    /// inertia, unless one depends on the inertia (then `Err`); whether the fit's end is a body is judged apart.
     pub fn model(&self, params: &Parameters, x: &DVector<f64>) -> Result<Model, String> {
         let inertia = params.inertia(x);
         let (omega0, q0) = (params.omega0(x), params.q0(x));
-        let scene = self.scene_at(&inertia, &omega0, &q0)?;
+        let scene = match self.scene_at(&inertia, &omega0, &q0) {
+            Ok(scene) => scene,
+            Err(e) if self.uses_inertia => return Err(e),
+            Err(_) => self.scene_at(&params.inertia0, &omega0, &q0)?,
+        };
         let free = scene.motion.free().expect("checked free");
+        let body = (free.body.with_inertia_c(&inertia)).map_err(|e| e.to_string())?;
         let (columns, _) = params.columns(x);
         let moments = match scene.effects.is_empty() {
             true => None,
@@ -108,7 +115,7 @@ impl Builder {
             }),
         };
         Ok(Model {
-            body: *free.body,
+            body,
             moments,
             omega0_b: omega0,
             q0,
