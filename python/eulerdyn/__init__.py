@@ -11,6 +11,7 @@ Each function mirrors a command of the ``eulerdyn`` command line and calls the s
 - :func:`balance` — two-plane balancing of a fixed-axis or hinge scene;
 - :func:`score` — another program's trajectory of a scene against the referee, and with ``diagnose=True`` the
   engine step it is consistent with;
+- :func:`fit` — a body from its measured motion: inertia, ω₀, q₀ and a gyro's bias with their intervals;
 - :func:`sweep` — many runs of a scene with keys varied, a row per run;
 - :func:`plot` — eulerdyn's figure of a run (SVG, shown inline in a notebook);
 - :func:`view` — eulerdyn's 3D page of a run, written to an HTML file.
@@ -24,7 +25,7 @@ stops them. A column has one dtype whatever its cells (the book: Getting started
 ``__version__`` is the version of the eulerdyn crate the extension was built from.
 """
 
-from ._api import SceneLike, accuracy, balance, check, compare, events, run, score, sweep
+from ._api import SceneLike, accuracy, balance, check, compare, events, fit, run, score, sweep
 from ._figures import Svg, plot, view
 from ._eulerdyn import RunError, SceneError, __version__
 
@@ -38,6 +39,7 @@ __all__ = [
     "check",
     "compare",
     "events",
+    "fit",
     "plot",
     "run",
     "score",

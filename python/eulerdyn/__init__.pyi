@@ -18,6 +18,7 @@ __all__ = [
     "check",
     "compare",
     "events",
+    "fit",
     "plot",
     "run",
     "score",
@@ -95,6 +96,19 @@ def score(
     map: Optional[Mapping[str, str]] = None,
 ) -> Dict[str, Any]:
     """Another program's trajectory against the referee (``eulerdyn score --json``)."""
+
+def fit(
+    measured: Union[str, "os.PathLike[str]", pd.DataFrame],
+    scene: SceneLike,
+    *,
+    estimate: Sequence[str],
+    sigma_omega: Optional[float] = None,
+    sigma_attitude: Optional[float] = None,
+    quaternion: str = "wxyz",
+    omega: str = "body",
+    map: Optional[Mapping[str, str]] = None,
+) -> Dict[str, Any]:
+    """A body from its measured motion (``eulerdyn fit --json``)."""
 
 def sweep(
     sweep_file: Union[str, "os.PathLike[str]", Mapping[str, Any]],

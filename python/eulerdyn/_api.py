@@ -407,6 +407,76 @@ def score(
     return dict(_eulerdyn.score(os.fspath(theirs), _scene(scene), **options))
 
 
+
+def fit(
+    measured: Union[str, "os.PathLike[str]", pd.DataFrame],
+    scene: SceneLike,
+    *,
+    estimate: Sequence[str],
+    sigma_omega: Optional[float] = None,
+    sigma_attitude: Optional[float] = None,
+    quaternion: str = "wxyz",
+    omega: str = "body",
+    map: Optional[Mapping[str, str]] = None,
+) -> Dict[str, Any]:
+    """A body from its measured motion, as ``eulerdyn fit MEASURED.csv --scene SCENE --estimate LIST --json``
+    (with ``--sigma-omega``, ``--sigma-attitude``, ``--quaternion``, ``--omega`` and ``--map`` for the keywords).
+
+    Args:
+        measured: the path of the measured CSV, or a DataFrame with its columns (``t`` and a gyro's
+            ``omega_x..omega_z`` and/or the attitude as ``q_w..q_z``, ``q_0..q_3`` or ``R_11..R_33``; rows at any
+            times); a DataFrame is written out at full precision (17 significant digits) and read as the file would be.
+        scene: the model and the start of the estimates: the path of a scene file, or a dict of its keys.
+        estimate: the parameter groups: ``"inertia"`` (six entries about C) or ``"principal"`` (the principal
+            moments, the scene's axes held), ``"omega0"``, ``"attitude0"``, ``"gyro_bias"``.
+        sigma_omega: the gyro's noise (rad/s); ``None``: from the residuals.
+        sigma_attitude: the attitude's noise (rad); ``None``: from the residuals.
+        quaternion: the order of the generic columns ``q_0..q_3``, ``"wxyz"`` or ``"xyzw"``.
+        omega: the axes of ``omega_x..z``, ``"body"`` or ``"space"``.
+        map: eulerdyn's column name → the file's column name, e.g. ``{"omega_x": "gx"}``.
+
+    Returns:
+        The fit as the command's ``--json`` prints it: ``parameters`` (each ``name``, ``start``, ``estimate``,
+        ``std_error``, ``low``, ``high``: the 95 % interval), ``correlation`` (``names``, ``matrix``), ``rms`` and
+        ``sigma`` per channel, ``chi2_dof``, ``dof``, ``converged``, ``termination``, ``iterations``,
+        ``scale_held``, ``notes``, ``unphysical`` (why the fitted inertia is not a body, else ``None``),
+        ``warnings``, and ``file`` (``"<DataFrame>"`` for a DataFrame), ``scene``, ``rows``.
+
+    Raises:
+        SceneError: bad input, as the command's exit 2 (a missing column, times not increasing, an unknown
+            parameter, one the data cannot determine); the message names it.
+        RunError: the model cannot be run at the scene's start.
+
+    Example:
+        >>> import eulerdyn
+        >>> truth = eulerdyn.run({"body": {"mass": 1.0, "inertia": [1.0, 1.3, 1.6]},
+        ...                       "initial": {"omega": [0.4, 0.1, 1.5]},
+        ...                       "solver": {"t_end": 10.0}, "output": {"every": 0.1}})
+        >>> gyro = truth.rename(columns={"omega_b_x": "omega_x", "omega_b_y": "omega_y", "omega_b_z": "omega_z"})
+        >>> start = {"body": {"mass": 1.0, "inertia": [1.1, 1.2, 1.6]}, "initial": {"omega": [0.38, 0.12, 1.52]},
+        ...          "solver": {"t_end": 10.0}, "output": {"every": 0.1}}
+        >>> result = eulerdyn.fit(gyro[["t", "omega_x", "omega_y", "omega_z"]], start, estimate=["principal", "omega0"])
+        >>> round(result["parameters"][0]["estimate"], 6), result["scale_held"]
+        (1.0, True)
+    """
+    options = dict(
+        estimate=list(estimate),
+        sigma_omega=sigma_omega,
+        sigma_attitude=sigma_attitude,
+        quaternion=quaternion,
+        omega=omega,
+        map=sorted((map or {}).items()),
+    )
+    if isinstance(measured, pd.DataFrame):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "measured.csv")
+            measured.to_csv(path, index=False, float_format="%.17g")
+            result = dict(_eulerdyn.fit(path, _scene(scene), **options))
+        result["file"] = "<DataFrame>"
+        return result
+    return dict(_eulerdyn.fit(os.fspath(measured), _scene(scene), **options))
+
+
 def balance(
     scene: SceneLike,
     *,

@@ -73,6 +73,19 @@ def score(
 ) -> Dict[str, Any]:
     """The score as ``eulerdyn score --json`` prints it."""
 
+def fit(
+    measured: str,
+    scene: _Scene,
+    *,
+    estimate: Sequence[str],
+    sigma_omega: Optional[float] = None,
+    sigma_attitude: Optional[float] = None,
+    quaternion: str = "wxyz",
+    omega: str = "body",
+    map: Optional[Sequence[Tuple[str, str]]] = None,
+) -> Dict[str, Any]:
+    """The fit as ``eulerdyn fit --json`` prints it."""
+
 def sweep(
     sweep: _Scene,
     *,

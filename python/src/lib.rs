@@ -1,5 +1,5 @@
 //! `eulerdyn._eulerdyn`: the eulerdyn library for Python, one function per command of the command line (`run`,
-//! `check`, `compare`, `accuracy`, `balance`, `score`, `sweep`, `plot`, `view`). Each takes a scene file's path or a dict of the same keys, calls the
+//! `check`, `compare`, `accuracy`, `balance`, `score`, `fit`, `sweep`, `plot`, `view`). Each takes a scene file's path or a dict of the same keys, calls the
 //! library (nothing is computed here), and returns plain Python data that `eulerdyn/__init__.py` turns into pandas
 //! DataFrames.
 //!
@@ -12,6 +12,7 @@ mod commands;
 mod convert;
 mod errors;
 mod figures;
+mod fit;
 mod input;
 mod moment;
 mod run;
@@ -34,6 +35,7 @@ fn _eulerdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::accuracy, m)?)?;
     m.add_function(wrap_pyfunction!(commands::balance, m)?)?;
     m.add_function(wrap_pyfunction!(score::score, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     m.add_function(wrap_pyfunction!(figures::plot, m)?)?;
     m.add_function(wrap_pyfunction!(figures::view, m)?)?;

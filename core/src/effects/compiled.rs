@@ -199,6 +199,13 @@ impl EffectMoments {
         !self.laws.is_empty()
     }
 
+    /// Whether the moment depends on the attitude (space-axis torques, gravity, the environment's, a law) and on
+    /// ω (damping, a law): where it depends on neither, ∂M/∂(q, ω) = 0.
+    pub fn depends_on_state(&self) -> (bool, bool) {
+        let laws = !self.laws.is_empty();
+        (self.needs_attitude || laws, self.damping_c != 0.0 || laws)
+    }
+
     /// M_b = M_rest_b − c ω_b from the part M_rest_b that does not depend on ω.
     #[inline(always)]
     fn with_damping(&self, rest_b: Vector3<f64>, omega_b: &Vector3<f64>) -> Vector3<f64> {

@@ -24,13 +24,17 @@ use crate::motion::free::{FreeBody, quaternion_rate};
 
 /// The most parameters the variational equations carry: the inertia's six, ω₀'s three, q₀'s three.
 pub const MAX_COLUMNS: usize = 12;
-/// The state: ω (3), q (4), then (s_ω, s_q) for each of [`MAX_COLUMNS`] parameters; the unused ones stay zero.
-pub const N: usize = 7 * (1 + MAX_COLUMNS);
-/// The augmented state.
-pub type State = SVector<f64, N>;
+/// The state's length for `columns` parameters: ω (3), q (4), then (s_ω, s_q) for each.
+pub const fn state_len(columns: usize) -> usize {
+    7 * (1 + columns)
+}
+/// The augmented state of `N` entries; columns beyond the model's stay zero. Two lengths are compiled, for up to
+/// 6 and up to [`MAX_COLUMNS`] columns: a step's cost grows with N.
+pub type State<const N: usize> = SVector<f64, N>;
 
-/// The relative tolerance of the model's integration (dop853; the sensitivities are under the same control).
-pub const RTOL: f64 = 1e-12;
+/// The relative tolerance of the model's integration (dop853; the sensitivities are under the same control):
+/// 1e-11, a hundred times below what a double-precision gyro reading resolves over a record of 10⁴ rows.
+pub const RTOL: f64 = 1e-11;
 /// The relative step of the central differences of the effects' moment, ≈ ε^(1/3).
 const STEP: f64 = 6e-6;
 
@@ -85,8 +89,8 @@ pub struct Point {
 
 impl Model {
     /// The state at t = 0.
-    fn initial_state(&self) -> State {
-        let mut y = State::zeros();
+    fn initial_state<const N: usize>(&self) -> State<N> {
+        let mut y = State::<N>::zeros();
         y.fixed_rows_mut::<3>(0).copy_from(&self.omega0_b);
         let q = self.q0.quaternion();
         y.fixed_rows_mut::<4>(3)
@@ -108,6 +112,15 @@ impl Model {
     /// The model at `times` (increasing, ≥ 0): dop853 at [`RTOL`] over [0, last time], read at the times from its
     /// dense output. `Err` names the time and the reason a run failed.
     pub fn solve(&self, times: &[f64]) -> Result<Vec<Point>, String> {
+        if self.columns.len() <= 6 {
+            self.solve_in::<{ state_len(6) }>(times)
+        } else {
+            self.solve_in::<{ state_len(MAX_COLUMNS) }>(times)
+        }
+    }
+
+    /// [`Self::solve`] with a state of `N` entries.
+    fn solve_in<const N: usize>(&self, times: &[f64]) -> Result<Vec<Point>, String> {
         let t_last = *times.last().expect("at least one time");
         let schedule = Schedule::new(t_last.max(f64::MIN_POSITIVE), t_last)
             .map_err(|e| format!("the model's schedule: {e}"))?;
@@ -123,7 +136,7 @@ impl Model {
             points: Vec::with_capacity(times.len()),
         };
         let mut system = Variational { model: self };
-        let y0 = self.initial_state();
+        let y0 = self.initial_state::<N>();
         if times[0] == 0.0 {
             watch.points.push(point(&y0));
         }
@@ -148,7 +161,7 @@ impl Model {
 }
 
 /// The model's point from the augmented state.
-fn point(y: &State) -> Point {
+fn point<const N: usize>(y: &State<N>) -> Point {
     let omega_b = Vector3::new(y[0], y[1], y[2]);
     let q_raw = Quaternion::new(y[3], y[4], y[5], y[6]);
     let norm = q_raw.norm();
@@ -156,7 +169,7 @@ fn point(y: &State) -> Point {
     let conj = q.quaternion().conjugate();
     let mut d_omega = [Vector3::zeros(); MAX_COLUMNS];
     let mut d_attitude = [Vector3::zeros(); MAX_COLUMNS];
-    for j in 0..MAX_COLUMNS {
+    for j in 0..(N / 7 - 1) {
         let at = 7 * (j + 1);
         d_omega[j] = Vector3::new(y[at], y[at + 1], y[at + 2]);
         let s_q = Quaternion::new(y[at + 3], y[at + 4], y[at + 5], y[at + 6]);
@@ -176,7 +189,7 @@ struct AtTimes<'a> {
     points: Vec<Point>,
 }
 
-impl StepWatch<N> for AtTimes<'_> {
+impl<const N: usize> StepWatch<N> for AtTimes<'_> {
     fn step(&mut self, solution: &Dense<N>) -> Option<f64> {
         while let Some(&t) = self.times.get(self.points.len()) {
             if t > solution.t1() {
@@ -203,8 +216,8 @@ fn moment(
     moments.moment_b(t, &UnitQuaternion::new_normalize(*q), omega_b)
 }
 
-impl OdeSystem<N> for Variational<'_> {
-    fn rhs(&mut self, t: f64, y: &State) -> State {
+impl<const N: usize> OdeSystem<N> for Variational<'_> {
+    fn rhs(&mut self, t: f64, y: &State<N>) -> State<N> {
         let model = self.model;
         let inertia = model.body.inertia_b();
         let omega = Vector3::new(y[0], y[1], y[2]);
@@ -216,7 +229,7 @@ impl OdeSystem<N> for Variational<'_> {
             m_b.map(crate::frames::Vector::new).as_ref(),
         );
         let h = inertia * omega;
-        let mut dy = State::zeros();
+        let mut dy = State::<N>::zeros();
         dy.fixed_rows_mut::<3>(0).copy_from(&omega_dot);
         dy.fixed_rows_mut::<4>(3)
             .copy_from_slice(&quaternion_rate(&q_arr, &omega));
@@ -227,6 +240,10 @@ impl OdeSystem<N> for Variational<'_> {
             let s_q = Quaternion::new(y[at + 3], y[at + 4], y[at + 5], y[at + 6]);
             let mut rhs_b = -s_omega.cross(&h) - omega.cross(&(inertia * s_omega));
             if let Some(moments) = &model.moments {
+                // Only along what the moment depends on: a body-axis torque of time alone costs nothing here.
+                let (on_q, on_omega) = moments.at.depends_on_state();
+                let s_q = if on_q { s_q } else { Quaternion::default() };
+                let s_omega = if on_omega { s_omega } else { Vector3::zeros() };
                 let reach = (s_omega.norm_squared() + s_q.norm_squared()).sqrt();
                 if reach > 0.0 {
                     let e = STEP * size / reach;

@@ -25,6 +25,15 @@ pub struct Data {
 }
 
 impl Data {
+    /// The first `rows` rows.
+    pub fn prefix(&self, rows: usize) -> Self {
+        Self {
+            times: self.times[..rows].to_vec(),
+            omega_b: self.omega_b[..rows].to_vec(),
+            q: self.q[..rows].to_vec(),
+        }
+    }
+
     /// The number of rows with a gyro reading, and with an attitude.
     pub fn counts(&self) -> (usize, usize) {
         (
@@ -50,6 +59,27 @@ pub struct Evaluation {
     pub residuals: DVector<f64>,
     /// Their derivatives in x.
     pub jacobian: DMatrix<f64>,
+}
+
+impl Evaluation {
+    /// The same evaluation weighed with `to` instead of `from`: each channel's rows scaled by σ_from/σ_to.
+    pub fn reweighted(&self, data: &Data, from: Sigmas, to: Sigmas) -> Self {
+        let mut out = self.clone();
+        let mut row = 0;
+        for i in 0..data.times.len() {
+            for (given, scale) in [
+                (data.omega_b[i].is_some(), from.omega / to.omega),
+                (data.q[i].is_some(), from.attitude / to.attitude),
+            ] {
+                if given {
+                    out.residuals.rows_mut(row, 3).scale_mut(scale);
+                    out.jacobian.rows_mut(row, 3).scale_mut(scale);
+                    row += 3;
+                }
+            }
+        }
+        out
+    }
 }
 
 /// Log(q) as a turn (rad, body axes): 2 atan2(|v|, w) v/|v| with w ≥ 0, accurate for small turns (an arccos of

@@ -3,7 +3,7 @@
 //! parameter the data cannot determine, the estimates with their standard errors and 95 % intervals, and whether
 //! the fitted inertia is a body.
 
-use levenberg_marquardt::LevenbergMarquardt;
+use levenberg_marquardt::{LevenbergMarquardt, TerminationReason};
 use nalgebra::{DMatrix, DVector, Matrix3};
 
 use super::build::{Builder, scene_name};
@@ -19,6 +19,10 @@ use crate::scene::{Scene, SceneSpec};
 const SCALE_FREE: f64 = 1e-6;
 /// The solver's tolerances on the relative change of the sum of squares and of x (MINPACK's ftol, xtol).
 const TOLERANCE: f64 = 1e-10;
+/// The tolerances of a window before the whole data.
+const WINDOW_TOLERANCE: f64 = 1e-4;
+/// A window of the continuation has at least this many rows per parameter.
+const WINDOW_ROWS: usize = 10;
 
 /// One reported parameter.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -187,25 +191,28 @@ pub fn fit(data: &Data, scene: &Scene, options: &FitOptions) -> Result<Fit, FitE
         params = params.with_scale_held(true);
         start = at_start(&params, sigmas)?;
     }
-    let mut outcome = minimize(&builder, &params, data, sigmas, params.start(), &start);
+    let mut outcome = continued(&builder, &params, data, sigmas, start)?;
     let estimated = estimated_sigmas(data, options);
     if !estimated.is_empty() {
-        let at = evaluate(&builder, &params, data, sigmas, &outcome.x)
-            .map_err(|e| FitError::Run(format!("the model at the estimate: {e}")))?;
-        sigmas = residual_sigmas(data, &at, sigmas, params.len());
+        let from = sigmas;
+        sigmas = residual_sigmas(data, &outcome.evaluation, sigmas, params.len());
+        let reweighted = outcome.evaluation.reweighted(data, from, sigmas);
         let (gyro, attitude) = data.counts();
-        if gyro > 0 && attitude > 0 {
-            let start = evaluate(&builder, &params, data, sigmas, &outcome.x)
-                .map_err(|e| FitError::Run(format!("the model at the estimate: {e}")))?;
-            let again = minimize(&builder, &params, data, sigmas, outcome.x.clone(), &start);
-            outcome = Outcome {
+        outcome = if gyro > 0 && attitude > 0 {
+            let x = outcome.x.clone();
+            let again = minimize(&builder, &params, data, sigmas, x, &reweighted, TOLERANCE)?;
+            Outcome {
                 iterations: outcome.iterations + again.iterations,
                 ..again
-            };
-        }
+            }
+        } else {
+            Outcome {
+                evaluation: reweighted,
+                ..outcome
+            }
+        };
     }
-    let last = evaluate(&builder, &params, data, sigmas, &outcome.x)
-        .map_err(|e| FitError::Run(format!("the model at the estimate: {e}")))?;
+    let last = &outcome.evaluation;
     if let Some(k) = undetermined(&last.jacobian) {
         let name = &params.coordinate_names()[k];
         return Err(FitError::Input(format!(
@@ -220,7 +227,7 @@ pub fn fit(data: &Data, scene: &Scene, options: &FitOptions) -> Result<Fit, FitE
         scene,
         (sigmas, estimated),
         &outcome,
-        &last,
+        last,
     ))
 }
 
@@ -245,9 +252,60 @@ fn scale_free(params: &Parameters, x: &DVector<f64>, jacobian: &DMatrix<f64>) ->
     along.norm() <= SCALE_FREE * size
 }
 
-/// Where the solver stopped.
+/// The windows of a continuation over the data: the rows up to t_last/2^k for k = 6 … 0, each with at least
+/// [`WINDOW_ROWS`] per parameter and more rows than the one before.
+fn windows(data: &Data, parameters: usize) -> Vec<usize> {
+    let t_last = *data.times.last().expect("at least two rows");
+    let least = WINDOW_ROWS * parameters.max(1);
+    let mut out: Vec<usize> = Vec::new();
+    for k in (1..=6).rev() {
+        let t = t_last / f64::from(1u32 << k);
+        let rows = data.times.partition_point(|&s| s <= t);
+        if rows >= least && out.last().is_none_or(|&r| rows > r) {
+            out.push(rows);
+        }
+    }
+    out.push(data.times.len());
+    out
+}
+
+/// Levenberg–Marquardt continued over growing windows of the data ([`windows`]), each from the last one's
+/// estimate: a long record of a tumble has a sum of squares with many valleys (a start a little off turns the
+/// model's phase by radians by the end), a short one has one, and each doubling keeps the estimate in its valley.
+fn continued(
+    builder: &Builder,
+    params: &Parameters,
+    data: &Data,
+    sigmas: Sigmas,
+    start: Evaluation,
+) -> Result<Outcome, FitError> {
+    let windows = windows(data, params.len());
+    let mut x = params.start();
+    let mut iterations = 0;
+    let mut last = None;
+    for (k, &rows) in windows.iter().enumerate() {
+        let part = data.prefix(rows);
+        let whole = k + 1 == windows.len();
+        let at = match whole && k == 0 {
+            true => start.clone(),
+            false => evaluate(builder, params, &part, sigmas, &x)
+                .map_err(|e| FitError::Run(format!("the model on the first {rows} rows: {e}")))?,
+        };
+        // A window before the whole data only has to bring x into the valley: loose tolerances there.
+        let tolerance = if whole { TOLERANCE } else { WINDOW_TOLERANCE };
+        let outcome = minimize(builder, params, &part, sigmas, x, &at, tolerance)?;
+        iterations += outcome.iterations;
+        x = outcome.x.clone();
+        last = Some(outcome);
+    }
+    let last = last.expect("at least the whole data");
+    Ok(Outcome { iterations, ..last })
+}
+
+/// Where the solver stopped, and the evaluation there.
 struct Outcome {
     x: DVector<f64>,
+    evaluation: Evaluation,
     converged: bool,
     termination: String,
     iterations: usize,
@@ -261,19 +319,28 @@ fn minimize(
     sigmas: Sigmas,
     x0: DVector<f64>,
     start: &Evaluation,
-) -> Outcome {
+    tolerance: f64,
+) -> Result<Outcome, FitError> {
     let problem = Problem::new(builder, params, data, sigmas, x0, start);
     let solver = LevenbergMarquardt::new()
-        .with_ftol(TOLERANCE)
-        .with_xtol(TOLERANCE)
-        .with_gtol(TOLERANCE);
+        .with_ftol(tolerance)
+        .with_xtol(tolerance)
+        .with_gtol(tolerance);
     let (problem, report) = solver.minimize(problem);
-    Outcome {
+    let evaluation = (problem.evaluation())
+        .map_err(|e| FitError::Run(format!("the model at the solver's last point: {e}")))?;
+    Ok(Outcome {
+        evaluation,
         x: problem.x().clone(),
-        converged: report.termination.was_successful(),
+        // MINPACK's "no further improvement possible" (info 6–8) is the optimum to round-off: converged too.
+        converged: report.termination.was_successful()
+            || matches!(
+                report.termination,
+                TerminationReason::NoImprovementPossible(_)
+            ),
         termination: format!("{:?}", report.termination),
         iterations: problem.jacobians(),
-    }
+    })
 }
 
 /// The channels whose σ comes from the residuals.

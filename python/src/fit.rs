@@ -1,0 +1,77 @@
+//! `eulerdyn.fit`: a body from its measured motion, the dict `eulerdyn fit MEASURED.csv --scene SCENE --estimate
+//! LIST --json` prints.
+
+use std::path::PathBuf;
+
+use pyo3::prelude::*;
+
+use eulerdyn::analysis::fit::{FitError, FitOptions, fit_file, parse_estimates};
+use eulerdyn::analysis::score::{QuaternionOrder, ReadOptions};
+use eulerdyn::frames::Axes;
+use eulerdyn::scene::Overrides;
+
+use crate::convert::json_to_py;
+use crate::errors::{RunError, SceneError, no_panic};
+use crate::input::SceneInput;
+
+/// The fit of the scene (a path or a dict) to the measured motion in the CSV `measured`, as the command's `--json`
+/// gives it. `estimate` lists the parameter groups; `sigma_omega`, `sigma_attitude`, `quaternion` ("wxyz" or
+/// "xyzw"), `omega` ("body" or "space") and `map` (pairs NAME, COLUMN) are the command's options. Raises SceneError
+/// for bad input (exit 2 of the command), RunError when the model cannot be run at the scene's start; a fit that
+/// does not converge or whose inertia is not a body is returned with `converged` false or `unphysical` set.
+#[pyfunction]
+#[pyo3(signature = (measured, scene, *, estimate, sigma_omega=None, sigma_attitude=None, quaternion="wxyz", omega="body", map=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit<'py>(
+    py: Python<'py>,
+    measured: PathBuf,
+    scene: &Bound<'py, PyAny>,
+    estimate: Vec<String>,
+    sigma_omega: Option<f64>,
+    sigma_attitude: Option<f64>,
+    quaternion: &str,
+    omega: &str,
+    map: Option<Vec<(String, String)>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    no_panic(|| {
+        let quaternion = match quaternion {
+            "wxyz" => QuaternionOrder::Wxyz,
+            "xyzw" => QuaternionOrder::Xyzw,
+            other => {
+                return Err(SceneError::new_err(format!(
+                    "quaternion={other:?}: give \"wxyz\" or \"xyzw\""
+                )));
+            }
+        };
+        let omega = match omega {
+            "body" => Axes::Body,
+            "space" => Axes::Space,
+            other => {
+                return Err(SceneError::new_err(format!(
+                    "omega={other:?}: give \"body\" or \"space\""
+                )));
+            }
+        };
+        let fail = |e: FitError| match e {
+            FitError::Input(m) => SceneError::new_err(m),
+            FitError::Run(m) => RunError::new_err(m),
+        };
+        let options = FitOptions {
+            estimates: parse_estimates(&estimate.join(",")).map_err(fail)?,
+            sigma_omega,
+            sigma_attitude,
+            read: ReadOptions {
+                quaternion,
+                omega: Some(omega),
+                map: map.unwrap_or_default(),
+            },
+        };
+        let scene = SceneInput::from_py(scene)?.scene(py, &Overrides::default())?;
+        let result = py
+            .detach(|| fit_file(&measured, &scene, &options))
+            .map_err(fail)?;
+        let value = serde_json::to_value(&result)
+            .map_err(|e| RunError::new_err(format!("the fit as JSON: {e}")))?;
+        json_to_py(py, &value)
+    })
+}
