@@ -288,6 +288,21 @@ impl Parameters {
             .collect()
     }
 
+    /// The typical size of each coordinate of x: the inertia's entries and moments a third of its trace, ω₀
+    /// and the bias |ω₀| (1e-3 rad/s at least), a turn of q₀ 1 rad.
+    pub fn scales(&self) -> DVector<f64> {
+        let inertia = self.inertia0.trace() / 3.0;
+        let rate = self.omega0.norm().max(1e-3);
+        DVector::from_iterator(
+            self.len(),
+            self.coordinates.iter().map(|c| match c {
+                Coordinate::Entry(_) | Coordinate::Moment(_) => inertia,
+                Coordinate::Omega0(_) | Coordinate::Bias(_) => rate,
+                Coordinate::Turn(_) => 1.0,
+            }),
+        )
+    }
+
     /// The index in x of coordinate `c`.
     fn at(&self, c: Coordinate) -> Option<usize> {
         self.coordinates.iter().position(|d| *d == c)

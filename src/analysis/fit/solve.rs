@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, DVector, Matrix3};
 use super::build::{Builder, scene_name};
 use super::params::{Estimate, Parameters, reported_covariance};
 use super::problem::{Data, Evaluation, Problem, Sigmas, evaluate};
-use super::uncertainty::{Z95, correlation, covariance, undetermined};
+use super::uncertainty::{Z95, conditioning, correlation, covariance, undetermined};
 use super::{FitError, FitOptions};
 use crate::body::RigidBody;
 use crate::scene::{Scene, SceneSpec};
@@ -19,6 +19,9 @@ use crate::scene::{Scene, SceneSpec};
 const SCALE_FREE: f64 = 1e-6;
 /// The solver's tolerances on the relative change of the sum of squares and of x (MINPACK's ftol, xtol).
 const TOLERANCE: f64 = 1e-10;
+/// A window before the whole data is used only when its J (columns at their parameters' sizes) has σ_min/σ_max
+/// above this.
+const WINDOW_CONDITIONING: f64 = 1e-4;
 /// The tolerances of a window before the whole data.
 const WINDOW_TOLERANCE: f64 = 1e-4;
 /// A window of the continuation has at least this many rows per parameter.
@@ -213,11 +216,11 @@ pub fn fit(data: &Data, scene: &Scene, options: &FitOptions) -> Result<Fit, FitE
         };
     }
     let last = &outcome.evaluation;
-    if let Some(k) = undetermined(&last.jacobian) {
+    if let Some(k) = undetermined(&last.jacobian, &params.scales()) {
         let name = &params.coordinate_names()[k];
         return Err(FitError::Input(format!(
-            "--estimate: the data cannot determine {name} (with the other parameters estimated, its column of the \
-             Jacobian is a combination of theirs); estimate fewer parameters or measure a motion that moves it"
+            "--estimate: the data cannot determine {name}: the residuals do not move with it, or move with it only \
+             as with a combination of the other parameters; estimate fewer parameters or measure a motion that moves it"
         )));
     }
     Ok(report(
@@ -291,6 +294,11 @@ fn continued(
             false => evaluate(builder, params, &part, sigmas, &x)
                 .map_err(|e| FitError::Run(format!("the model on the first {rows} rows: {e}")))?,
         };
+        // A window whose rows do not determine every parameter (no pulse yet, a rate still too slow to show
+        // the inertia) would let the undetermined ones wander: it is passed over.
+        if !whole && conditioning(&at.jacobian, &params.scales()) < WINDOW_CONDITIONING {
+            continue;
+        }
         // A window before the whole data only has to bring x into the valley: loose tolerances there.
         let tolerance = if whole { TOLERANCE } else { WINDOW_TOLERANCE };
         let outcome = minimize(builder, params, &part, sigmas, x, &at, tolerance)?;

@@ -1,28 +1,49 @@
 //! What the optimum's Jacobian says about the estimates: the covariance C = (JᵀJ)⁻¹ of the weighted problem
 //! (Seber & Wild, *Nonlinear Regression*, §2.1–2.2), standard errors and 95 % intervals, the correlation matrix,
-//! and a parameter the data cannot determine (a column of J that is, to round-off, a combination of the others).
+//! and a parameter the data cannot determine (a column of J that is, to round-off, zero or a combination of the
+//! others, each column taken at its parameter's size).
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{DMatrix, DVector, Dyn};
 
 /// The two-sided 95 % quantile of the normal distribution.
 pub const Z95: f64 = 1.959_963_984_540_054;
 
-/// A column direction whose singular value is below this fraction of the largest (columns scaled to unit length)
-/// is not determined by the data: ~1e8 times round-off's relative size in the sensitivities.
+/// A direction whose singular value is below this fraction of the largest (columns scaled by their parameters'
+/// sizes) is not determined by the data: ~1e8 times round-off's relative size in the sensitivities.
 pub const UNDETERMINED: f64 = 1e-8;
 
-/// The coordinate the data cannot determine, if any: a zero column, or the largest entry of the right singular
-/// vector of the smallest singular value of J with unit columns, when that value is below [`UNDETERMINED`] of the
-/// largest.
-pub fn undetermined(jacobian: &DMatrix<f64>) -> Option<usize> {
-    let norms: Vec<f64> = jacobian.column_iter().map(|c| c.norm()).collect();
-    if let Some(k) = norms.iter().position(|&n| n == 0.0 || !n.is_finite()) {
-        return Some(k);
+/// The SVD of J with each column multiplied by its parameter's typical size (`scales`): the change of the
+/// residuals when a parameter moves by its own size. `Err(k)`: column k is not finite.
+fn scaled_svd(
+    jacobian: &DMatrix<f64>,
+    scales: &DVector<f64>,
+) -> Result<nalgebra::SVD<f64, Dyn, Dyn>, usize> {
+    if let Some(k) = (jacobian.column_iter()).position(|c| c.iter().any(|v| !v.is_finite())) {
+        return Err(k);
     }
     let scaled = DMatrix::from_fn(jacobian.nrows(), jacobian.ncols(), |r, c| {
-        jacobian[(r, c)] / norms[c]
+        jacobian[(r, c)] * scales[c]
     });
-    let svd = scaled.svd(false, true);
+    Ok(scaled.svd(false, true))
+}
+
+/// The smallest singular value of J with its columns scaled by `scales` over the largest (0 when a column is not
+/// finite): how well the data determine every parameter at once.
+pub fn conditioning(jacobian: &DMatrix<f64>, scales: &DVector<f64>) -> f64 {
+    match scaled_svd(jacobian, scales) {
+        Err(_) => 0.0,
+        Ok(svd) => svd.singular_values.min() / svd.singular_values.max(),
+    }
+}
+
+/// The coordinate the data cannot determine, if any: the largest entry of the right singular vector of the
+/// smallest singular value of J with its columns scaled by `scales`, when that value is below [`UNDETERMINED`] of
+/// the largest (a column that is, to round-off, zero or a combination of the others).
+pub fn undetermined(jacobian: &DMatrix<f64>, scales: &DVector<f64>) -> Option<usize> {
+    let svd = match scaled_svd(jacobian, scales) {
+        Err(k) => return Some(k),
+        Ok(svd) => svd,
+    };
     let v_t = svd.v_t.expect("asked for V");
     let (k_min, s_min) = (svd.singular_values.iter().enumerate())
         .min_by(|a, b| a.1.total_cmp(b.1))
