@@ -32,7 +32,10 @@ fn scaled_svd(
 pub fn conditioning(jacobian: &DMatrix<f64>, scales: &DVector<f64>) -> f64 {
     match scaled_svd(jacobian, scales) {
         Err(_) => 0.0,
-        Ok(svd) => svd.singular_values.min() / svd.singular_values.max(),
+        Ok(svd) if svd.singular_values.max() > 0.0 => {
+            svd.singular_values.min() / svd.singular_values.max()
+        }
+        Ok(_) => 0.0,
     }
 }
 
@@ -49,7 +52,7 @@ pub fn undetermined(jacobian: &DMatrix<f64>, scales: &DVector<f64>) -> Option<us
         .min_by(|a, b| a.1.total_cmp(b.1))
         .map(|(k, s)| (k, *s))?;
     let s_max = svd.singular_values.max();
-    if s_min >= UNDETERMINED * s_max {
+    if s_min > UNDETERMINED * s_max {
         return None;
     }
     (v_t.row(k_min).iter().enumerate())
