@@ -1,6 +1,6 @@
 //! The residuals against time (`fit --plot`): one chart per channel — the gyro's (rad/s) above the attitude's
 //! (rad) — with a curve per body axis, on a linear scale about zero, each curve thinned to at most
-//! [`MAX_POINTS`](crate::output::plot::MAX_POINTS) points.
+//! [`MAX_POINTS`] points.
 
 use plotters::prelude::*;
 

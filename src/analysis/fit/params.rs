@@ -423,12 +423,12 @@ impl Reported {
     }
 }
 
-/// [φ]×, the cross-product matrix.
+/// ⌊φ⌋×, the cross-product matrix.
 fn cross_matrix(phi: &Vector3<f64>) -> Matrix3<f64> {
     phi.cross_matrix()
 }
 
-/// The right Jacobian of SO(3), J_r(φ) = I − (1 − cos θ)/θ² [φ]× + (θ − sin θ)/θ³ [φ]×² (Solà et al. 2018,
+/// The right Jacobian of SO(3), J_r(φ) = I − (1 − cos θ)/θ² ⌊φ⌋× + (θ − sin θ)/θ³ ⌊φ⌋×² (Solà et al. 2018,
 /// eq. 143), by its series below θ = 1e-4.
 pub fn right_jacobian(phi: &Vector3<f64>) -> Matrix3<f64> {
     let theta = phi.norm();
@@ -448,7 +448,7 @@ pub fn right_jacobian(phi: &Vector3<f64>) -> Matrix3<f64> {
     Matrix3::identity() - k * a + k * k * b
 }
 
-/// The inverse of the right Jacobian, J_r⁻¹(φ) = I + ½ [φ]× + (1/θ² − (1 + cos θ)/(2 θ sin θ)) [φ]×² (Solà et al.
+/// The inverse of the right Jacobian, J_r⁻¹(φ) = I + ½ ⌊φ⌋× + (1/θ² − (1 + cos θ)/(2 θ sin θ)) ⌊φ⌋×² (Solà et al.
 /// 2018, eq. 144), by its series below θ = 1e-4.
 pub fn right_jacobian_inverse(phi: &Vector3<f64>) -> Matrix3<f64> {
     let theta = phi.norm();

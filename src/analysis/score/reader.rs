@@ -142,23 +142,7 @@ pub fn read_measured(
     need_attitude: bool,
 ) -> Result<Measured, ScoreError> {
     let input = |problem: String| ScoreError::Input(format!("{}: {problem}", path.display()));
-    for (name, _) in &options.map {
-        if !NAMES.contains(&name.as_str()) {
-            return Err(ScoreError::Input(format!(
-                "--map {name}=…: `{name}` is not one of eulerdyn's column names ({})",
-                NAMES.join(", ")
-            )));
-        }
-    }
-    let mut csv = RunCsvReader::open(path).map_err(|e| ScoreError::Input(e.to_string()))?;
-    for (name, their) in &options.map {
-        if csv.index_of(their).is_none() {
-            return Err(input(format!(
-                "--map {name}={their}: the file has no column `{their}`; its columns are {}",
-                csv.header_shown()
-            )));
-        }
-    }
+    let mut csv = open_mapped(path, options)?;
     let (map, omega_axes) = with_own_omega(&csv, options);
     let column = |name: &str| -> String {
         (map.iter().rev())
@@ -225,6 +209,32 @@ pub fn read_measured(
         Attitude::Matrix(_) => AttitudeColumns::Matrix,
     });
     reading.finish(columns)
+}
+
+/// The file opened, every `--map NAME=COLUMN` checked: NAME one of [`NAMES`], COLUMN one of the file's.
+fn open_mapped(
+    path: &Path,
+    options: &ReadOptions,
+) -> Result<RunCsvReader<std::fs::File>, ScoreError> {
+    for (name, _) in &options.map {
+        if !NAMES.contains(&name.as_str()) {
+            return Err(ScoreError::Input(format!(
+                "--map {name}=…: `{name}` is not one of eulerdyn's column names ({})",
+                NAMES.join(", ")
+            )));
+        }
+    }
+    let csv = RunCsvReader::open(path).map_err(|e| ScoreError::Input(e.to_string()))?;
+    for (name, their) in &options.map {
+        if csv.index_of(their).is_none() {
+            return Err(ScoreError::Input(format!(
+                "{}: --map {name}={their}: the file has no column `{their}`; its columns are {}",
+                path.display(),
+                csv.header_shown()
+            )));
+        }
+    }
+    Ok(csv)
 }
 
 /// The column map and ω's axes: the options', except that a file of eulerdyn's own (`omega_b_x..z`, no
