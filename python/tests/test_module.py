@@ -28,7 +28,7 @@ def test_dir_shows_the_modules_names_only():
     public = {n for n in names if not n.startswith("_")}
     assert public == set(eulerdyn.__all__)
     assert public == {
-        "RunError", "SceneError", "SceneLike", "Svg", "accuracy", "balance", "check", "compare", "events", "plot",
+        "RunError", "SceneError", "SceneLike", "Svg", "accuracy", "balance", "check", "compare", "events", "fit", "plot",
         "run", "score", "sweep", "view",
     }
     # What the implementation imports stays out of it (issue 27).
