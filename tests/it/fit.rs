@@ -515,3 +515,37 @@ fn bad_input_is_refused_and_an_inertia_that_is_no_body_is_reported_writing_nothi
         );
     }
 }
+
+#[test]
+fn a_users_law_acts_in_the_model_as_in_the_run() {
+    // A PD-like law M = −k (ω − ω_ref) in body axes, added to the built scene (no scene file holds it): it is known,
+    // so it fixes the scale, and the fit must carry it into every scene it builds.
+    let law = |_t: f64, _q: &UnitQuaternion<f64>, w: &Vector3<f64>| {
+        (Vector3::new(0.0, 0.0, 1.0) - w) * 0.02
+    };
+    let with_law = |text: &str| {
+        scene_from(text, &Overrides::default())
+            .with_moment("pd", eulerdyn::Axes::Body, law)
+            .unwrap()
+    };
+    let truth = with_law(&truth_text(TENSOR, ""));
+    let rows: Vec<Sample> = run(&truth).into_iter().step_by(5).collect();
+    let data = data_of(&rows, Vector3::zeros(), true, false);
+    let start = with_law(&truth_text("[0.052, 0.068, 0.092]", ""));
+    let fitted = fit(
+        &data,
+        &start,
+        &options(&[Estimate::Inertia, Estimate::Omega0]),
+    )
+    .unwrap();
+    assert!(
+        fitted.converged && !fitted.scale_held,
+        "{}",
+        fitted.termination
+    );
+    let inertia = truth.body.inertia_c();
+    for (name, entry) in [("I_xx", (0, 0)), ("I_zz", (2, 2)), ("I_yz", (1, 2))] {
+        let off = (value(&fitted, name) - inertia[entry]).abs() / inertia.trace();
+        assert!(off < 1e-7, "{name}: off by {off:e} of the trace");
+    }
+}

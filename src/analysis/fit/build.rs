@@ -1,5 +1,5 @@
 //! The scene at a parameter point: the scene's own file with the inertia, ω₀ and q₀ replaced, validated as `run`
-//! validates it, so that its effects (a pivot's gravity, an orbit's gradient, a law) act on the fitted body as
+//! validates it (with the user's laws added back), so that its effects (a pivot's gravity, an orbit's gradient, a law) act on the fitted body as
 //! they would in a run. Also the fitted scene `-o` writes.
 
 use nalgebra::{DVector, Matrix3, UnitQuaternion, Vector3};
@@ -7,7 +7,7 @@ use nalgebra::{DVector, Matrix3, UnitQuaternion, Vector3};
 use super::FitError;
 use super::model::{Column, Model, Moments};
 use super::params::Parameters;
-use crate::effects::EffectMoments;
+use crate::effects::{Effect, EffectMoments};
 use crate::method::Method;
 use crate::scene::{
     AttitudeSpec, Distribution, InertiaSpec, InitialSpec, Overrides, Scene, SceneSpec,
@@ -20,6 +20,8 @@ const STEP: f64 = 6e-6;
 #[derive(Debug, Clone)]
 pub struct Builder {
     spec: SceneSpec,
+    /// The user's laws ([`Scene::with_moment`]), which no scene file holds: added to every scene built.
+    laws: Vec<Effect>,
     /// Whether an effect's moment depends on the inertia (the gravity gradient).
     uses_inertia: bool,
 }
@@ -44,6 +46,12 @@ impl Builder {
         }
         Ok(Self {
             spec: scene.spec.clone(),
+            laws: scene
+                .effects
+                .iter()
+                .filter(|e| e.is_user())
+                .cloned()
+                .collect(),
             uses_inertia: scene.effects.iter().any(|e| e.uses_mass_distribution()),
         })
     }
@@ -83,7 +91,10 @@ impl Builder {
             method: Some(Method::Dop853),
             ..Overrides::default()
         };
-        (self.spec_at(inertia, omega0, q0).build_with(&overrides)).map_err(|e| e.to_string())
+        let mut scene = (self.spec_at(inertia, omega0, q0).build_with(&overrides))
+            .map_err(|e| e.to_string())?;
+        scene.effects.extend(self.laws.iter().cloned());
+        Ok(scene)
     }
 
     /// The model at x; `Err` when its inertia is not positive definite. An inertia that no mass distribution has
