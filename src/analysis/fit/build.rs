@@ -1,20 +1,43 @@
 //! The scene at a parameter point: the scene's own file with the inertia, ω₀ and q₀ replaced, validated as `run`
-//! validates it (with the user's laws added back), so that its effects (a pivot's gravity, an orbit's gradient, a law) act on the fitted body as
-//! they would in a run. Also the fitted scene `-o` writes.
+//! validates it (the user's laws and the wheels' law added back), so that its effects (a pivot's gravity, an orbit's
+//! gradient, a law) and wheels act on the fitted body as they would in a run. Also the fitted scene `-o` writes.
 
 use nalgebra::{DVector, Matrix3, UnitQuaternion, Vector3};
 
 use super::FitError;
-use super::model::{Column, Model, Moments};
+use super::model::{Column, Model, Moments, Point};
 use super::params::Parameters;
+use super::wheels::{WheelModel, WheelSystem, inertia_step};
+use crate::body::RigidBody;
 use crate::effects::{Effect, EffectMoments};
 use crate::method::Method;
 use crate::scene::{
     AttitudeSpec, Distribution, InertiaSpec, InitialSpec, Overrides, Scene, SceneSpec,
 };
+use crate::wheels::WheelTorqueLaw;
 
 /// The relative size of the inertia's step across which a moment that depends on the inertia is differenced.
 const STEP: f64 = 6e-6;
+
+/// The model at a parameter point: the free body's ([`Model`]), or its wheels' ([`WheelModel`]) with its start
+/// and columns.
+#[derive(Debug, Clone)]
+pub struct Dynamics {
+    /// The free body, its start and the parameters' columns.
+    pub model: Model,
+    /// The body's wheels, when it has any: then the motion is theirs.
+    pub wheels: Option<WheelModel>,
+}
+
+impl Dynamics {
+    /// The motion and its sensitivities at `times` ([`Model::solve`], [`WheelModel::solve`]).
+    pub fn solve(&self, times: &[f64]) -> Result<Vec<Point>, String> {
+        match &self.wheels {
+            Some(wheels) => wheels.solve(&self.model, times),
+            None => self.model.solve(times),
+        }
+    }
+}
 
 /// Builds the model at any x from the scene's file.
 #[derive(Debug, Clone)]
@@ -24,23 +47,22 @@ pub struct Builder {
     laws: Vec<Effect>,
     /// Whether an effect's moment depends on the inertia (the gravity gradient).
     uses_inertia: bool,
+    /// The wheels' law ([`Scene::with_wheel_law`]), which no scene file holds either.
+    wheel_law: Option<WheelTorqueLaw>,
 }
 
 impl Builder {
-    /// The builder of `scene`: a free rigid body, without rotors or a changing shape (what the model integrates).
+    /// The builder of `scene`: a free body (with wheels or not), not changing shape (what the models integrate).
     pub fn new(scene: &Scene) -> Result<Self, FitError> {
         let refuse = |what: &str| {
             Err(FitError::Input(format!(
-                "{}: fit models a free rigid body; this scene {what}",
+                "{}: fit models a free body (with or without wheels); this scene {what}",
                 scene_name(scene)
             )))
         };
         let Some(free) = scene.motion.free() else {
             return refuse("prescribes a motion about an axis ([motion] type)");
         };
-        if free.gyrostat.is_some() {
-            return refuse("has rotors ([[body.rotor]]), which fit does not model yet");
-        }
         if free.shape_change.is_some() {
             return refuse("changes shape ([[body.moving_mass]] or inertia_table)");
         }
@@ -53,6 +75,7 @@ impl Builder {
                 .cloned()
                 .collect(),
             uses_inertia: scene.effects.iter().any(|e| e.uses_mass_distribution()),
+            wheel_law: free.gyrostat.and_then(|g| g.law()).cloned(),
         })
     }
 
@@ -97,10 +120,10 @@ impl Builder {
         Ok(scene)
     }
 
-    /// The model at x; `Err` when its inertia is not positive definite. An inertia that no mass distribution has
+    /// The dynamics at x; `Err` when its inertia is not positive definite. An inertia that no mass distribution has
     /// (the triangle inequality broken) is still a model: the scene's effects are then those at the scene's own
     /// inertia, unless one depends on the inertia (then `Err`); whether the fit's end is a body is judged apart.
-    pub fn model(&self, params: &Parameters, x: &DVector<f64>) -> Result<Model, String> {
+    pub fn model(&self, params: &Parameters, x: &DVector<f64>) -> Result<Dynamics, String> {
         let inertia = params.inertia(x);
         let (omega0, q0) = (params.omega0(x), params.q0(x));
         let scene = match self.scene_at(&inertia, &omega0, &q0) {
@@ -111,6 +134,10 @@ impl Builder {
         let free = scene.motion.free().expect("checked free");
         let body = (free.body.with_inertia_c(&inertia)).map_err(|e| e.to_string())?;
         let (columns, _) = params.columns(x);
+        let wheels = match free.gyrostat {
+            None => None,
+            Some(_) => Some(self.wheels(&scene, &inertia, &columns, (&omega0, &q0))?),
+        };
         let moments = match scene.effects.is_empty() {
             true => None,
             false => Some(Moments {
@@ -125,12 +152,57 @@ impl Builder {
                     .collect::<Result<_, _>>()?,
             }),
         };
-        Ok(Model {
+        let model = Model {
             body,
             moments,
             omega0_b: omega0,
             q0,
             columns,
+        };
+        Ok(Dynamics { model, wheels })
+    }
+
+    /// The wheels' system of `scene` (the law put back), its inertia a body's.
+    fn wheel_system(&self, scene: &Scene) -> Result<WheelSystem, String> {
+        let gyrostat = scene.motion.gyrostat().expect("a body with wheels").clone();
+        let gyrostat = match &self.wheel_law {
+            Some(law) => gyrostat.with_law(law.clone()).map_err(|e| e.to_string())?,
+            None => gyrostat,
+        };
+        Ok(WheelSystem {
+            gyrostat,
+            moments: EffectMoments::new(&scene.effects, scene.body.mass()),
+        })
+    }
+
+    /// The wheels' model at (I, ω₀, q₀) of `scene`, and at I ± δE for each column that moves the inertia.
+    fn wheels(
+        &self,
+        scene: &Scene,
+        inertia: &Matrix3<f64>,
+        columns: &[Column],
+        (omega0, q0): (&Vector3<f64>, &UnitQuaternion<f64>),
+    ) -> Result<WheelModel, String> {
+        if RigidBody::new(scene.body.mass(), *inertia).is_err() {
+            return Err("a body with wheels is modelled at inertias that are a body's only".into());
+        }
+        let at = |i: Matrix3<f64>| self.wheel_system(&self.scene_at(&i, omega0, q0)?);
+        let across = (columns.iter())
+            .map(|c| match c {
+                Column::Inertia(e) => {
+                    let delta = inertia_step(inertia, e);
+                    Ok(Some((
+                        at(inertia + e * delta)?,
+                        at(inertia - e * delta)?,
+                        2.0 * delta,
+                    )))
+                }
+                _ => Ok(None),
+            })
+            .collect::<Result<_, String>>()?;
+        Ok(WheelModel {
+            at: self.wheel_system(scene)?,
+            across,
         })
     }
 

@@ -3,7 +3,8 @@
 //! by least squares (Levenberg–Marquardt) with the Jacobian from the forward sensitivities ([`model`]), and what
 //! the data say about each estimate ([`uncertainty`]).
 //!
-//! [`params`] lays out what is estimated, [`build`] makes the scene's model at a parameter point, [`problem`]
+//! [`params`] lays out what is estimated, [`build`] makes the scene's model at a parameter point ([`wheels`]: a
+//! body's wheels), [`problem`]
 //! gives the solver residuals and Jacobian, [`solve`] runs it (weights, the inertia's scale, the checks),
 //! [`report`] prints; `figure` (feature `plot`) draws the residuals, `command` (feature `cli`) is `eulerdyn fit`.
 
@@ -18,6 +19,7 @@ pub mod problem;
 pub mod report;
 pub mod solve;
 pub mod uncertainty;
+pub mod wheels;
 
 use std::path::Path;
 

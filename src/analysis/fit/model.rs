@@ -113,55 +113,63 @@ impl Model {
     /// dense output. `Err` names the time and the reason a run failed.
     pub fn solve(&self, times: &[f64]) -> Result<Vec<Point>, String> {
         if self.columns.len() <= 6 {
-            self.solve_in::<{ state_len(6) }>(times)
+            let y0 = self.initial_state::<{ state_len(6) }>();
+            integrate_to(&mut Variational { model: self }, y0, 7, times)
         } else {
-            self.solve_in::<{ state_len(MAX_COLUMNS) }>(times)
+            let y0 = self.initial_state::<{ state_len(MAX_COLUMNS) }>();
+            integrate_to(&mut Variational { model: self }, y0, 7, times)
         }
-    }
-
-    /// [`Self::solve`] with a state of `N` entries.
-    fn solve_in<const N: usize>(&self, times: &[f64]) -> Result<Vec<Point>, String> {
-        let t_last = *times.last().expect("at least one time");
-        let schedule = Schedule::new(t_last.max(f64::MIN_POSITIVE), t_last)
-            .map_err(|e| format!("the model's schedule: {e}"))?;
-        let settings = Settings {
-            method: Method::Dop853,
-            backend: Backend::Own,
-            rtol: RTOL,
-            atol: RTOL * 1e-2,
-            ..Settings::default()
-        };
-        let mut watch = AtTimes {
-            times,
-            points: Vec::with_capacity(times.len()),
-        };
-        let mut system = Variational { model: self };
-        let y0 = self.initial_state::<N>();
-        if times[0] == 0.0 {
-            watch.points.push(point(&y0));
-        }
-        integrate::integrate_watched(
-            &mut system,
-            y0,
-            &schedule,
-            &settings,
-            |_, _| Ok::<(), std::convert::Infallible>(()),
-            &mut watch,
-        )
-        .map_err(|e| e.to_string())?;
-        if watch.points.len() != times.len() {
-            return Err(format!(
-                "the model reached {} of the {} measured times",
-                watch.points.len(),
-                times.len()
-            ));
-        }
-        Ok(watch.points)
     }
 }
 
-/// The model's point from the augmented state.
-fn point<const N: usize>(y: &State<N>) -> Point {
+/// Integrates `system` from `y0` over [0, the last time] by dop853 at [`RTOL`] and reads each time's [`Point`]
+/// from the dense output; the state's first block (ω, q, …) and each parameter's block are `block` long.
+pub(super) fn integrate_to<const N: usize, S: OdeSystem<N>>(
+    system: &mut S,
+    y0: SVector<f64, N>,
+    block: usize,
+    times: &[f64],
+) -> Result<Vec<Point>, String> {
+    let t_last = *times.last().expect("at least one time");
+    let schedule = Schedule::new(t_last.max(f64::MIN_POSITIVE), t_last)
+        .map_err(|e| format!("the model's schedule: {e}"))?;
+    let settings = Settings {
+        method: Method::Dop853,
+        backend: Backend::Own,
+        rtol: RTOL,
+        atol: RTOL * 1e-2,
+        ..Settings::default()
+    };
+    let mut watch = AtTimes {
+        times,
+        block,
+        points: Vec::with_capacity(times.len()),
+    };
+    if times[0] == 0.0 {
+        watch.points.push(point(&y0, block));
+    }
+    integrate::integrate_watched(
+        system,
+        y0,
+        &schedule,
+        &settings,
+        |_, _| Ok::<(), std::convert::Infallible>(()),
+        &mut watch,
+    )
+    .map_err(|e| e.to_string())?;
+    if watch.points.len() != times.len() {
+        return Err(format!(
+            "the model reached {} of the {} measured times",
+            watch.points.len(),
+            times.len()
+        ));
+    }
+    Ok(watch.points)
+}
+
+/// The model's point from the augmented state of blocks `block` long: ω and q from the first, ∂ω/∂p and ∂q/∂p
+/// from the first seven entries of each parameter's.
+fn point<const N: usize>(y: &State<N>, block: usize) -> Point {
     let omega_b = Vector3::new(y[0], y[1], y[2]);
     let q_raw = Quaternion::new(y[3], y[4], y[5], y[6]);
     let norm = q_raw.norm();
@@ -169,8 +177,8 @@ fn point<const N: usize>(y: &State<N>) -> Point {
     let conj = q.quaternion().conjugate();
     let mut d_omega = [Vector3::zeros(); MAX_COLUMNS];
     let mut d_attitude = [Vector3::zeros(); MAX_COLUMNS];
-    for j in 0..(N / 7 - 1) {
-        let at = 7 * (j + 1);
+    for j in 0..(N / block - 1) {
+        let at = block * (j + 1);
         d_omega[j] = Vector3::new(y[at], y[at + 1], y[at + 2]);
         let s_q = Quaternion::new(y[at + 3], y[at + 4], y[at + 5], y[at + 6]);
         d_attitude[j] = (conj * s_q).imag() * (2.0 / norm);
@@ -186,6 +194,7 @@ fn point<const N: usize>(y: &State<N>) -> Point {
 /// Reads the dense output at the measured times inside each accepted step.
 struct AtTimes<'a> {
     times: &'a [f64],
+    block: usize,
     points: Vec<Point>,
 }
 
@@ -195,7 +204,7 @@ impl<const N: usize> StepWatch<N> for AtTimes<'_> {
             if t > solution.t1() {
                 break;
             }
-            self.points.push(point(&solution.at(t)));
+            self.points.push(point(&solution.at(t), self.block));
         }
         None
     }
@@ -268,5 +277,10 @@ impl<const N: usize> OdeSystem<N> for Variational<'_> {
             }
         }
         dy
+    }
+
+    /// The moment's next corner (a tabulated moment's row).
+    fn next_breakpoint(&self, t: f64) -> Option<f64> {
+        (self.model.moments.as_ref()).and_then(|m| m.at.corner_after(t))
     }
 }
