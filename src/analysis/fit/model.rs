@@ -95,8 +95,16 @@ impl Model {
         let q = self.q0.quaternion();
         y.fixed_rows_mut::<4>(3)
             .copy_from_slice(&[q.w, q.i, q.j, q.k]);
+        self.seed(&mut y, 7);
+        y
+    }
+
+    /// Each column's ∂(ω₀, q₀)/∂p into its block of `y` (blocks `block` long): ω₀'s axis, ½ q₀ ⊗ (0, v) for a turn,
+    /// zero for the inertia (which neither ω₀, q₀ nor a wheel's spin hold).
+    pub(super) fn seed<const N: usize>(&self, y: &mut State<N>, block: usize) {
+        let q = self.q0.quaternion();
         for (j, column) in self.columns.iter().enumerate() {
-            let at = 7 * (j + 1);
+            let at = block * (j + 1);
             match *column {
                 Column::Inertia(_) => {}
                 Column::Omega0(k) => y[at + k] = 1.0,
@@ -106,7 +114,6 @@ impl Model {
                 }
             }
         }
-        y
     }
 
     /// The model at `times` (increasing, ≥ 0): dop853 at [`RTOL`] over [0, last time], read at the times from its

@@ -8,11 +8,10 @@
 
 use nalgebra::SVector;
 
-use super::model::{Column, MAX_COLUMNS, Model, Point, integrate_to};
+use super::model::{MAX_COLUMNS, Model, Point, integrate_to};
 use crate::effects::EffectMoments;
 use crate::frames::{Form, Vector};
 use crate::integrate::OdeSystem;
-use crate::motion::free::quaternion_rate;
 use crate::wheels::gyrostat::{self, Gyrostat, GyrostatForm};
 
 /// The gyrostat's state length.
@@ -69,23 +68,11 @@ impl WheelModel {
     }
 }
 
-/// The augmented state at t = 0: the gyrostat's, then each column's ∂y₀/∂p (ω₀'s axis; ½ q₀ ⊗ (0, v) for a turn;
-/// zero for the inertia, which the body form's ω and the wheels' spins do not hold).
+/// The augmented state at t = 0: the gyrostat's, then each column's ∂y₀/∂p ([`Model::seed`]).
 fn initial<const N: usize>(base: &gyrostat::State, model: &Model) -> SVector<f64, N> {
     let mut y = SVector::<f64, N>::zeros();
     y.fixed_rows_mut::<BLOCK>(0).copy_from(base);
-    let q = &model.q0;
-    for (j, column) in model.columns.iter().enumerate() {
-        let at = BLOCK * (j + 1);
-        match *column {
-            Column::Inertia(_) => {}
-            Column::Omega0(k) => y[at + k] = 1.0,
-            Column::Attitude0(v) => {
-                let s = quaternion_rate(&[q.w, q.i, q.j, q.k], &v);
-                y.fixed_rows_mut::<4>(at + 3).copy_from_slice(&s);
-            }
-        }
-    }
+    model.seed(&mut y, BLOCK);
     y
 }
 
