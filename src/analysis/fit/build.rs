@@ -8,13 +8,13 @@ use super::FitError;
 use super::model::{Column, Model, Moments, Point};
 use super::params::Parameters;
 use super::wheels::{WheelModel, WheelSystem, inertia_step};
-use crate::body::RigidBody;
 use crate::effects::{Effect, EffectMoments};
 use crate::method::Method;
 use crate::scene::{
     AttitudeSpec, Distribution, InertiaSpec, InitialSpec, Overrides, Scene, SceneSpec,
 };
 use crate::wheels::WheelTorqueLaw;
+use crate::wheels::gyrostat::Gyrostat;
 
 /// The relative size of the inertia's step across which a moment that depends on the inertia is differenced.
 const STEP: f64 = 6e-6;
@@ -162,50 +162,6 @@ impl Builder {
         Ok(Dynamics { model, wheels })
     }
 
-    /// The wheels' system of `scene` (the law put back), its inertia a body's.
-    fn wheel_system(&self, scene: &Scene) -> Result<WheelSystem, String> {
-        let gyrostat = scene.motion.gyrostat().expect("a body with wheels").clone();
-        let gyrostat = match &self.wheel_law {
-            Some(law) => gyrostat.with_law(law.clone()).map_err(|e| e.to_string())?,
-            None => gyrostat,
-        };
-        Ok(WheelSystem {
-            gyrostat,
-            moments: EffectMoments::new(&scene.effects, scene.body.mass()),
-        })
-    }
-
-    /// The wheels' model at (I, ω₀, q₀) of `scene`, and at I ± δE for each column that moves the inertia.
-    fn wheels(
-        &self,
-        scene: &Scene,
-        inertia: &Matrix3<f64>,
-        columns: &[Column],
-        (omega0, q0): (&Vector3<f64>, &UnitQuaternion<f64>),
-    ) -> Result<WheelModel, String> {
-        if RigidBody::new(scene.body.mass(), *inertia).is_err() {
-            return Err("a body with wheels is modelled at inertias that are a body's only".into());
-        }
-        let at = |i: Matrix3<f64>| self.wheel_system(&self.scene_at(&i, omega0, q0)?);
-        let across = (columns.iter())
-            .map(|c| match c {
-                Column::Inertia(e) => {
-                    let delta = inertia_step(inertia, e);
-                    Ok(Some((
-                        at(inertia + e * delta)?,
-                        at(inertia - e * delta)?,
-                        2.0 * delta,
-                    )))
-                }
-                _ => Ok(None),
-            })
-            .collect::<Result<_, String>>()?;
-        Ok(WheelModel {
-            at: self.wheel_system(scene)?,
-            across,
-        })
-    }
-
     /// The moments at I ± δE and 2δ.
     fn across(
         &self,
@@ -224,6 +180,60 @@ impl Builder {
             at(inertia - e * delta)?,
             2.0 * delta,
         ))
+    }
+
+    /// The wheels of `scene` on its body with the inertia about C replaced by `inertia` (positive definite, a
+    /// body's or not), the law put back, and the moments: `scene`'s, or for a moment that depends on the inertia
+    /// those of the scene built at `inertia`.
+    fn wheel_system(
+        &self,
+        scene: &Scene,
+        inertia: &Matrix3<f64>,
+        (omega0, q0): (&Vector3<f64>, &UnitQuaternion<f64>),
+    ) -> Result<WheelSystem, String> {
+        let wheels = scene.motion.gyrostat().expect("a body with wheels");
+        let body = (wheels.body().with_inertia_c(inertia)).map_err(|e| e.to_string())?;
+        let gyrostat = Gyrostat::new(body, wheels.rotors().to_vec()).map_err(|e| e.to_string())?;
+        let gyrostat = match &self.wheel_law {
+            Some(law) => gyrostat.with_law(law.clone()).map_err(|e| e.to_string())?,
+            None => gyrostat,
+        };
+        let moments = match self.uses_inertia {
+            false => EffectMoments::new(&scene.effects, scene.body.mass()),
+            true => {
+                let at = self.scene_at(inertia, omega0, q0)?;
+                EffectMoments::new(&at.effects, at.body.mass())
+            }
+        };
+        Ok(WheelSystem { gyrostat, moments })
+    }
+
+    /// The wheels' model at (I, ω₀, q₀) on `scene`'s wheels, and at I ± δE for each column that moves the inertia.
+    fn wheels(
+        &self,
+        scene: &Scene,
+        inertia: &Matrix3<f64>,
+        columns: &[Column],
+        start: (&Vector3<f64>, &UnitQuaternion<f64>),
+    ) -> Result<WheelModel, String> {
+        let at = |i: Matrix3<f64>| self.wheel_system(scene, &i, start);
+        let across = (columns.iter())
+            .map(|c| match c {
+                Column::Inertia(e) => {
+                    let delta = inertia_step(inertia, e);
+                    Ok(Some((
+                        at(inertia + e * delta)?,
+                        at(inertia - e * delta)?,
+                        2.0 * delta,
+                    )))
+                }
+                _ => Ok(None),
+            })
+            .collect::<Result<_, String>>()?;
+        Ok(WheelModel {
+            at: at(*inertia)?,
+            across,
+        })
     }
 }
 
