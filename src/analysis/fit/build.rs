@@ -7,30 +7,29 @@ use nalgebra::{DVector, Matrix3, UnitQuaternion, Vector3};
 use super::FitError;
 use super::model::{Column, Model, Moments, Point};
 use super::params::Parameters;
-use super::wheels::{WheelModel, WheelSystem, inertia_step};
+use super::wheels::{GyrostatModel, GyrostatSystem, inertia_step};
 use crate::effects::{Effect, EffectMoments};
 use crate::method::Method;
 use crate::scene::{
     AttitudeSpec, Distribution, InertiaSpec, InitialSpec, Overrides, Scene, SceneSpec,
 };
-use crate::wheels::WheelTorqueLaw;
 use crate::wheels::gyrostat::Gyrostat;
 
 /// The relative size of the inertia's step across which a moment that depends on the inertia is differenced.
 const STEP: f64 = 6e-6;
 
-/// The model at a parameter point: the free body's ([`Model`]), or its wheels' ([`WheelModel`]) with its start
+/// The model at a parameter point: the free body's ([`Model`]), or its wheels' ([`GyrostatModel`]) with its start
 /// and columns.
 #[derive(Debug, Clone)]
 pub struct Dynamics {
     /// The free body, its start and the parameters' columns.
     pub model: Model,
     /// The body's wheels, when it has any: then the motion is theirs.
-    pub wheels: Option<WheelModel>,
+    pub wheels: Option<GyrostatModel>,
 }
 
 impl Dynamics {
-    /// The motion and its sensitivities at `times` ([`Model::solve`], [`WheelModel::solve`]).
+    /// The motion and its sensitivities at `times` ([`Model::solve`], [`GyrostatModel::solve`]).
     pub fn solve(&self, times: &[f64]) -> Result<Vec<Point>, String> {
         match &self.wheels {
             Some(wheels) => wheels.solve(&self.model, times),
@@ -47,8 +46,9 @@ pub struct Builder {
     laws: Vec<Effect>,
     /// Whether an effect's moment depends on the inertia (the gravity gradient).
     uses_inertia: bool,
-    /// The wheels' law ([`Scene::with_wheel_law`]), which no scene file holds either.
-    wheel_law: Option<WheelTorqueLaw>,
+    /// The scene's body with its wheels, when it has any, with their law ([`Scene::with_wheel_law`]), which no
+    /// scene file holds either.
+    gyrostat: Option<Gyrostat>,
 }
 
 impl Builder {
@@ -75,7 +75,7 @@ impl Builder {
                 .cloned()
                 .collect(),
             uses_inertia: scene.effects.iter().any(|e| e.uses_mass_distribution()),
-            wheel_law: free.gyrostat.and_then(|g| g.law()).cloned(),
+            gyrostat: free.gyrostat.cloned(),
         })
     }
 
@@ -182,19 +182,19 @@ impl Builder {
         ))
     }
 
-    /// The wheels of `scene` on its body with the inertia about C replaced by `inertia` (positive definite, a
-    /// body's or not), the law put back, and the moments: `scene`'s, or for a moment that depends on the inertia
+    /// The scene's wheels on its body with the inertia about C replaced by `inertia` (positive definite, a
+    /// body's or not), their law put back, and the moments: `scene`'s, or for a moment that depends on the inertia
     /// those of the scene built at `inertia`.
     fn wheel_system(
         &self,
         scene: &Scene,
         inertia: &Matrix3<f64>,
         (omega0, q0): (&Vector3<f64>, &UnitQuaternion<f64>),
-    ) -> Result<WheelSystem, String> {
-        let wheels = scene.motion.gyrostat().expect("a body with wheels");
+    ) -> Result<GyrostatSystem, String> {
+        let wheels = self.gyrostat.as_ref().expect("a body with wheels");
         let body = (wheels.body().with_inertia_c(inertia)).map_err(|e| e.to_string())?;
         let gyrostat = Gyrostat::new(body, wheels.rotors().to_vec()).map_err(|e| e.to_string())?;
-        let gyrostat = match &self.wheel_law {
+        let gyrostat = match wheels.law() {
             Some(law) => gyrostat.with_law(law.clone()).map_err(|e| e.to_string())?,
             None => gyrostat,
         };
@@ -205,7 +205,7 @@ impl Builder {
                 EffectMoments::new(&at.effects, at.body.mass())
             }
         };
-        Ok(WheelSystem { gyrostat, moments })
+        Ok(GyrostatSystem { gyrostat, moments })
     }
 
     /// The wheels' model at (I, ω₀, q₀) on `scene`'s wheels, and at I ± δE for each column that moves the inertia.
@@ -215,7 +215,7 @@ impl Builder {
         inertia: &Matrix3<f64>,
         columns: &[Column],
         start: (&Vector3<f64>, &UnitQuaternion<f64>),
-    ) -> Result<WheelModel, String> {
+    ) -> Result<GyrostatModel, String> {
         let at = |i: Matrix3<f64>| self.wheel_system(scene, &i, start);
         let across = (columns.iter())
             .map(|c| match c {
@@ -230,7 +230,7 @@ impl Builder {
                 _ => Ok(None),
             })
             .collect::<Result<_, String>>()?;
-        Ok(WheelModel {
+        Ok(GyrostatModel {
             at: at(*inertia)?,
             across,
         })

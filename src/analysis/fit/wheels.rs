@@ -21,7 +21,7 @@ const STEP: f64 = 6e-6;
 
 /// A body with wheels and the moments on it, at one parameter point.
 #[derive(Debug, Clone)]
-pub struct WheelSystem {
+pub struct GyrostatSystem {
     /// The body and its wheels.
     pub gyrostat: Gyrostat,
     /// The effects' moment.
@@ -30,15 +30,15 @@ pub struct WheelSystem {
 
 /// The wheels' model at a parameter point, and across the inertia for each column that moves it.
 #[derive(Debug, Clone)]
-pub struct WheelModel {
+pub struct GyrostatModel {
     /// At the parameters.
-    pub at: WheelSystem,
+    pub at: GyrostatSystem,
     /// (at I + δE_j, at I − δE_j, 2δ) for each column j that moves the inertia.
-    pub across: Vec<Option<(WheelSystem, WheelSystem, f64)>>,
+    pub across: Vec<Option<(GyrostatSystem, GyrostatSystem, f64)>>,
 }
 
 /// The body form of `system`'s equations.
-fn form(system: &WheelSystem) -> GyrostatForm<'_, EffectMoments> {
+fn form(system: &GyrostatSystem) -> GyrostatForm<'_, EffectMoments> {
     GyrostatForm {
         gyrostat: &system.gyrostat,
         moment: system.moments.clone(),
@@ -46,7 +46,7 @@ fn form(system: &WheelSystem) -> GyrostatForm<'_, EffectMoments> {
     }
 }
 
-impl WheelModel {
+impl GyrostatModel {
     /// The model at `times` with the start and columns of `model`.
     pub fn solve(&self, model: &Model, times: &[f64]) -> Result<Vec<Point>, String> {
         let mut system = Variational {
