@@ -107,6 +107,9 @@ def fit(
     quaternion: str = "wxyz",
     omega: str = "body",
     map: Optional[Mapping[str, str]] = None,
+    moment: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> Dict[str, Any]:
     """A body from its measured motion (``eulerdyn fit --json``)."""
 

@@ -418,6 +418,9 @@ def fit(
     quaternion: str = "wxyz",
     omega: str = "body",
     map: Optional[Mapping[str, str]] = None,
+    moment: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> Dict[str, Any]:
     """A body from its measured motion, as ``eulerdyn fit MEASURED.csv --scene SCENE --estimate LIST --json``
     (with ``--sigma-omega``, ``--sigma-attitude``, ``--quaternion``, ``--omega`` and ``--map`` for the keywords).
@@ -434,6 +437,10 @@ def fit(
         quaternion: the order of the generic columns ``q_0..q_3``, ``"wxyz"`` or ``"xyzw"``.
         omega: the axes of ``omega_x..z``, ``"body"`` or ``"space"``.
         map: eulerdyn's column name → the file's column name, e.g. ``{"omega_x": "gx"}``.
+        moment: a law f(t, q, omega_b) → 3 numbers (N·m) acting on the body, as :func:`run`'s ``moment``: it acts
+            in the fit's model as in the run (a known moment also fixes the inertia's scale).
+        moment_frame: the axes of ``moment``'s result, ``"body"`` (default) or ``"space"``.
+        wheel_torque: a law f(t, q, omega_b, spins) → one torque per wheel, as :func:`run`'s ``wheel_torque``.
 
     Returns:
         The fit as the command's ``--json`` prints it: ``parameters`` (each ``name``, ``start``, ``estimate``,
@@ -466,6 +473,9 @@ def fit(
         quaternion=quaternion,
         omega=omega,
         map=sorted((map or {}).items()),
+        moment=moment,
+        moment_frame=moment_frame,
+        wheel_torque=wheel_torque,
     )
     if isinstance(measured, pd.DataFrame):
         with tempfile.TemporaryDirectory() as folder:

@@ -83,6 +83,9 @@ def fit(
     quaternion: str = "wxyz",
     omega: str = "body",
     map: Optional[Sequence[Tuple[str, str]]] = None,
+    moment: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
+    moment_frame: Optional[str] = None,
+    wheel_torque: Optional[Callable[[float, Tuple[float, ...], Tuple[float, ...], Tuple[float, ...]], Sequence[float]]] = None,
 ) -> Dict[str, Any]:
     """The fit as ``eulerdyn fit --json`` prints it."""
 

@@ -102,3 +102,22 @@ def test_the_estimates_and_errors_are_scipys(measured):
         # The standard errors from J at the optimum: SciPy's J by forward differences (relative error ~1e-7: 1.3e-7 measured).
         assert abs(p["std_error"] - se[k]) <= 1e-6 * se[k], (name, p["std_error"], se[k])
     assert ours["scale_held"] and by_name["I_3"]["std_error"] == 0.0
+
+
+def test_a_moment_law_acts_in_the_model_and_fixes_the_scale():
+    # M = k (w_ref - w), a known law: it acts in the fit's model as in the run, and fixes the inertia's scale.
+    def law(t, q, w):
+        return [0.02 * (0.0 - w[0]), 0.02 * (0.0 - w[1]), 0.02 * (1.0 - w[2])]
+
+    truth = eulerdyn.run(scene([1.0, 1.3, I3], [0.4, 0.1, 1.5]), moment=law, rtol=1e-13, atol=1e-15)
+    gyro = truth.rename(columns={f"omega_b_{a}": f"omega_{a}" for a in "xyz"})
+    gyro = gyro[["t", "omega_x", "omega_y", "omega_z"]]
+    result = eulerdyn.fit(gyro, START, estimate=["principal", "omega0"], moment=law)
+    by_name = {p["name"]: p["estimate"] for p in result["parameters"]}
+    assert result["converged"] and not result["scale_held"]
+    # Noise-free rows of a run at rtol 1e-13: the truth to 1e-7.
+    for name, value in [("I_1", 1.0), ("I_2", 1.3), ("I_3", I3), ("omega0_x", 0.4)]:
+        assert abs(by_name[name] - value) < 1e-7, (name, by_name[name])
+    # Without the law the same rows are fitted by a torque-free body, which cannot follow them.
+    without = eulerdyn.fit(gyro, START, estimate=["principal", "omega0"])
+    assert without["scale_held"] and without["rms"]["omega"] > 1e3 * result["rms"]["omega"]
