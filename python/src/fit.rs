@@ -6,14 +6,13 @@ use std::path::PathBuf;
 use pyo3::prelude::*;
 
 use eulerdyn::analysis::fit::{FitError, FitOptions, fit_file, parse_estimates};
-use eulerdyn::analysis::score::{QuaternionOrder, ReadOptions};
-use eulerdyn::frames::Axes;
 use eulerdyn::scene::Overrides;
 
 use crate::convert::json_to_py;
 use crate::errors::{RunError, SceneError, no_panic};
 use crate::input::SceneInput;
 use crate::run::{law_error, with_laws};
+use crate::score::read_options;
 
 /// The fit of the scene (a path or a dict) to the measured motion in the CSV `measured`, as the command's `--json`
 /// gives it. `estimate` lists the parameter groups; `sigma_omega`, `sigma_attitude`, `quaternion` ("wxyz" or
@@ -39,24 +38,6 @@ pub fn fit<'py>(
     wheel_torque: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     no_panic(|| {
-        let quaternion = match quaternion {
-            "wxyz" => QuaternionOrder::Wxyz,
-            "xyzw" => QuaternionOrder::Xyzw,
-            other => {
-                return Err(SceneError::new_err(format!(
-                    "quaternion={other:?}: give \"wxyz\" or \"xyzw\""
-                )));
-            }
-        };
-        let omega = match omega {
-            "body" => Axes::Body,
-            "space" => Axes::Space,
-            other => {
-                return Err(SceneError::new_err(format!(
-                    "omega={other:?}: give \"body\" or \"space\""
-                )));
-            }
-        };
         let fail = |e: FitError| match e {
             FitError::Input(m) => SceneError::new_err(m),
             FitError::Run(m) => RunError::new_err(m),
@@ -65,11 +46,7 @@ pub fn fit<'py>(
             estimates: parse_estimates(&estimate.join(",")).map_err(fail)?,
             sigma_omega,
             sigma_attitude,
-            read: ReadOptions {
-                quaternion,
-                omega: Some(omega),
-                map: map.unwrap_or_default(),
-            },
+            read: read_options(quaternion, omega, map)?,
         };
         let input = SceneInput::from_py(scene)?;
         let scene = input.scene(py, &Overrides::default())?;

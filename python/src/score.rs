@@ -29,29 +29,7 @@ pub fn score<'py>(
     map: Option<Vec<(String, String)>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     no_panic(|| {
-        let quaternion = match quaternion {
-            "wxyz" => QuaternionOrder::Wxyz,
-            "xyzw" => QuaternionOrder::Xyzw,
-            other => {
-                return Err(SceneError::new_err(format!(
-                    "quaternion={other:?}: give \"wxyz\" or \"xyzw\""
-                )));
-            }
-        };
-        let omega = match omega {
-            "body" => Axes::Body,
-            "space" => Axes::Space,
-            other => {
-                return Err(SceneError::new_err(format!(
-                    "omega={other:?}: give \"body\" or \"space\""
-                )));
-            }
-        };
-        let options = ReadOptions {
-            quaternion,
-            omega: Some(omega),
-            map: map.unwrap_or_default(),
-        };
+        let options = read_options(quaternion, omega, map)?;
         let scene = SceneInput::from_py(scene)?.scene(py, &Overrides::default())?;
         let result = score_with(&theirs, &scene, &options, diagnose).map_err(|e| match e {
             ScoreError::Input(m) => SceneError::new_err(m),
@@ -60,5 +38,37 @@ pub fn score<'py>(
         let value = serde_json::to_value(&result)
             .map_err(|e| RunError::new_err(format!("the score as JSON: {e}")))?;
         json_to_py(py, &value)
+    })
+}
+
+/// The reading options of the keywords `quaternion` ("wxyz" or "xyzw"), `omega` ("body" or "space") and `map`, as
+/// the command's `--quaternion`, `--omega` and `--map`; another value raises SceneError.
+pub fn read_options(
+    quaternion: &str,
+    omega: &str,
+    map: Option<Vec<(String, String)>>,
+) -> PyResult<ReadOptions> {
+    let quaternion = match quaternion {
+        "wxyz" => QuaternionOrder::Wxyz,
+        "xyzw" => QuaternionOrder::Xyzw,
+        other => {
+            return Err(SceneError::new_err(format!(
+                "quaternion={other:?}: give \"wxyz\" or \"xyzw\""
+            )));
+        }
+    };
+    let omega = match omega {
+        "body" => Axes::Body,
+        "space" => Axes::Space,
+        other => {
+            return Err(SceneError::new_err(format!(
+                "omega={other:?}: give \"body\" or \"space\""
+            )));
+        }
+    };
+    Ok(ReadOptions {
+        quaternion,
+        omega: Some(omega),
+        map: map.unwrap_or_default(),
     })
 }

@@ -6,10 +6,8 @@ use clap::{Args, Subcommand};
 
 use super::solve::Fit;
 use super::{FitError, FitOptions, figure, fit_file, parse_estimates, report};
-use crate::analysis::score::command::{OmegaArg, OrderArg};
-use crate::analysis::score::{QuaternionOrder, ReadOptions};
+use crate::analysis::score::command::{OmegaArg, OrderArg, read_options};
 use crate::command::{Command, CommandError};
-use crate::frames::Axes;
 use crate::output::{AtomicFile, plot};
 use crate::scene::{self, Overrides};
 
@@ -73,30 +71,13 @@ pub struct FitArgs {
     pub output: Option<PathBuf>,
 }
 
-/// The options of `args`; a `--map` without `=` is refused.
+/// The options of `args`.
 fn options(args: &FitArgs) -> Result<FitOptions, FitError> {
-    let map = (args.map.iter())
-        .map(|m| {
-            m.split_once('=')
-                .map(|(n, c)| (n.trim().to_string(), c.trim().to_string()))
-                .ok_or_else(|| FitError::Input(format!("--map {m}: expected NAME=COLUMN")))
-        })
-        .collect::<Result<_, _>>()?;
     Ok(FitOptions {
         estimates: parse_estimates(&args.estimate)?,
         sigma_omega: args.sigma_omega,
         sigma_attitude: args.sigma_attitude,
-        read: ReadOptions {
-            quaternion: match args.quaternion {
-                OrderArg::Wxyz => QuaternionOrder::Wxyz,
-                OrderArg::Xyzw => QuaternionOrder::Xyzw,
-            },
-            omega: Some(match args.omega {
-                OmegaArg::Body => Axes::Body,
-                OmegaArg::Space => Axes::Space,
-            }),
-            map,
-        },
+        read: read_options(args.quaternion, args.omega, &args.map).map_err(FitError::Input)?,
     })
 }
 

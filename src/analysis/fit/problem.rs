@@ -25,6 +25,18 @@ pub struct Data {
 }
 
 impl Data {
+    /// Each block of three residuals in order: (the data row, the channel — 0 the gyro, 1 the attitude —, the
+    /// index of its first residual).
+    pub fn blocks(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        let given = (0..self.times.len()).flat_map(move |i| {
+            [
+                (i, 0, self.omega_b[i].is_some()),
+                (i, 1, self.q[i].is_some()),
+            ]
+        });
+        (given.filter(|b| b.2).enumerate()).map(|(k, (i, c, _))| (i, c, 3 * k))
+    }
+
     /// The first `rows` rows.
     pub fn prefix(&self, rows: usize) -> Self {
         Self {
@@ -52,6 +64,13 @@ pub struct Sigmas {
     pub attitude: f64,
 }
 
+impl Sigmas {
+    /// The σ of channel `c` (0 the gyro, 1 the attitude).
+    pub fn of(&self, c: usize) -> f64 {
+        [self.omega, self.attitude][c]
+    }
+}
+
 /// Residuals and Jacobian at one x.
 #[derive(Debug, Clone)]
 pub struct Evaluation {
@@ -65,18 +84,10 @@ impl Evaluation {
     /// The same evaluation weighed with `to` instead of `from`: each channel's rows scaled by σ_from/σ_to.
     pub fn reweighted(&self, data: &Data, from: Sigmas, to: Sigmas) -> Self {
         let mut out = self.clone();
-        let mut row = 0;
-        for i in 0..data.times.len() {
-            for (given, scale) in [
-                (data.omega_b[i].is_some(), from.omega / to.omega),
-                (data.q[i].is_some(), from.attitude / to.attitude),
-            ] {
-                if given {
-                    out.residuals.rows_mut(row, 3).scale_mut(scale);
-                    out.jacobian.rows_mut(row, 3).scale_mut(scale);
-                    row += 3;
-                }
-            }
+        for (_, c, at) in data.blocks() {
+            let scale = from.of(c) / to.of(c);
+            out.residuals.rows_mut(at, 3).scale_mut(scale);
+            out.jacobian.rows_mut(at, 3).scale_mut(scale);
         }
         out
     }

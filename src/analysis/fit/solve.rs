@@ -367,22 +367,9 @@ fn estimated_sigmas(data: &Data, options: &FitOptions) -> Vec<String> {
 /// The residuals' sums of squares per channel (unweighted), with the number of residuals of each.
 fn channel_sums(data: &Data, e: &Evaluation, sigmas: Sigmas) -> [(f64, usize); 2] {
     let mut sums = [(0.0, 0), (0.0, 0)];
-    let mut row = 0;
-    for i in 0..data.times.len() {
-        for (c, (given, sigma)) in [
-            (data.omega_b[i].is_some(), sigmas.omega),
-            (data.q[i].is_some(), sigmas.attitude),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            if given {
-                let r = e.residuals.fixed_rows::<3>(row) * sigma;
-                sums[c].0 += r.norm_squared();
-                sums[c].1 += 3;
-                row += 3;
-            }
-        }
+    for (_, c, at) in data.blocks() {
+        sums[c].0 += (e.residuals.fixed_rows::<3>(at) * sigmas.of(c)).norm_squared();
+        sums[c].1 += 3;
     }
     sums
 }
@@ -534,22 +521,12 @@ fn residual_series(data: &Data, e: &Evaluation, sigmas: Sigmas) -> Vec<Residuals
             values: Vec::new(),
         })
         .collect();
-    let mut row = 0;
-    for (i, &t) in data.times.iter().enumerate() {
-        for (c, (given, sigma)) in [
-            (data.omega_b[i].is_some(), sigmas.omega),
-            (data.q[i].is_some(), sigmas.attitude),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            if given {
-                for k in 0..3 {
-                    series[3 * c + k].t.push(t);
-                    series[3 * c + k].values.push(e.residuals[row + k] * sigma);
-                }
-                row += 3;
-            }
+    for (i, c, at) in data.blocks() {
+        for k in 0..3 {
+            series[3 * c + k].t.push(data.times[i]);
+            series[3 * c + k]
+                .values
+                .push(e.residuals[at + k] * sigmas.of(c));
         }
     }
     series.retain(|s| !s.t.is_empty());

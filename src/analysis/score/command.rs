@@ -104,21 +104,31 @@ pub struct SuiteArgs {
     pub out: PathBuf,
 }
 
-/// The reading options of `args`; a `--map` without `=` is refused.
+/// The reading options of `args`.
 fn options(args: &ScoreArgs) -> Result<ReadOptions, ScoreError> {
-    let map = (args.map.iter())
+    read_options(args.quaternion, args.omega, &args.map).map_err(ScoreError::Input)
+}
+
+/// The reading options of `--quaternion`, `--omega` and `--map` (shared with `fit`); a `--map` without `=` is
+/// refused.
+pub fn read_options(
+    quaternion: OrderArg,
+    omega: OmegaArg,
+    map: &[String],
+) -> Result<ReadOptions, String> {
+    let map = (map.iter())
         .map(|m| {
             m.split_once('=')
                 .map(|(n, c)| (n.trim().to_string(), c.trim().to_string()))
-                .ok_or_else(|| ScoreError::Input(format!("--map {m}: expected NAME=COLUMN")))
+                .ok_or_else(|| format!("--map {m}: expected NAME=COLUMN"))
         })
         .collect::<Result<_, _>>()?;
     Ok(ReadOptions {
-        quaternion: match args.quaternion {
+        quaternion: match quaternion {
             OrderArg::Wxyz => QuaternionOrder::Wxyz,
             OrderArg::Xyzw => QuaternionOrder::Xyzw,
         },
-        omega: Some(match args.omega {
+        omega: Some(match omega {
             OmegaArg::Body => Axes::Body,
             OmegaArg::Space => Axes::Space,
         }),
