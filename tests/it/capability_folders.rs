@@ -263,3 +263,26 @@ fn each_effect_kind_is_named_only_in_its_folder_and_the_registry() {
         );
     }
 }
+
+#[test]
+fn the_fifth_round_s_effect_kinds_are_one_line_each_in_the_registry() {
+    // An effect kind is its folder plus one line of `effect_kinds!` (ARCHITECTURE.md, "An effect kind"); the
+    // registry's `use` of the folder's two types is the import that line needs.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("core/src/effects/kinds.rs");
+    let code = code(&path);
+    for (spec, effect) in [
+        ("GravityGradientSpec", "GravityGradient"),
+        ("MagneticSpec", "MagneticDipole"),
+        ("BDotSpec", "BDot"),
+    ] {
+        let lines: Vec<&String> = (code.iter())
+            .filter(|l| names_in(l, spec) || names_in(l, effect))
+            .collect();
+        let registered = |l: &&String| l.contains(&format!(": {spec} => {effect},"));
+        let imported = |l: &&String| l.trim_start().starts_with("use super::");
+        assert!(
+            lines.len() == 2 && lines.iter().any(registered) && lines.iter().any(imported),
+            "{spec}, {effect} in effects/kinds.rs beyond its `use` and registry line:\n{lines:#?}"
+        );
+    }
+}

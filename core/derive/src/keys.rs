@@ -166,6 +166,8 @@ pub fn generate(form: &FileForm) -> syn::Result<TokenStream> {
             const NAMES: &'static [&'static str] = &crate::keys::concat::<&'static str, { #len }>(&[#(#names),*], "");
             const REQUIRED: &'static [&'static str] = &[#(#required),*];
 
+            // A group without keys of its own (`NoKeys`) has only the fall-through arm.
+            #[allow(unreachable_code)]
             fn take<'de, A: ::serde::de::MapAccess<'de>>(&mut self, key: &str, map: &mut A) -> ::core::result::Result<bool, A::Error> {
                 match key {
                     #(#take)*

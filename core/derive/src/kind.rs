@@ -13,11 +13,13 @@ struct Variant {
     takes: Vec<Option<Ident>>,
 }
 
-/// The enum's attributes: what the messages call it and say when it is missing; the spec it reads.
+/// The enum's attributes: what the messages call it and say when it is missing (or whose `type` it is, `needs`, to
+/// say it in the usual words); the spec it reads.
 #[derive(Default)]
 struct KindAttr {
     what: Option<Expr>,
     missing: Option<Expr>,
+    needs: Option<LitStr>,
     spec: Option<Type>,
     file: Option<Type>,
 }
@@ -37,24 +39,20 @@ pub fn derive(input: &DeriveInput) -> syn::Result<TokenStream> {
                 attr.what = Some(value.parse()?);
             } else if meta.path.is_ident("missing") {
                 attr.missing = Some(value.parse()?);
+            } else if meta.path.is_ident("needs") {
+                attr.needs = Some(value.parse()?);
             } else if meta.path.is_ident("spec") {
                 attr.spec = Some(value.parse()?);
             } else if meta.path.is_ident("file") {
                 attr.file = Some(value.parse()?);
             } else {
-                return Err(
-                    meta.error("unknown `kind` attribute; expected what, missing, spec or file")
-                );
+                return Err(meta.error(
+                    "unknown `kind` attribute; expected what, missing, needs, spec or file",
+                ));
             }
             Ok(())
         })?;
     }
-    let (Some(what), Some(missing)) = (&attr.what, &attr.missing) else {
-        return Err(syn::Error::new_spanned(
-            &input.ident,
-            "give #[kind(what = \"…\", missing = \"…\")]: what messages call the type, and what they say when it is absent",
-        ));
-    };
     let variants = data
         .variants
         .iter()
@@ -62,6 +60,24 @@ pub fn derive(input: &DeriveInput) -> syn::Result<TokenStream> {
         .collect::<syn::Result<Vec<_>>>()?;
     let ident = &input.ident;
     let names: Vec<&LitStr> = variants.iter().map(|v| &v.name).collect();
+    let missing = match (&attr.missing, &attr.needs) {
+        (Some(missing), None) => quote!(#missing),
+        (None, Some(needs)) => {
+            let message = format!(
+                "missing: {} needs `type` = {}",
+                needs.value(),
+                listed(&names)
+            );
+            quote!(#message)
+        }
+        _ => quote!(),
+    };
+    let (Some(what), false) = (&attr.what, missing.is_empty()) else {
+        return Err(syn::Error::new_spanned(
+            &input.ident,
+            "give #[kind(what = \"…\", missing = \"…\")] (or `needs = \"a table\"` for \"missing: a table needs `type` = …\"): what messages call the type, and what they say when it is absent",
+        ));
+    };
     let idents: Vec<&Ident> = variants.iter().map(|v| &v.ident).collect();
     let indices = 0..variants.len() as u32;
     let choices = names
@@ -159,6 +175,15 @@ pub fn derive(input: &DeriveInput) -> syn::Result<TokenStream> {
 
         #part
     })
+}
+
+/// `"a", "b" or "c"`: the names as a message lists them.
+fn listed(names: &[&LitStr]) -> String {
+    let quoted: Vec<String> = names.iter().map(|n| format!("\"{}\"", n.value())).collect();
+    match quoted.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => quoted.concat(),
+    }
 }
 
 /// `#[kind("name", takes(a, b, ..))]` on a unit variant.

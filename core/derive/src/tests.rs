@@ -205,3 +205,32 @@ fn a_kind_splices_the_table_s_parts_where_its_list_says() {
         "{code}"
     );
 }
+
+#[test]
+fn a_kind_says_what_is_missing_in_the_usual_words_from_needs() {
+    let input: DeriveInput = parse_quote! {
+        #[kind(what = "rod type", needs = "a rod")]
+        enum RodKind {
+            #[kind("short", takes(length))]
+            Short,
+            #[kind("long")]
+            Long,
+            #[kind("bent", takes())]
+            Bent,
+        }
+    };
+    let code = crate::kind::derive(&input).unwrap().to_string();
+    let message = "missing: a rod needs `type` = \\\"short\\\", \\\"long\\\" or \\\"bent\\\"";
+    assert!(code.contains(message), "`{message}` not in {code}");
+    let neither = refused(
+        crate::kind::derive,
+        parse_quote! {
+            #[kind(what = "rod type")]
+            enum RodKind {
+                #[kind("short")]
+                Short,
+            }
+        },
+    );
+    assert!(neither.contains("or `needs"), "{neither}");
+}

@@ -1,12 +1,52 @@
-//! The door each effect kind goes through: what the library asks of a validated effect ([`EffectKind`]), and where
-//! a kind's spec is validated ([`Placement`]). Each kind answers in its own folder; `kinds.rs` registers it.
+//! The doors each effect kind goes through: what the library asks of a validated effect ([`EffectKind`]), and how
+//! a scene's table becomes one ([`KindSpec`]: read, written, validated onto the body, [`Placement`]). Each kind
+//! answers in its own folder; `kinds.rs` registers it by one line.
+
+use std::path::Path;
 
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::compiling::Compiling;
-use crate::keys::{Checked, KeyPath};
-use crate::orbit::{CircularOrbit, DipoleField};
+use crate::frames::Axes;
+use crate::keys::{Checked, KeyPath, Keys};
+use crate::orbit::{CircularOrbit, DipoleField, FieldKeys};
 use crate::sample::ColumnGroup;
+
+/// An effect kind as a scene gives it: its spec, read from its own keys of the `[[effect]]` table and those kinds
+/// share, written back to them, and validated onto the body into its [`EffectKind`].
+pub(crate) trait KindSpec: Sized {
+    /// Its own keys of the `[[effect]]` table, a `#[derive(Keys)]` group ([`NoKeys`] for a kind without any).
+    type Keys: Keys + Default;
+    /// Its validated form.
+    type Effect: EffectKind;
+
+    /// The spec its keys give (its table at `at`; `kind_text` names the table in messages).
+    fn read(keys: &Self::Keys, shared: &SharedKeys, at: &KeyPath, kind_text: &str)
+    -> Checked<Self>;
+
+    /// Its own keys, and in `shared` those it shares with other kinds.
+    fn write(&self, shared: &mut SharedKeys) -> Self::Keys;
+
+    /// The spec validated `on` the body, its table at `at`.
+    fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<Self::Effect>;
+
+    /// The files it names taken relative to `dir` (a scene file's directory).
+    fn take_files_in(&mut self, _dir: &Path) {}
+}
+
+/// The keys of `[[effect]]` that more than one kind takes: `frame` (a torque's, a torque table's) and the Earth's
+/// field (`magnetic`'s, `b_dot`'s).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct SharedKeys {
+    /// `frame`: the axes of the moment.
+    pub frame: Option<Axes>,
+    /// `field_tilt_deg`, `field_lon_deg`, `field_b0`.
+    pub field: FieldKeys,
+}
+
+/// The keys of a kind that has none of its own (`gravity_gradient`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Keys)]
+pub(crate) struct NoKeys {}
 
 /// A validated effect, as the rest of the library reads it: its name and words, the bound of its moment, what it
 /// adds to the right-hand side, its columns, and the queries the facts, the closed forms and the 3D page ask (each
@@ -48,6 +88,11 @@ pub trait EffectKind {
 
     /// Whether the work of the moment has no known bound (the user's law): the divergence guard then stands down.
     fn unbounded_work(&self) -> bool {
+        false
+    }
+
+    /// Whether this is the orbit's gravity (its gradient), which uniform gravity does not join.
+    fn is_orbit_gravity(&self) -> bool {
         false
     }
 

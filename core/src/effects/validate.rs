@@ -40,7 +40,7 @@ pub(crate) fn validate_effects(
             "only one gravity effect is allowed: its pivot is the single fixed point of the body",
         );
     }
-    let gradient = (effects.iter()).position(Effect::is_gravity_gradient);
+    let gradient = (effects.iter()).position(|e| e.door().is_orbit_gravity());
     if let (Some(index), false) = (gradient, gravities.is_empty()) {
         return invalid(
             table(index).key("type"),

@@ -10,11 +10,11 @@ mod columns;
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::compiling::Compiling;
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, Placement, SharedKeys};
 use super::law::{MomentLaw, UserMoment};
 use crate::frames::Axes;
 use crate::keys::{Checked, KeyPath, Keys, finite, invalid, required};
-use crate::orbit::{CircularOrbit, DipoleField, FieldKeys, FieldSpec};
+use crate::orbit::{CircularOrbit, DipoleField, FieldSpec};
 use crate::text::for_people;
 
 /// B-dot's keys (the field's are [`crate::orbit::FieldKeys`], shared with `magnetic`).
@@ -54,24 +54,25 @@ impl BDotSpec {
             field: FieldSpec::default(),
         }
     }
+}
+
+impl KindSpec for BDotSpec {
+    type Keys = BDotKeys;
+    type Effect = BDot;
 
     /// The law as its keys and the field's give it.
-    pub(crate) fn read(
-        keys: &BDotKeys,
-        field: &FieldKeys,
-        at: &KeyPath,
-        kind_text: &str,
-    ) -> Checked<Self> {
+    fn read(keys: &BDotKeys, shared: &SharedKeys, at: &KeyPath, kind_text: &str) -> Checked<Self> {
         let key = |name: &str| at.clone().key(name);
         Ok(BDotSpec {
             gain: required(key("gain"), keys.gain, kind_text)?,
             max_dipole: required(key("max_dipole"), keys.max_dipole, kind_text)?,
-            field: FieldSpec::read(field),
+            field: FieldSpec::read(&shared.field),
         })
     }
 
-    /// Its keys (the field's are [`FieldSpec::keys`]).
-    pub(crate) fn keys(&self) -> BDotKeys {
+    /// Its keys and the field's ([`FieldSpec::keys`]).
+    fn write(&self, shared: &mut SharedKeys) -> BDotKeys {
+        shared.field = self.field.keys();
         BDotKeys {
             gain: Some(self.gain),
             max_dipole: Some(self.max_dipole),
@@ -79,7 +80,7 @@ impl BDotSpec {
     }
 
     /// The law validated: an orbit and a free body, k ≥ 0 and m_max ≥ 0 finite, a valid field.
-    pub(crate) fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<BDot> {
+    fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<BDot> {
         let orbit = on.in_orbit(at, "b_dot")?;
         let at_least_zero = |name: &str, value: f64, unit: &str| {
             let key = at.clone().key(name);

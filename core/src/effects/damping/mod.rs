@@ -1,7 +1,7 @@
 //! `type = "damping"`: viscous damping M = −c ω, whose power −c|ω|² is never positive.
 
 use super::compiling::Compiling;
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, Placement, SharedKeys};
 use crate::keys::{Checked, KeyPath, Keys, finite, invalid, required};
 use crate::text::plain;
 
@@ -20,21 +20,24 @@ pub struct DampingSpec {
     pub c: f64,
 }
 
-impl DampingSpec {
+impl KindSpec for DampingSpec {
+    type Keys = DampingKeys;
+    type Effect = Damping;
+
     /// Damping as its keys give it.
-    pub(crate) fn read(keys: &DampingKeys, at: &KeyPath, kind_text: &str) -> Checked<Self> {
+    fn read(keys: &DampingKeys, _: &SharedKeys, at: &KeyPath, kind_text: &str) -> Checked<Self> {
         Ok(DampingSpec {
             c: required(at.clone().key("c"), keys.c, kind_text)?,
         })
     }
 
     /// Its keys.
-    pub(crate) fn keys(&self) -> DampingKeys {
+    fn write(&self, _: &mut SharedKeys) -> DampingKeys {
         DampingKeys { c: Some(self.c) }
     }
 
     /// Damping validated, its table at `at`: c ≥ 0, finite.
-    pub(crate) fn validate(&self, at: &KeyPath, _on: &Placement) -> Checked<Damping> {
+    fn validate(&self, at: &KeyPath, _on: &Placement) -> Checked<Damping> {
         let key = at.clone().key("c");
         let c = finite(key.clone(), self.c, "N*m*s")?;
         if c < 0.0 {

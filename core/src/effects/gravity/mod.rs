@@ -9,7 +9,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 pub use columns::potential_columns;
 
 use super::compiling::Compiling;
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, Placement, SharedKeys};
 use crate::keys::{Checked, KeyPath, Keys, invalid, vector};
 use crate::text::vec3;
 
@@ -37,17 +37,20 @@ pub struct GravitySpec {
     pub pivot: Option<[f64; 3]>,
 }
 
-impl GravitySpec {
+impl KindSpec for GravitySpec {
+    type Keys = GravityKeys;
+    type Effect = Gravity;
+
     /// Gravity as its keys give it.
-    pub(crate) fn read(keys: &GravityKeys) -> Self {
-        GravitySpec {
+    fn read(keys: &GravityKeys, _: &SharedKeys, _: &KeyPath, _: &str) -> Checked<Self> {
+        Ok(GravitySpec {
             g: keys.g.unwrap_or(DEFAULT_GRAVITY),
             pivot: keys.pivot,
-        }
+        })
     }
 
     /// Its keys.
-    pub(crate) fn keys(&self) -> GravityKeys {
+    fn write(&self, _: &mut SharedKeys) -> GravityKeys {
         GravityKeys {
             g: Some(self.g),
             pivot: self.pivot,
@@ -56,7 +59,7 @@ impl GravitySpec {
 
     /// Gravity validated, its table at `at`, placed `on` the body: its moment center the pivot of a free body or
     /// the axis point of a fixed axis or hinge.
-    pub(crate) fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<Gravity> {
+    fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<Gravity> {
         let key = |name: &str| at.clone().key(name);
         Ok(Gravity {
             g_s: vector(key("g"), self.g, "m/s^2")?,

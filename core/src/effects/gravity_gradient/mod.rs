@@ -4,7 +4,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::compiling::{AttitudeLaw, Compiling};
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, NoKeys, Placement, SharedKeys};
 use crate::keys::{Checked, KeyPath};
 use crate::orbit::CircularOrbit;
 use crate::text::for_people;
@@ -13,9 +13,22 @@ use crate::text::for_people;
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct GravityGradientSpec;
 
-impl GravityGradientSpec {
+impl KindSpec for GravityGradientSpec {
+    type Keys = NoKeys;
+    type Effect = GravityGradient;
+
+    /// The gradient: no keys.
+    fn read(_: &NoKeys, _: &SharedKeys, _: &KeyPath, _: &str) -> Checked<Self> {
+        Ok(GravityGradientSpec)
+    }
+
+    /// No keys.
+    fn write(&self, _: &mut SharedKeys) -> NoKeys {
+        NoKeys {}
+    }
+
     /// The gradient validated: an orbit and a free body, whose inertia about C it takes.
-    pub(crate) fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<GravityGradient> {
+    fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<GravityGradient> {
         Ok(GravityGradient {
             orbit: on.in_orbit(at, "gravity_gradient")?,
             inertia_c_b: *on.inertia_c_b,
@@ -35,6 +48,10 @@ pub struct GravityGradient {
 impl EffectKind for GravityGradient {
     fn kind(&self) -> &'static str {
         "gravity_gradient"
+    }
+
+    fn is_orbit_gravity(&self) -> bool {
+        true
     }
 
     fn uses_mass_distribution(&self) -> bool {

@@ -4,9 +4,9 @@
 use nalgebra::Vector3;
 
 use super::compiling::{AttitudeLaw, Compiling};
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, Placement, SharedKeys};
 use crate::keys::{Checked, KeyPath, Keys, vector};
-use crate::orbit::{CircularOrbit, DipoleField, FieldKeys, FieldSpec};
+use crate::orbit::{CircularOrbit, DipoleField, FieldSpec};
 use crate::text::{for_people, vec3};
 
 /// A residual dipole's key (the field's are [`crate::orbit::FieldKeys`], shared with `b_dot`).
@@ -40,17 +40,23 @@ impl MagneticSpec {
             field: FieldSpec::default(),
         }
     }
+}
+
+impl KindSpec for MagneticSpec {
+    type Keys = MagneticKeys;
+    type Effect = MagneticDipole;
 
     /// The dipole as its keys and the field's give it.
-    pub(crate) fn read(keys: &MagneticKeys, field: &FieldKeys) -> Self {
-        MagneticSpec {
+    fn read(keys: &MagneticKeys, shared: &SharedKeys, _: &KeyPath, _: &str) -> Checked<Self> {
+        Ok(MagneticSpec {
             dipole: keys.dipole.unwrap_or([0.0; 3]),
-            field: FieldSpec::read(field),
-        }
+            field: FieldSpec::read(&shared.field),
+        })
     }
 
-    /// Its keys (the field's are [`FieldSpec::keys`]).
-    pub(crate) fn keys(&self) -> MagneticKeys {
+    /// Its keys and the field's ([`FieldSpec::keys`]).
+    fn write(&self, shared: &mut SharedKeys) -> MagneticKeys {
+        shared.field = self.field.keys();
         MagneticKeys {
             dipole: Some(self.dipole),
         }
@@ -58,7 +64,7 @@ impl MagneticSpec {
 
     /// The dipole validated: an orbit and a free body, a finite dipole (A·m²) and a valid field
     /// ([`FieldSpec::validate`]).
-    pub(crate) fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<MagneticDipole> {
+    fn validate(&self, at: &KeyPath, on: &Placement) -> Checked<MagneticDipole> {
         Ok(MagneticDipole {
             orbit: on.in_orbit(at, "magnetic")?,
             field: self.field.validate(at)?,

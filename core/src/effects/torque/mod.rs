@@ -4,7 +4,7 @@
 use nalgebra::Vector3;
 
 use super::compiling::Compiling;
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, Placement, SharedKeys};
 use crate::frames::Axes;
 use crate::keys::{Checked, KeyPath, Keys, required, vector};
 use crate::profile::{Profile, ProfileKeys};
@@ -74,23 +74,29 @@ impl TorqueSpec {
         self.profile = Profile::Step { t_on, t_off };
         self
     }
+}
 
-    /// The torque in `frame` as its keys give it (its table at `at`; `kind_text` names the table in errors).
-    pub(crate) fn read(
-        frame: Axes,
+impl KindSpec for TorqueSpec {
+    type Keys = TorqueKeys;
+    type Effect = TorqueGiven;
+
+    /// The torque as its keys give it, in the table's `frame` (body axes unless given).
+    fn read(
         keys: &TorqueKeys,
+        shared: &SharedKeys,
         at: &KeyPath,
         kind_text: &str,
     ) -> Checked<Self> {
         Ok(TorqueSpec {
-            frame,
+            frame: shared.frame.unwrap_or(Axes::Body),
             value: required(at.clone().key("value"), keys.value, kind_text)?,
             profile: Profile::read(at, &keys.profile, "a sine torque")?,
         })
     }
 
-    /// Its keys (its `frame` is the table's).
-    pub(crate) fn keys(&self) -> TorqueKeys {
+    /// Its keys and the table's `frame`.
+    fn write(&self, shared: &mut SharedKeys) -> TorqueKeys {
+        shared.frame = Some(self.frame);
         TorqueKeys {
             value: Some(self.value),
             profile: self.profile.keys(),
@@ -98,7 +104,7 @@ impl TorqueSpec {
     }
 
     /// The torque validated, its table at `at`: a finite value and a valid profile.
-    pub(crate) fn validate(&self, at: &KeyPath, _on: &Placement) -> Checked<TorqueGiven> {
+    fn validate(&self, at: &KeyPath, _on: &Placement) -> Checked<TorqueGiven> {
         let profile = self.profile.checked(at)?;
         Ok(TorqueGiven {
             frame: self.frame,

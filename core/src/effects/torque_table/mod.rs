@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::compiling::Compiling;
-use super::kind::{EffectKind, Placement};
+use super::kind::{EffectKind, KindSpec, Placement, SharedKeys};
 use super::table::{Interpolation, TorqueTable};
 use crate::frames::Axes;
 use crate::keys::{Checked, KeyPath, Keys, invalid, required};
@@ -63,23 +63,29 @@ impl TorqueTableSpec {
         self.interpolation = Interpolation::Cubic;
         self
     }
+}
 
-    /// The table in `frame` as its keys give it.
-    pub(crate) fn read(
-        frame: Axes,
+impl KindSpec for TorqueTableSpec {
+    type Keys = TorqueTableKeys;
+    type Effect = TabulatedTorque;
+
+    /// The table as its keys give it, in the table's `frame` (body axes unless given).
+    fn read(
         keys: &TorqueTableKeys,
+        shared: &SharedKeys,
         at: &KeyPath,
         kind_text: &str,
     ) -> Checked<Self> {
         Ok(TorqueTableSpec {
             file: required(at.clone().key("file"), keys.file.clone(), kind_text)?,
-            frame,
+            frame: shared.frame.unwrap_or(Axes::Body),
             interpolation: keys.interpolation.unwrap_or_default(),
         })
     }
 
-    /// Its keys (its `frame` is the table's).
-    pub(crate) fn keys(&self) -> TorqueTableKeys {
+    /// Its keys and the table's `frame`.
+    fn write(&self, shared: &mut SharedKeys) -> TorqueTableKeys {
+        shared.frame = Some(self.frame);
         TorqueTableKeys {
             file: Some(self.file.clone()),
             interpolation: Some(self.interpolation),
@@ -87,13 +93,18 @@ impl TorqueTableSpec {
     }
 
     /// The table validated: read here, once, so that its errors name the file and the row.
-    pub(crate) fn validate(&self, at: &KeyPath, _on: &Placement) -> Checked<TabulatedTorque> {
+    fn validate(&self, at: &KeyPath, _on: &Placement) -> Checked<TabulatedTorque> {
         let table = TorqueTable::read(&self.file, self.interpolation)
             .or_else(|problem| invalid(at.clone().key("file"), problem))?;
         Ok(TabulatedTorque {
             frame: self.frame,
             table: Arc::new(table),
         })
+    }
+
+    /// Its file taken relative to `dir`.
+    fn take_files_in(&mut self, dir: &Path) {
+        self.file = dir.join(&self.file);
     }
 }
 
