@@ -17,7 +17,6 @@ use crate::scene::{
 use crate::simulate;
 pub use crate::text::{Description, for_people};
 use crate::text::{fixed, line, plain, turns, vec3};
-use crate::wheels::gyrostat::Gyrostat;
 
 /// A rough estimate of the steps an adaptive method takes to reach t_end: its step h follows from
 /// |ω|·h ≈ C·rtol^(1/(p+1)) (p the order; C measured on the shipped scenarios: 4 for dopri5, 5 for dop853), and it
@@ -131,9 +130,9 @@ fn motion_lines(
 ) {
     match (scene.motion.kind(), &motion.axis) {
         (MotionKind::Free, _) => {
-            free_motion_lines(w, numbers, motion, scene.motion.gyrostat());
-            if let Some(shape) = scene.motion.shape_change() {
-                shape.describe(w, scene.body.mass());
+            free_motion_lines(w, numbers, motion);
+            if let Some(attribute) = scene.motion.attribute() {
+                attribute.door().describe(w, scene.body.mass());
             }
         }
         (MotionKind::FixedAxis, Some(axis)) => fixed_axis_lines(w, scene, numbers, axis),
@@ -152,12 +151,7 @@ fn motion_lines(
 }
 
 /// Free motion: its moment center (C, or the pivot of a gravity effect).
-fn free_motion_lines(
-    w: &mut Description,
-    numbers: &CheckNumbers,
-    motion: &MotionNumbers,
-    gyrostat: Option<&Gyrostat>,
-) {
+fn free_motion_lines(w: &mut Description, numbers: &CheckNumbers, motion: &MotionNumbers) {
     line(
         w,
         "motion",
@@ -184,9 +178,6 @@ fn free_motion_lines(
             "moment center",
             "C, the mass center: H and M are about it",
         );
-    }
-    if let Some(g) = gyrostat {
-        g.describe(w);
     }
 }
 
@@ -387,7 +378,7 @@ fn support_lines(w: &mut Description, numbers: &CheckNumbers, axis: Option<&Axis
 /// The effects, one a line, then each wheel's imbalance (a moment on the body turning with the wheel), or why
 /// there are none.
 fn effect_lines(w: &mut Description, scene: &Scene) {
-    let imbalances = (scene.motion.gyrostat()).map_or_else(Vec::new, |g| g.imbalance_effects());
+    let imbalances = (scene.motion.attribute()).map_or_else(Vec::new, |a| a.door().moments());
     if scene.effects.is_empty() && imbalances.is_empty() {
         let none = match scene.motion.kind() {
             MotionKind::FixedAxis => "none: the motion is prescribed",
@@ -418,22 +409,10 @@ fn conserved_line(w: &mut Description, scene: &Scene) {
 /// The equation and the method with its step or tolerances; returns the estimate of the steps (one line or more).
 fn method_lines(w: &mut Description, scene: &Scene) -> String {
     let s = &scene.solver;
-    let wheels = scene.motion.gyrostat().is_some();
-    let form = match (s.form, wheels) {
-        _ if scene.motion.shape_change().is_some() => match s.form {
-            Form::Body => {
-                "body axes: dH_b/dt + omega x H_b = M, H = I(t)*omega + h (so I*omega' = M - I'*omega - h' - omega x H)"
-            }
-            Form::Space => "space axes: dH_s/dt = M_s, omega = I(t)^-1 (R^T H_s - h)",
-        },
-        (Form::Body, false) => "body axes: I*omega' + omega x I*omega = M",
-        (Form::Space, false) => "space axes: dH_s/dt = M_s with I_s(theta)",
-        (Form::Body, true) => {
-            "body axes: I*omega' + sum J Omega' a + omega x H = M, H = I*omega + sum J Omega a (the wheels' momentum)"
-        }
-        (Form::Space, true) => {
-            "space axes: dH_s/dt = M_s, H = I*omega + sum J Omega a (the wheels' momentum) with I_s(theta)"
-        }
+    let form = match (scene.motion.attribute(), s.form) {
+        (Some(attribute), form) => attribute.door().equation(form),
+        (None, Form::Body) => "body axes: I*omega' + omega x I*omega = M",
+        (None, Form::Space) => "space axes: dH_s/dt = M_s with I_s(theta)",
     };
     line(w, "equation", form);
     let runge_kutta = matches!(s.method, Method::Rk4 | Method::Dopri5 | Method::Dop853);

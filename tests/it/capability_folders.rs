@@ -286,3 +286,66 @@ fn the_fifth_round_s_effect_kinds_are_one_line_each_in_the_registry() {
         );
     }
 }
+
+#[test]
+fn the_shape_change_is_named_only_in_its_folder_and_its_registrations() {
+    // A body attribute is its folder plus its field in `[body]`, its line in the registry `scene/attributes.rs`
+    // and its validation's calls; every other question goes through `motion::attribute::BodyAttribute` (facts,
+    // method rules, `check`, columns) and `AttributeDrive` (the run).
+    let registrations = [
+        ("lib.rs", "pub mod shape_change;"),
+        // eulerdyn re-exports each of the core's modules.
+        ("lib.rs", " shape_change, simulate,"),
+        (
+            "scene/spec/file_form.rs",
+            "use crate::shape_change::{ShapeChangeKeys, ShapeChangeSpec};",
+        ),
+        ("scene/spec/file_form.rs", "flatten = ShapeChangeKeys"),
+        (
+            "scene/spec/file_form.rs",
+            "pub shape_change: ShapeChangeSpec,",
+        ),
+        (
+            "scene/attributes.rs",
+            "use crate::shape_change::ShapeChange;",
+        ),
+        ("scene/attributes.rs", "ShapeChange(Arc<ShapeChange>),"),
+        (
+            "scene/validate/motion.rs",
+            "use crate::shape_change::Mounting;",
+        ),
+        (
+            "scene/validate/motion.rs",
+            "doc.body.shape_change.refuse_on_axis()?;",
+        ),
+        (
+            "scene/validate/motion.rs",
+            "let shape_change = doc.body.shape_change.on_free_body(&Mounting {",
+        ),
+        (
+            "scene/validate/motion.rs",
+            "attribute: (gyrostat.map(Attribute::from)).or(shape_change.map(Attribute::from)),",
+        ),
+        // The 3D page draws the moving masses of the scene as the sidecar keeps it.
+        (
+            "output/view/geometry.rs",
+            "(spec.body.shape_change.moving_mass.iter().enumerate())",
+        ),
+    ];
+    let outside = named_outside(
+        "shape_change/",
+        &[
+            "shape_change",
+            "ShapeChange",
+            "ChangingForm",
+            "ChangingSplit",
+            "Mounting",
+        ],
+        &registrations,
+    );
+    assert!(
+        outside.is_empty(),
+        "outside core/src/shape_change/:\n{}",
+        outside.join("\n")
+    );
+}

@@ -20,6 +20,22 @@ pub trait FixedStep {
     fn is_finite(&self, y: &Self::State) -> bool;
 }
 
+/// The fixed step of a system that has none (a motion only the Runge–Kutta methods run): it cannot be made.
+#[derive(Debug)]
+pub enum NoSplit<const N: usize> {}
+
+impl<const N: usize> FixedStep for NoSplit<N> {
+    type State = SVector<f64, N>;
+
+    fn step(&mut self, _: f64, _: f64, _: f64, _: &mut Self::State) -> u64 {
+        match *self {}
+    }
+
+    fn is_finite(&self, _: &Self::State) -> bool {
+        match *self {}
+    }
+}
+
 /// Sees every step of a [`FixedStep`] method, in time order, before the row at its end is reported (the fixed-step
 /// counterpart of [`StepWatch`]). A watch with `ACTIVE = false` costs nothing.
 pub trait FixedStepWatch<S: FixedStep> {

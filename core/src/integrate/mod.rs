@@ -69,7 +69,7 @@ mod schedule;
 mod tableau;
 
 pub use dense::{Dense, NoWatch, StepWatch};
-pub use fixed::{FixedStep, FixedStepWatch, run_fixed_step, run_fixed_step_watched};
+pub use fixed::{FixedStep, FixedStepWatch, NoSplit, run_fixed_step, run_fixed_step_watched};
 pub use schedule::{Schedule, ScheduleError, ScheduleIter};
 
 use crate::method::defaults;

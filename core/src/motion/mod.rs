@@ -3,6 +3,7 @@
 //! closed form ([`exact_flow`]); a body with rotors inside it is [`crate::wheels`]'s gyrostat. An axis's support may move
 //! ([`moving_support`]: a [`carrier`]).
 
+pub mod attribute;
 pub mod axis_columns;
 pub mod carrier;
 mod choices;

@@ -2,6 +2,7 @@
 //! its validation ([`SceneSpec::build`]) and the validated [`Scene`] a run needs.
 
 pub mod advice;
+mod attributes;
 mod facts;
 mod file;
 mod model;
@@ -15,6 +16,7 @@ mod user_moment;
 mod validate;
 mod wheel_law;
 
+pub use attributes::Attribute;
 pub use facts::{
     AxisNumbers, BearingNumbers, CheckNumbers, Facts, Invariant, MomentCenter, MotionNumbers,
     StartNumbers,

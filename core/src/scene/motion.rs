@@ -4,10 +4,9 @@
 //! names a variant. It sits in `scene/`, above `motion/` and `wheels/`, because a free body's rotors (`wheels`)
 //! are built on `motion::free`.
 
-use std::sync::Arc;
-
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
+use super::attributes::Attribute;
 use super::spec::MotionKind;
 use crate::frames::{BodyAxes, Vector};
 use crate::motion::axis_columns::AxisColumns;
@@ -15,20 +14,20 @@ use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::sample::ColumnGroup;
-use crate::shape_change::ShapeChange;
 use crate::wheels::gyrostat::Gyrostat;
 
-/// A free motion's parts: ω₀, the body about its moment center, and its rotors.
+/// A free motion's parts: ω₀, the body about its moment center, and its attribute (its rotors, or its change of
+/// shape).
 #[derive(Debug, Clone, Copy)]
 pub struct FreeParts<'a> {
     /// ω at t = 0, body axes (rad/s).
     pub omega0_b: &'a Vector<BodyAxes>,
     /// The body about its moment center.
     pub body: &'a FreeBody,
-    /// The body with its rotors, when it has any.
+    /// The body's attribute, when it has one.
+    pub attribute: Option<&'a Attribute>,
+    /// The body with its rotors, when that attribute is its wheels.
     pub gyrostat: Option<&'a Gyrostat>,
-    /// The body's mass distribution in time, when it changes shape.
-    pub shape_change: Option<&'a Arc<ShapeChange>>,
 }
 
 /// The motion of the body.
@@ -41,10 +40,8 @@ pub enum Motion {
         omega0_b: Vector<BodyAxes>,
         /// The body about its moment center.
         body: FreeBody,
-        /// The body with its rotors (`[[body.rotor]]`), when it has any.
-        gyrostat: Option<Box<Gyrostat>>,
-        /// The body's mass distribution in time (`[[body.moving_mass]]`, `inertia_table`), when it changes shape.
-        shape_change: Option<Arc<ShapeChange>>,
+        /// The body's attribute (its rotors, its change of shape), when it has one.
+        attribute: Option<Attribute>,
     },
     /// Prescribed rotation about a fixed axis.
     FixedAxis(FixedAxis),
@@ -59,13 +56,12 @@ impl Motion {
             Motion::Free {
                 omega0_b,
                 body,
-                gyrostat,
-                shape_change,
+                attribute,
             } => Some(FreeParts {
                 omega0_b,
                 body,
-                gyrostat: gyrostat.as_deref(),
-                shape_change: shape_change.as_ref(),
+                attribute: attribute.as_ref(),
+                gyrostat: attribute.as_ref().and_then(Attribute::gyrostat),
             }),
             _ => None,
         }
@@ -81,19 +77,19 @@ impl Motion {
         self.free().and_then(|f| f.gyrostat)
     }
 
-    /// The body's mass distribution in time, when it is free and changes shape.
-    pub fn shape_change(&self) -> Option<&Arc<ShapeChange>> {
-        self.free().and_then(|f| f.shape_change)
+    /// The body's attribute (its rotors, its change of shape), when it is free and has one.
+    pub fn attribute(&self) -> Option<&Attribute> {
+        self.free().and_then(|f| f.attribute)
     }
 
     /// The body's rotors and ω₀, to change the rotors (a wheel law) when it is free and has any.
     pub(crate) fn gyrostat_mut(&mut self) -> Option<(&mut Gyrostat, &Vector<BodyAxes>)> {
         match self {
             Motion::Free {
-                gyrostat: Some(g),
+                attribute: Some(a),
                 omega0_b,
                 ..
-            } => Some((&mut **g, &*omega0_b)),
+            } => a.gyrostat_mut().map(|g| (g, &*omega0_b)),
             _ => None,
         }
     }
@@ -126,12 +122,9 @@ impl Motion {
     /// The name of the wheel law that commands the wheels
     /// ([`Scene::with_wheel_law`](super::Scene::with_wheel_law)), if one does.
     pub fn wheel_law(&self) -> Option<&str> {
-        match self {
-            Motion::Free {
-                gyrostat: Some(g), ..
-            } => g.law().map(|law| law.name.as_str()),
-            _ => None,
-        }
+        self.gyrostat()
+            .and_then(|g| g.law())
+            .map(|law| law.name.as_str())
     }
 
     /// The optional columns of an axis motion ([`AxisColumns`]): the force only when C is off the axis, H_s
@@ -144,18 +137,12 @@ impl Motion {
         })
     }
 
-    /// The columns its capabilities add after all others: a moving support's, a body's wheels', a changing
-    /// shape's.
+    /// The columns its capabilities add after all others: a moving support's, a free body's attribute's (its
+    /// wheels', its changing shape's).
     pub fn capability_columns(&self) -> Option<ColumnGroup> {
-        match self {
-            Motion::Free {
-                gyrostat: Some(g), ..
-            } => Some(g.columns()),
-            Motion::Free {
-                shape_change: Some(shape),
-                ..
-            } => Some(shape.columns()),
-            _ => (self.axis())
+        match self.attribute() {
+            Some(attribute) => Some(attribute.door().columns()),
+            None => (self.axis())
                 .and_then(FixedAxis::moving_support)
                 .map(|s| s.columns()),
         }
@@ -185,15 +172,14 @@ impl Motion {
             }
     }
 
-    /// A free rigid body without rotors whose shape does not change: its ω₀ (body axes) and the body about its
-    /// moment center.
+    /// A free rigid body without an attribute (no rotors, a shape that does not change): its ω₀ (body axes) and
+    /// the body about its moment center.
     pub fn rigid_free(&self) -> Option<(&Vector<BodyAxes>, &FreeBody)> {
         match self {
             Motion::Free {
                 omega0_b,
                 body,
-                gyrostat: None,
-                shape_change: None,
+                attribute: None,
             } => Some((omega0_b, body)),
             _ => None,
         }

@@ -6,10 +6,12 @@
 //! (`describe.rs`). Without external moment H_s is constant; the kinetic energy is not — the internal drives put
 //! in `P_internal`.
 
+mod attribute;
 mod columns;
 mod describe;
 pub mod history;
 mod keys;
+mod mount;
 pub mod path;
 pub mod splitting;
 pub mod system;
@@ -18,6 +20,7 @@ mod validate;
 pub use history::{Distribution, InertiaHistory, MassState, MovingMass};
 pub(crate) use keys::ShapeChangeKeys;
 pub use keys::{MovingMassSpec, PathSpec, ShapeChangeSpec};
+pub(crate) use mount::Mounting;
 pub use path::{Kinematics, MassPath, Profile, Side};
 pub(crate) use validate::validate_shape_change;
 pub use validate::{INERTIA_TABLE_HEADER, PATH_TABLE_HEADER};

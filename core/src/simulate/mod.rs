@@ -15,6 +15,7 @@ use crate::events::{Locator, Occurrence};
 use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::Method;
+use crate::motion::attribute::{AttributeDrive, DriveVisitor};
 use crate::motion::exact_flow::ExactFlow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::{self, BodyForm, FreeBody, SpaceForm};
@@ -22,8 +23,6 @@ use crate::motion::hinge::{Hinge, HingeBodyForm, HingeSpaceForm};
 use crate::motion::lie_poisson::{KickMoment, KickQuadrature, LiePoisson, Scheme};
 use crate::sample::Sample;
 use crate::scene::{Motion, Scene};
-use crate::shape_change::{self, ShapeChange, splitting::ChangingSplit, system::ChangingForm};
-use crate::wheels::gyrostat::{self, Gyrostat, GyrostatForm};
 
 mod advice;
 mod events;
@@ -242,21 +241,18 @@ fn run_rows(
         Motion::Hinge(hinge) => run_hinge(scene, hinge, deliver, events),
         Motion::Free {
             omega0_b,
-            gyrostat: Some(gyrostat),
+            attribute: Some(attribute),
             ..
         } => {
-            let moments = EffectMoments::new(&scene.effects, scene.body.mass());
-            run_gyrostat(scene, gyrostat, omega0_b, moments, deliver, events)
-        }
-        Motion::Free {
-            omega0_b,
-            shape_change: Some(shape),
-            ..
-        } => {
-            // One instance of the drivers (no torque-free specialisation): a changing body's run is not a
-            // benchmark, and the sum of no effects is an exact zero, so H_s stays put all the same.
-            let moments = EffectMoments::new(&scene.effects, scene.body.mass());
-            run_changing(scene, shape, omega0_b, moments, deliver, events)
+            // One instance of the drivers an attribute (no torque-free specialisation): the sum of no effects is an
+            // exact zero, so H_s stays put all the same.
+            attribute.drive(AttributeRun {
+                scene,
+                omega0_b,
+                moment: EffectMoments::new(&scene.effects, scene.body.mass()),
+                sink: deliver,
+                locator: events,
+            })
         }
         Motion::Free { omega0_b, body, .. } => {
             if scene.effects.is_empty() {
@@ -377,82 +373,64 @@ fn run_free<M: KickMoment + Clone, E>(
     }
 }
 
-/// A body with rotors, by the scene's Runge–Kutta method (validation refuses the others), in the form the
-/// scene's frame selects.
-fn run_gyrostat<E>(
-    scene: &Scene,
-    gyrostat: &Gyrostat,
-    omega0_b: &Vector<BodyAxes>,
+/// A free body's attribute (its wheels, its changing shape) run by the scene's method in the form its frame
+/// selects: the visitor of [`Attribute::drive`](crate::scene::Attribute::drive), at the attribute's state size.
+struct AttributeRun<'a, 'e, F> {
+    scene: &'a Scene,
+    omega0_b: &'a Vector<BodyAxes>,
     moment: EffectMoments,
-    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
-    locator: Option<&mut Locator>,
-) -> Result<Stats, IntegrateError<Stop<E>>> {
-    let Runner::RungeKutta(settings) = runner(scene) else {
-        return Err(IntegrateError::InvalidSettings {
-            reason: format!(
-                "method \"{}\" cannot take rotors",
-                scene.solver.method.name()
-            ),
-        });
-    };
-    let form = scene.solver.form;
-    let y0 = gyrostat.initial_state(form, omega0_b, &scene.attitude0);
-    let row = |t: f64, y: &gyrostat::State| gyrostat.sample(&moment, form, t, y);
-    let on_row = |t: f64, y: &gyrostat::State| sink(&row(t, y));
-    let mut system = GyrostatForm {
-        gyrostat,
-        moment: moment.clone(),
-        form,
-    };
-    let run = events::Integration {
-        scene,
-        settings: &settings,
-        locator,
-    };
-    run.integrate(&mut system, y0, on_row, row)
+    sink: F,
+    locator: Option<&'a mut Locator<'e>>,
 }
 
-/// A body that changes shape ([`crate::shape_change::system`]) in the form the scene's frame selects: by the
-/// scene's Runge–Kutta method, or split2/split4 ([`crate::shape_change::splitting`]); validation refuses `exact`.
-fn run_changing<E>(
-    scene: &Scene,
-    shape: &ShapeChange,
-    omega0_b: &Vector<BodyAxes>,
-    moment: EffectMoments,
-    mut sink: impl FnMut(&Sample) -> Result<(), Stop<E>>,
-    locator: Option<&mut Locator>,
-) -> Result<Stats, IntegrateError<Stop<E>>> {
-    let form = scene.solver.form;
-    let y0 = shape_change::system::initial_state(shape, form, omega0_b, &scene.attitude0);
-    let settings = match runner(scene) {
-        Runner::RungeKutta(settings) => settings,
-        Runner::Splitting(scheme) => {
-            let mass = shape.distribution().mass(scene.body.mass());
-            let mut split = ChangingSplit::new(shape, mass, form, scheme, moment.clone());
-            return run_fixed_step(
-                &mut split,
-                y0,
-                &scene.schedule,
-                scene.solver.dt,
-                max_steps(),
-                |t, y| sink(&shape_change::system::sample(shape, &moment, form, t, y)),
-            );
-        }
-        Runner::Exact => {
-            return Err(IntegrateError::InvalidSettings {
-                reason: "method \"exact\" cannot run a body that changes shape".into(),
-            });
-        }
-    };
-    let row = |t: f64, y: &free::State| shape_change::system::sample(shape, &moment, form, t, y);
-    let on_row = |t: f64, y: &free::State| sink(&row(t, y));
-    let mut system = ChangingForm::new(shape, moment.clone(), form);
-    let run = events::Integration {
-        scene,
-        settings: &settings,
-        locator,
-    };
-    run.integrate(&mut system, y0, on_row, row)
+impl<F: FnMut(&Sample) -> Result<(), Stop<E>>, E> DriveVisitor for AttributeRun<'_, '_, F> {
+    type Output = Result<Stats, IntegrateError<Stop<E>>>;
+
+    fn visit<const N: usize, A: AttributeDrive<N>>(self, attribute: &A) -> Self::Output {
+        let AttributeRun {
+            scene,
+            omega0_b,
+            moment,
+            mut sink,
+            locator,
+        } = self;
+        let form = scene.solver.form;
+        let y0 = attribute.initial_state(form, omega0_b, &scene.attitude0);
+        let refused = || IntegrateError::InvalidSettings {
+            // Validation refuses these (the attribute's `refuses`); a scene built by hand still gets its reason.
+            reason: (attribute.refuses(scene.solver.method, &scene.effects)).unwrap_or_else(|| {
+                format!(
+                    "method \"{}\" cannot run this body",
+                    scene.solver.method.name()
+                )
+            }),
+        };
+        let settings = match runner(scene) {
+            Runner::RungeKutta(settings) => settings,
+            Runner::Splitting(scheme) => {
+                let split = attribute.split(scene.body.mass(), form, scheme, moment.clone());
+                let mut split = split.ok_or_else(refused)?;
+                return run_fixed_step(
+                    &mut split,
+                    y0,
+                    &scene.schedule,
+                    scene.solver.dt,
+                    max_steps(),
+                    |t, y| sink(&attribute.sample(&moment, form, t, y)),
+                );
+            }
+            Runner::Exact => return Err(refused()),
+        };
+        let row = |t: f64, y: &SVector<f64, N>| attribute.sample(&moment, form, t, y);
+        let on_row = |t: f64, y: &SVector<f64, N>| sink(&row(t, y));
+        let mut system = attribute.system(moment.clone(), form);
+        let run = events::Integration {
+            scene,
+            settings: &settings,
+            locator,
+        };
+        run.integrate(&mut system, y0, on_row, row)
+    }
 }
 
 /// Euler's equation in space axes for a prescribed motion, Ḣ_s = M_s(t) (eq. 8.9), with M_s from the form the

@@ -17,6 +17,7 @@
 //! whose relative spin has reached zero under Coulomb friction sticks while the torque that holds it is within
 //! the breakaway level c + s (no chatter: [`solve`]).
 
+mod attribute;
 mod columns;
 mod describe;
 pub mod gyrostat;

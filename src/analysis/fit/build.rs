@@ -63,7 +63,7 @@ impl Builder {
         let Some(free) = scene.motion.free() else {
             return refuse("prescribes a motion about an axis ([motion] type)");
         };
-        if free.shape_change.is_some() {
+        if free.attribute.is_some() && free.gyrostat.is_none() {
             return refuse("changes shape ([[body.moving_mass]] or inertia_table)");
         }
         Ok(Self {

@@ -6,13 +6,12 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{AxisNumbers, BearingNumbers, CheckNumbers, MomentCenter, MotionNumbers, StartNumbers};
 use crate::body::Principal;
-use crate::effects::{self, TorqueFree};
-use crate::frames::{BodyAxes, Form, Vector};
+use crate::effects;
+use crate::frames::{BodyAxes, Vector};
+use crate::motion::attribute::StartRow;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::scene::model::Scene;
-use crate::shape_change::{ShapeChange, system};
-use crate::wheels::gyrostat::Gyrostat;
 
 impl CheckNumbers {
     /// The numbers of `scene`.
@@ -49,9 +48,9 @@ impl MotionNumbers {
         };
         // A hinge's state at the start is its θ₀ and θ̇₀, in its axis numbers.
         let at_start = match (scene.motion.free(), scene.motion.prescribed()) {
-            (Some(free), _) => Some(match free.shape_change {
-                Some(shape) => StartNumbers::changing(scene, free.omega0_b, shape),
-                None => StartNumbers::free(scene, free.omega0_b, free.body, free.gyrostat),
+            (Some(free), _) => Some(match free.attribute {
+                Some(a) => StartNumbers::of_row(a.door().start(free.omega0_b, &scene.attitude0)),
+                None => StartNumbers::free(scene, free.omega0_b, free.body),
             }),
             (None, Some(axis)) => Some(StartNumbers::fixed_axis(scene, axis)),
             (None, None) => None,
@@ -96,42 +95,26 @@ impl AxisNumbers {
 }
 
 impl StartNumbers {
-    /// Free motion: H_O = I_O ω + Σ J_k Ω_k a_k, H_O,s = R₀ H_O, T = ½ ω·H_O or the gyrostat's
-    /// ([`Gyrostat::kinetic_energy`]).
-    fn free(
-        scene: &Scene,
-        omega0_b: &Vector<BodyAxes>,
-        free: &FreeBody,
-        gyrostat: Option<&Gyrostat>,
-    ) -> Self {
-        let h_rotors_b = gyrostat.map_or(Vector3::zeros(), |g| *g.initial_rotor_momentum_b());
-        let h_b = free.inertia_b() * **omega0_b + h_rotors_b;
-        let energy = gyrostat.map_or(0.5 * omega0_b.dot(&h_b), |g| {
-            let spins: Vec<f64> = g.rotors().iter().map(|r| r.spin0).collect();
-            g.kinetic_energy(omega0_b, &spins)
-        });
-        StartNumbers {
-            omega_b: omega0_b.into_inner().into(),
-            h_o_b: h_b.into(),
-            h_o_s: (scene.attitude0 * h_b).into(),
-            m_o_b: None,
-            f_s: None,
-            energy,
-        }
+    /// A free rigid body: H_O = I_O ω, H_O,s = R₀ H_O, T = ½ ω·H_O.
+    fn free(scene: &Scene, omega0_b: &Vector<BodyAxes>, free: &FreeBody) -> Self {
+        let h_b = free.inertia_b() * **omega0_b;
+        Self::of_row(StartRow {
+            omega_b: **omega0_b,
+            h_o_b: h_b,
+            h_o_s: scene.attitude0 * h_b,
+            energy: 0.5 * omega0_b.dot(&h_b),
+        })
     }
 
-    /// A body that changes shape: its row at t = 0 (H = I(0) ω + h(0) about C(0), T of
-    /// [`crate::shape_change::system`]).
-    fn changing(scene: &Scene, omega0_b: &Vector<BodyAxes>, shape: &ShapeChange) -> Self {
-        let y0 = system::initial_state(shape, Form::Body, omega0_b, &scene.attitude0);
-        let s = system::sample(shape, &TorqueFree, Form::Body, 0.0, &y0);
+    /// A free body's state at t = 0 (a body attribute's, [`BodyAttribute::start`]).
+    fn of_row(row: StartRow) -> Self {
         StartNumbers {
-            omega_b: (*s.omega_b).into(),
-            h_o_b: (*s.h_o_b).into(),
-            h_o_s: (*s.h_o_s).into(),
+            omega_b: row.omega_b.into(),
+            h_o_b: row.h_o_b.into(),
+            h_o_s: row.h_o_s.into(),
             m_o_b: None,
             f_s: None,
-            energy: s.energy,
+            energy: row.energy,
         }
     }
 

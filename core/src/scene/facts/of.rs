@@ -59,18 +59,12 @@ fn invariants(scene: &Scene, moving_support: bool) -> Vec<Invariant> {
     let motion = &scene.motion;
     match motion.kind() {
         MotionKind::Free => {
-            if motion.shape_change().is_some() {
-                // M = d/dt(I·ω): H is the invariant; the internal drives change T (P_internal).
-                return match torque_free {
-                    true => vec![HSpaceX, HSpaceY, HSpaceZ, HNorm],
-                    false => vec![],
-                };
-            }
-            let gyrostat = motion.gyrostat();
-            if gyrostat.is_some_and(|g| g.imbalanced()) {
+            let attribute = motion.attribute().map(|a| a.door());
+            if attribute.is_some_and(|a| a.turns_momentum()) {
                 return vec![];
             }
-            let no_motor_work = gyrostat.is_none_or(|g| g.wheels_spin_freely());
+            // Internal drives (motors, a changing shape's, P_internal) change T, not H.
+            let no_motor_work = attribute.is_none_or(|a| !a.does_work());
             let energy = if torque_free { Energy } else { EnergyTotal };
             let mut kept = Vec::new();
             if no_motor_work && gravity_only {
@@ -108,8 +102,8 @@ fn panels(motion: &Motion, moving_support: bool, columns: &ColumnSet) -> Vec<Pan
             });
         }
     }
-    if let Some(g) = motion.gyrostat() {
-        panels.extend(g.panels());
+    if let Some(attribute) = motion.attribute() {
+        panels.extend(attribute.door().panels());
     }
     let names: Vec<String> = columns
         .columns()

@@ -21,12 +21,9 @@ impl Oracle {
             MotionKind::Hinge => return None,
             MotionKind::Free => motion.free()?,
         };
-        if free.shape_change.is_some() {
-            // The closed forms are of rigid bodies; I(t) has none.
-            return None;
-        }
-        if let Some(g) = free.gyrostat {
-            return symmetric_gyrostat(scene, free.omega0_b, g);
+        if free.attribute.is_some() {
+            // The closed forms are of rigid bodies and of the symmetric gyrostat; I(t) has none.
+            return (free.gyrostat).and_then(|g| symmetric_gyrostat(scene, free.omega0_b, g));
         }
         let omega0_b = free.omega0_b.into_inner();
         let principal = scene.body.principal();

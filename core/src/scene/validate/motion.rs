@@ -2,21 +2,20 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::super::attributes::Attribute;
 use super::super::motion::Motion;
 use super::super::spec::{AxisDirection, AxisSpec, Distribution, MotionSpec, RateSpec, SceneSpec};
 use super::{Checked, Invalid, KeyPath, finite, invalid, vector};
 use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
-use crate::effects::TorqueFree;
-use crate::frames::Form;
 use crate::frames::Vector;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::motion::support::Bearings;
 use crate::orbit::CircularOrbit;
-use crate::shape_change::system;
+use crate::shape_change::Mounting;
 
 /// `initial.omega`, or `initial.omega_lvlh` (ω relative to the LVLH frame of `orbit`, body axes) plus the frame's
 /// rate n ĥ seen in the body at `attitude0`: ω_b = ω_rel + Rᵀ n ĥ; with the key it was given by.
@@ -63,17 +62,7 @@ pub(super) fn validate_motion(
         Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
         Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
-    if doc.body.shape_change.is_some() {
-        let key = match doc.body.shape_change.moving_mass.is_empty() {
-            true => "inertia_table",
-            false => "moving_mass",
-        };
-        return invalid(
-            KeyPath::root().key("body").key(key),
-            "a body that changes shape turns freely (free motion): on a fixed axis or hinge its moving masses \
-             would load the support in ways this model does not compute",
-        );
-    }
+    doc.body.shape_change.refuse_on_axis()?;
     if !doc.body.rotor.is_empty() {
         return invalid(
             KeyPath::root().key("body").key("rotor"),
@@ -134,64 +123,18 @@ fn free_motion(
         );
     }
     let gyrostat = crate::wheels::validate_rotors(&doc.body.rotor, &free_body, &(c_b + center_b))?;
-    let shape_change = shape_change(doc, body, effects, c_b)?;
-    if let Some(shape) = &shape_change {
-        // As for a rigid body: H(0) and T(0) of the system must be numbers.
-        let y0 = system::initial_state(shape, Form::Body, &omega0_b, &UnitQuaternion::identity());
-        let s = system::sample(shape, &TorqueFree, Form::Body, 0.0, &y0);
-        if !(s.energy.is_finite() && s.h_o_b.norm().is_finite()) {
-            let name = initial_omega.map_or("omega", |(_, name)| name);
-            return invalid(
-                KeyPath::root().key("initial").key(name),
-                "ω₀ is too large for this body: the system's moment of momentum I(0)·ω₀ + h or its kinetic energy is \
-                 beyond the range of double precision",
-            );
-        }
-    }
+    let shape_change = doc.body.shape_change.on_free_body(&Mounting {
+        body: (body, c_b),
+        rotors: !doc.body.rotor.is_empty(),
+        point_masses: !doc.body.point_mass.is_empty(),
+        effects,
+        omega0_b: (&omega0_b, initial_omega.map_or("omega", |(_, name)| name)),
+    })?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
-        gyrostat,
-        shape_change: shape_change.map(std::sync::Arc::new),
+        attribute: (gyrostat.map(Attribute::from)).or(shape_change.map(Attribute::from)),
     })
-}
-
-/// The body's shape change, on a free body about C without rotors and without an effect whose moment depends on
-/// the mass distribution (gravity about a pivot, the gravity gradient).
-fn shape_change(
-    doc: &SceneSpec,
-    body: &RigidBody,
-    effects: &[Effect],
-    c_b: &Vector3<f64>,
-) -> Checked<Option<crate::shape_change::ShapeChange>> {
-    let spec = &doc.body.shape_change;
-    if !spec.is_some() {
-        return Ok(None);
-    }
-    let key = KeyPath::root()
-        .key("body")
-        .key(match spec.moving_mass.is_empty() {
-            true => "inertia_table",
-            false => "moving_mass",
-        });
-    if !doc.body.rotor.is_empty() {
-        return invalid(
-            key,
-            "a body that changes shape cannot carry rotors yet: remove `[[body.rotor]]` or the shape change",
-        );
-    }
-    if let Some(index) = effects.iter().position(Effect::uses_mass_distribution) {
-        return invalid(
-            key,
-            format!(
-                "effect[{index}] ({}) acts through the mass distribution, which this body changes; its moment is \
-                 not modelled for a changing body",
-                effects[index].kind()
-            ),
-        );
-    }
-    let point_masses = !doc.body.point_mass.is_empty();
-    crate::shape_change::validate_shape_change(spec, body, c_b, point_masses)
 }
 
 /// The axis of a fixed-axis or hinge motion: its direction, rate, acceleration, point, bearings and the gravity

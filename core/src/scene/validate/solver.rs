@@ -71,20 +71,8 @@ pub(super) fn validate_method(
     o: &Overrides,
 ) -> Checked<()> {
     let method = solver.method;
-    let has_rotors = motion.gyrostat().is_some();
-    if has_rotors && !method.is_runge_kutta() {
-        return invalid(
-            key_of("solver", "method", o.method.is_some()),
-            format!(
-                "method \"{}\" cannot take rotors: split2/split4 split the rigid body's rotation into planar \
-                 rotations and exact is the rigid body's closed form, neither has the wheels' momentum; use rk4, \
-                 dopri5 or dop853",
-                method.name()
-            ),
-        );
-    }
-    if motion.shape_change().is_some() {
-        shape_change_method(method, effects, o)?;
+    if let Some(problem) = (motion.attribute()).and_then(|a| a.door().refuses(method, effects)) {
+        return invalid(key_of("solver", "method", o.method.is_some()), problem);
     }
     if motion.hinge().is_some() && !method.is_runge_kutta() {
         return invalid(
@@ -144,31 +132,6 @@ pub(super) fn validate_method(
             key: method_key,
             problem: format!("method \"exact\" cannot solve this body in closed form: {e}"),
         })?;
-    }
-    Ok(())
-}
-
-/// The methods that can run a body that changes shape: not `exact` (the rigid body's closed form), and not split2/
-/// split4 with damping (their kicks solve it for a constant inertia).
-fn shape_change_method(method: Method, effects: &[Effect], o: &Overrides) -> Checked<()> {
-    if method == Method::Exact {
-        return invalid(
-            key_of("solver", "method", o.method.is_some()),
-            "method \"exact\" cannot run a body that changes shape: it is the rigid body's torque-free closed \
-             form, its inertia constant; use split2, split4, rk4, dopri5 or dop853",
-        );
-    }
-    if !method.is_runge_kutta()
-        && let Some(index) = effects.iter().position(|e| e.damping().is_some())
-    {
-        return invalid(
-            key_of("solver", "method", o.method.is_some()),
-            format!(
-                "method \"{}\" cannot damp a body that changes shape (effect[{index}]): its kicks solve the \
-                 damping with a constant inertia; use rk4, dopri5 or dop853",
-                method.name()
-            ),
-        );
     }
     Ok(())
 }
