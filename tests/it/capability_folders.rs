@@ -289,9 +289,9 @@ fn the_fifth_round_s_effect_kinds_are_one_line_each_in_the_registry() {
 
 #[test]
 fn the_shape_change_is_named_only_in_its_folder_and_its_registrations() {
-    // A body attribute is its folder plus its field in `[body]`, its line in the registry `scene/attributes.rs`
-    // and its validation's calls; every other question goes through `motion::attribute::BodyAttribute` (facts,
-    // method rules, `check`, columns) and `AttributeDrive` (the run).
+    // A body attribute is its folder plus its field in `[body]` and its line in the registry `scene/attributes.rs`;
+    // every other question goes through the doors of `motion::attribute`: `AttributeSpec` (its validation),
+    // `BodyAttribute` (facts, method rules, `check`, columns) and `AttributeDrive` (the run).
     let registrations = [
         ("lib.rs", "pub mod shape_change;"),
         // eulerdyn re-exports each of the core's modules.
@@ -309,22 +309,9 @@ fn the_shape_change_is_named_only_in_its_folder_and_its_registrations() {
             "scene/attributes.rs",
             "use crate::shape_change::ShapeChange;",
         ),
-        ("scene/attributes.rs", "ShapeChange(Arc<ShapeChange>),"),
         (
-            "scene/validate/motion.rs",
-            "use crate::shape_change::Mounting;",
-        ),
-        (
-            "scene/validate/motion.rs",
-            "doc.body.shape_change.refuse_on_axis()?;",
-        ),
-        (
-            "scene/validate/motion.rs",
-            "let shape_change = doc.body.shape_change.on_free_body(&Mounting {",
-        ),
-        (
-            "scene/validate/motion.rs",
-            "attribute: (gyrostat.map(Attribute::from)).or(shape_change.map(Attribute::from)),",
+            "scene/attributes.rs",
+            "ShapeChange(Arc<ShapeChange>) = shape_change,",
         ),
         // The 3D page draws the moving masses of the scene as the sidecar keeps it.
         (
@@ -339,7 +326,8 @@ fn the_shape_change_is_named_only_in_its_folder_and_its_registrations() {
             "ShapeChange",
             "ChangingForm",
             "ChangingSplit",
-            "Mounting",
+            "MovingMass",
+            "InertiaHistory",
         ],
         &registrations,
     );

@@ -1,18 +1,49 @@
-//! The door a free body's attribute goes through (its wheels, its changing shape): what the facts, the method's
-//! rules, `check` and the columns ask of it ([`BodyAttribute`]), and its motion for the run to integrate
-//! ([`AttributeDrive`]: its state of N numbers, right-hand side, rows and splitting). Each attribute answers in its
-//! own folder; `scene/attributes.rs` registers it.
+//! The doors a free body's attribute goes through (its wheels, its changing shape): how `[body]`'s keys become it
+//! (`AttributeSpec`, on a free body in its scene, `Mounting`), what the facts, the method's rules, `check` and
+//! the columns ask of it ([`BodyAttribute`]), and its motion for the run to integrate ([`AttributeDrive`]: its
+//! state of N numbers, right-hand side, rows and splitting). Each attribute answers in its own folder;
+//! `scene/attributes.rs` registers it.
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
+use super::free::FreeBody;
 use super::lie_poisson::Scheme;
+use crate::body::RigidBody;
 use crate::effects::{Effect, EffectMoments};
 use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::{FixedStep, OdeSystem};
+use crate::keys::Checked;
 use crate::method::Method;
 use crate::panel::Panel;
 use crate::sample::{ColumnGroup, Sample};
 use crate::text::Description;
+
+/// An attribute as `[body]` gives it (its field of `BodySpec`): validated onto a free body, refused on an axis.
+pub(crate) trait AttributeSpec {
+    /// The attribute as the motion holds it.
+    type Held;
+
+    /// Refuses the attribute, when `[body]` gives it, on a fixed axis or hinge.
+    fn refuse_on_axis(&self) -> Checked<()>;
+
+    /// The attribute of a free body in its scene, `None` when `[body]` does not give it; `others`: whether an
+    /// attribute registered before it was given.
+    fn on_free_body(&self, on: &Mounting, others: bool) -> Checked<Option<Self::Held>>;
+}
+
+/// What the scene around a free body's attribute holds.
+pub(crate) struct Mounting<'a> {
+    /// The rest of the body, and its centre C from the reference origin (m, body axes).
+    pub body: (&'a RigidBody, &'a Vector3<f64>),
+    /// The body about its moment center, and that center from the reference origin (m, body axes).
+    pub free_body: (&'a FreeBody, &'a Vector3<f64>),
+    /// Whether `[body]` has rigidly attached point masses.
+    pub point_masses: bool,
+    /// The scene's effects.
+    pub effects: &'a [Effect],
+    /// ω₀ (body axes, rad/s) and the `[initial]` key that gave it.
+    pub omega0_b: (&'a Vector<BodyAxes>, &'a str),
+}
 
 /// A free body's attribute, as the rest of the library asks it.
 pub trait BodyAttribute: std::fmt::Debug + Send + Sync {

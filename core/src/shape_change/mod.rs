@@ -20,7 +20,6 @@ mod validate;
 pub use history::{Distribution, InertiaHistory, MassState, MovingMass};
 pub(crate) use keys::ShapeChangeKeys;
 pub use keys::{MovingMassSpec, PathSpec, ShapeChangeSpec};
-pub(crate) use mount::Mounting;
 pub use path::{Kinematics, MassPath, Profile, Side};
 pub(crate) use validate::validate_shape_change;
 pub use validate::{INERTIA_TABLE_HEADER, PATH_TABLE_HEADER};

@@ -1,30 +1,16 @@
-//! A shape change in its scene: the rules that need the rest of it (a free body, no rotors, no effect acting
-//! through the mass distribution; H(0) and T(0) numbers), then [`super::validate_shape_change`].
+//! A shape change in its scene ([`AttributeSpec`]): the rules that need the rest of it (a free body, no rotors, no
+//! effect acting through the mass distribution; H(0) and T(0) numbers), then [`super::validate_shape_change`].
 
 use std::sync::Arc;
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::UnitQuaternion;
 
 use super::keys::ShapeChangeSpec;
 use super::{ShapeChange, system, validate_shape_change};
-use crate::body::RigidBody;
 use crate::effects::{Effect, TorqueFree};
-use crate::frames::{BodyAxes, Form, Vector};
+use crate::frames::Form;
 use crate::keys::{Checked, KeyPath, invalid};
-
-/// What the scene around a free body's shape change holds.
-pub(crate) struct Mounting<'a> {
-    /// The rest of the body, its centre from the reference origin (m, body axes).
-    pub body: (&'a RigidBody, &'a Vector3<f64>),
-    /// Whether `[body]` has rotors.
-    pub rotors: bool,
-    /// Whether `[body]` has rigidly attached point masses.
-    pub point_masses: bool,
-    /// The scene's effects.
-    pub effects: &'a [Effect],
-    /// ω₀ (body axes, rad/s) and the `[initial]` key that gave it.
-    pub omega0_b: (&'a Vector<BodyAxes>, &'a str),
-}
+use crate::motion::attribute::{AttributeSpec, Mounting};
 
 impl ShapeChangeSpec {
     /// The key a message about the shape change names: `moving_mass` or `inertia_table`.
@@ -36,9 +22,13 @@ impl ShapeChangeSpec {
                 false => "moving_mass",
             })
     }
+}
+
+impl AttributeSpec for ShapeChangeSpec {
+    type Held = Arc<ShapeChange>;
 
     /// Refuses a shape change on a fixed axis or hinge.
-    pub(crate) fn refuse_on_axis(&self) -> Checked<()> {
+    fn refuse_on_axis(&self) -> Checked<()> {
         if !self.is_some() {
             return Ok(());
         }
@@ -52,11 +42,11 @@ impl ShapeChangeSpec {
     /// The shape change of a free body about C, `None` when `[body]` gives none: without rotors, without an
     /// effect whose moment depends on the mass distribution (gravity about a pivot, the gravity gradient), and
     /// with H(0) and T(0) of the system numbers.
-    pub(crate) fn on_free_body(&self, on: &Mounting) -> Checked<Option<Arc<ShapeChange>>> {
+    fn on_free_body(&self, on: &Mounting, others: bool) -> Checked<Option<Arc<ShapeChange>>> {
         if !self.is_some() {
             return Ok(None);
         }
-        if on.rotors {
+        if others {
             return invalid(
                 self.key(),
                 "a body that changes shape cannot carry rotors yet: remove `[[body.rotor]]` or the shape change",

@@ -3,16 +3,39 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 
+use super::RotorSpec;
 use super::gyrostat::{Gyrostat, GyrostatForm, State};
+use super::validate::validate_rotors;
 use crate::effects::{Effect, EffectMoments};
 use crate::frames::{BodyAxes, Form, Vector};
 use crate::integrate::NoSplit;
+use crate::keys::{Checked, KeyPath, invalid};
 use crate::method::Method;
-use crate::motion::attribute::{AttributeDrive, BodyAttribute, StartRow};
+use crate::motion::attribute::{AttributeDrive, AttributeSpec, BodyAttribute, Mounting, StartRow};
 use crate::motion::lie_poisson::Scheme;
 use crate::panel::Panel;
 use crate::sample::{ColumnGroup, Sample};
 use crate::text::Description;
+
+impl AttributeSpec for Vec<RotorSpec> {
+    type Held = Box<Gyrostat>;
+
+    fn refuse_on_axis(&self) -> Checked<()> {
+        if self.is_empty() {
+            return Ok(());
+        }
+        invalid(
+            KeyPath::root().key("body").key("rotor"),
+            "rotors are simulated in a freely turning body (free motion, or about a gravity pivot); a fixed-axis \
+             or hinge motion with rotors is not supported",
+        )
+    }
+
+    /// The gyrostat of the body about its moment center ([`validate_rotors`]).
+    fn on_free_body(&self, on: &Mounting, _: bool) -> Checked<Option<Box<Gyrostat>>> {
+        validate_rotors(self, on.free_body.0, on.free_body.1)
+    }
+}
 
 impl BodyAttribute for Box<Gyrostat> {
     fn columns(&self) -> ColumnGroup {

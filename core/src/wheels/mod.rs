@@ -42,7 +42,6 @@ pub use table::{WHEEL_TABLE_HEADER, read_wheel_table};
 
 /// The most rotors a body may carry (a reaction-wheel pyramid has four).
 pub const MAX_ROTORS: usize = 4;
-pub(crate) use validate::validate_rotors;
 
 /// One rpm in rad/s.
 pub const RPM: f64 = std::f64::consts::PI / 30.0;

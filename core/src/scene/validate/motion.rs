@@ -10,12 +10,12 @@ use crate::body::RigidBody;
 use crate::effects::Effect;
 use crate::effects::EffectMoments;
 use crate::frames::Vector;
+use crate::motion::attribute::Mounting;
 use crate::motion::fixed_axis::FixedAxis;
 use crate::motion::free::FreeBody;
 use crate::motion::hinge::Hinge;
 use crate::motion::support::Bearings;
 use crate::orbit::CircularOrbit;
-use crate::shape_change::Mounting;
 
 /// `initial.omega`, or `initial.omega_lvlh` (ω relative to the LVLH frame of `orbit`, body axes) plus the frame's
 /// rate n ĥ seen in the body at `attitude0`: ω_b = ω_rel + Rᵀ n ĥ; with the key it was given by.
@@ -62,14 +62,7 @@ pub(super) fn validate_motion(
         Some(MotionSpec::FixedAxis(m)) => (&m.axis, m.accel, None),
         Some(MotionSpec::Hinge(m)) => (&m.axis, 0.0, Some(m.angle_deg)),
     };
-    doc.body.shape_change.refuse_on_axis()?;
-    if !doc.body.rotor.is_empty() {
-        return invalid(
-            KeyPath::root().key("body").key("rotor"),
-            "rotors are simulated in a freely turning body (free motion, or about a gravity pivot); a fixed-axis \
-             or hinge motion with rotors is not supported",
-        );
-    }
+    Attribute::refuse_on_axis(&doc.body)?;
     if let Some((_, name)) = initial_omega {
         return invalid(
             KeyPath::root().key("initial").key(name),
@@ -122,18 +115,20 @@ fn free_motion(
             ),
         );
     }
-    let gyrostat = crate::wheels::validate_rotors(&doc.body.rotor, &free_body, &(c_b + center_b))?;
-    let shape_change = doc.body.shape_change.on_free_body(&Mounting {
-        body: (body, c_b),
-        rotors: !doc.body.rotor.is_empty(),
-        point_masses: !doc.body.point_mass.is_empty(),
-        effects,
-        omega0_b: (&omega0_b, initial_omega.map_or("omega", |(_, name)| name)),
-    })?;
+    let attribute = Attribute::on_free_body(
+        &doc.body,
+        &Mounting {
+            body: (body, c_b),
+            free_body: (&free_body, &(c_b + center_b)),
+            point_masses: !doc.body.point_mass.is_empty(),
+            effects,
+            omega0_b: (&omega0_b, initial_omega.map_or("omega", |(_, name)| name)),
+        },
+    )?;
     Ok(Motion::Free {
         omega0_b,
         body: free_body,
-        attribute: (gyrostat.map(Attribute::from)).or(shape_change.map(Attribute::from)),
+        attribute,
     })
 }
 
