@@ -55,14 +55,6 @@ macro_rules! body_attributes {
                 }
             }
         }
-
-        $(
-            impl From<$held> for Attribute {
-                fn from(attribute: $held) -> Self {
-                    Attribute::$variant(attribute)
-                }
-            }
-        )*
     };
 }
 
