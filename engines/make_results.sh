@@ -10,14 +10,13 @@ bin="${EULERDYN_BIN:-$PWD/target/release/eulerdyn}"
 py=engines/.venv/bin/python
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-engines=(mujoco_euler mujoco_implicitfast mujoco_rk4 pybullet drake dart rapier rapier_default rapier_nogyro)
+packages="$("$py" engines/adapters.py packages)"
+mapfile -t engines < <("$py" engines/adapters.py engines)
 "$bin" -q suite --out "$work/suite"
-"$py" engines/mujoco/run_suite.py --suite "$work/suite" --integrator Euler --integrator implicitfast --integrator RK4
-"$py" engines/pybullet/run_suite.py --suite "$work/suite"
-"$py" engines/drake/run_suite.py --suite "$work/suite" 2> "$work/drake.log" || { cat "$work/drake.log"; exit 1; }
-"$py" engines/dart/run_suite.py --suite "$work/suite" 2> "$work/dart.log" || { tail "$work/dart.log"; exit 1; }
-"$py" engines/rapier/run_suite.py --suite "$work/suite"
-"$py" -m pip list 2>/dev/null | grep -E '^(mujoco|pybullet|drake|dartpy|rapier3d) ' > engines/results/versions.txt
+for name in $("$py" engines/adapters.py adapters); do
+  "$py" "engines/$name/run_suite.py" --suite "$work/suite" 2> "$work/$name.log" || { tail "$work/$name.log"; exit 1; }
+done
+"$py" -m pip list 2>/dev/null | grep -E "^(${packages// /|}) " > engines/results/versions.txt
 : > engines/results/cards_60hz.txt
 : > engines/results/diagnoses_60hz.txt
 for engine in "${engines[@]}"; do

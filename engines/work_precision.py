@@ -4,7 +4,7 @@ measured in one run on one scene of the suite.
 
     python engines/work_precision.py --bin target/release/eulerdyn --suite DIR [--scene full_tensor]
 
-Each engine runs through its adapter (engines/*/run_suite.py) at 60, 120, ... 1920 steps per second with rows at
+Each engine runs through its adapter (engines/*/run_suite.py, registered in engines/adapters.py) at 60, 120, ... 1920 steps per second with rows at
 60 Hz; its cost is the median over REPEATS runs of the wall time of its stepping calls (made from Python, one call
 a step: the call's own overhead is part of what a Python user pays), and its error is the largest attitude error
 that `eulerdyn score` gives. eulerdyn's methods are timed by `eulerdyn accuracy` on the same scene with rows at
@@ -15,12 +15,13 @@ Writes engines/results/work_precision.csv and docs/engines_work_precision.svg.
 
 import argparse
 import csv
-import importlib.util
 import json
 import math
 import pathlib
 import statistics
 import subprocess
+
+from adapters import ADAPTERS, module
 
 HERE = pathlib.Path(__file__).resolve().parent
 
@@ -28,26 +29,8 @@ RATES = [60, 120, 240, 480, 960, 1920]
 REPEATS = 5
 COLORS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
           "#17becf", "#393b79", "#637939"]
-#: Figure label -> (adapter folder, call of its run_scene).
-ENGINES = {
-    "MuJoCo Euler": ("mujoco", lambda m, setup, rate: m.run_scene(setup, rate, "Euler")),
-    "MuJoCo implicitfast": ("mujoco", lambda m, setup, rate: m.run_scene(setup, rate, "implicitfast")),
-    "MuJoCo RK4": ("mujoco", lambda m, setup, rate: m.run_scene(setup, rate, "RK4")),
-    "PyBullet": ("pybullet", lambda m, setup, rate: m.run_scene(setup, rate)),
-    "Drake": ("drake", lambda m, setup, rate: m.run_scene(setup, rate)),
-    "DART": ("dart", lambda m, setup, rate: m.run_scene(setup, rate)),
-    "Rapier": ("rapier", lambda m, setup, rate: m.run_scene(setup, rate, "on")),
-}
 #: eulerdyn's methods on the figure (body form), from `eulerdyn accuracy`'s table.
 OWN = ["rk4", "split2", "split4", "dop853", "exact"]
-
-
-def adapter(folder):
-    """The adapter module engines/<folder>/run_suite.py."""
-    spec = importlib.util.spec_from_file_location(f"{folder}_run_suite", HERE / folder / "run_suite.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def score(binary, csv_path, scene):
@@ -62,18 +45,24 @@ def score(binary, csv_path, scene):
 def engine_points(binary, suite, scene, work):
     """(label, step, rtol, cost, error) for every engine at every rate; cost in seconds per simulated second."""
     setup = json.loads((suite / f"{scene}.json").read_text())
-    modules = {}
     points = []
-    for label, (folder, run) in ENGINES.items():
-        module = modules.setdefault(folder, adapter(folder))
-        for rate in RATES:
-            runs = [run(module, setup, rate) for _ in range(REPEATS)]
-            lines = runs[0][0]
-            csv_path = work / f"{label.replace(' ', '_')}_{rate}.csv"
-            csv_path.write_text("\n".join(lines) + "\n")
-            cost = statistics.median(seconds for _, seconds in runs) / setup["t_end"]
-            points.append((label, 1.0 / rate, None, cost, score(binary, csv_path, suite / f"{scene}.toml")))
+    for folder, _, labels in ADAPTERS:
+        adapter = module(folder)
+        for label, choice in labels.items():
+            for rate in RATES:
+                points.append(engine_point(binary, suite, scene, work, (adapter, setup, choice, label, rate)))
     return points
+
+
+def engine_point(binary, suite, scene, work, run):
+    """(label, step, rtol, cost, error) of one engine variant at one rate."""
+    adapter, setup, choice, label, rate = run
+    runs = [adapter.run_scene(setup, rate, choice) for _ in range(REPEATS)]
+    lines = runs[0][0]
+    csv_path = work / f"{label.replace(' ', '_')}_{rate}.csv"
+    csv_path.write_text("\n".join(lines) + "\n")
+    cost = statistics.median(seconds for _, seconds in runs) / setup["t_end"]
+    return (label, 1.0 / rate, None, cost, score(binary, csv_path, suite / f"{scene}.toml"))
 
 
 def own_points(binary, suite, scene, work):

@@ -25,6 +25,9 @@ import numpy as np
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import suite_io  # noqa: E402  (engines/suite_io.py)
 
+#: The engine variant this adapter writes (no option chooses among variants).
+VARIANTS = {None: "dart"}
+
 
 def build(setup, timestep):
     """The world of a scene and its body node, whose frame is the scene's body axes, its origin at C or at the pivot."""
@@ -97,4 +100,4 @@ def run_scene(setup, rate, _variant=None):
 
 
 if __name__ == "__main__":
-    suite_io.main(__doc__, run_scene, {None: "dart"})
+    suite_io.main(__doc__, run_scene, VARIANTS)

@@ -30,6 +30,9 @@ from pydrake.systems.analysis import Simulator
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import suite_io  # noqa: E402  (engines/suite_io.py)
 
+#: The engine variant this adapter writes (no option chooses among variants).
+VARIANTS = {None: "drake"}
+
 
 def build(setup, h):
     """The plant of a scene, its body and joint: the body frame is the scene's body axes, its origin at C or at the
@@ -132,4 +135,4 @@ def run_scene(setup, rate, _variant=None):
 
 
 if __name__ == "__main__":
-    suite_io.main(__doc__, run_scene, {None: "drake"})
+    suite_io.main(__doc__, run_scene, VARIANTS)

@@ -21,7 +21,7 @@ import numpy as np
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import suite_io  # noqa: E402  (engines/suite_io.py)
 
-INTEGRATORS = {"Euler": "mujoco_euler", "implicitfast": "mujoco_implicitfast", "RK4": "mujoco_rk4"}
+VARIANTS = {"Euler": "mujoco_euler", "implicitfast": "mujoco_implicitfast", "RK4": "mujoco_rk4"}
 
 
 def model_xml(setup, timestep, integrator):
@@ -90,4 +90,4 @@ def applied_torque(torque, t, data, body):
 
 
 if __name__ == "__main__":
-    suite_io.main(__doc__, run_scene, INTEGRATORS, option="integrator")
+    suite_io.main(__doc__, run_scene, VARIANTS, option="integrator")

@@ -20,6 +20,9 @@ import pybullet as p
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import suite_io  # noqa: E402  (engines/suite_io.py)
 
+#: The engine variant this adapter writes (no option chooses among variants).
+VARIANTS = {None: "pybullet"}
+
 
 def quat_mul(a, b):
     """The product of quaternions in Bullet's order (x, y, z, w)."""
@@ -116,4 +119,4 @@ def run_scene(setup, rate, _variant=None):
 
 
 if __name__ == "__main__":
-    suite_io.main(__doc__, run_scene, {None: "pybullet"})
+    suite_io.main(__doc__, run_scene, VARIANTS)

@@ -25,7 +25,7 @@ import rapier3d as r
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import suite_io  # noqa: E402  (engines/suite_io.py)
 
-NAMES = {"on": "rapier", "off": "rapier_nogyro", "default": "rapier_default"}
+VARIANTS = {"on": "rapier", "default": "rapier_default", "off": "rapier_nogyro"}
 
 
 def build(setup, h, gyroscopic):
@@ -98,4 +98,4 @@ def run_scene(setup, rate, gyroscopic):
 
 
 if __name__ == "__main__":
-    suite_io.main(__doc__, run_scene, NAMES, option="gyroscopic")
+    suite_io.main(__doc__, run_scene, VARIANTS, option="gyroscopic")
