@@ -41,7 +41,8 @@ pub fn derive_table(input: TokenStream) -> TokenStream {
     expand(input, table::derive)
 }
 
-/// A table's `type`: `#[kind(what = "effect type", missing = "…", spec = S, file = F)]` on the enum,
+/// A table's `type`: `#[kind(what = "effect type", missing = "…", spec = S, file = F)]` on the enum (or
+/// `needs = "an effect"` for the message "missing: an effect needs `type` = "a", "b" or "c""),
 /// `#[kind("name", takes(a, b, ..))]` on each variant (`..`: the table's parts).
 #[proc_macro_derive(Kind, attributes(kind))]
 pub fn derive_kind(input: TokenStream) -> TokenStream {
