@@ -6,11 +6,10 @@ use std::sync::Arc;
 use nalgebra::UnitQuaternion;
 
 use super::keys::ShapeChangeSpec;
-use super::{ShapeChange, system, validate_shape_change};
-use crate::effects::{Effect, TorqueFree};
-use crate::frames::Form;
+use super::{ShapeChange, validate_shape_change};
+use crate::effects::Effect;
 use crate::keys::{Checked, KeyPath, invalid};
-use crate::motion::attribute::{AttributeSpec, Mounting};
+use crate::motion::attribute::{AttributeSpec, BodyAttribute, Mounting};
 
 impl ShapeChangeSpec {
     /// The key a message about the shape change names: `moving_mass` or `inertia_table`.
@@ -67,9 +66,9 @@ impl AttributeSpec for ShapeChangeSpec {
             return Ok(None);
         };
         // As for a rigid body: H(0) and T(0) of the system must be numbers.
+        let shape = Arc::new(shape);
         let (omega0_b, name) = on.omega0_b;
-        let y0 = system::initial_state(&shape, Form::Body, omega0_b, &UnitQuaternion::identity());
-        let s = system::sample(&shape, &TorqueFree, Form::Body, 0.0, &y0);
+        let s = shape.start(omega0_b, &UnitQuaternion::identity());
         if !(s.energy.is_finite() && s.h_o_b.norm().is_finite()) {
             return invalid(
                 KeyPath::root().key("initial").key(name),
@@ -77,6 +76,6 @@ impl AttributeSpec for ShapeChangeSpec {
                  beyond the range of double precision",
             );
         }
-        Ok(Some(Arc::new(shape)))
+        Ok(Some(shape))
     }
 }

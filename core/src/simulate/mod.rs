@@ -13,7 +13,7 @@ use nalgebra::{SVector, Vector3};
 use crate::effects::{EffectMoments, TorqueFree};
 use crate::events::{Locator, Occurrence};
 use crate::frames::{BodyAxes, Form, Vector};
-use crate::integrate::{self, IntegrateError, OdeSystem, Stats, run_fixed_step};
+use crate::integrate::{self, FixedStep, IntegrateError, OdeSystem, Stats, run_fixed_step};
 use crate::method::Method;
 use crate::motion::attribute::{AttributeDrive, DriveVisitor};
 use crate::motion::exact_flow::ExactFlow;
@@ -128,6 +128,23 @@ fn runner(scene: &Scene) -> Runner {
 /// The most steps a fixed-step run of the project's own methods may take (as for the Runge–Kutta methods).
 fn max_steps() -> u64 {
     integrate::Settings::default().max_steps
+}
+
+/// A fixed-step method (split2/split4, or their quadrature) from `y0` over the scene's rows at its `dt`.
+fn run_split<S: FixedStep, E>(
+    scene: &Scene,
+    method: &mut S,
+    y0: S::State,
+    on_row: impl FnMut(f64, &S::State) -> Result<(), E>,
+) -> Result<Stats, IntegrateError<E>> {
+    run_fixed_step(
+        method,
+        y0,
+        &scene.schedule,
+        scene.solver.dt,
+        max_steps(),
+        on_row,
+    )
 }
 
 /// Why the row callback stopped a run: the guard, the sink, or an event with `stop` (a run that ends well).
@@ -312,14 +329,7 @@ fn run_free<M: KickMoment + Clone, E>(
             let mut split = LiePoisson::new(body, form, scheme, moment);
             let sampler = split.clone();
             let y0 = split.initial_state(body, omega0_b, &scene.attitude0);
-            return run_fixed_step(
-                &mut split,
-                y0,
-                &scene.schedule,
-                scene.solver.dt,
-                max_steps(),
-                |t, y| sink(&sampler.sample(t, y)),
-            );
+            return run_split(scene, &mut split, y0, |t, y| sink(&sampler.sample(t, y)));
         }
         Runner::Exact => {
             if !M::ZERO {
@@ -410,14 +420,9 @@ impl<F: FnMut(&Sample) -> Result<(), Stop<E>>, E> DriveVisitor for AttributeRun<
             Runner::Splitting(scheme) => {
                 let split = attribute.split(scene.body.mass(), form, scheme, moment.clone());
                 let mut split = split.ok_or_else(refused)?;
-                return run_fixed_step(
-                    &mut split,
-                    y0,
-                    &scene.schedule,
-                    scene.solver.dt,
-                    max_steps(),
-                    |t, y| sink(&attribute.sample(&moment, form, t, y)),
-                );
+                return run_split(scene, &mut split, y0, |t, y| {
+                    sink(&attribute.sample(&moment, form, t, y))
+                });
             }
             Runner::Exact => return Err(refused()),
         };
@@ -474,14 +479,7 @@ fn run_fixed_axis<E>(
     let settings = match runner(scene) {
         Runner::Splitting(scheme) => {
             let mut quadrature = KickQuadrature::new(scheme, |t| system.moment_s(t));
-            return run_fixed_step(
-                &mut quadrature,
-                h_s0,
-                &scene.schedule,
-                scene.solver.dt,
-                max_steps(),
-                on_row,
-            );
+            return run_split(scene, &mut quadrature, h_s0, on_row);
         }
         Runner::Exact => {
             // The exact integral of Ḣ_s = M_s is H_s itself.
